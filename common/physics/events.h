@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/ball.h"
+
 namespace pool::physics {
 
 enum class EventType : std::uint8_t {
@@ -34,6 +36,7 @@ struct Event {
   int ball_b = -1;       ///< the other ball of a BallBall event, else -1
   std::string where;     ///< cushion, jaw or pocket name, or the watchdog's reason
   double speed = 0.0;    ///< closing speed along the contact normal at impact, m/s (0 if none)
+  Vec3 pos = Vec3::Zero();  ///< ball_a's centre at the event, table frame, m
 };
 
 using EventLog = std::vector<Event>;
