@@ -1,0 +1,101 @@
+// Earliest down-crossing of a quartic: split the interval at the derivative's roots (recursively)
+// into monotonic pieces, then bisect the first piece that crosses.
+#include "physics/polynomial.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pool::physics {
+
+namespace {
+
+using Coeffs = std::array<double, 5>;
+
+double evalDeg(const Coeffs& c, int deg, double t) {
+  double v = 0.0;
+  for (int i = deg; i >= 0; --i) v = v * t + c[static_cast<size_t>(i)];
+  return v;
+}
+
+Coeffs derivative(const Coeffs& c, int deg) {
+  Coeffs d{};
+  for (int i = 1; i <= deg; ++i) d[static_cast<size_t>(i - 1)] = i * c[static_cast<size_t>(i)];
+  return d;
+}
+
+/// A root of a function known to be monotonic on [lo, hi] with f(lo), f(hi) of opposite signs
+/// (or one zero): bisection to the last representable bit.
+double bisect(const Coeffs& c, int deg, double lo, double hi) {
+  double flo = evalDeg(c, deg, lo);
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    const double fm = evalDeg(c, deg, mid);
+    if ((fm <= 0.0) == (flo <= 0.0)) {
+      lo = mid;
+      flo = fm;
+    } else {
+      hi = mid;
+    }
+  }
+  return hi;
+}
+
+/// Sorted real roots of the degree-`deg` polynomial strictly inside (lo, hi).
+int rootsIn(const Coeffs& c, int deg, double lo, double hi, double* out) {
+  while (deg > 0 && c[static_cast<size_t>(deg)] == 0.0) --deg;
+  if (deg <= 0) return 0;
+  if (deg == 1) {
+    const double r = -c[0] / c[1];
+    if (r > lo && r < hi) {
+      out[0] = r;
+      return 1;
+    }
+    return 0;
+  }
+  // Critical points split (lo, hi) into pieces where c is monotonic.
+  double crit[4];
+  const int nc = rootsIn(derivative(c, deg), deg - 1, lo, hi, crit);
+  double knots[6];
+  int nk = 0;
+  knots[nk++] = lo;
+  for (int i = 0; i < nc; ++i) knots[nk++] = crit[i];
+  knots[nk++] = hi;
+  int n = 0;
+  for (int i = 0; i + 1 < nk; ++i) {
+    const double fa = evalDeg(c, deg, knots[i]);
+    const double fb = evalDeg(c, deg, knots[i + 1]);
+    if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) {
+      out[n++] = bisect(c, deg, knots[i], knots[i + 1]);
+    } else if (fb == 0.0 && i + 2 < nk) {
+      out[n++] = knots[i + 1];
+    }
+  }
+  return n;
+}
+
+}  // namespace
+
+double evaluate(const Quartic& p, double t) { return evalDeg(p, 4, t); }
+
+double earliestClosing(const Quartic& p, double t_max) {
+  if (!(t_max > 0.0)) return kNever;
+  const double f0 = p[0];
+  if (f0 <= 0.0 && (p[1] < 0.0 || (p[1] == 0.0 && p[2] < 0.0))) return 0.0;
+  // Knots: 0, the critical points, t_max. The first piece whose start is positive and whose
+  // end is at or below zero holds the crossing.
+  double crit[4];
+  const int nc = rootsIn(derivative(p, 4), 3, 0.0, t_max, crit);
+  double prev_t = 0.0;
+  double prev_f = f0;
+  for (int i = 0; i <= nc; ++i) {
+    const double t = i < nc ? crit[i] : t_max;
+    const double f = evaluate(p, t);
+    if (prev_f > 0.0 && f <= 0.0) return bisect(p, 4, prev_t, t);
+    prev_t = t;
+    prev_f = f;
+  }
+  return kNever;
+}
+
+}  // namespace pool::physics

@@ -1,0 +1,485 @@
+// The event loop: predict the next event, let ODE step every ball exactly to it, resolve it, repeat.
+#include "physics/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "physics/ball_ball_alciatore.h"
+#include "physics/cloth.h"
+#include "physics/contact_coulomb.h"
+#include "physics/ode_world.h"
+#include "physics/predict.h"
+#include "physics/watchdog.h"
+
+namespace pool::physics {
+
+namespace {
+
+// An impulse that leaves a ball on the slate rising slower than this is absorbed by the slate
+// (a hop under 1 mm); faster, the ball becomes airborne.
+constexpr double kLiftOffSpeed = 0.15;  // m/s
+// A landing slower than this ends the bouncing: the ball stays on the slate.
+constexpr double kSettleSpeed = 0.05;   // m/s
+// A shot with more events than this is cut short (a guard, never reached by real shots).
+constexpr std::uint64_t kMaxEvents = 200000;
+
+bool translates(MotionState s) {
+  return s == MotionState::Sliding || s == MotionState::Rolling || s == MotionState::Airborne;
+}
+
+bool active(MotionState s) { return translates(s) || s == MotionState::Spinning; }
+
+}  // namespace
+
+/// Per ball: its current piece of motion and the next table contact it is heading for.
+struct Track {
+  ClothMotion motion;
+  double t_end = kNever;  ///< absolute time of the motion's transition
+  TableHit hit;           ///< absolute time
+  int ignore_kind = -1;   ///< a feature grazed without approach, skipped until the motion changes
+  int ignore_index = -1;
+};
+
+struct Simulation::Impl {
+  table::TableSpec spec;
+  table::TableGeometry geometry;
+  table::PhysicsParams p;
+  TableFeatures features;
+  std::unique_ptr<ClothModel> cloth;
+  std::unique_ptr<OdeWorld> world;
+  std::vector<Ball> balls;
+  std::vector<Track> tracks;
+  std::vector<double> pair_t;  ///< absolute contact time of pair (i, j), i < j, at i * n + j
+  std::vector<Vec3> acc, ang_acc;
+  double now = 0.0;
+  ShotOutcome out;
+  SimOptions options;
+  std::uint64_t next_sample = 0;
+
+  Impl(const table::TableSpec& s, const table::TableGeometry& g)
+      : spec(s), geometry(g), p(s.params), features(TableFeatures::from(g)),
+        cloth(makeClothLeckieGreenspan(s.params)) {}
+
+  size_t n() const { return balls.size(); }
+  double R() const { return p.ball_radius; }
+
+  Kinematics kinematics(size_t i) const {
+    return {balls[i].pos, balls[i].vel, tracks[i].motion.acc};
+  }
+
+  void emit(EventType type, size_t i, int other = -1, std::string where = {}, double speed = 0) {
+    Event e;
+    e.t = now;
+    e.type = type;
+    e.ball_a = balls[i].id;
+    e.ball_b = other;
+    e.where = std::move(where);
+    e.speed = speed;
+    e.pos = balls[i].pos;
+    out.events.push_back(std::move(e));
+  }
+
+  // --- predictions ---------------------------------------------------------------------
+
+  void predictPair(size_t i, size_t j) {
+    double& slot = pair_t[i * n() + j];
+    slot = kNever;
+    const Ball& a = balls[i];
+    const Ball& b = balls[j];
+    if (!onTable(a.state) || !onTable(b.state)) return;
+    if (!translates(a.state) && !translates(b.state)) return;
+    const double horizon = std::min(tracks[i].t_end, tracks[j].t_end) - now;
+    const double t = pairContactTime(kinematics(i), kinematics(j), R(), horizon);
+    if (t < kNever) slot = now + t;
+  }
+
+  void predictTable(size_t i) {
+    Track& tr = tracks[i];
+    tr.hit = TableHit{};
+    if (!translates(balls[i].state)) return;
+    const bool airborne = balls[i].state == MotionState::Airborne;
+    TableHit h = nextTableHit(kinematics(i), airborne, features, R(), p.cushion_height,
+                              tr.t_end - now);
+    if (static_cast<int>(h.kind) == tr.ignore_kind && h.index == tr.ignore_index) h = TableHit{};
+    if (h.t < kNever) h.t += now;
+    tr.hit = h;
+  }
+
+  /// The ball's motion changed now: new piece of motion, new predictions, ODE body updated.
+  void refresh(size_t i, bool keep_ignore = false) {
+    Track& tr = tracks[i];
+    if (!keep_ignore) tr.ignore_kind = tr.ignore_index = -1;
+    Ball& b = balls[i];
+    if (onTable(b.state)) {
+      tr.motion = cloth->motion(b);
+      tr.t_end = now + tr.motion.duration;
+    } else {
+      tr.motion = ClothMotion{};
+      tr.t_end = kNever;
+      tr.motion.duration = kNever;
+    }
+    acc[i] = tr.motion.acc;
+    ang_acc[i] = tr.motion.ang_acc;
+    world->setBall(static_cast<int>(i), b, active(b.state));
+    predictTable(i);
+    for (size_t j = 0; j < n(); ++j) {
+      if (j < i) predictPair(j, i);
+      if (j > i) predictPair(i, j);
+    }
+  }
+
+  // --- time ------------------------------------------------------------------------------
+
+  Ball sampleBall(size_t i, double tau) const {
+    Ball b = balls[i];
+    if (!active(b.state) || tau == 0.0) return b;
+    const ClothMotion& m = tracks[i].motion;
+    b.pos = kinematics(i).at(tau);
+    b.vel += tau * m.acc;
+    const Vec3 w1 = b.ang_vel + tau * m.ang_acc;
+    b.orient = integrateOrientation(b.orient, 0.5 * (b.ang_vel + w1), tau);
+    b.ang_vel = w1;
+    return b;
+  }
+
+  void recordSamples(double until) {
+    if (options.sample_hz <= 0.0) return;
+    while (true) {
+      const double ts = static_cast<double>(next_sample) / options.sample_hz;
+      if (ts > until) break;
+      Sample s;
+      s.t = ts;
+      s.balls.reserve(n());
+      for (size_t i = 0; i < n(); ++i) s.balls.push_back(sampleBall(i, ts - now));
+      out.trajectory.push_back(std::move(s));
+      ++next_sample;
+    }
+  }
+
+  void advanceTo(double t) {
+    recordSamples(t);
+    if (t > now) {
+      world->step(t - now, acc, ang_acc, balls);
+      ++out.stats.steps;
+      now = t;
+    }
+  }
+
+  // --- events ----------------------------------------------------------------------------
+
+  /// After an impulse: a ball on the slate either stays on it (the slate absorbs a downward or
+  /// tiny upward speed) or lifts off; its motion state follows from its velocities.
+  void settle(size_t i) {
+    Ball& b = balls[i];
+    if (b.state == MotionState::Airborne) return;
+    if (b.vel.z() > kLiftOffSpeed) {
+      b.state = MotionState::Airborne;
+      emit(EventType::Airborne, i);
+      return;
+    }
+    b.vel.z() = 0.0;
+    b.pos.z() = R();
+    b.state = cloth->classify(b);
+  }
+
+  void pocket(size_t i, const std::string& name, const Vec2& centre) {
+    Ball& b = balls[i];
+    emit(EventType::Pocket, i, -1, name);
+    b.state = MotionState::Pocketed;
+    b.pocket = name;
+    b.pos = Vec3(centre.x(), centre.y(), -2.0 * R());
+    b.vel.setZero();
+    b.ang_vel.setZero();
+  }
+
+  void offTable(size_t i, const std::string& over) {
+    Ball& b = balls[i];
+    emit(EventType::OffTable, i, -1, over);
+    b.state = MotionState::OffTable;
+    b.vel.setZero();
+    b.ang_vel.setZero();
+  }
+
+  void transition(size_t i) {
+    Ball& b = balls[i];
+    const Transition t = tracks[i].motion.ends_with;
+    const MotionState before = b.state;
+    if (t == Transition::Landing) {
+      land(i);
+      return;
+    }
+    cloth->apply(t, b);
+    if (t == Transition::SlideToRoll) emit(EventType::SlideToRoll, i);
+    if (t == Transition::RollToRest) emit(EventType::RollToRest, i);
+    if (t == Transition::SpinEnds && before == MotionState::Spinning) emit(EventType::SpinToRest, i);
+    refresh(i);
+  }
+
+  void land(size_t i) {
+    Ball& b = balls[i];
+    b.pos.z() = R();
+    for (const auto& h : features.holes) {
+      if ((b.pos.head<2>() - h.c).norm() < h.radius) {
+        pocket(i, h.name, h.c);
+        refresh(i);
+        return;
+      }
+    }
+    emit(EventType::Land, i, -1, {}, -b.vel.z());
+    resolveFixedContact(b.vel, b.ang_vel, Vec3::UnitZ(), p.e_slate, p.u_s, R(), p.ball_mass);
+    if (b.vel.z() > kSettleSpeed) {
+      emit(EventType::Airborne, i);  // bounces: still airborne
+    } else {
+      b.vel.z() = 0.0;
+      b.state = cloth->classify(b);
+    }
+    refresh(i);
+  }
+
+  void tableContact(size_t i) {
+    Ball& b = balls[i];
+    const TableHit hit = tracks[i].hit;
+    if (hit.kind == FeatureKind::Hole) {
+      const auto& h = features.holes[static_cast<size_t>(hit.index)];
+      pocket(i, h.name, h.c);
+      refresh(i);
+      return;
+    }
+    if (hit.kind == FeatureKind::OverNose) {
+      offTable(i, features.noses[static_cast<size_t>(hit.index)].name);
+      refresh(i);
+      return;
+    }
+    const Vec3 normal = contactNormal(b.pos, features, hit.kind, hit.index, p.cushion_height);
+    const double speed =
+        resolveFixedContact(b.vel, b.ang_vel, normal, p.e_c, p.u_c, R(), p.ball_mass);
+    if (speed <= 0.0) {
+      // Grazed without approaching: nothing happens; skip this feature until the motion changes.
+      tracks[i].ignore_kind = static_cast<int>(hit.kind);
+      tracks[i].ignore_index = hit.index;
+      predictTable(i);
+      return;
+    }
+    const std::string& name = hit.kind == FeatureKind::Nose
+                                  ? features.noses[static_cast<size_t>(hit.index)].name
+                                  : features.points[static_cast<size_t>(hit.index)].name;
+    emit(EventType::BallCushion, i, -1, name, speed);
+    settle(i);
+    refresh(i);
+  }
+
+  void ballBall(size_t i, size_t j) {
+    Ball& a = balls[i];
+    Ball& b = balls[j];
+    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, p.e_b,
+                                         p.u_b, R(), p.ball_mass);
+    if (speed <= 0.0) {
+      pair_t[i * n() + j] = kNever;  // touching but separating: no contact
+      return;
+    }
+    emit(EventType::BallBall, i, b.id, {}, speed);
+    settle(i);
+    settle(j);
+    refresh(i);
+    refresh(j);
+  }
+
+  // --- the loop --------------------------------------------------------------------------
+
+  enum class Next { None, Transition, Table, Pair };
+
+  Next findNext(double& t, size_t& i, size_t& j) const {
+    Next kind = Next::None;
+    t = kNever;
+    for (size_t k = 0; k < n(); ++k) {
+      if (tracks[k].t_end < t) {
+        t = tracks[k].t_end;
+        kind = Next::Transition;
+        i = k;
+      }
+    }
+    for (size_t k = 0; k < n(); ++k) {
+      if (tracks[k].hit.t < t) {
+        t = tracks[k].hit.t;
+        kind = Next::Table;
+        i = k;
+      }
+    }
+    for (size_t a = 0; a < n(); ++a) {
+      for (size_t b = a + 1; b < n(); ++b) {
+        if (pair_t[a * n() + b] < t) {
+          t = pair_t[a * n() + b];
+          kind = Next::Pair;
+          i = a;
+          j = b;
+        }
+      }
+    }
+    return kind;
+  }
+
+  void runLoop() {
+    while (true) {
+      double t;
+      size_t i = 0, j = 0;
+      const Next next = findNext(t, i, j);
+      if (next == Next::None) break;
+      if (t > options.max_time || out.events.size() >= kMaxEvents) {
+        advanceTo(options.max_time);
+        out.truncated = true;
+        break;
+      }
+      advanceTo(std::max(t, now));
+      ++out.stats.events;
+      switch (next) {
+        case Next::Transition: transition(i); break;
+        case Next::Table: tableContact(i); break;
+        case Next::Pair: ballBall(i, j); break;
+        case Next::None: break;
+      }
+      for (const auto& fix : checkBalls(balls, features, p)) {
+        applyFix(fix);
+      }
+    }
+  }
+
+  void applyFix(const WatchdogFix& fix) {
+    const size_t i = fix.index;
+    Ball& b = balls[i];
+    emit(EventType::Respot, i, -1, fix.reason);
+    if (fix.remove) {
+      b.state = MotionState::OffTable;
+      b.vel.setZero();
+      b.ang_vel.setZero();
+    } else {
+      b.pos = Vec3(fix.spot.x(), fix.spot.y(), R());
+      b.vel.setZero();
+      b.ang_vel.setZero();
+      b.state = MotionState::Stationary;
+    }
+    refresh(i);
+  }
+
+  ShotOutcome finish() {
+    if (!out.truncated) out.t_rest = now;
+    recordSamples(now);
+    out.balls = balls;
+    return std::move(out);
+  }
+
+  void reset(const SimOptions& o) {
+    out = ShotOutcome{};
+    options = o;
+    now = 0.0;
+    next_sample = 0;
+  }
+
+  void startTracks() {
+    for (size_t i = 0; i < n(); ++i) {
+      tracks[i] = Track{};
+      tracks[i].t_end = kNever;
+    }
+    for (size_t i = 0; i < n(); ++i) refresh(i);
+  }
+};
+
+std::string checkPlacement(const std::vector<Ball>& balls, const table::TableGeometry& geometry,
+                           const table::PhysicsParams& params) {
+  std::vector<bool> seen(kMaxBallId + 1, false);
+  for (const Ball& b : balls) {
+    if (b.id < 0 || b.id > kMaxBallId) {
+      return "ball id " + std::to_string(b.id) + " is out of range 0..15";
+    }
+    if (seen[static_cast<size_t>(b.id)]) return "ball " + std::to_string(b.id) + " is given twice";
+    seen[static_cast<size_t>(b.id)] = true;
+    if (!b.pos.allFinite() || !b.vel.allFinite() || !b.ang_vel.allFinite()) {
+      return "ball " + std::to_string(b.id) + " has a non-finite position or velocity";
+    }
+  }
+  const TableFeatures features = TableFeatures::from(geometry);
+  for (const Ball& b : balls) {
+    if (!onTable(b.state)) continue;
+    if (!onSlate(b.pos.head<2>(), features, params)) {
+      return "ball " + std::to_string(b.id) + " is off the slate";
+    }
+  }
+  const double min_dist = 2.0 * params.ball_radius - 1e-9;
+  for (size_t i = 0; i < balls.size(); ++i) {
+    for (size_t k = i + 1; k < balls.size(); ++k) {
+      if (!onTable(balls[i].state) || !onTable(balls[k].state)) continue;
+      if ((balls[i].pos - balls[k].pos).norm() < min_dist) {
+        return "ball " + std::to_string(balls[i].id) + " overlaps ball " +
+               std::to_string(balls[k].id);
+      }
+    }
+  }
+  return {};
+}
+
+Simulation::Simulation(const table::TableSpec& spec, const table::TableGeometry& geometry)
+    : impl_(std::make_unique<Impl>(spec, geometry)) {}
+
+Simulation::~Simulation() = default;
+
+Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
+  if (auto reason = checkPlacement(balls, impl_->geometry, impl_->p); !reason.empty()) {
+    return Result<bool>::fail(reason);
+  }
+  Impl& s = *impl_;
+  s.balls = balls;
+  std::sort(s.balls.begin(), s.balls.end(), [](const Ball& a, const Ball& b) { return a.id < b.id; });
+  s.world = std::make_unique<OdeWorld>(s.p.ball_mass, s.R());
+  for (Ball& b : s.balls) {
+    if (onTable(b.state) && b.state != MotionState::Airborne) {
+      b.pos.z() = s.R();
+      b.vel.z() = 0.0;
+      b.state = s.cloth->classify(b);
+    }
+    s.world->addBall(b);
+  }
+  s.tracks.assign(s.n(), Track{});
+  s.pair_t.assign(s.n() * s.n(), kNever);
+  s.acc.assign(s.n(), Vec3::Zero());
+  s.ang_acc.assign(s.n(), Vec3::Zero());
+  s.now = 0.0;
+  return Result<bool>::ok(true);
+}
+
+Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& options) {
+  Impl& s = *impl_;
+  auto cue = std::find_if(s.balls.begin(), s.balls.end(), [](const Ball& b) { return b.id == kCueBall; });
+  if (cue == s.balls.end() || !onTable(cue->state)) {
+    return Result<ShotOutcome>::fail("no cue ball on the table");
+  }
+  const auto strike = strikeCueBall(shot, s.p);
+  if (!strike) return Result<ShotOutcome>::fail(strike.error());
+
+  s.reset(options);
+  const size_t i = static_cast<size_t>(cue - s.balls.begin());
+  cue->vel = strike->vel;
+  cue->ang_vel = strike->ang_vel;
+  s.emit(EventType::Strike, i, -1, {}, strike->vel.norm());
+  // An elevated cue drives the ball into the slate, which bounces it (a jump when hard enough).
+  if (cue->vel.z() < 0.0) {
+    resolveFixedContact(cue->vel, cue->ang_vel, Vec3::UnitZ(), s.p.e_slate, s.p.u_s, s.R(),
+                        s.p.ball_mass);
+  }
+  cue->state = MotionState::Sliding;
+  s.settle(i);
+  s.startTracks();
+  s.runLoop();
+  return Result<ShotOutcome>::ok(s.finish());
+}
+
+ShotOutcome Simulation::run(const SimOptions& options) {
+  Impl& s = *impl_;
+  s.reset(options);
+  s.startTracks();
+  s.runLoop();
+  return s.finish();
+}
+
+const std::vector<Ball>& Simulation::balls() const { return impl_->balls; }
+
+}  // namespace pool::physics

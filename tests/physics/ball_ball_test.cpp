@@ -1,0 +1,148 @@
+// Ball–ball collisions against Alciatore's technical proofs: the 30° and 90° rules, stun stop, throw.
+#include <gtest/gtest.h>
+
+#include "fixtures.h"
+#include "physics/ball_ball_alciatore.h"
+
+namespace pool::physics::test {
+namespace {
+
+constexpr double R = 0.028575;
+
+/// A cue ball at the origin heading +x at speed v with spin w hits an object ball at cut angle
+/// phi (degrees; + = object ball to the left). Returns the outcome sampled at 2 kHz.
+ShotOutcome cut(const table::TableSpec& spec, double phi_deg, double v, const Vec3& w,
+                double run_up = 0.3) {
+  const double phi = phi_deg * kDeg;
+  const Vec3 contact(run_up, 0.0, 0.0);
+  const Vec2 ob = contact.head<2>() + 2.0 * R * Vec2(std::cos(phi), std::sin(phi));
+  return runOpen(spec, {movingBall(0, 0.0, 0.0, Vec3(v, 0, 0), w), ballAt(1, ob.x(), ob.y())},
+                 2000.0);
+}
+
+double firstContactTime(const ShotOutcome& o) {
+  for (const auto& e : o.events) {
+    if (e.type == EventType::BallBall) return e.t;
+  }
+  return std::nan("");
+}
+
+/// The cue ball's heading once it rolls again after the collision (its path is straight then).
+double cueBallFinalHeading(const ShotOutcome& o) {
+  const double t0 = firstContactTime(o);
+  double t_roll = std::nan("");
+  for (const auto& e : o.events) {
+    if (e.type == EventType::SlideToRoll && e.ball_a == 0 && e.t > t0) t_roll = e.t;
+  }
+  return headingAfter(o, 0, t_roll);
+}
+
+double thirtyDegreeRule(double phi) {
+  const double s = std::sin(phi * kDeg), c = std::cos(phi * kDeg);
+  return std::atan(s * c / (s * s + 0.4)) / kDeg;
+}
+
+// TP A-4: a rolling cue ball on ideal balls (e = 1, no friction) ends at θc from its line,
+// tan θc = sin φ cos φ / (sin² φ + 2/5). The engine's result depends only on exact impulses and
+// exact sliding, so 0.05° is ample (the issue allows 1°).
+TEST(BallBall, ThirtyDegreeRuleWithIdealBalls) {
+  auto spec = openSpec();
+  spec.params.e_b = 1.0;
+  spec.params.u_b = 0.0;
+  EXPECT_NEAR(thirtyDegreeRule(30), 33.67, 0.01);
+  EXPECT_NEAR(thirtyDegreeRule(10), 21.68, 0.01);
+  for (double phi = 10; phi <= 60; phi += 5) {
+    const double v = 1.0;
+    const auto out = cut(spec, phi, v, Vec3(0, v / R, 0));  // rolling
+    const double theta = -cueBallFinalHeading(out);        // deflects to the right
+    EXPECT_NEAR(theta, thirtyDegreeRule(phi), 0.05) << "phi = " << phi;
+  }
+}
+
+// PHYSICS.md: "with the default friction it comes out about 1° less". Restitution is what does
+// that: e_b = 0.95 keeps (1 − e)/2 of the normal speed in the cue ball, pulling it toward its
+// original line; we check 0.5°–2° less with e_b = 0.95 and no friction. Ball–ball friction acting
+// on the full slip (the topspin's vertical slip included, which is also why a rolling cue ball
+// throws about half as much, below) takes some topspin from the cue ball and so bends it less:
+// with both, the angle comes out within 1° of the ideal one (measured +0.2° to +0.6°).
+TEST(BallBall, ThirtyDegreeRuleWithRestitutionIsAboutOneDegreeLess) {
+  auto inelastic = openSpec();
+  inelastic.params.u_b = 0.0;
+  const auto realistic = openSpec();
+  for (double phi = 10; phi <= 60; phi += 10) {
+    const double v = 1.0;
+    const double ideal = thirtyDegreeRule(phi);
+    const double theta = -cueBallFinalHeading(cut(inelastic, phi, v, Vec3(0, v / R, 0)));
+    EXPECT_GT(ideal - theta, 0.5) << "phi = " << phi << " theta = " << theta;
+    EXPECT_LT(ideal - theta, 2.0) << "phi = " << phi << " theta = " << theta;
+    const double full = -cueBallFinalHeading(cut(realistic, phi, v, Vec3(0, v / R, 0)));
+    EXPECT_NEAR(full, ideal, 1.0) << "phi = " << phi;
+  }
+}
+
+// The 90° rule: a stun cue ball leaves along the tangent line, 90° from the object ball. Exact
+// with ideal balls; a few degrees less with e = 0.95 and throw.
+TEST(BallBall, NinetyDegreeRuleForStunCuts) {
+  auto ideal = openSpec();
+  ideal.params.e_b = 1.0;
+  ideal.params.u_b = 0.0;
+  for (double phi : {15.0, 30.0, 45.0, 60.0}) {
+    // A fast ball from 1 mm away arrives with negligible spin (stun).
+    auto out = cut(ideal, phi, 3.0, Vec3::Zero(), 0.001);
+    double t0 = firstContactTime(out);
+    double cue = headingAfter(out, 0, t0 + 1e-6);
+    double ob = headingAfter(out, 1, t0 + 1e-6);
+    EXPECT_NEAR(ob - cue, 90.0, 0.1) << "phi = " << phi;
+
+    out = cut(openSpec(), phi, 3.0, Vec3::Zero(), 0.001);
+    t0 = firstContactTime(out);
+    cue = headingAfter(out, 0, t0 + 1e-6);
+    ob = headingAfter(out, 1, t0 + 1e-6);
+    EXPECT_LT(ob - cue, 90.0) << "phi = " << phi;
+    EXPECT_GT(ob - cue, 80.0) << "phi = " << phi;
+  }
+}
+
+// A straight full-ball stun shot: the cue ball stops dead, to within (1 − e) of its speed.
+TEST(BallBall, FullBallStunStopsTheCueBall) {
+  const auto spec = openSpec();
+  const double v = 2.0;
+  const auto out = cut(spec, 0.0, v, Vec3::Zero(), 0.001);
+  const double t0 = firstContactTime(out);
+  ASSERT_FALSE(std::isnan(t0));
+  for (const auto& s : out.trajectory) {
+    if (s.t <= t0) continue;
+    EXPECT_LT(s.balls[0].vel.norm(), (1.0 - spec.params.e_b) * v);
+    EXPECT_NEAR(s.balls[1].vel.x(), (1.0 + spec.params.e_b) / 2.0 * v, 0.02);
+    break;
+  }
+}
+
+// Cut-induced throw (Alciatore): stun, 30° cut: about 4–5° at 0.45 m/s, about 1.5° at 3 m/s; a
+// rolling cue ball throws about half as much. The object ball's heading is compared with the
+// line of centres at impact, measured within 1 µs of the contact.
+TEST(BallBall, CutInducedThrowFallsWithSpeed) {
+  const auto spec = openSpec();
+  auto throwAngle = [&](double v, bool rolling) {
+    const auto out = cut(spec, 30.0, v, rolling ? Vec3(0, v / R, 0) : Vec3::Zero(), 0.001);
+    const double t0 = firstContactTime(out);
+    return 30.0 - headingAfter(out, 1, t0 + 1e-6);
+  };
+  const double slow = throwAngle(0.45, false);
+  const double fast = throwAngle(3.0, false);
+  EXPECT_GT(slow, 3.5);
+  EXPECT_LT(slow, 5.5);
+  EXPECT_GT(fast, 1.0);
+  EXPECT_LT(fast, 2.2);
+  const double rolling = throwAngle(0.45, true);
+  EXPECT_GT(rolling, 0.3 * slow);
+  EXPECT_LT(rolling, 0.7 * slow);
+}
+
+TEST(BallBall, FrictionFitFallsWithSlidingSpeed) {
+  EXPECT_NEAR(alciatoreFriction(0.0), 0.11795, 1e-6);
+  EXPECT_LT(alciatoreFriction(3.0), alciatoreFriction(0.5));
+}
+
+}  // namespace
+}  // namespace pool::physics::test

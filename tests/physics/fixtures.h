@@ -1,0 +1,101 @@
+// Shared fixtures of the physics tests: an open cloth without cushions, and helpers to run one ball.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "physics/simulation.h"
+#include "table/table_geometry.h"
+#include "table/table_spec.h"
+
+namespace pool::physics::test {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+/// A 100 m × 100 m slate with no cushions and no pockets: closed-form motion, undisturbed.
+inline table::TableSpec openSpec() {
+  table::TableSpec s;
+  s.name = "open";
+  s.length = 100.0;
+  s.width = 100.0;
+  return s;
+}
+
+inline table::TableGeometry openGeometry(const table::TableSpec& s) {
+  table::TableGeometry g;
+  g.length = s.length;
+  g.width = s.width;
+  return g;
+}
+
+inline Ball ballAt(int id, double x, double y, double R = 0.028575) {
+  Ball b;
+  b.id = id;
+  b.pos = Vec3(x, y, R);
+  return b;
+}
+
+/// Events of one type for one ball.
+inline std::vector<Event> eventsOf(const ShotOutcome& o, EventType type, int ball) {
+  std::vector<Event> out;
+  for (const auto& e : o.events) {
+    if (e.type == type && e.ball_a == ball) out.push_back(e);
+  }
+  return out;
+}
+
+inline const Ball& ballById(const ShotOutcome& o, int id) {
+  for (const auto& b : o.balls) {
+    if (b.id == id) return b;
+  }
+  return o.balls.front();
+}
+
+/// Runs one shot on the open cloth.
+inline ShotOutcome shootOpen(const table::TableSpec& spec, std::vector<Ball> balls,
+                             const CueShot& shot, SimOptions options = {}) {
+  Simulation sim(spec, openGeometry(spec));
+  auto placed = sim.setBalls(balls);
+  if (!placed) return {};
+  auto out = sim.shoot(shot, options);
+  return out ? *out : ShotOutcome{};
+}
+
+}  // namespace pool::physics::test
+
+namespace pool::physics::test {
+
+/// A ball already moving on the open cloth (state from its velocities), for collision tests.
+inline Ball movingBall(int id, double x, double y, const Vec3& vel, const Vec3& ang_vel,
+                       double R = 0.028575) {
+  Ball b = ballAt(id, x, y, R);
+  b.vel = vel;
+  b.ang_vel = ang_vel;
+  b.state = MotionState::Sliding;
+  return b;
+}
+
+/// Runs balls already in motion on the open cloth, sampling at `hz`.
+inline ShotOutcome runOpen(const table::TableSpec& spec, const std::vector<Ball>& balls,
+                           double hz = 0.0) {
+  Simulation sim(spec, openGeometry(spec));
+  if (!sim.setBalls(balls)) return {};
+  SimOptions opt;
+  opt.sample_hz = hz;
+  return sim.run(opt);
+}
+
+/// The direction (degrees, atan2 in the table plane) of a ball's velocity in the first sample
+/// at or after time t.
+inline double headingAfter(const ShotOutcome& o, int id, double t) {
+  for (const auto& s : o.trajectory) {
+    if (s.t < t) continue;
+    for (const auto& b : s.balls) {
+      if (b.id == id) return std::atan2(b.vel.y(), b.vel.x()) / kDeg;
+    }
+  }
+  return std::nan("");
+}
+
+}  // namespace pool::physics::test
