@@ -461,8 +461,10 @@ Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& opt
   cue->ang_vel = strike->ang_vel;
   s.emit(EventType::Strike, i, -1, {}, strike->vel.norm());
   // An elevated cue drives the ball into the slate, which bounces it (a jump when hard enough).
+  // That impact happens while the tip is still on the ball, which pins it: the cloth takes the
+  // normal impulse but no friction, so a massé leaves along the cue's line and curves after.
   if (cue->vel.z() < 0.0) {
-    resolveFixedContact(cue->vel, cue->ang_vel, Vec3::UnitZ(), s.p.e_slate, s.p.u_s, s.R(),
+    resolveFixedContact(cue->vel, cue->ang_vel, Vec3::UnitZ(), s.p.e_slate, 0.0, s.R(),
                         s.p.ball_mass);
   }
   cue->state = MotionState::Sliding;

@@ -37,8 +37,10 @@ struct MeshPart {
 /// What the physics collides with. Built from the spec by `buildTableGeometry`, written to an OBJ
 /// by the table generator, and read back through assimp by `loadTableGeometry`.
 struct TableGeometry {
+  std::string name;     ///< the spec's name (written in the OBJ header)
   double length = 0.0;  ///< playing surface along x, m
   double width = 0.0;   ///< playing surface along y, m
+  double nose_height = 0.0;  ///< cushion nose above the slate (the spec's cushion_height), m
   std::vector<NoseSegment> noses;  ///< 6 rails + 2 jaws per pocket
   std::vector<PocketHole> holes;   ///< 6
   std::vector<MeshPart> parts;     ///< triangle mesh, for ODE trimesh collisions and rendering

@@ -99,3 +99,57 @@ inline double headingAfter(const ShotOutcome& o, int id, double t) {
 }
 
 }  // namespace pool::physics::test
+
+#include "table/rack.h"
+
+namespace pool::physics::test {
+
+/// The shipped 9-ft table, its geometry read through assimp as the programs read it.
+struct RealTable {
+  table::TableSpec spec;
+  table::TableGeometry geometry;
+};
+
+inline const RealTable& realTable() {
+  static const RealTable t = [] {
+    RealTable r;
+    auto spec = table::loadTableSpec("wpa-9ft");
+    if (!spec) throw std::runtime_error(spec.error());
+    r.spec = *spec;
+    auto geometry = table::loadTableGeometry(r.spec);
+    if (!geometry) throw std::runtime_error(geometry.error());
+    r.geometry = *geometry;
+    return r;
+  }();
+  return t;
+}
+
+/// Shoots on the real table; fails the test (empty outcome) if placement or shot are refused.
+inline ShotOutcome shootReal(const std::vector<Ball>& balls, const CueShot& shot,
+                             SimOptions options = {}) {
+  const auto& t = realTable();
+  Simulation sim(t.spec, t.geometry);
+  if (!sim.setBalls(balls)) return {};
+  auto out = sim.shoot(shot, options);
+  return out ? *out : ShotOutcome{};
+}
+
+/// The 8-ball break of the issue: rack of seed 0, cue ball on the head spot, 8 m/s at the apex.
+inline std::vector<Ball> breakBalls() {
+  const auto& t = realTable();
+  const double R = t.spec.params.ball_radius;
+  const auto spots = table::spotsFor(t.spec);
+  std::vector<Ball> balls{ballAt(0, spots.head_spot.x(), spots.head_spot.y(), R)};
+  for (const auto& p : table::rackBalls(table::RackType::EightBall, t.spec, R, 0)) {
+    balls.push_back(ballAt(p.id, p.pos.x(), p.pos.y(), R));
+  }
+  return balls;
+}
+
+inline CueShot breakShot() {
+  CueShot shot;
+  shot.speed = 8.0;
+  return shot;
+}
+
+}  // namespace pool::physics::test

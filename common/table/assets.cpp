@@ -1,0 +1,46 @@
+// Asset folder lookup: $POOL_ASSETS, then next to the executable, then the source tree.
+#include "table/assets.h"
+
+#include <cstdlib>
+#include <system_error>
+
+namespace pool::table {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// An assets folder candidate counts only if it holds the table specs.
+bool looksLikeAssets(const fs::path& dir) {
+  std::error_code ec;
+  return fs::is_directory(dir / "tables", ec);
+}
+
+std::optional<fs::path> besideExecutable() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec || exe.empty()) return std::nullopt;
+  const fs::path dir = exe.parent_path();
+  for (const fs::path& candidate : {dir / ".." / ".." / "assets", dir / ".." / "share" / "pool" / "assets"}) {
+    if (looksLikeAssets(candidate)) return candidate.lexically_normal();
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+fs::path assetsDir() {
+  if (const char* env = std::getenv("POOL_ASSETS"); env != nullptr && *env != '\0') {
+    return fs::path(env);
+  }
+  if (auto beside = besideExecutable()) return *beside;
+  return fs::path(POOL_SOURCE_ASSETS_DIR);
+}
+
+std::optional<fs::path> findAsset(std::string_view relative) {
+  const fs::path candidate = assetsDir() / fs::path(relative);
+  std::error_code ec;
+  if (fs::exists(candidate, ec)) return candidate;
+  return std::nullopt;
+}
+
+}  // namespace pool::table

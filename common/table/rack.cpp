@@ -1,0 +1,160 @@
+// Spots, 8-ball and 9-ball racks (deterministic shuffles) and re-spotting on the long string.
+#include "table/rack.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace pool::table {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+/// splitmix64: a tiny PRNG whose output is fixed by its seed on every platform.
+class SplitMix64 {
+ public:
+  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
+
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+
+  /// Uniform in [0, n), n > 0, without modulo bias.
+  std::uint64_t below(std::uint64_t n) {
+    const std::uint64_t threshold = (0 - n) % n;
+    for (;;) {
+      const std::uint64_t r = next();
+      if (r >= threshold) return r % n;
+    }
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+/// Fisher–Yates with our own PRNG (std::shuffle's results differ between standard libraries).
+void shuffle(std::vector<int>& v, SplitMix64& rng) {
+  for (std::size_t i = v.size(); i > 1; --i) {
+    const auto j = static_cast<std::size_t>(rng.below(i));
+    std::swap(v[i - 1], v[j]);
+  }
+}
+
+/// Rack positions row by row from the apex on the foot spot; row k holds sizes[k] balls, listed
+/// from −y (right) to +y (left).
+std::vector<Vec2> rackSlots(const TableSpec& spec, double ball_radius, double gap, const std::vector<int>& sizes) {
+  const double pitch = 2.0 * ball_radius + gap;
+  const double row_step = pitch * std::sqrt(3.0) / 2.0;
+  const Vec2 apex = spotsFor(spec).foot_spot;
+  std::vector<Vec2> slots;
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    const int n = sizes[k];
+    for (int j = 0; j < n; ++j) {
+      const double y = (j - (n - 1) / 2.0) * pitch;
+      slots.push_back(apex + Vec2(static_cast<double>(k) * row_step, y));
+    }
+  }
+  return slots;
+}
+
+/// Fills every slot not yet taken with `rest`, in slot order.
+std::vector<BallPlacement> place(const std::vector<Vec2>& slots, std::vector<int> ids_by_slot, const std::vector<int>& rest) {
+  std::size_t next = 0;
+  for (int& id : ids_by_slot) {
+    if (id == 0) id = rest[next++];
+  }
+  std::vector<BallPlacement> out;
+  for (std::size_t i = 0; i < slots.size(); ++i) out.push_back(BallPlacement{ids_by_slot[i], slots[i]});
+  return out;
+}
+
+std::vector<BallPlacement> eightBall(const TableSpec& spec, double ball_radius, std::uint64_t seed, double gap) {
+  const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 4, 5});
+  constexpr std::size_t kCentre = 4, kBackRight = 10, kBackLeft = 14;
+  SplitMix64 rng(seed);
+  const bool solid_left = rng.below(2) == 0;
+  const int solid = 1 + static_cast<int>(rng.below(7));
+  const int stripe = 9 + static_cast<int>(rng.below(7));
+  std::vector<int> ids(slots.size(), 0);
+  ids[kCentre] = 8;
+  ids[kBackLeft] = solid_left ? solid : stripe;
+  ids[kBackRight] = solid_left ? stripe : solid;
+  std::vector<int> rest;
+  for (int id = 1; id <= 15; ++id) {
+    if (id != 8 && id != solid && id != stripe) rest.push_back(id);
+  }
+  shuffle(rest, rng);
+  return place(slots, ids, rest);
+}
+
+std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, std::uint64_t seed, double gap) {
+  const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 2, 1});
+  constexpr std::size_t kApex = 0, kCentre = 4;
+  SplitMix64 rng(seed);
+  std::vector<int> ids(slots.size(), 0);
+  ids[kApex] = 1;
+  ids[kCentre] = 9;
+  std::vector<int> rest{2, 3, 4, 5, 6, 7, 8};
+  shuffle(rest, rng);
+  return place(slots, ids, rest);
+}
+
+bool isFree(const Vec2& p, double ball_radius, const std::vector<Vec2>& occupied) {
+  return std::all_of(occupied.begin(), occupied.end(), [&](const Vec2& c) { return (c - p).norm() >= 2.0 * ball_radius; });
+}
+
+/// Points on the long string (y = 0) just clear of each ball that blocks it: behind (+x) or in front.
+std::vector<double> clearPoints(double ball_radius, const std::vector<Vec2>& occupied, bool behind) {
+  constexpr double kClearance = 5e-5;  // m, like the rack's default gap
+  const double d = 2.0 * ball_radius + kClearance;
+  std::vector<double> xs;
+  for (const Vec2& c : occupied) {
+    if (std::abs(c.y()) >= d) continue;
+    const double half = std::sqrt(d * d - c.y() * c.y());
+    xs.push_back(behind ? c.x() + half : c.x() - half);
+  }
+  return xs;
+}
+
+}  // namespace
+
+Spots spotsFor(const TableSpec& spec) {
+  Spots s;
+  s.head_spot = Vec2(-spec.length / 4.0, 0.0);
+  s.foot_spot = Vec2(spec.length / 4.0, 0.0);
+  s.centre_spot = Vec2(0.0, 0.0);
+  s.head_string_x = -spec.length / 4.0;
+  return s;
+}
+
+std::optional<RackType> rackTypeFromString(std::string_view name) {
+  if (name == "8ball") return RackType::EightBall;
+  if (name == "9ball") return RackType::NineBall;
+  return std::nullopt;
+}
+
+std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius, std::uint64_t seed,
+                                     double gap) {
+  return type == RackType::EightBall ? eightBall(spec, ball_radius, seed, gap) : nineBall(spec, ball_radius, seed, gap);
+}
+
+Vec2 respotPosition(const TableSpec& spec, double ball_radius, const std::vector<Vec2>& occupied) {
+  const Vec2 foot = spotsFor(spec).foot_spot;
+  if (isFree(foot, ball_radius, occupied)) return foot;
+  std::vector<double> behind = clearPoints(ball_radius, occupied, true);
+  std::sort(behind.begin(), behind.end());
+  for (double x : behind) {
+    if (x >= foot.x() && x <= spec.length / 2.0 - ball_radius && isFree({x, 0.0}, ball_radius, occupied)) return {x, 0.0};
+  }
+  std::vector<double> ahead = clearPoints(ball_radius, occupied, false);
+  std::sort(ahead.begin(), ahead.end(), std::greater<>());
+  for (double x : ahead) {
+    if (x <= foot.x() && x >= -spec.length / 2.0 + ball_radius && isFree({x, 0.0}, ball_radius, occupied)) return {x, 0.0};
+  }
+  return foot;  // the whole long string is taken: nothing better exists
+}
+
+}  // namespace pool::table

@@ -1,0 +1,226 @@
+// Reads table specs from JSON (by shipped name or path), with one-line reasons naming the bad field.
+//
+// Mesh paths in a spec ("collision_mesh", "render_mesh") are relative to the spec file's folder
+// (absolute paths are kept); both are optional, render_mesh defaults to collision_mesh.
+#include "table/table_spec.h"
+
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "table/assets.h"
+#include "table/table_layout.h"
+
+namespace pool::table {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+/// A numeric field's rule and the reason given when it is broken.
+struct NumberRule {
+  bool (*ok)(double);
+  const char* reason;
+};
+
+const NumberRule kPositive{[](double v) { return v > 0.0; }, "must be a finite number > 0"};
+const NumberRule kAnyFinite{[](double) { return true; }, "must be a finite number"};
+const NumberRule kSlate{[](double v) { return v > 0.0 && v <= 0.05; }, "must be a finite number in (0, 0.05]"};
+const NumberRule kJawAngle{[](double v) { return v > 90.0 && v < 180.0; }, "must be a finite number in (90, 180)"};
+
+struct NumberField {
+  const char* key;
+  double* target;
+  const NumberRule* rule;
+};
+
+/// Reads the listed numbers from `obj`, then rejects keys that are neither listed nor in `other_known`.
+/// Returns "" or a reason.
+std::string readFields(const json& obj, const std::string& prefix, std::initializer_list<NumberField> fields,
+                       std::initializer_list<const char*> other_known) {
+  for (const NumberField& f : fields) {
+    const auto it = obj.find(f.key);
+    const std::string where = prefix + f.key + ": ";
+    if (it == obj.end()) return where + "missing (" + f.rule->reason + ")";
+    if (!it->is_number()) return where + f.rule->reason;
+    const double v = it->get<double>();
+    if (!std::isfinite(v) || !f.rule->ok(v)) return where + f.rule->reason;
+    *f.target = v;
+  }
+  for (const auto& [key, value] : obj.items()) {
+    bool known = false;
+    for (const NumberField& f : fields) known = known || key == f.key;
+    for (const char* k : other_known) known = known || key == k;
+    if (!known) return prefix + key + ": unknown field";
+  }
+  return "";
+}
+
+std::string readPocket(const json& root, const char* key, PocketSpec& out) {
+  const auto it = root.find(key);
+  const std::string prefix = std::string(key) + ".";
+  if (it == root.end()) return std::string(key) + ": missing (must be an object)";
+  if (!it->is_object()) return std::string(key) + ": must be an object";
+  return readFields(*it, prefix,
+                    {{"mouth", &out.mouth, &kPositive},
+                     {"jaw_angle_deg", &out.jaw_angle_deg, &kJawAngle},
+                     {"hole_radius", &out.hole_radius, &kPositive},
+                     {"hole_offset", &out.hole_offset, &kAnyFinite}},
+                    {});
+}
+
+std::string readParams(const json& root, PhysicsParams& params) {
+  const auto it = root.find("params");
+  if (it == root.end()) return "";
+  if (!it->is_object()) return "params: must be an object";
+  for (const auto& [key, value] : it->items()) {
+    const std::string where = "params." + key + ": ";
+    if (key == "u_b" && value.is_null()) {
+      params.u_b.reset();
+      continue;
+    }
+    const double v = value.is_number() ? value.get<double>() : std::nan("");
+    const std::string reason = setParam(params, key, v);
+    if (!reason.empty()) return where + reason;
+  }
+  const std::string reason = validate(params);
+  return reason.empty() ? "" : "params." + reason;
+}
+
+/// Reads an optional string field; "" or a reason.
+std::string readString(const json& root, const char* key, std::string& out) {
+  const auto it = root.find(key);
+  if (it == root.end()) return "";
+  if (!it->is_string()) return std::string(key) + ": must be a string";
+  out = it->get<std::string>();
+  return "";
+}
+
+fs::path resolveMesh(const std::string& text, const fs::path& spec_dir) {
+  if (text.empty()) return {};
+  const fs::path p(text);
+  return (p.is_absolute() ? p : spec_dir / p).lexically_normal();
+}
+
+/// Checks that one pocket kind fits a ball and its hole neither reaches the jaws nor leaves the slate.
+std::string checkPocket(const TableSpec& spec, const char* key, const PocketSpec& pocket, bool corner) {
+  const double r = spec.params.ball_radius;
+  const std::string where = std::string(key) + ".";
+  if (pocket.mouth <= 2.0 * r) return where + "mouth: must be wider than a ball (2 * ball_radius)";
+  if (pocket.hole_radius <= r) return where + "hole_radius: must be larger than ball_radius";
+  const Eigen::Vector2d outer = detail::slateHalfExtent(spec);
+  const std::vector<detail::PocketLayout> pockets = detail::pocketLayouts(spec);
+  for (const detail::PocketLayout& p : pockets) {
+    if (p.corner != corner) continue;
+    for (int k = 0; k < 2; ++k) {
+      if (std::abs(p.hole_centre[k]) + p.hole_radius + detail::kEdgeMargin >= outer[k]) {
+        return where + "hole_radius: the hole reaches beyond the rail";
+      }
+    }
+  }
+  for (const detail::JawLayout& j : detail::jawLayouts(spec)) {
+    const detail::PocketLayout& p = pockets[static_cast<std::size_t>(j.pocket)];
+    if (p.corner == corner && (p.hole_centre - j.point).norm() <= p.hole_radius) {
+      return where + "hole_radius: the hole reaches the jaw points";
+    }
+  }
+  return "";
+}
+
+/// Checks that rails have positive length and the pockets' slate tiles do not overlap.
+std::string checkLayout(const TableSpec& spec) {
+  const double s = spec.corner.mouth / std::sqrt(2.0);
+  if (spec.length / 2.0 - s - spec.side.mouth / 2.0 <= 0.0) return "length: too short for its pockets";
+  if (spec.width / 2.0 - s <= 0.0) return "width: too narrow for its pockets";
+  const auto pockets = detail::pocketLayouts(spec);
+  for (std::size_t i = 0; i < pockets.size(); ++i) {
+    for (std::size_t k = i + 1; k < pockets.size(); ++k) {
+      const detail::Tile a = detail::holeTile(spec, pockets[i]);
+      const detail::Tile b = detail::holeTile(spec, pockets[k]);
+      const bool apart_x = a.max.x() <= b.min.x() || b.max.x() <= a.min.x();
+      const bool apart_y = a.max.y() <= b.min.y() || b.max.y() <= a.min.y();
+      if (!apart_x && !apart_y) {
+        const bool same_end = pockets[i].reference.x() == pockets[k].reference.x();
+        return same_end ? "width: too narrow for its pockets" : "length: too short for its pockets";
+      }
+    }
+  }
+  return "";
+}
+
+std::string checkSpec(const TableSpec& spec) {
+  if (std::string r = checkLayout(spec); !r.empty()) return r;
+  if (std::string r = checkPocket(spec, "corner", spec.corner, true); !r.empty()) return r;
+  return checkPocket(spec, "side", spec.side, false);
+}
+
+/// Fills `spec` from the parsed root object; "" or a reason.
+std::string readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
+  std::string r = readFields(root, "",
+                             {{"length", &spec.length, &kPositive},
+                              {"width", &spec.width, &kPositive},
+                              {"cushion_width", &spec.cushion_width, &kPositive},
+                              {"rail_width", &spec.rail_width, &kPositive},
+                              {"slate_thickness", &spec.slate_thickness, &kSlate}},
+                             {"name", "description", "corner", "side", "params", "collision_mesh", "render_mesh"});
+  if (!r.empty()) return r;
+  std::string description, collision, render;
+  for (const auto& [key, target] : {std::pair{"name", &spec.name}, std::pair{"description", &description},
+                                    std::pair{"collision_mesh", &collision}, std::pair{"render_mesh", &render}}) {
+    if (r = readString(root, key, *target); !r.empty()) return r;
+  }
+  if (r = readPocket(root, "corner", spec.corner); !r.empty()) return r;
+  if (r = readPocket(root, "side", spec.side); !r.empty()) return r;
+  if (r = readParams(root, spec.params); !r.empty()) return r;
+  spec.collision_mesh = resolveMesh(collision, spec_dir);
+  spec.render_mesh = render.empty() ? spec.collision_mesh : resolveMesh(render, spec_dir);
+  return checkSpec(spec);
+}
+
+bool looksLikePath(const std::string& s) {
+  return s.find('/') != std::string::npos || (s.size() > 5 && s.ends_with(".json"));
+}
+
+/// Strips nlohmann's "[json.exception...] " prefix from an error message.
+std::string shortWhat(const std::exception& e) {
+  std::string what = e.what();
+  if (const auto pos = what.find("] "); what.starts_with("[json.") && pos != std::string::npos) {
+    what = what.substr(pos + 2);
+  }
+  return what;
+}
+
+Result<TableSpec> loadFile(const fs::path& path, const std::string& default_name) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Result<TableSpec>::fail(path.string() + ": cannot open the spec file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  TableSpec spec;
+  spec.name = default_name;
+  try {
+    const json root = json::parse(text.str());
+    if (!root.is_object()) return Result<TableSpec>::fail(path.string() + ": the spec must be a JSON object");
+    const std::string reason = readSpec(root, fs::absolute(path).parent_path(), spec);
+    if (!reason.empty()) return Result<TableSpec>::fail(reason);
+  } catch (const std::exception& e) {
+    return Result<TableSpec>::fail(path.string() + ": invalid JSON: " + shortWhat(e));
+  }
+  return Result<TableSpec>::ok(std::move(spec));
+}
+
+}  // namespace
+
+Result<TableSpec> loadTableSpec(const std::string& nameOrPath) {
+  if (nameOrPath.empty()) return Result<TableSpec>::fail("empty table name");
+  if (looksLikePath(nameOrPath)) return loadFile(fs::path(nameOrPath), fs::path(nameOrPath).stem().string());
+  const auto found = findAsset("tables/" + nameOrPath + ".json");
+  if (!found) {
+    return Result<TableSpec>::fail("unknown table '" + nameOrPath +
+                                   "' (expected wpa-9ft, wpa-8ft, wpa-7ft or a path to a spec file)");
+  }
+  return loadFile(*found, nameOrPath);
+}
+
+}  // namespace pool::table
