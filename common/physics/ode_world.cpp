@@ -7,9 +7,7 @@
 
 namespace pool::physics {
 
-namespace {
-
-void initOdeOnce() {
+void ensureOde() {
   static std::once_flag once;
   std::call_once(once, [] { dInitODE2(0); });
   thread_local bool thread_ready = false;
@@ -18,6 +16,8 @@ void initOdeOnce() {
     thread_ready = true;
   }
 }
+
+namespace {
 
 Vec3 toVec(const dReal* v) { return Vec3(v[0], v[1], v[2]); }
 
@@ -31,7 +31,7 @@ Quat integrateOrientation(const Quat& q, const Vec3& w, double dt) {
 }
 
 OdeWorld::OdeWorld(double ball_mass, double ball_radius) : mass_(ball_mass), radius_(ball_radius) {
-  initOdeOnce();
+  ensureOde();
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, 0);  // gravity is part of each ball's acceleration
   dWorldSetAutoDisableFlag(world_, 0);

@@ -40,6 +40,9 @@ class OdeWorld {
   double radius_;
 };
 
+/// Initialises ODE once per process and its per-thread data once per thread.
+void ensureOde();
+
 /// Rotates q by angular velocity w (rad/s) over dt seconds.
 Quat integrateOrientation(const Quat& q, const Vec3& w, double dt);
 

@@ -9,6 +9,7 @@
 #include "physics/cloth.h"
 #include "physics/contact_coulomb.h"
 #include "physics/ode_world.h"
+#include "physics/pocket_world.h"
 #include "physics/predict.h"
 #include "physics/watchdog.h"
 
@@ -48,6 +49,8 @@ struct Simulation::Impl {
   TableFeatures features;
   std::unique_ptr<ClothModel> cloth;
   std::unique_ptr<OdeWorld> world;
+  std::unique_ptr<PocketWorld> pockets;  ///< made at the first drop, kept for later shots
+  bool dropped = false;                  ///< a ball dropped in this shot
   std::vector<Ball> balls;
   std::vector<Track> tracks;
   std::vector<double> pair_t;  ///< absolute contact time of pair (i, j), i < j, at i * n + j
@@ -133,6 +136,10 @@ struct Simulation::Impl {
 
   Ball sampleBall(size_t i, double tau) const {
     Ball b = balls[i];
+    if (b.state == MotionState::Pocketed && dropped && pockets) {
+      pockets->read(b.id, b);
+      return b;
+    }
     if (!active(b.state) || tau == 0.0) return b;
     const ClothMotion& m = tracks[i].motion;
     b.pos = kinematics(i).at(tau);
@@ -148,6 +155,7 @@ struct Simulation::Impl {
     while (true) {
       const double ts = static_cast<double>(next_sample) / options.sample_hz;
       if (ts > until) break;
+      if (pockets) pockets->advanceTo(ts);
       Sample s;
       s.t = ts;
       s.balls.reserve(n());
@@ -163,6 +171,7 @@ struct Simulation::Impl {
       world->step(t - now, acc, ang_acc, balls);
       ++out.stats.steps;
       now = t;
+      if (pockets) pockets->advanceTo(t);
     }
   }
 
@@ -183,14 +192,15 @@ struct Simulation::Impl {
     b.state = cloth->classify(b);
   }
 
-  void pocket(size_t i, const std::string& name, const Vec2& centre) {
+  /// The ball's centre passed over a hole's edge: it drops, and falls on in the pocket world.
+  void pocket(size_t i, const TableFeatures::Hole& hole) {
     Ball& b = balls[i];
-    emit(EventType::Pocket, i, -1, name);
+    emit(EventType::Pocket, i, -1, hole.name);
+    if (!pockets) pockets = std::make_unique<PocketWorld>(geometry, p);
+    dropped = true;
+    pockets->drop(b, hole.c, now);
     b.state = MotionState::Pocketed;
-    b.pocket = name;
-    b.pos = Vec3(centre.x(), centre.y(), -2.0 * R());
-    b.vel.setZero();
-    b.ang_vel.setZero();
+    b.pocket = hole.name;
   }
 
   void offTable(size_t i, const std::string& over) {
@@ -221,7 +231,7 @@ struct Simulation::Impl {
     b.pos.z() = R();
     for (const auto& h : features.holes) {
       if ((b.pos.head<2>() - h.c).norm() < h.radius) {
-        pocket(i, h.name, h.c);
+        pocket(i, h);
         refresh(i);
         return;
       }
@@ -242,7 +252,7 @@ struct Simulation::Impl {
     const TableHit hit = tracks[i].hit;
     if (hit.kind == FeatureKind::Hole) {
       const auto& h = features.holes[static_cast<size_t>(hit.index)];
-      pocket(i, h.name, h.c);
+      pocket(i, h);
       refresh(i);
       return;
     }
@@ -364,12 +374,21 @@ struct Simulation::Impl {
   ShotOutcome finish() {
     if (!out.truncated) out.t_rest = now;
     recordSamples(now);
+    if (pockets) {
+      pockets->settle();
+      for (Ball& b : balls) {
+        if (b.state == MotionState::Pocketed) pockets->read(b.id, b);
+      }
+      out.stats.pocket_steps = pockets->steps();
+    }
     out.balls = balls;
     return std::move(out);
   }
 
   void reset(const SimOptions& o) {
     out = ShotOutcome{};
+    if (pockets) pockets->clear();
+    dropped = false;
     options = o;
     now = 0.0;
     next_sample = 0;

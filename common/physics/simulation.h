@@ -30,7 +30,8 @@ struct Sample {
 
 /// Counters for benchmarks and diagnostics (not part of any output contract).
 struct SimStats {
-  std::uint64_t steps = 0;      ///< ODE world steps taken
+  std::uint64_t steps = 0;      ///< ODE world steps taken (table)
+  std::uint64_t pocket_steps = 0;  ///< ODE steps of balls falling in the pockets and trough
   std::uint64_t events = 0;
 };
 
