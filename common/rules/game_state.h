@@ -1,0 +1,78 @@
+// The state of one 8-ball rack between shots: whose turn, groups, phase, ball in hand, pending
+// choice.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rules/ball_groups.h"
+
+namespace pool::rules {
+
+/// Where a rack stands. Break: the next shot is the opening break. Open: after the break, no
+/// groups yet. Assigned: each player owns a group. Over: a winner is known.
+enum class Phase : std::uint8_t { Break, Open, Assigned, Over };
+
+/// Where the next shooter may place the cue ball before shooting. None: it is played where it
+/// lies. Anywhere: anywhere on the slate. BehindHeadString: with its centre at x < head string x.
+enum class BallInHand : std::uint8_t { None, Anywhere, BehindHeadString };
+
+/// A choice the rules offer the next player before the next shot.
+enum class Choice : std::uint8_t {
+  PlayOn,       ///< accept the table as it lies and shoot (ball in hand as the state says)
+  BallInHand,   ///< take the cue ball in hand behind the head string (object ball jumped on the
+                ///< break)
+  RespotEight,  ///< re-spot the 8 pocketed on the break and shoot
+  ReBreak,      ///< re-rack; the player choosing breaks
+  OpponentReBreaks,  ///< re-rack; the other player breaks (after an illegal break: its breaker
+                     ///< again)
+};
+
+/// Why a game ended. Every reason but EightPocketed and Forfeit is a loss of the shooter.
+enum class GameEnd : std::uint8_t {
+  None,                     ///< the game goes on
+  EightPocketed,            ///< the shooter legally pocketed the 8 in the called pocket: a win
+  EightOnFoul,              ///< the 8 fell on a shot that fouled
+  EightBeforeGroupCleared,  ///< the 8 fell while the shooter still had balls of the group (or no
+                            ///< group)
+  EightWithLastGroupBall,   ///< the 8 fell on the same shot as the last ball of the group
+  EightWrongPocket,         ///< the 8 fell in a pocket other than the one called (or on a safety)
+  EightOffTable,            ///< the 8 left the table after the break
+  Forfeit,                  ///< a player gave up or was forfeited (outside the rules' judging)
+};
+
+const char* toString(Phase phase);
+const char* toString(BallInHand ball_in_hand);
+const char* toString(Choice choice);
+const char* toString(GameEnd end);
+
+/// Seats are 0 and 1.
+constexpr int kSeats = 2;
+
+/// The other seat.
+inline int opponentOf(int seat) {
+  return 1 - seat;
+}
+
+/// Everything the rules need to remember between shots of one rack.
+struct GameState {
+  Phase phase = Phase::Break;
+  int shooter = 0;  ///< seat whose turn it is (the player holding `options`, if any)
+  int breaker = 0;  ///< seat that broke this rack (a stalemate re-rack keeps it)
+  std::array<Group, kSeats> groups{Group::None, Group::None};
+  BallInHand ball_in_hand = BallInHand::BehindHeadString;  ///< for the shooter's next shot
+  std::vector<Choice> options;  ///< non-empty: the shooter must choose one before shooting
+  int dry_turns = 0;            ///< consecutive shots that pocketed no object ball
+  int winner = -1;              ///< seat, once phase is Over
+  GameEnd end = GameEnd::None;
+};
+
+/// A fresh rack: the breaker to break with the cue ball in hand behind the head string.
+GameState newRack(int breaker);
+
+/// One-line summary for logs, e.g. "assigned, seat 1 to shoot (stripes), ball in hand anywhere".
+std::string describe(const GameState& state);
+
+}  // namespace pool::rules
