@@ -1,0 +1,47 @@
+// A console reporter that also prints each benchmark's median against a baseline from the same run.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace pool::bench {
+
+/// Prints the usual table, then "name: median cpu X ms (Y× faster than baseline)" lines where
+/// the baseline is the benchmark whose name starts with `baseline_prefix`.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  explicit RatioReporter(std::string baseline_prefix) : baseline_(std::move(baseline_prefix)) {}
+
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.aggregate_name != "median") continue;
+      medians_[r.run_name.function_name] = r.GetAdjustedCPUTime() *
+                                           benchmark::GetTimeUnitMultiplier(benchmark::kMillisecond) /
+                                           benchmark::GetTimeUnitMultiplier(r.time_unit);
+    }
+  }
+
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    double base = 0;
+    for (const auto& [name, ms] : medians_) {
+      if (name.rfind(baseline_, 0) == 0) base = ms;
+    }
+    std::printf("\nmedian CPU time per run, and speed-up against %s*:\n", baseline_.c_str());
+    for (const auto& [name, ms] : medians_) {
+      std::printf("  %-40s %10.3f ms", name.c_str(), ms);
+      if (base > 0 && ms > 0) std::printf("   x%.1f", base / ms);
+      std::printf("\n");
+    }
+  }
+
+ private:
+  std::string baseline_;
+  std::map<std::string, double> medians_;
+};
+
+}  // namespace pool::bench
