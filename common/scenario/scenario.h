@@ -40,4 +40,12 @@ std::string resultJson(const Scenario& scenario, const physics::ShotOutcome& out
 /// A top-down SVG: table, cushions, pockets to scale, every ball's path, events marked.
 std::string plotSvg(const Scenario& scenario, const physics::ShotOutcome& outcome);
 
+/// Samples per second of the paths in a plot, when the scenario asks for fewer.
+constexpr double kPlotSampleHz = 200.0;
+
+/// The outcome to plot: `outcome` itself when it has a trajectory of at least kPlotSampleHz,
+/// otherwise the same shot run again with that sampling (sampling changes no event or result).
+Result<physics::ShotOutcome> runForPlot(const Scenario& scenario,
+                                        const physics::ShotOutcome& outcome);
+
 }  // namespace pool::scenario

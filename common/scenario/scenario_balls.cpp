@@ -1,0 +1,82 @@
+// The scenario's balls: a rack and/or explicit positions, the cue ball, the placement check.
+#include <algorithm>
+#include <map>
+
+#include "physics/simulation.h"
+#include "scenario/object_reader.h"
+#include "scenario/scenario_sections.h"
+#include "table/rack.h"
+
+namespace pool::scenario {
+namespace {
+
+using Positions = std::map<int, Eigen::Vector2d>;  // by id: sorted, one entry per id
+
+// One entry of `balls`: {"id": 3, "x": 0.1, "y": -0.2}.
+std::string readBallEntry(const nlohmann::json& entry, const std::string& path, Positions& placed) {
+  ObjectReader reader(entry, path);
+  reader.onlyKnown({"id", "x", "y"});
+  int id = 0;
+  Eigen::Vector2d pos = Eigen::Vector2d::Zero();
+  reader.integer("id", 0, physics::kMaxBallId, id, Presence::Required);
+  reader.number("x", pos.x(), Presence::Required);
+  reader.number("y", pos.y(), Presence::Required);
+  if (reader.ok() && placed.count(id) != 0)
+    reader.fail("id", "ball " + std::to_string(id) + " is listed twice");
+  if (!reader.ok()) return reader.error();
+  placed[id] = pos;
+  return "";
+}
+
+std::string readBallList(const nlohmann::json& balls, Positions& placed) {
+  if (!balls.is_array()) return "balls: must be an array, got " + shortDump(balls);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (std::string why = readBallEntry(balls[i], indexPath("balls", i), placed); !why.empty())
+      return why;
+  }
+  return "";
+}
+
+// The rack's object balls, and the cue ball on the head spot.
+std::string readRack(const nlohmann::json& rack, Scenario& s, Positions& racked) {
+  const auto type =
+      rack.is_string() ? table::rackTypeFromString(rack.get<std::string>()) : std::nullopt;
+  if (!type) return "rack: must be \"8ball\" or \"9ball\", got " + shortDump(rack);
+  for (const auto& b : table::rackBalls(*type, s.spec, s.spec.params.ball_radius, s.seed))
+    racked[b.id] = b.pos;
+  racked[physics::kCueBall] = table::spotsFor(s.spec).head_spot;
+  return "";
+}
+
+std::vector<physics::Ball> ballsAtRest(const Positions& positions, double radius) {
+  std::vector<physics::Ball> out;
+  for (const auto& [id, xy] : positions) {
+    physics::Ball b;
+    b.id = id;
+    b.pos = physics::Vec3(xy.x(), xy.y(), radius);
+    out.push_back(b);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string readBalls(const nlohmann::json* balls, const nlohmann::json* rack, Scenario& s) {
+  if (balls == nullptr && rack == nullptr)
+    return "balls: missing (a scenario needs `balls`, `rack` or both)";
+  Positions positions;
+  if (rack != nullptr) {
+    if (std::string why = readRack(*rack, s, positions); !why.empty()) return why;
+  }
+  if (balls != nullptr) {
+    Positions placed;
+    if (std::string why = readBallList(*balls, placed); !why.empty()) return why;
+    for (const auto& [id, xy] : placed) positions[id] = xy;  // explicit positions win over the rack
+  }
+  if (positions.count(physics::kCueBall) == 0) return "balls: no cue ball (id 0)";
+  s.balls = ballsAtRest(positions, s.spec.params.ball_radius);
+  const std::string why = physics::checkPlacement(s.balls, s.geometry, s.spec.params);
+  return why.empty() ? "" : "balls: " + why;
+}
+
+}  // namespace pool::scenario

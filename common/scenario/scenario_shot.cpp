@@ -1,0 +1,41 @@
+// The scenario's shot: degrees and tip offsets at the edge, a validated CueShot (radians) inside.
+#include <numbers>
+
+#include "physics/cue_strike.h"
+#include "scenario/object_reader.h"
+#include "scenario/scenario_sections.h"
+
+namespace pool::scenario {
+namespace {
+
+constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+
+}  // namespace
+
+std::string readShot(const nlohmann::json& shot, Scenario& s) {
+  ObjectReader reader(shot, "shot");
+  reader.onlyKnown({"yaw_deg", "tip_side", "tip_height", "elevation_deg", "speed", "speed_is"});
+  double yaw_deg = 0.0;
+  double elevation_deg = 0.0;
+  std::string speed_is = "cue";
+  physics::CueShot cue;
+  reader.number("yaw_deg", yaw_deg);
+  reader.number("tip_side", cue.tip_side);
+  reader.number("tip_height", cue.tip_height);
+  reader.number("elevation_deg", elevation_deg);
+  reader.number("speed", cue.speed, Presence::Required);
+  reader.string("speed_is", speed_is);
+  if (reader.ok() && speed_is != "cue" && speed_is != "ball") {
+    reader.fail("speed_is", "must be \"cue\" or \"ball\", got " + shortDump(speed_is));
+  }
+  if (!reader.ok()) return reader.error();
+  cue.yaw = yaw_deg * kRadPerDeg;
+  cue.elevation = elevation_deg * kRadPerDeg;
+  cue.speed_is_ball = speed_is == "ball";
+  if (const std::string why = physics::validateShot(cue, s.spec.params); !why.empty())
+    return "shot." + why;
+  s.shot = cue;
+  return "";
+}
+
+}  // namespace pool::scenario

@@ -1,0 +1,63 @@
+// The scenario's table: spec by name or path, coefficient overrides (`params`), collision geometry.
+#include <algorithm>
+#include <system_error>
+
+#include "scenario/object_reader.h"
+#include "scenario/scenario_sections.h"
+#include "table/physics_params.h"
+
+namespace pool::scenario {
+namespace {
+
+// Names such as "wpa-9ft" go to the table loader as they are; paths may be relative to base_dir.
+std::string resolveTable(const std::string& name_or_path, const std::filesystem::path& base_dir) {
+  const std::filesystem::path p(name_or_path);
+  const bool looks_like_path =
+      name_or_path.find('/') != std::string::npos || p.extension() == ".json";
+  if (!looks_like_path || p.is_absolute() || base_dir.empty()) return name_or_path;
+  std::error_code ec;
+  const auto beside = base_dir / p;
+  return std::filesystem::is_regular_file(beside, ec) ? beside.string() : name_or_path;
+}
+
+}  // namespace
+
+std::string readTable(const std::string& name_or_path, const std::filesystem::path& base_dir,
+                      Scenario& s) {
+  if (name_or_path.empty())
+    return "table: must be a table name (wpa-9ft, wpa-8ft, wpa-7ft) or a spec file path";
+  auto spec = table::loadTableSpec(resolveTable(name_or_path, base_dir));
+  if (!spec) return "table: " + spec.error();
+  s.spec = std::move(*spec);
+  return "";
+}
+
+std::string readParams(const nlohmann::json* params, Scenario& s) {
+  if (params != nullptr) {
+    ObjectReader reader(*params, "params");
+    if (!reader.ok()) return reader.error();
+    for (const auto& item : params->items()) {
+      const auto& names = table::paramNames();
+      if (std::find(names.begin(), names.end(), item.key()) == names.end()) {
+        reader.fail(item.key(), "unknown parameter");
+        break;
+      }
+      double value = 0.0;
+      reader.number(item.key(), value, Presence::Required);
+      if (!reader.ok()) break;
+      if (const std::string why = table::setParam(s.spec.params, item.key(), value); !why.empty()) {
+        reader.fail(item.key(), why);
+      }
+    }
+    if (!reader.ok()) return reader.error();
+  }
+  const std::string why = table::validate(s.spec.params);
+  return why.empty() ? "" : "params." + why;
+}
+
+std::string buildGeometry(Scenario& s) {
+  s.geometry = table::buildTableGeometry(s.spec);
+  return "";
+}
+
+}  // namespace pool::scenario
