@@ -139,6 +139,23 @@ TEST(BallBall, CutInducedThrowFallsWithSpeed) {
   EXPECT_LT(rolling, 0.7 * slow);
 }
 
+// Spin transfer: friction at the contact passes some of the cue ball's spin to the object ball,
+// reversed like meshing gears. Right English (counter-clockwise from above) on a full hit leaves
+// the object ball turning clockwise, and the cue ball's surface dragging it sideways throws it
+// left of the line of centres (spin-induced throw: right English throws the object ball left).
+TEST(BallBall, SideSpinTransfersReversedAndThrows) {
+  const auto spec = openSpec();
+  const double v = 1.0;
+  const auto out = cut(spec, 0.0, v, Vec3(0, 0, 30.0), 0.001);
+  const double t0 = firstContactTime(out);
+  for (const auto& s : out.trajectory) {
+    if (s.t <= t0) continue;
+    EXPECT_LT(s.balls[1].ang_vel.z(), -0.5);
+    EXPECT_GT(s.balls[1].vel.y(), 0.0);
+    break;
+  }
+}
+
 TEST(BallBall, FrictionFitFallsWithSlidingSpeed) {
   EXPECT_NEAR(alciatoreFriction(0.0), 0.11795, 1e-6);
   EXPECT_LT(alciatoreFriction(3.0), alciatoreFriction(0.5));
