@@ -3,13 +3,23 @@
 
 #include <ode/ode.h>
 
+#include <cstdarg>
 #include <mutex>
 
 namespace pool::physics {
 
+namespace {
+// ODE's informational messages would go to stderr, which pool-sim keeps empty; nothing in them
+// is needed (errors still abort through ODE's own handler).
+void quietMessage(int, const char*, va_list) {}
+}  // namespace
+
 void ensureOde() {
   static std::once_flag once;
-  std::call_once(once, [] { dInitODE2(0); });
+  std::call_once(once, [] {
+    dInitODE2(0);
+    dSetMessageHandler(quietMessage);
+  });
   thread_local bool thread_ready = false;
   if (!thread_ready) {
     dAllocateODEDataForThread(dAllocateMaskAll);

@@ -1,5 +1,6 @@
 // The scenario's table: spec by name or path, coefficient overrides (`params`), collision geometry.
 #include <algorithm>
+#include <filesystem>
 #include <system_error>
 
 #include "scenario/object_reader.h"
@@ -56,7 +57,18 @@ std::string readParams(const nlohmann::json* params, Scenario& s) {
 }
 
 std::string buildGeometry(Scenario& s) {
-  s.geometry = table::buildTableGeometry(s.spec);
+  // The collision mesh through assimp, as the server reads it; a spec without one (or whose mesh
+  // file is not beside it) gets the same geometry generated from the spec, as pool-tablegen
+  // would write it. Coefficient overrides (cushion_height, ball_radius) need no new mesh: the
+  // physics reads the nose height and the radius from the params.
+  std::error_code ec;
+  if (s.spec.collision_mesh.empty() || !std::filesystem::exists(s.spec.collision_mesh, ec)) {
+    s.geometry = table::buildTableGeometry(s.spec);
+    return "";
+  }
+  auto loaded = table::loadTableGeometry(s.spec);
+  if (!loaded) return "table: " + loaded.error();
+  s.geometry = std::move(*loaded);
   return "";
 }
 
