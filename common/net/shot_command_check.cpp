@@ -1,0 +1,168 @@
+// Field checks of a received ShotCommand: representable, finite, in range.
+#include "net/shot_command_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string_view>
+
+#include "net/wire_fields.h"
+
+namespace pool::net {
+
+namespace {
+
+using Check = std::optional<CommandCheck>;
+
+CommandCheck fail(CommandProblem problem, std::string text) {
+  return {problem, std::move(text)};
+}
+
+/// A limit as text, e.g. "12" or "1.5533".
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+bool printable(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return c > ' ' && c < 127; });
+}
+
+bool shoots(const pool_ShotOption& option) {
+  const std::int32_t value = rawValue(option);
+  return value != pool_OPTION_REBREAK && value != pool_OPTION_OPPONENT_REBREAKS;
+}
+
+Check checkIdentity(const pool_ShotCommand& c) {
+  if (!terminated(c.match) || textOf(c.match).empty() || !printable(textOf(c.match))) {
+    return fail(CommandProblem::BadMatchId, "match: must be a non-empty printable id");
+  }
+  if (c.seat != 0 && c.seat != 1) {
+    return fail(CommandProblem::BadSeat, "seat: must be 0 or 1");
+  }
+  return std::nullopt;
+}
+
+Check checkFinite(const pool_ShotCommand& c) {
+  const std::pair<const char*, double> numbers[] = {{"yaw", c.yaw},
+                                                    {"tip_side", c.tip_side},
+                                                    {"tip_height", c.tip_height},
+                                                    {"elevation", c.elevation},
+                                                    {"speed", c.speed},
+                                                    {"cue_ball_x", c.cue_ball_x},
+                                                    {"cue_ball_y", c.cue_ball_y}};
+  for (const auto& [name, value] : numbers) {
+    if (!std::isfinite(value)) {
+      return fail(CommandProblem::NonFinite, std::string(name) + ": must be a finite number");
+    }
+  }
+  return std::nullopt;
+}
+
+Check checkOption(const pool_ShotCommand& c) {
+  // The enum arrives as an integer: anything outside the declared values is malformed.
+  const std::int32_t value = rawValue(c.option);
+  if (value < pool_OPTION_NONE || value > pool_OPTION_OPPONENT_REBREAKS) {
+    return fail(CommandProblem::BadOption, "option: not a known shot option");
+  }
+  return std::nullopt;
+}
+
+Check checkCue(const pool_ShotCommand& c, const CommandLimits& limits) {
+  if (!(c.speed > 0.0 && c.speed <= limits.max_speed)) {
+    return fail(CommandProblem::SpeedOutOfRange,
+                "speed: must be in (0, " + number(limits.max_speed) + "] m/s");
+  }
+  if (!(c.elevation >= 0.0 && c.elevation <= limits.max_elevation)) {
+    return fail(CommandProblem::ElevationOutOfRange,
+                "elevation: must be in [0, " + number(limits.max_elevation) + "] rad");
+  }
+  if (std::hypot(c.tip_side, c.tip_height) > limits.miscue_limit) {
+    return fail(
+        CommandProblem::TipOutOfRange,
+        "tip_side, tip_height: offset beyond the miscue limit " + number(limits.miscue_limit));
+  }
+  if (std::abs(c.yaw) > limits.max_abs_yaw) {
+    return fail(CommandProblem::YawOutOfRange,
+                "yaw: magnitude must be at most " + number(limits.max_abs_yaw) + " rad");
+  }
+  return std::nullopt;
+}
+
+Check checkCall(const pool_ShotCommand& c) {
+  const bool has_ball = c.called_ball != -1;
+  if (has_ball && (c.called_ball < 1 || c.called_ball > 15)) {
+    return fail(CommandProblem::BadCall, "called_ball: must be 1-15, or -1 for none");
+  }
+  const std::string_view pocket = textOf(c.called_pocket);
+  if (!terminated(c.called_pocket) || !printable(pocket)) {
+    return fail(CommandProblem::BadCall, "called_pocket: must be a printable pocket name");
+  }
+  if (has_ball != !pocket.empty()) {
+    return fail(CommandProblem::BadCall, "called_ball, called_pocket: give both or neither");
+  }
+  return std::nullopt;
+}
+
+Check checkPlacement(const pool_ShotCommand& c, const CommandLimits& limits) {
+  if (c.has_cue_ball_placement &&
+      (std::abs(c.cue_ball_x) > limits.half_length || std::abs(c.cue_ball_y) > limits.half_width)) {
+    return fail(CommandProblem::PlacementOutOfRange, "cue_ball_x, cue_ball_y: off the table");
+  }
+  return std::nullopt;
+}
+
+Check checkSignature(const pool_ShotCommand& c) {
+  if (c.signature._length > 64 || (c.signature._length > 0 && !c.signature._buffer)) {
+    return fail(CommandProblem::BadSignature, "signature: at most 64 bytes");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+const char* toString(CommandProblem problem) {
+  switch (problem) {
+    case CommandProblem::None:
+      return "none";
+    case CommandProblem::BadMatchId:
+      return "bad_match_id";
+    case CommandProblem::BadSeat:
+      return "bad_seat";
+    case CommandProblem::NonFinite:
+      return "non_finite";
+    case CommandProblem::BadOption:
+      return "bad_option";
+    case CommandProblem::SpeedOutOfRange:
+      return "speed_out_of_range";
+    case CommandProblem::ElevationOutOfRange:
+      return "elevation_out_of_range";
+    case CommandProblem::TipOutOfRange:
+      return "tip_out_of_range";
+    case CommandProblem::YawOutOfRange:
+      return "yaw_out_of_range";
+    case CommandProblem::BadCall:
+      return "bad_call";
+    case CommandProblem::PlacementOutOfRange:
+      return "placement_out_of_range";
+    case CommandProblem::BadSignature:
+      return "bad_signature";
+  }
+  return "unknown";
+}
+
+CommandCheck validateShotCommand(const pool_ShotCommand& command, const CommandLimits& limits) {
+  // In CommandProblem's order; the first problem found is the one reported.
+  Check found = checkIdentity(command);
+  if (!found) found = checkFinite(command);
+  if (!found) found = checkOption(command);
+  if (!found && shoots(command.option)) found = checkCue(command, limits);
+  if (!found) found = checkCall(command);
+  if (!found) found = checkPlacement(command, limits);
+  if (!found) found = checkSignature(command);
+  return found.value_or(CommandCheck{});
+}
+
+}  // namespace pool::net

@@ -1,0 +1,53 @@
+// Checks a received ShotCommand's fields on their own: representable, finite, in range. Whose turn
+// it is, the seat token, the sequence number and the legality of a placement are the server's.
+#pragma once
+
+#include <cstdint>
+#include <numbers>
+#include <string>
+
+#include "net/messages.h"
+
+namespace pool::net {
+
+/// What is wrong with a ShotCommand's fields, in the order they are checked.
+enum class CommandProblem : std::uint8_t {
+  None,
+  BadMatchId,           ///< empty, unterminated or not printable
+  BadSeat,              ///< not 0 or 1
+  NonFinite,            ///< a number is NaN or infinite
+  BadOption,            ///< not a ShotOption value
+  SpeedOutOfRange,      ///< not in (0, max_speed]
+  ElevationOutOfRange,  ///< not in [0, max_elevation]
+  TipOutOfRange,        ///< sqrt(side² + height²) beyond the miscue limit
+  YawOutOfRange,        ///< |yaw| beyond max_abs_yaw
+  BadCall,  ///< a called ball outside 1–15, a bad pocket name, or one without the other
+  PlacementOutOfRange,  ///< cue-ball placement off the table's playing surface
+  BadSignature,         ///< longer than 64 bytes, or a length without a buffer
+};
+
+const char* toString(CommandProblem problem);  ///< snake_case, e.g. "speed_out_of_range"
+
+/// The ranges a command's values must lie in. Defaults: SIM-CONTRACT.md and a 9-ft table.
+struct CommandLimits {
+  double max_speed = 12.0;                               ///< m/s
+  double max_elevation = 89.0 * std::numbers::pi / 180;  ///< rad
+  double miscue_limit = 0.5;                             ///< fraction of R
+  double max_abs_yaw = 2 * std::numbers::pi;             ///< rad
+  double half_length = 1.27;                             ///< playing surface, m (x)
+  double half_width = 0.635;                             ///< playing surface, m (y)
+};
+
+/// The verdict on a command's fields.
+struct CommandCheck {
+  CommandProblem problem = CommandProblem::None;
+  std::string text;  ///< "<field>: <reason>", empty when fine
+
+  bool ok() const { return problem == CommandProblem::None; }
+};
+
+/// Checks every field of `command` against `limits`. Shot values (speed, elevation, tip, yaw) are
+/// range-checked only when the option answers with a shot; every number must be finite always.
+CommandCheck validateShotCommand(const pool_ShotCommand& command, const CommandLimits& limits = {});
+
+}  // namespace pool::net

@@ -1,0 +1,28 @@
+// Names and kinds of shot options.
+#include "net/shot_request.h"
+
+namespace pool::net {
+
+const char* toString(ShotOption option) {
+  switch (option) {
+    case ShotOption::None:
+      return "none";
+    case ShotOption::PlayOn:
+      return "play_on";
+    case ShotOption::BallInHand:
+      return "ball_in_hand";
+    case ShotOption::RespotEight:
+      return "respot_eight";
+    case ShotOption::ReBreak:
+      return "rebreak";
+    case ShotOption::OpponentReBreaks:
+      return "opponent_rebreaks";
+  }
+  return "unknown";
+}
+
+bool optionShoots(ShotOption option) {
+  return option != ShotOption::ReBreak && option != ShotOption::OpponentReBreaks;
+}
+
+}  // namespace pool::net

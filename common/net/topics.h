@@ -1,0 +1,16 @@
+// The DDS topic names of the protocol, in one place.
+#pragma once
+
+#include <string_view>
+
+namespace pool::net::topics {
+
+inline constexpr std::string_view kMatchInfo = "pool/MatchInfo";          ///< lobby, key match
+inline constexpr std::string_view kJoinRequest = "pool/JoinRequest";      ///< key client
+inline constexpr std::string_view kJoinReply = "pool/JoinReply";          ///< key client
+inline constexpr std::string_view kShotCommand = "pool/ShotCommand";      ///< key match + seat
+inline constexpr std::string_view kShotResult = "pool/ShotResult";        ///< key match + seat
+inline constexpr std::string_view kTableSnapshot = "pool/TableSnapshot";  ///< key match
+inline constexpr std::string_view kMatchState = "pool/MatchState";        ///< key match
+
+}  // namespace pool::net::topics
