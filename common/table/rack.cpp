@@ -108,7 +108,7 @@ bool isFree(const Vec2& p, double ball_radius, const std::vector<Vec2>& occupied
 
 /// Points on the long string (y = 0) just clear of each ball that blocks it: behind (+x) or in front.
 std::vector<double> clearPoints(double ball_radius, const std::vector<Vec2>& occupied, bool behind) {
-  constexpr double kClearance = 5e-5;  // m, like the rack's default gap
+  constexpr double kClearance = 5e-5;  // m: a re-spotted ball sits just clear of its neighbour
   const double d = 2.0 * ball_radius + kClearance;
   std::vector<double> xs;
   for (const Vec2& c : occupied) {

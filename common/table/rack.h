@@ -34,7 +34,7 @@ struct BallPlacement {
 /// a diamond, the 1 at the apex, the 9 in the centre, the rest by `seed`. Neighbours are `gap`
 /// metres apart (surface to surface). Deterministic for a seed.
 std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
-                                     std::uint64_t seed, double gap = 5e-5);
+                                     std::uint64_t seed, double gap = 0.0);
 
 /// Where a re-spotted ball goes: the foot spot, or the nearest free point behind it on the long
 /// string (toward the foot cushion), then in front of it. `occupied` are the centres of the balls
