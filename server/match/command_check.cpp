@@ -1,0 +1,166 @@
+// The ordered checks of a shot command, each a small function that refuses or passes.
+#include "match/command_check.h"
+
+#include <algorithm>
+#include <string>
+
+#include "match/match.h"
+#include "rules/eight_ball.h"
+#include "rules/placement.h"
+
+namespace pool::server {
+
+namespace {
+
+using Check = std::optional<Rejection>;
+
+Rejection refuse(Reject reason, std::string text) {
+  return {reason, std::move(text)};
+}
+
+std::string seatName(int seat) {
+  return "seat " + std::to_string(seat);
+}
+
+Check checkValues(const Match& match, const net::ShotRequest& c) {
+  if (!net::optionShoots(c.option)) return std::nullopt;
+  if (auto why = physics::validateShot(c.cue, match.table().spec.params); !why.empty()) {
+    return refuse(Reject::Malformed, why);
+  }
+  if (c.called_ball && (*c.called_ball < 1 || *c.called_ball > physics::kMaxBallId)) {
+    return refuse(Reject::Malformed, "called_ball: must be 1-15");
+  }
+  return std::nullopt;
+}
+
+Check checkSeat(const Match& match, const net::ShotRequest& c) {
+  if (c.seat != 0 && c.seat != 1) return refuse(Reject::WrongSeat, "seat: must be 0 or 1");
+  const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
+  if (!seat.taken()) return refuse(Reject::WrongSeat, seatName(c.seat) + " is free");
+  if (seat.token != c.seat_token) {
+    return refuse(Reject::BadToken, "the token is not " + seatName(c.seat) + "'s");
+  }
+  return std::nullopt;
+}
+
+Check checkTurn(const Match& match, const net::ShotRequest& c) {
+  const MatchPhase phase = match.phase();
+  if (phase == MatchPhase::Over || phase == MatchPhase::Closed) {
+    return refuse(Reject::MatchOver, std::string("the match is ") + toString(phase));
+  }
+  if (phase == MatchPhase::Lobby) {
+    return refuse(Reject::NotYourTurn, "the match has not started");
+  }
+  if (match.game().shooter != c.seat) {
+    return refuse(Reject::NotYourTurn, seatName(match.game().shooter) + " is to shoot");
+  }
+  if (match.inMotion()) {
+    return refuse(Reject::BallsMoving, "shot " + std::to_string(match.shotInMotion()) +
+                                           " is still moving");
+  }
+  return std::nullopt;
+}
+
+Check checkSequence(const Match& match, const net::ShotRequest& c) {
+  const std::uint32_t last = match.seats()[static_cast<std::size_t>(c.seat)].last_seq;
+  if (c.seq <= last) {
+    return refuse(Reject::StaleSequence, "seq " + std::to_string(c.seq) +
+                                             " is not above the last accepted " +
+                                             std::to_string(last));
+  }
+  return std::nullopt;
+}
+
+// Applies a pending choice to the plan's copies; refuses a missing or unoffered one.
+Check checkOption(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
+  const auto& offered = match.game().options;
+  const auto choice = choiceOf(c.option);
+  if (!choice) {
+    if (offered.empty()) return std::nullopt;
+    return refuse(Reject::OptionRequired, "choose first: " + rules::describe(match.game()));
+  }
+  if (std::find(offered.begin(), offered.end(), *choice) == offered.end()) {
+    return refuse(Reject::OptionNotOffered,
+                  std::string("option ") + net::toString(c.option) + " is not offered");
+  }
+  auto verdict = rules::applyChoice(match.game(), *choice, match.balls(), match.table().context);
+  if (!verdict) return refuse(Reject::OptionNotOffered, verdict.error());
+  plan.state = verdict->next;
+  for (const auto& respot : verdict->respots) {
+    for (auto& b : plan.before) {
+      if (b.id != respot.id) continue;
+      b = physics::Ball{};
+      b.id = respot.id;
+      b.pos = physics::Vec3(respot.pos.x(), respot.pos.y(), match.table().context.ball_radius);
+    }
+  }
+  plan.shoots = net::optionShoots(c.option);
+  plan.choice = std::move(*verdict);
+  return std::nullopt;
+}
+
+physics::Ball* cueBallOf(std::vector<physics::Ball>& balls) {
+  auto it = std::find_if(balls.begin(), balls.end(),
+                         [](const physics::Ball& b) { return b.id == physics::kCueBall; });
+  return it == balls.end() ? nullptr : &*it;
+}
+
+// Places the cue ball in hand on the plan's table, or refuses the placement.
+Check checkPlacement(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
+  physics::Ball* cue = cueBallOf(plan.before);
+  if (!cue) return refuse(Reject::IllegalPlacement, "no cue ball in this match");
+  const rules::BallInHand in_hand = plan.state.ball_in_hand;
+  const auto& table = match.table().context;
+  if (!c.cue_ball_at) {
+    if (in_hand == rules::BallInHand::None) return std::nullopt;
+    if (!physics::onTable(cue->state)) {
+      return refuse(Reject::IllegalPlacement, "the cue ball is in hand: place it");
+    }
+  }
+  const Eigen::Vector2d at = c.cue_ball_at.value_or(Eigen::Vector2d(cue->pos.head<2>()));
+  const auto check = rules::checkCueBallPlacement(in_hand, at, plan.before, table);
+  if (!check.ok()) return refuse(Reject::IllegalPlacement, "cue ball: " + check.reason());
+  *cue = physics::Ball{};
+  cue->pos = physics::Vec3(at.x(), at.y(), table.ball_radius);
+  return std::nullopt;
+}
+
+Check checkCall(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
+  plan.intent.ball = c.called_ball;
+  plan.intent.pocket = c.called_pocket;
+  plan.intent.safety = c.safety;
+  auto ok = rules::checkIntent(plan.state, plan.intent, plan.before, match.options().rules);
+  if (!ok) return refuse(Reject::BadCall, ok.error());
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<rules::Choice> choiceOf(net::ShotOption option) {
+  switch (option) {
+    case net::ShotOption::None: return std::nullopt;
+    case net::ShotOption::PlayOn: return rules::Choice::PlayOn;
+    case net::ShotOption::BallInHand: return rules::Choice::BallInHand;
+    case net::ShotOption::RespotEight: return rules::Choice::RespotEight;
+    case net::ShotOption::ReBreak: return rules::Choice::ReBreak;
+    case net::ShotOption::OpponentReBreaks: return rules::Choice::OpponentReBreaks;
+  }
+  return std::nullopt;
+}
+
+CheckedCommand checkCommand(const Match& match, const net::ShotRequest& command) {
+  CheckedCommand out;
+  out.plan.state = match.game();
+  out.plan.before = match.balls();
+  Check found = checkValues(match, command);
+  if (!found) found = checkSeat(match, command);
+  if (!found) found = checkTurn(match, command);
+  if (!found) found = checkSequence(match, command);
+  if (!found) found = checkOption(match, command, out.plan);
+  if (!found && out.plan.shoots) found = checkPlacement(match, command, out.plan);
+  if (!found && out.plan.shoots) found = checkCall(match, command, out.plan);
+  if (found) out.rejection = std::move(*found);
+  return out;
+}
+
+}  // namespace pool::server

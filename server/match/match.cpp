@@ -1,0 +1,330 @@
+// A match's seats, its shots from command to committed verdict, and the frames in between.
+#include "match/match.h"
+
+#include <algorithm>
+
+#include "match/command_check.h"
+#include "rules/eight_ball.h"
+#include "rules/shot.h"
+
+namespace pool::server {
+
+namespace {
+
+JoinAnswer seated(const std::string& match, int seat, std::uint64_t token) {
+  return {JoinOutcome::Accepted, {}, match, seat, token};
+}
+
+// The frames to publish: every trajectory sample, then the table at rest when the shot ended.
+std::vector<physics::Sample> framesOf(physics::ShotOutcome& outcome) {
+  std::vector<physics::Sample> frames = std::move(outcome.trajectory);
+  const double last = frames.empty() ? 0.0 : frames.back().t;
+  frames.push_back(physics::Sample{std::max(last, outcome.t_rest.value_or(last)), outcome.balls});
+  return frames;
+}
+
+std::vector<double> timesOf(const std::vector<physics::Sample>& frames) {
+  std::vector<double> times;
+  times.reserve(frames.size());
+  for (const auto& f : frames) times.push_back(f.t);
+  return times;
+}
+
+}  // namespace
+
+Match::Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner,
+             MatchOptions options, std::uint64_t rack_seed)
+    : id_(std::move(id)),
+      name_(std::move(name)),
+      runner_(std::move(runner)),
+      options_(options),
+      rack_seed_(rack_seed) {
+  balls_ = rackLayout(runner_->kit(), rack_seed_ + layouts_++);
+}
+
+// ---- Seats --------------------------------------------------------------------------------------
+
+JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::string& client,
+                           std::uint64_t token) {
+  for (int s = 0; s < 2; ++s) {
+    const Seat& mine = seats_[static_cast<std::size_t>(s)];
+    if (mine.taken() && mine.client == client && (seat == s || seat == -1)) {
+      return seated(id_, s, mine.token);  // a repeated request: same seat, same token
+    }
+  }
+  if (flight_) return JoinAnswer::refuse(JoinOutcome::NotAllowed, "a shot is in motion");
+  if (seat == -1) {
+    seat = !seats_[0].taken() ? 0 : (!seats_[1].taken() ? 1 : -1);
+    if (seat == -1) return JoinAnswer::refuse(JoinOutcome::MatchFull, "both seats are taken");
+  }
+  Seat& s = seats_[static_cast<std::size_t>(seat)];
+  if (s.taken()) {
+    return JoinAnswer::refuse(JoinOutcome::SeatTaken, "seat " + std::to_string(seat) + " is taken");
+  }
+  s = Seat{};
+  s.player = player;
+  s.client = client;
+  s.token = token;
+  touch();
+  if (seats_[0].taken() && seats_[1].taken() && !inPlay()) startRack(rack_ % 2 == 0 ? 0 : 1);
+  return seated(id_, seat, token);
+}
+
+JoinAnswer Match::rejoin(std::uint64_t token, const std::string& client) {
+  const auto seat = seatOf(token);
+  if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
+  Seat& s = seats_[static_cast<std::size_t>(*seat)];
+  s.client = client;
+  s.away_since.reset();
+  touch();
+  return seated(id_, *seat, token);
+}
+
+JoinAnswer Match::leave(std::uint64_t token) {
+  const auto seat = seatOf(token);
+  if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
+  if (inPlay()) forfeitSeat(*seat, "left");
+  seats_[static_cast<std::size_t>(*seat)] = Seat{};
+  touch();
+  return seated(id_, *seat, 0);
+}
+
+JoinAnswer Match::rematch(std::uint64_t token) {
+  const auto seat = seatOf(token);
+  if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
+  if (phase() != MatchPhase::Over || pending_forfeit_) {
+    return JoinAnswer::refuse(JoinOutcome::NotAllowed, "the match is not over");
+  }
+  seats_[static_cast<std::size_t>(*seat)].wants_rematch = true;
+  touch();
+  if (seats_[0].taken() && seats_[1].taken() && seats_[0].wants_rematch &&
+      seats_[1].wants_rematch) {
+    // Breaks alternate between racks.
+    startRack(rules::opponentOf(game_.breaker));
+  }
+  return seated(id_, *seat, token);
+}
+
+JoinAnswer Match::addSpectator(const std::string& client) {
+  if (spectators_.insert(client).second) touch();
+  return {JoinOutcome::Accepted, {}, id_, -1, 0};
+}
+
+bool Match::removeSpectator(const std::string& client) {
+  if (spectators_.erase(client) == 0) return false;
+  touch();
+  return true;
+}
+
+void Match::clientGone(const std::string& client, double now) {
+  for (Seat& s : seats_) {
+    if (s.taken() && s.client == client && !s.away_since) {
+      s.away_since = now;
+      touch();
+    }
+  }
+  removeSpectator(client);
+}
+
+bool Match::expireAway(double now, double grace) {
+  for (int seat = 0; seat < 2; ++seat) {
+    Seat& s = seats_[static_cast<std::size_t>(seat)];
+    if (!s.away_since || now - *s.away_since < grace) continue;
+    if (inPlay() && !pending_forfeit_) {
+      forfeitSeat(seat, "did not come back");
+      return true;
+    }
+    if (phase() == MatchPhase::Lobby) {
+      // Nobody to forfeit to yet: the seat is simply free again.
+      s = Seat{};
+      touch();
+      return true;
+    }
+  }
+  return false;
+}
+
+// ---- Shots --------------------------------------------------------------------------------------
+
+CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
+  CommandAnswer answer;
+  answer.seat = command.seat;
+  answer.seq = command.seq;
+  answer.shot_number = shot_number_;
+  CheckedCommand checked = checkCommand(*this, command);
+  if (!checked.rejection.accepted()) {
+    answer.rejection = std::move(checked.rejection);
+    return answer;
+  }
+  ShotPlan& plan = checked.plan;
+  if (!plan.shoots) return applyChoiceNow(command, *plan.choice, balls_);
+
+  auto outcome = runner_->run(plan.before, command.cue, options_.snapshot_hz,
+                              options_.max_shot_time);
+  if (!outcome) {
+    answer.rejection = {Reject::Malformed, "the physics refused the shot: " + outcome.error()};
+    return answer;
+  }
+  rules::Shot shot{plan.before, plan.intent, outcome->events, outcome->balls, false};
+  auto verdict = rules::judgeEightBall(plan.state, shot, table().context, options_.rules);
+  if (!verdict) {
+    answer.rejection = {Reject::Malformed, "the rules refused the shot: " + verdict.error()};
+    return answer;
+  }
+  // Accepted: the seat's number is used up and the shot is in motion from now on.
+  seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  ShotReport report{command.seat, command.seq, shot_number_ + 1, std::move(outcome->events),
+                    std::move(*verdict)};
+  auto after = tableAfter(report.verdict, outcome->balls);
+  auto frames = framesOf(*outcome);
+  FramePacer pacer(timesOf(frames), now, options_.unpaced);
+  flight_.emplace(Flight{std::move(report), std::move(frames), std::move(after), std::move(pacer)});
+  answer.shot_number = shot_number_ + 1;
+  answer.in_motion = true;
+  return answer;
+}
+
+CommandAnswer Match::applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
+                                    std::vector<physics::Ball> balls) {
+  seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  auto after = tableAfter(verdict, std::move(balls));
+  commit(verdict, std::move(after), command.seat);
+  CommandAnswer answer;
+  answer.seat = command.seat;
+  answer.seq = command.seq;
+  answer.shot_number = shot_number_;
+  answer.done = ShotReport{command.seat, command.seq, shot_number_, {}, verdict};
+  return answer;
+}
+
+DueFrames Match::takeDueFrames(double now) {
+  if (!flight_) return {};
+  const FrameRange range = flight_->pacer.take(now);
+  const std::span<const physics::Sample> all(flight_->frames);
+  return {static_cast<std::uint32_t>(range.first), flight_->report.shot_number,
+          all.subspan(range.first, range.size())};
+}
+
+std::optional<double> Match::nextFrameDue() const {
+  if (!flight_) return std::nullopt;
+  return flight_->pacer.nextDue();
+}
+
+std::optional<ShotReport> Match::finishShot() {
+  if (!flight_ || !flight_->pacer.done()) return std::nullopt;
+  Flight flight = std::move(*flight_);
+  flight_.reset();
+  ++shot_number_;
+  commit(flight.report.verdict, std::move(flight.after), flight.report.seat);
+  if (pending_forfeit_) {
+    const int loser = *pending_forfeit_;
+    pending_forfeit_.reset();
+    if (inPlay()) forfeitSeat(loser, "left");
+  }
+  return std::move(flight.report);
+}
+
+std::uint32_t Match::shotInMotion() const {
+  return flight_ ? flight_->report.shot_number : 0;
+}
+
+// ---- State --------------------------------------------------------------------------------------
+
+MatchPhase Match::phase() const {
+  if (closed_) return MatchPhase::Closed;
+  if (!started_) return MatchPhase::Lobby;
+  switch (game_.phase) {
+    case rules::Phase::Break: return MatchPhase::Break;
+    case rules::Phase::Open: return MatchPhase::Open;
+    case rules::Phase::Assigned: return MatchPhase::Assigned;
+    case rules::Phase::Over: return MatchPhase::Over;
+  }
+  return MatchPhase::Lobby;
+}
+
+bool Match::inPlay() const {
+  const MatchPhase p = phase();
+  return p == MatchPhase::Break || p == MatchPhase::Open || p == MatchPhase::Assigned;
+}
+
+bool Match::setPosition(const rules::GameState& state, std::vector<physics::Ball> balls) {
+  if (!started_ || flight_) return false;
+  game_ = state;
+  balls_ = std::move(balls);
+  touch();
+  return true;
+}
+
+void Match::close() {
+  closed_ = true;
+  flight_.reset();
+  touch();
+}
+
+bool Match::empty() const {
+  return !seats_[0].taken() && !seats_[1].taken() && spectators_.empty();
+}
+
+void Match::startRack(int breaker) {
+  game_ = rules::newRack(breaker);
+  balls_ = rackLayout(table(), rack_seed_ + layouts_++);
+  ++rack_;
+  started_ = true;
+  last_verdict_.clear();
+  for (Seat& s : seats_) {
+    s.fouls = 0;
+    s.wants_rematch = false;
+  }
+  touch();
+}
+
+void Match::commit(const rules::Verdict& verdict, std::vector<physics::Ball> after, int shooter) {
+  game_ = verdict.next;
+  balls_ = std::move(after);
+  last_verdict_ = rules::describe(verdict);
+  if (!verdict.legal()) ++seats_[static_cast<std::size_t>(shooter)].fouls;
+  if (verdict.rerack) {
+    // A re-rack is a fresh rack of the same game: new layout, fouls cleared.
+    balls_ = rackLayout(table(), rack_seed_ + layouts_++);
+    for (Seat& s : seats_) s.fouls = 0;
+  }
+  if (verdict.game_over && verdict.winner >= 0) {
+    ++seats_[static_cast<std::size_t>(verdict.winner)].racks_won;
+  }
+  touch();
+}
+
+void Match::forfeitSeat(int loser, const std::string& why) {
+  if (flight_) {
+    pending_forfeit_ = loser;  // judged once the shot in motion is done
+    return;
+  }
+  const rules::Verdict verdict = rules::forfeit(game_, loser);
+  game_ = verdict.next;
+  last_verdict_ = "seat " + std::to_string(loser) + " " + why + ": " + rules::describe(verdict);
+  ++seats_[static_cast<std::size_t>(verdict.winner)].racks_won;
+  touch();
+}
+
+std::vector<physics::Ball> Match::tableAfter(const rules::Verdict& verdict,
+                                             std::vector<physics::Ball> balls) {
+  for (const auto& respot : verdict.respots) {
+    for (auto& b : balls) {
+      if (b.id != respot.id) continue;
+      b = physics::Ball{};
+      b.id = respot.id;
+      b.pos = physics::Vec3(respot.pos.x(), respot.pos.y(), table().context.ball_radius);
+    }
+  }
+  return balls;
+}
+
+std::optional<int> Match::seatOf(std::uint64_t token) const {
+  if (token == 0) return std::nullopt;
+  for (int s = 0; s < 2; ++s) {
+    if (seats_[static_cast<std::size_t>(s)].token == token) return s;
+  }
+  return std::nullopt;
+}
+
+}  // namespace pool::server

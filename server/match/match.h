@@ -1,0 +1,151 @@
+// One match: two seats, spectators, the rules' state, the balls at rest, and its command handling.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "match/frame_pacer.h"
+#include "match/join.h"
+#include "match/match_types.h"
+#include "match/seat.h"
+#include "match/shot_runner.h"
+#include "net/shot_request.h"
+#include "physics/simulation.h"
+#include "rules/game_state.h"
+
+namespace pool::server {
+
+/// Frames handed out by Match::takeDueFrames: frame numbers first, first + 1, ... of one shot.
+struct DueFrames {
+  std::uint32_t first = 0;        ///< the number of frames[0] (0 at the strike)
+  std::uint32_t shot_number = 0;  ///< the shot they belong to
+  std::span<const physics::Sample> frames;
+};
+
+/// One 8-ball match. Pure logic: time comes in as `now` (s on the server's monotonic clock),
+/// shots are simulated at once and their frames handed out as `now` reaches them. Every refused
+/// command leaves it unchanged.
+class Match {
+ public:
+  Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner,
+        MatchOptions options, std::uint64_t rack_seed);
+
+  // ---- Seats and spectators (the registry checks names, versions and ids first) -------------
+
+  /// Seats `player` (client `client`) in `seat` (0, 1, or -1 for the first free one) with
+  /// `token` (non-zero). The client already in that seat gets it back unchanged (a repeated
+  /// request). Starts a rack when both seats are taken and no game is in play.
+  JoinAnswer takeSeat(int seat, const std::string& player, const std::string& client,
+                      std::uint64_t token);
+  /// Gives the seat holding `token` back to `client`, present again.
+  JoinAnswer rejoin(std::uint64_t token, const std::string& client);
+  /// The seat holding `token` leaves; a game in play is forfeited to the other seat.
+  JoinAnswer leave(std::uint64_t token);
+  /// Asks for a new rack once the match is over; it starts when both seats asked.
+  JoinAnswer rematch(std::uint64_t token);
+  /// `client` watches (counted once however often it asks).
+  JoinAnswer addSpectator(const std::string& client);
+  /// `client` stops watching; false when it was not.
+  bool removeSpectator(const std::string& client);
+
+  /// `client` vanished at `now`: its seats wait for it (away), it stops watching.
+  void clientGone(const std::string& client, double now);
+  /// Forfeits a game in play to the other seat when a seat's player has been away `grace` s or
+  /// more by `now` (once the shot in motion, if any, is done); in the lobby such a seat is freed.
+  /// A match that is over keeps the seat (its player may still rejoin). True when it acted.
+  bool expireAway(double now, double grace);
+
+  // ---- Shots ----------------------------------------------------------------------------------
+
+  /// Checks `command` (see command_check.h for the order) and, if accepted, simulates the shot
+  /// (its frames are then due from `now` on) or applies the choice. The registry has already
+  /// checked the wire fields and the match id.
+  CommandAnswer handleShot(const net::ShotRequest& command, double now);
+
+  /// The frames of the shot in motion due by `now` and not handed out before (empty when none).
+  DueFrames takeDueFrames(double now);
+  /// When the next frame is due (s); empty when no shot is in motion or all frames are out.
+  std::optional<double> nextFrameDue() const;
+  /// Once every frame of the shot in motion was handed out: commits the shot (balls, state) and
+  /// returns its report. Empty otherwise.
+  std::optional<ShotReport> finishShot();
+  /// True while a shot's frames are being published.
+  bool inMotion() const { return flight_.has_value(); }
+  /// The shot number of the shot in motion (0 when none).
+  std::uint32_t shotInMotion() const;
+
+  // ---- State ----------------------------------------------------------------------------------
+
+  const std::string& id() const { return id_; }
+  const std::string& name() const { return name_; }
+  const TableKit& table() const { return runner_->kit(); }
+  MatchPhase phase() const;
+  const std::array<Seat, 2>& seats() const { return seats_; }
+  std::size_t spectators() const { return spectators_.size(); }
+  const rules::GameState& game() const { return game_; }
+  /// Every ball at rest (pocketed ones too), id order.
+  const std::vector<physics::Ball>& balls() const { return balls_; }
+  std::uint32_t shotNumber() const { return shot_number_; }
+  std::uint32_t rack() const { return rack_; }
+  const std::string& lastVerdict() const { return last_verdict_; }
+  const MatchOptions& options() const { return options_; }
+  /// Increases with every change anyone could see (state, seats, spectators).
+  std::uint64_t revision() const { return revision_; }
+  /// True while a rack is in play (not lobby, not over).
+  bool inPlay() const;
+  /// True once the match is closed.
+  bool closed() const { return closed_; }
+  /// Replaces the rack's rules state and balls at rest (a restored match, a test position). Only
+  /// between shots of a started match; false otherwise.
+  bool setPosition(const rules::GameState& state, std::vector<physics::Ball> balls);
+  /// Marks the match closed (no more commands or joins).
+  void close();
+  /// True when nobody sits or watches.
+  bool empty() const;
+
+ private:
+  struct Flight {
+    ShotReport report;
+    std::vector<physics::Sample> frames;  ///< the trajectory, then the table at rest
+    std::vector<physics::Ball> after;     ///< the table at rest once the verdict is applied
+    FramePacer pacer;
+  };
+
+  CommandAnswer accept(const net::ShotRequest& command);
+  CommandAnswer applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
+                               std::vector<physics::Ball> after);
+  void startRack(int breaker);
+  void commit(const rules::Verdict& verdict, std::vector<physics::Ball> after, int shooter);
+  void forfeitSeat(int loser, const std::string& why);
+  std::vector<physics::Ball> tableAfter(const rules::Verdict& verdict,
+                                        std::vector<physics::Ball> balls);
+  std::optional<int> seatOf(std::uint64_t token) const;
+  void touch() { ++revision_; }
+
+  std::string id_;
+  std::string name_;
+  std::shared_ptr<ShotRunner> runner_;
+  MatchOptions options_;
+  std::uint64_t rack_seed_;
+  std::uint64_t layouts_ = 0;  ///< racks laid out so far (each from its own seed)
+  std::array<Seat, 2> seats_{};
+  std::set<std::string> spectators_;
+  bool started_ = false;
+  bool closed_ = false;
+  rules::GameState game_;
+  std::vector<physics::Ball> balls_;
+  std::uint32_t shot_number_ = 0;
+  std::uint32_t rack_ = 0;
+  std::string last_verdict_;
+  std::uint64_t revision_ = 1;
+  std::optional<Flight> flight_;
+  std::optional<int> pending_forfeit_;  ///< a seat to forfeit once the shot in motion is done
+};
+
+}  // namespace pool::server

@@ -1,0 +1,85 @@
+// The lobby: every match of one server, with unique ids, joins and leaves, and presence.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/result.h"
+#include "match/join.h"
+#include "match/match.h"
+#include "match/match_types.h"
+#include "match/shot_runner.h"
+#include "match/token_source.h"
+#include "net/shot_request.h"
+
+namespace pool::server {
+
+/// How a registry runs its matches.
+struct RegistryOptions {
+  std::string server_id;            ///< prefix of every match id; empty: 8 random hex digits
+  std::string table = "wpa-9ft";    ///< table spec of every match
+  MatchOptions match;
+  std::size_t max_matches = 256;    ///< "new" beyond this is refused (server full)
+  std::uint32_t protocol_version = 1;  ///< a join with another version is refused
+  std::uint64_t seed = 0;           ///< tokens and racks; 0: from the OS entropy source
+};
+
+/// Owns the matches of one server. Match ids are "<server id>-<n>", n counting from 1 and never
+/// reused. Pure logic: time comes in as `now` (s, monotonic).
+class MatchRegistry {
+ public:
+  /// A registry playing on `kit` (loaded once with loadTableKit).
+  MatchRegistry(RegistryOptions options, std::shared_ptr<const TableKit> kit);
+
+  const std::string& serverId() const { return server_id_; }
+  const RegistryOptions& options() const { return options_; }
+  /// The table every match of this registry is played on.
+  const TableKit& table() const { return runner_->kit(); }
+
+  /// Opens an empty match named `name` (default "Table <n>"); null when the server is full.
+  Match* open(std::string name = {});
+  /// The open match of `id`, or null.
+  Match* find(std::string_view id);
+  /// Every open match, oldest first.
+  std::vector<Match*> matches();
+
+  /// Answers a join request (the JoinAction's meaning is in join.h).
+  JoinAnswer join(const JoinCommand& command);
+  /// Routes a shot command to its match (refused with NoSuchMatch when there is none). The wire
+  /// fields were checked before (net's validateShotCommand).
+  CommandAnswer shoot(const net::ShotRequest& command, double now);
+
+  /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching.
+  void clientGone(const std::string& client, double now);
+  /// Applies grace expiries due by `now` (forfeits, freed lobby seats).
+  void expireAway(double now, double grace);
+  /// Closes matches that clients created once nobody sits in or watches them; returns their ids.
+  /// The matches opened by open() without a client stay.
+  std::vector<std::string> sweepEmpty();
+
+  /// The earliest frame due among the matches in motion (s), or empty.
+  std::optional<double> nextFrameDue() const;
+
+ private:
+  JoinAnswer seat(const JoinCommand& command);
+  JoinAnswer spectate(const JoinCommand& command);
+  JoinAnswer leave(const JoinCommand& command);
+
+  RegistryOptions options_;
+  TokenSource random_;
+  std::string server_id_;
+  std::shared_ptr<ShotRunner> runner_;
+  std::vector<std::unique_ptr<Match>> matches_;
+  std::set<std::string> client_made_;  ///< ids of matches created by a join to "new"
+  std::uint64_t opened_ = 0;
+};
+
+/// A player name is 1–31 printable characters (no control characters).
+bool validPlayerName(std::string_view name);
+
+}  // namespace pool::server

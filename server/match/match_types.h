@@ -1,0 +1,51 @@
+// What a match reports: its phase, its options, and the answers to commands (domain terms).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "match/reject.h"
+#include "physics/events.h"
+#include "rules/eight_ball.h"
+#include "rules/verdict.h"
+
+namespace pool::server {
+
+/// Where a match stands (MatchPhase of pool.idl). Lobby: waiting for two players. Break, Open,
+/// Assigned: a rack in play. Over: a winner is known. Closed: the server is removing it.
+enum class MatchPhase : std::uint8_t { Lobby, Break, Open, Assigned, Over, Closed };
+
+const char* toString(MatchPhase phase);  ///< snake_case, e.g. "assigned"
+
+/// How a match is played and published.
+struct MatchOptions {
+  double snapshot_hz = 60.0;    ///< frames per simulated second (> 0)
+  bool unpaced = false;         ///< every frame due as soon as the shot is accepted
+  double max_shot_time = 60.0;  ///< bound on a shot's simulated time, s
+  rules::EightBallConfig rules;
+};
+
+/// An accepted command once it is done: its events (none for a choice without a shot) and the
+/// verdict.
+struct ShotReport {
+  int seat = 0;
+  std::uint32_t seq = 0;
+  std::uint32_t shot_number = 0;  ///< shots of the match so far, this one included
+  physics::EventLog events;
+  rules::Verdict verdict;
+};
+
+/// The immediate answer to a shot command.
+struct CommandAnswer {
+  Rejection rejection;            ///< reason None: accepted
+  int seat = 0;                   ///< as the command gave it
+  std::uint32_t seq = 0;          ///< as the command gave it
+  std::uint32_t shot_number = 0;  ///< accepted: the shot's number; rejected: shots so far
+  bool in_motion = false;         ///< accepted shot: frames follow, then Match::finishShot
+  std::optional<ShotReport> done; ///< accepted choice without a shot: done already
+
+  bool accepted() const { return rejection.accepted(); }
+};
+
+}  // namespace pool::server

@@ -1,0 +1,46 @@
+// Loading a table for matches and laying out a fresh rack.
+#include "match/table_kit.h"
+
+#include <algorithm>
+
+#include "table/rack.h"
+
+namespace pool::server {
+
+namespace {
+
+physics::Ball restingBall(int id, const Eigen::Vector2d& at, double radius) {
+  physics::Ball b;
+  b.id = id;
+  b.pos = physics::Vec3(at.x(), at.y(), radius);
+  b.state = physics::MotionState::Stationary;
+  return b;
+}
+
+}  // namespace
+
+Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name) {
+  using Out = Result<std::shared_ptr<const TableKit>>;
+  auto spec = table::loadTableSpec(name);
+  if (!spec) return Out::fail("table " + name + ": " + spec.error());
+  auto geometry = table::loadTableGeometry(*spec);
+  if (!geometry) return Out::fail("table " + name + ": " + geometry.error());
+  auto kit = std::make_shared<TableKit>();
+  kit->spec = std::move(*spec);
+  kit->geometry = std::move(*geometry);
+  kit->context = rules::tableContext(kit->spec, kit->geometry);
+  return Out::ok(std::move(kit));
+}
+
+std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed) {
+  const double r = kit.context.ball_radius;
+  const Eigen::Vector2d cue_at = kit.context.spots.head_spot - Eigen::Vector2d(kBreakCueSetback, 0);
+  std::vector<physics::Ball> balls{restingBall(physics::kCueBall, cue_at, r)};
+  for (const auto& p : table::rackBalls(table::RackType::EightBall, kit.spec, r, seed)) {
+    balls.push_back(restingBall(p.id, p.pos, r));
+  }
+  std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  return balls;
+}
+
+}  // namespace pool::server

@@ -1,0 +1,36 @@
+// One table as a match needs it: spec, collision geometry, the rules' view, and fresh racks.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "physics/ball.h"
+#include "rules/table_context.h"
+#include "table/table_geometry.h"
+#include "table/table_spec.h"
+
+namespace pool::server {
+
+/// A loaded table, shared read-only by every match played on it.
+struct TableKit {
+  table::TableSpec spec;
+  table::TableGeometry geometry;
+  rules::TableContext context;  ///< spots, ball radius, pocket holes
+};
+
+/// Loads spec and geometry of `name` ("wpa-9ft", or a path to a spec file).
+Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name);
+
+/// How far behind the head spot (toward the head cushion) the server puts the breaking cue ball,
+/// m. The rules want a cue ball in hand strictly behind the head string, which runs through the
+/// head spot.
+inline constexpr double kBreakCueSetback = 0.01;
+
+/// A fresh 8-ball rack at rest: the fifteen object balls from the foot spot, shuffled by `seed`,
+/// and the cue ball kBreakCueSetback behind the head spot. Ids 0–15, in id order.
+std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed);
+
+}  // namespace pool::server

@@ -1,0 +1,123 @@
+// Flags over file over defaults, with CLI11 and nlohmann-json.
+#include "server_config.h"
+
+#include <CLI/CLI.hpp>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace pool::server {
+
+namespace {
+
+using Json = nlohmann::json;
+
+/// The value of `key` (or its underscore spelling) in `doc`, if present.
+const Json* find(const Json& doc, const std::string& key) {
+  std::string underscored = key;
+  for (char& c : underscored) c = c == '-' ? '_' : c;
+  for (const auto& k : {key, underscored}) {
+    if (auto it = doc.find(k); it != doc.end()) return &*it;
+  }
+  return nullptr;
+}
+
+template <class T>
+void take(const Json& doc, const std::string& key, T& into) {
+  if (const Json* v = find(doc, key)) {
+    try {
+      into = v->get<T>();
+    } catch (const Json::exception&) {
+      throw std::runtime_error(key + ": wrong type");
+    }
+  }
+}
+
+std::string readFile(const std::string& path, bool& ok) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  ok = static_cast<bool>(in);
+  return text.str();
+}
+
+}  // namespace
+
+std::string applyConfigJson(const std::string& text, ServerConfig& c) {
+  const Json doc = Json::parse(text, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) return "not a JSON object";
+  try {
+    take(doc, "domain", c.domain);
+    take(doc, "tables", c.tables);
+    take(doc, "snapshot-hz", c.snapshot_hz);
+    take(doc, "fast", c.fast);
+    take(doc, "server-id", c.server_id);
+    take(doc, "grace", c.grace);
+    take(doc, "name", c.name);
+    take(doc, "table", c.table);
+    take(doc, "log-level", c.log_level);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return {};
+}
+
+std::string checkConfig(const ServerConfig& c) {
+  if (c.domain > 232) return "domain: must be 0-232";
+  if (c.tables < 0 || c.tables > 10000) return "tables: must be 0-10000";
+  if (!(c.snapshot_hz > 0.0 && c.snapshot_hz <= 1000.0)) return "snapshot-hz: must be in (0, 1000]";
+  if (!(c.grace >= 0.0)) return "grace: must be >= 0";
+  return {};
+}
+
+ConfigOutcome parseConfig(int argc, const char* const* argv) {
+  CLI::App app{"pool-server: the authoritative 8-ball match server over Cyclone DDS"};
+  ServerConfig flags;
+  std::string config_file;
+  app.add_option("--domain", flags.domain, "DDS domain id (0-232)");
+  app.add_option("--tables", flags.tables, "empty matches to open at start");
+  app.add_option("--snapshot-hz", flags.snapshot_hz, "frames per simulated second");
+  app.add_flag("--fast", flags.fast, "publish frames unpaced (tests)");
+  app.add_option("--config", config_file, "JSON file with the same keys; flags win");
+  app.add_option("--server-id", flags.server_id, "prefix of match ids (default: random hex)");
+  app.add_option("--grace", flags.grace, "seconds a vanished player's seat is kept");
+  app.add_option("--name", flags.name, "this server's name in logs");
+  app.add_option("--table", flags.table, "table spec name or path");
+  app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error");
+  ConfigOutcome out;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    out.exit_code = app.exit(e);
+    return out;
+  }
+  if (!config_file.empty()) {
+    bool ok = false;
+    const std::string text = readFile(config_file, ok);
+    std::string error = ok ? applyConfigJson(text, out.config) : "cannot read the file";
+    if (!error.empty()) {
+      std::cerr << "--config " << config_file << ": " << error << "\n";
+      out.exit_code = 2;
+      return out;
+    }
+  }
+  // Flags given on the command line override the file.
+  ServerConfig& c = out.config;
+  if (app.count("--domain")) c.domain = flags.domain;
+  if (app.count("--tables")) c.tables = flags.tables;
+  if (app.count("--snapshot-hz")) c.snapshot_hz = flags.snapshot_hz;
+  if (app.count("--fast")) c.fast = flags.fast;
+  if (app.count("--server-id")) c.server_id = flags.server_id;
+  if (app.count("--grace")) c.grace = flags.grace;
+  if (app.count("--name")) c.name = flags.name;
+  if (app.count("--table")) c.table = flags.table;
+  if (app.count("--log-level")) c.log_level = flags.log_level;
+  if (auto error = checkConfig(c); !error.empty()) {
+    std::cerr << error << "\n";
+    out.exit_code = 2;
+  }
+  return out;
+}
+
+}  // namespace pool::server

@@ -1,0 +1,42 @@
+// pool-server's settings: command-line flags, an optional JSON file with the same keys, defaults.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pool::server {
+
+/// Everything pool-server can be told.
+struct ServerConfig {
+  std::uint32_t domain = 0;      ///< DDS domain id, 0–232
+  int tables = 0;                ///< empty matches opened at start
+  double snapshot_hz = 60.0;     ///< frames per simulated second, (0, 1000]
+  bool fast = false;             ///< publish frames unpaced
+  std::string server_id;         ///< prefix of match ids; empty: random hex
+  double grace = 30.0;           ///< s a vanished player's seat is kept
+  std::string name = "pool-server";  ///< this server's name in logs
+  std::string table = "wpa-9ft";     ///< table spec of every match
+  std::string log_level = "info";    ///< spdlog level name
+};
+
+/// The outcome of reading the command line: run with `config`, or exit with `exit_code` (help,
+/// or an error already printed).
+struct ConfigOutcome {
+  ServerConfig config;
+  std::optional<int> exit_code;
+};
+
+/// Reads flags (--domain, --tables, --snapshot-hz, --fast, --config FILE, --server-id, --grace,
+/// --name, --table, --log-level). A --config JSON file gives values under the flags' names
+/// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.
+ConfigOutcome parseConfig(int argc, const char* const* argv);
+
+/// Applies JSON `text` onto `config`, naming the key in the error; empty on success.
+std::string applyConfigJson(const std::string& text, ServerConfig& config);
+
+/// Range checks; empty when fine, else "<key>: <reason>".
+std::string checkConfig(const ServerConfig& config);
+
+}  // namespace pool::server

@@ -1,0 +1,167 @@
+// One pass of the server: requests in, answers, frames and state out.
+#include "server_loop.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+#include "net/wire_fields.h"
+#include "wire_messages.h"
+#include "wire_requests.h"
+
+namespace pool::server {
+
+namespace {
+
+template <class T>
+void publish(const net::Writer<T>& writer, const T& sample, const char* what) {
+  if (auto status = writer.write(sample); !status) spdlog::warn("{}: {}", what, status.error);
+}
+
+}  // namespace
+
+ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus)
+    : config_(config),
+      registry_(registry),
+      bus_(bus),
+      limits_(commandLimits(registry.table().spec)),
+      epoch_(std::chrono::steady_clock::now()) {}
+
+double ServerLoop::now() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - epoch_).count();
+}
+
+void ServerLoop::run(const std::atomic<bool>& stop) {
+  publishChanges();
+  while (!stop.load()) {
+    bus_.waitset.wait(waitTimeout(now()));
+    step(now());
+  }
+}
+
+void ServerLoop::step(double now) {
+  readJoins(now);
+  readCommands(now);
+  publishFrames(now);
+  registry_.expireAway(now, config_.grace);
+  for (const auto& id : registry_.sweepEmpty()) dispose(id);
+  publishChanges();
+}
+
+std::chrono::nanoseconds ServerLoop::waitTimeout(double now) const {
+  const auto due = registry_.nextFrameDue();
+  if (!due) return kMaxWait;
+  const auto until = std::chrono::duration<double>(std::max(0.0, *due - now));
+  return std::min<std::chrono::nanoseconds>(
+      kMaxWait, std::chrono::duration_cast<std::chrono::nanoseconds>(until));
+}
+
+void ServerLoop::readJoins(double now) {
+  for (auto& sample : bus_.join_requests.takeWithNotices()) {
+    const pool_JoinRequest& r = *sample;
+    if (!sample.meta().valid) {
+      // The client's JoinRequest writer is gone (lease expired or deleted): it vanished.
+      if (sample.meta().instance != net::InstanceState::Alive) {
+        const std::string client(net::textOf(r.client));
+        spdlog::info("client {} is gone ({})", client, net::toString(sample.meta().instance));
+        registry_.clientGone(client, now);
+        pool_JoinReply key{};
+        net::setText(key.client, client);
+        bus_.join_replies.unregister(key);  // its last reply need not be kept any more
+      }
+      continue;
+    }
+    auto command = joinCommand(r);
+    if (!command) {
+      spdlog::warn("unreadable join request: {}", command.error());
+      publish(bus_.join_replies, unreadableJoinReply(r, command.error(), registry_.serverId()),
+              "join reply");
+      continue;
+    }
+    const JoinAnswer answer = registry_.join(*command);
+    spdlog::info("join {} {} by {} ({}): {} {}", toString(command->action), command->match,
+                 command->client, command->name, toString(answer.outcome), answer.reason);
+    publish(bus_.join_replies, joinReply(*command, answer, registry_.serverId()), "join reply");
+  }
+}
+
+void ServerLoop::readCommands(double now) {
+  for (auto& sample : bus_.commands.take()) {
+    ReadCommand read = readCommand(*sample, limits_);
+    const std::string match(net::textOf(sample->match));
+    if (!read.refusal.accepted()) {
+      spdlog::info("command {} seat {} seq {}: {} ({})", match, sample->seat, sample->seq,
+                   toString(read.refusal.rejection.reason), read.refusal.rejection.text);
+      publishResult(match, read.refusal);
+      continue;
+    }
+    const CommandAnswer answer = registry_.shoot(read.request, now);
+    if (answer.accepted()) {
+      spdlog::info("command {} seat {} seq {}: accepted, shot {}", match, answer.seat, answer.seq,
+                   answer.shot_number);
+    } else {
+      spdlog::info("command {} seat {} seq {}: {} ({})", match, answer.seat, answer.seq,
+                   toString(answer.rejection.reason), answer.rejection.text);
+    }
+    publishResult(match, answer);
+  }
+}
+
+void ServerLoop::publishResult(const std::string& match, const CommandAnswer& answer) {
+  const auto result = answer.done ? finalResult(match, *answer.done) : commandResult(match, answer);
+  publish(bus_.results, *result, "shot result");
+  // A result keyed by a match or seat that does not exist is not kept for late readers: the
+  // writer would otherwise hold one instance per made-up key for good.
+  if (!registry_.find(match) || (answer.seat != 0 && answer.seat != 1)) {
+    bus_.results.unregister(*result);
+  }
+}
+
+void ServerLoop::publishFrames(double now) {
+  for (Match* m : registry_.matches()) {
+    if (!m->inMotion()) continue;
+    const DueFrames due = m->takeDueFrames(now);
+    for (std::size_t i = 0; i < due.frames.size(); ++i) {
+      const auto frame = static_cast<std::uint32_t>(due.first + i);
+      publish(bus_.snapshots, *snapshot(m->id(), frame, due.shot_number, due.frames[i]),
+              "snapshot");
+    }
+    if (auto report = m->finishShot()) {
+      spdlog::info("shot {} of {} done: {}", report->shot_number, m->id(), m->lastVerdict());
+      publish(bus_.results, *finalResult(m->id(), *report), "shot result");
+    }
+  }
+}
+
+void ServerLoop::publishChanges() {
+  for (Match* m : registry_.matches()) {
+    auto& published = published_[m->id()];
+    if (published == m->revision()) continue;
+    published = m->revision();
+    publish(bus_.match_info, matchInfo(*m, registry_.serverId()), "match info");
+    publish(bus_.states, *matchState(*m), "match state");
+  }
+}
+
+void ServerLoop::dispose(const std::string& match) {
+  spdlog::info("match {} closed", match);
+  pool_MatchInfo info{};
+  net::setText(info.match, match);
+  bus_.match_info.dispose(info);
+  net::Sample<pool_MatchState> state;
+  net::setText(state->match, match);
+  bus_.states.dispose(*state);
+  for (const std::int16_t seat : {std::int16_t{0}, std::int16_t{1}}) {
+    net::Sample<pool_ShotResult> result;
+    net::setText(result->match, match);
+    result->seat = seat;
+    bus_.results.dispose(*result);
+  }
+  published_.erase(match);
+}
+
+void ServerLoop::disposeAll() {
+  for (Match* m : registry_.matches()) dispose(m->id());
+}
+
+}  // namespace pool::server

@@ -1,0 +1,62 @@
+// The server's single loop: wait on DDS, answer joins and commands, publish frames and state.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "match/match_registry.h"
+#include "net/shot_command_check.h"
+#include "server_bus.h"
+#include "server_config.h"
+
+namespace pool::server {
+
+/// Serves every match of `registry` over `bus` from one thread. Each pass reads the monotonic
+/// clock once and hands that `now` to the match logic; nothing blocks on one match (frames in
+/// flight are published as their time comes, while other matches go on).
+///
+/// Presence: players and spectators keep their JoinRequest writer for the session; its automatic
+/// liveliness lease (net::qos::kPlayerLease) runs out when the process dies, and when it is deleted
+/// on a clean exit. Either way the client's JoinRequest instance turns "no writers", the reader
+/// hands the server a notice, and the client's seats go away for `grace` seconds.
+class ServerLoop {
+ public:
+  ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus);
+
+  /// Runs passes until `stop` is set (checked at least every kMaxWait).
+  void run(const std::atomic<bool>& stop);
+
+  /// One pass at `now` (s since the loop started): joins, commands, due frames, grace expiries,
+  /// then the lobby entries and states of the matches that changed.
+  void step(double now);
+
+  /// Disposes every match's lobby entry and state (shutdown: readers see them gone).
+  void disposeAll();
+
+  /// Seconds on the monotonic clock since the loop was made.
+  double now() const;
+
+  /// The longest wait for DDS in one pass.
+  static constexpr std::chrono::milliseconds kMaxWait{20};
+
+ private:
+  void readJoins(double now);
+  void readCommands(double now);
+  void publishFrames(double now);
+  void publishResult(const std::string& match, const CommandAnswer& answer);
+  void publishChanges();
+  void dispose(const std::string& match);
+  std::chrono::nanoseconds waitTimeout(double now) const;
+
+  ServerConfig config_;
+  MatchRegistry& registry_;
+  ServerBus& bus_;
+  net::CommandLimits limits_;
+  std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
+  std::chrono::steady_clock::time_point epoch_;
+};
+
+}  // namespace pool::server

@@ -1,0 +1,68 @@
+// Test helpers for matches without DDS: the real 9-ft table loaded once, seated matches, commands.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "match/match.h"
+#include "match/match_registry.h"
+#include "match/table_kit.h"
+#include "net/shot_request.h"
+
+namespace pool::server::test {
+
+/// The 9-ft table, loaded once for the whole test program.
+inline std::shared_ptr<const TableKit> nineFoot() {
+  static const auto kit = [] {
+    auto loaded = loadTableKit("wpa-9ft");
+    EXPECT_TRUE(loaded) << loaded.error();
+    return loaded ? *loaded : nullptr;
+  }();
+  return kit;
+}
+
+/// One runner on the 9-ft table, shared like a server shares it.
+inline std::shared_ptr<ShotRunner> runner() {
+  static const auto shared = std::make_shared<ShotRunner>(nineFoot());
+  return shared;
+}
+
+/// Options: 60 Hz frames, paced, standard calls.
+inline MatchOptions pacedOptions() {
+  return MatchOptions{};
+}
+
+constexpr std::uint64_t kToken0 = 0x1111;
+constexpr std::uint64_t kToken1 = 0x2222;
+
+/// A match with "Ada" (client a, seat 0) and "Bob" (client b, seat 1) seated: the rack is up.
+inline std::unique_ptr<Match> seatedMatch(MatchOptions options = pacedOptions()) {
+  auto m = std::make_unique<Match>("srv-1", "Table 1", runner(), options, 42);
+  EXPECT_TRUE(m->takeSeat(0, "Ada", "a", kToken0).accepted());
+  EXPECT_TRUE(m->takeSeat(1, "Bob", "b", kToken1).accepted());
+  return m;
+}
+
+/// A firm break straight up the table from the cue ball's spot, by seat 0.
+inline net::ShotRequest breakShot(std::uint32_t seq = 1) {
+  net::ShotRequest r;
+  r.match = "srv-1";
+  r.seat = 0;
+  r.seat_token = kToken0;
+  r.seq = seq;
+  r.cue.yaw = 0.0;
+  r.cue.speed = 8.0;
+  r.cue.tip_height = 0.1;
+  return r;
+}
+
+/// Runs the shot in motion to its end (taking every frame) and returns its report.
+inline std::optional<ShotReport> finishNow(Match& match, double now = 1e6) {
+  match.takeDueFrames(now);
+  return match.finishShot();
+}
+
+}  // namespace pool::server::test

@@ -1,0 +1,162 @@
+// The lobby: unique match ids, joins with their outcomes, presence, commands routed by match id.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "match_fixture.h"
+
+namespace pool::server {
+namespace {
+
+using namespace test;
+
+RegistryOptions fixedOptions(std::string server_id = "srv") {
+  RegistryOptions o;
+  o.server_id = std::move(server_id);
+  o.seed = 1234;
+  o.max_matches = 4;
+  return o;
+}
+
+JoinCommand seatRequest(std::string client, std::string match, std::string name, int seat = -1) {
+  JoinCommand c;
+  c.client = std::move(client);
+  c.protocol_version = 1;
+  c.match = std::move(match);
+  c.action = JoinAction::Seat;
+  c.seat = seat;
+  c.name = std::move(name);
+  return c;
+}
+
+JoinCommand withToken(std::string client, std::string match, JoinAction action,
+                      std::uint64_t token) {
+  JoinCommand c = seatRequest(std::move(client), std::move(match), "");
+  c.action = action;
+  c.token = token;
+  return c;
+}
+
+TEST(MatchRegistry, MatchIdsAreTheServerIdAndACounter) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  EXPECT_EQ(r.open()->id(), "srv-1");
+  EXPECT_EQ(r.open()->id(), "srv-2");
+  EXPECT_EQ(r.find("srv-2")->name(), "Table 2");
+  EXPECT_EQ(r.find("srv-3"), nullptr);
+}
+
+TEST(MatchRegistry, WithoutAServerIdOneIsDrawnAtRandom) {
+  RegistryOptions o = fixedOptions("");
+  o.seed = 0;
+  MatchRegistry a(o, nineFoot());
+  MatchRegistry b(o, nineFoot());
+  EXPECT_TRUE(std::regex_match(a.serverId(), std::regex("[0-9a-f]{8}"))) << a.serverId();
+  EXPECT_NE(a.serverId(), b.serverId());
+  EXPECT_EQ(a.open()->id(), a.serverId() + "-1");
+}
+
+TEST(MatchRegistry, SeatsGetDistinctNonZeroTokens) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  const JoinAnswer a = r.join(seatRequest("a", "srv-1", "Ada"));
+  const JoinAnswer b = r.join(seatRequest("b", "srv-1", "Bob"));
+  ASSERT_TRUE(a.accepted() && b.accepted());
+  EXPECT_EQ(a.match, "srv-1");
+  EXPECT_NE(a.token, 0u);
+  EXPECT_NE(b.token, 0u);
+  EXPECT_NE(a.token, b.token);
+  EXPECT_EQ(r.find("srv-1")->phase(), MatchPhase::Break);
+  EXPECT_EQ(r.join(seatRequest("c", "srv-1", "Cy")).outcome, JoinOutcome::MatchFull);
+}
+
+TEST(MatchRegistry, RefusalsCarryTheirOutcome) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  EXPECT_EQ(r.join(seatRequest("a", "srv-9", "Ada")).outcome, JoinOutcome::NoSuchMatch);
+  EXPECT_EQ(r.join(seatRequest("a", "srv-1", "")).outcome, JoinOutcome::BadName);
+  EXPECT_EQ(r.join(seatRequest("a", "srv-1", "A\nda")).outcome, JoinOutcome::BadName);
+  EXPECT_EQ(r.join(seatRequest("a", "srv-1", "Ada", 2)).outcome, JoinOutcome::NotAllowed);
+  JoinCommand old = seatRequest("a", "srv-1", "Ada");
+  old.protocol_version = 0;
+  EXPECT_EQ(r.join(old).outcome, JoinOutcome::VersionMismatch);
+  EXPECT_EQ(r.join(withToken("a", "srv-1", JoinAction::Rejoin, 5)).outcome,
+            JoinOutcome::BadToken);
+  EXPECT_EQ(r.join(withToken("a", "srv-1", JoinAction::Leave, 0)).outcome,
+            JoinOutcome::NotAllowed);
+}
+
+TEST(MatchRegistry, NewMatchesAreCreatedOnDemandUntilTheServerIsFull) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  for (int i = 1; i <= 4; ++i) {
+    const JoinAnswer a = r.join(seatRequest("a", "new", "Ada"));
+    ASSERT_TRUE(a.accepted());
+    EXPECT_EQ(a.match, "srv-" + std::to_string(i));
+  }
+  EXPECT_EQ(r.join(seatRequest("a", "new", "Ada")).outcome, JoinOutcome::ServerFull);
+}
+
+TEST(MatchRegistry, CreatedMatchesCloseWhenEveryoneLeft) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  const JoinAnswer a = r.join(seatRequest("a", "new", "Ada"));
+  ASSERT_TRUE(a.accepted());
+  EXPECT_TRUE(r.sweepEmpty().empty());
+  ASSERT_TRUE(r.join(withToken("a", a.match, JoinAction::Leave, a.token)).accepted());
+  EXPECT_EQ(r.sweepEmpty(), std::vector<std::string>{a.match});
+  EXPECT_EQ(r.find(a.match), nullptr);
+  EXPECT_NE(r.find("srv-1"), nullptr);  // opened by the server: stays
+  EXPECT_EQ(r.join(seatRequest("b", "new", "Bob")).match, "srv-3");  // ids are never reused
+}
+
+TEST(MatchRegistry, SpectatorsJoinAndLeave) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  JoinCommand watch = seatRequest("s", "srv-1", "");
+  watch.action = JoinAction::Spectate;
+  const JoinAnswer w = r.join(watch);
+  ASSERT_TRUE(w.accepted());
+  EXPECT_EQ(w.seat, -1);
+  EXPECT_EQ(w.token, 0u);
+  EXPECT_EQ(r.find("srv-1")->spectators(), 1u);
+  ASSERT_TRUE(r.join(withToken("s", "srv-1", JoinAction::Leave, 0)).accepted());
+  EXPECT_EQ(r.find("srv-1")->spectators(), 0u);
+}
+
+TEST(MatchRegistry, AVanishedPlayerRejoinsWithTheTokenOrForfeitsAfterTheGrace) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  r.open();
+  const JoinAnswer a1 = r.join(seatRequest("a", "srv-1", "Ada"));
+  ASSERT_TRUE(r.join(seatRequest("b", "srv-1", "Bob")).accepted());
+  const JoinAnswer a2 = r.join(seatRequest("a", "srv-2", "Ada"));
+  ASSERT_TRUE(r.join(seatRequest("c", "srv-2", "Cy")).accepted());
+  r.clientGone("a", 100.0);
+  EXPECT_FALSE(r.find("srv-1")->seats()[0].connected());
+  EXPECT_FALSE(r.find("srv-2")->seats()[0].connected());
+  const JoinAnswer back = r.join(withToken("a-restarted", "srv-1", JoinAction::Rejoin, a1.token));
+  ASSERT_TRUE(back.accepted());
+  EXPECT_EQ(back.seat, 0);
+  EXPECT_EQ(back.token, a1.token);
+  r.expireAway(130.0, 30.0);
+  EXPECT_EQ(r.find("srv-1")->phase(), MatchPhase::Break);  // came back in time
+  EXPECT_EQ(r.find("srv-2")->phase(), MatchPhase::Over);   // did not
+  EXPECT_EQ(r.find("srv-2")->game().winner, 1);
+  (void)a2;
+}
+
+TEST(MatchRegistry, ShotsAreRoutedByMatchIdAndUnknownMatchesRefused) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  const JoinAnswer a = r.join(seatRequest("a", "srv-1", "Ada"));
+  ASSERT_TRUE(r.join(seatRequest("b", "srv-1", "Bob")).accepted());
+  net::ShotRequest shot = breakShot();
+  shot.seat_token = a.token;
+  shot.match = "srv-7";
+  EXPECT_EQ(r.shoot(shot, 0.0).rejection.reason, Reject::NoSuchMatch);
+  shot.match = "srv-1";
+  EXPECT_TRUE(r.shoot(shot, 0.0).accepted());
+  EXPECT_EQ(r.nextFrameDue(), 0.0);
+}
+
+}  // namespace
+}  // namespace pool::server

@@ -1,0 +1,221 @@
+// A match's seats, its rack, and an accepted break from command to committed verdict.
+#include <gtest/gtest.h>
+
+#include "match_fixture.h"
+#include "rules/table_context.h"
+
+namespace pool::server {
+namespace {
+
+using namespace test;
+
+TEST(MatchSeats, TwoPlayersStartARackWithTheCueBallBehindTheHeadString) {
+  Match m("srv-1", "Table 1", runner(), {}, 7);
+  EXPECT_EQ(m.phase(), MatchPhase::Lobby);
+  const JoinAnswer a = m.takeSeat(-1, "Ada", "a", kToken0);
+  ASSERT_TRUE(a.accepted());
+  EXPECT_EQ(a.seat, 0);
+  EXPECT_EQ(a.token, kToken0);
+  EXPECT_EQ(m.phase(), MatchPhase::Lobby);
+  const JoinAnswer b = m.takeSeat(-1, "Bob", "b", kToken1);
+  ASSERT_TRUE(b.accepted());
+  EXPECT_EQ(b.seat, 1);
+  EXPECT_EQ(m.phase(), MatchPhase::Break);
+  EXPECT_EQ(m.game().shooter, 0);
+  EXPECT_EQ(m.rack(), 1u);
+  ASSERT_EQ(m.balls().size(), 16u);
+  EXPECT_LT(m.balls()[0].pos.x(), m.table().context.spots.head_string_x);
+}
+
+TEST(MatchSeats, TakenSeatsAndFullMatchesAreRefused) {
+  auto m = seatedMatch();
+  EXPECT_EQ(m->takeSeat(0, "Cy", "c", 0x3333).outcome, JoinOutcome::SeatTaken);
+  EXPECT_EQ(m->takeSeat(-1, "Cy", "c", 0x3333).outcome, JoinOutcome::MatchFull);
+}
+
+TEST(MatchSeats, ARepeatedRequestGetsTheSameSeatAndToken) {
+  auto m = seatedMatch();
+  const std::uint64_t before = m->revision();
+  const JoinAnswer again = m->takeSeat(-1, "Ada", "a", 0x9999);
+  ASSERT_TRUE(again.accepted());
+  EXPECT_EQ(again.seat, 0);
+  EXPECT_EQ(again.token, kToken0);
+  EXPECT_EQ(m->revision(), before);
+}
+
+TEST(MatchSeats, SpectatorsAreCountedOnce) {
+  auto m = seatedMatch();
+  m->addSpectator("s1");
+  m->addSpectator("s1");
+  m->addSpectator("s2");
+  EXPECT_EQ(m->spectators(), 2u);
+  EXPECT_TRUE(m->removeSpectator("s1"));
+  EXPECT_FALSE(m->removeSpectator("s1"));
+  m->clientGone("s2", 1.0);
+  EXPECT_EQ(m->spectators(), 0u);
+}
+
+TEST(MatchShot, AnAcceptedBreakPublishesPacedFramesThenCommits) {
+  auto m = seatedMatch();
+  const double start = 100.0;
+  const CommandAnswer answer = m->handleShot(breakShot(), start);
+  ASSERT_TRUE(answer.accepted()) << answer.rejection.text;
+  EXPECT_TRUE(answer.in_motion);
+  EXPECT_EQ(answer.shot_number, 1u);
+  EXPECT_TRUE(m->inMotion());
+  EXPECT_EQ(m->shotNumber(), 0u);  // committed only when the motion is out
+
+  // Frames at exactly k / 60 s of simulated time, each handed out once its time has come.
+  auto first = m->takeDueFrames(start).frames;
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].t, 0.0);
+  EXPECT_EQ(first[0].balls.size(), 16u);
+  EXPECT_EQ(m->nextFrameDue(), start + 1.0 / 60.0);
+  const DueFrames due = m->takeDueFrames(start + 0.5);
+  EXPECT_EQ(due.first, 1u);
+  EXPECT_EQ(due.shot_number, 1u);
+  auto next = due.frames;
+  ASSERT_EQ(next.size(), 30u);
+  EXPECT_DOUBLE_EQ(next.back().t, 30.0 / 60.0);
+  EXPECT_FALSE(m->finishShot());
+
+  const auto report = finishNow(*m);
+  ASSERT_TRUE(report);
+  EXPECT_FALSE(m->inMotion());
+  EXPECT_EQ(report->shot_number, 1u);
+  EXPECT_EQ(report->seat, 0);
+  ASSERT_FALSE(report->events.empty());
+  EXPECT_EQ(report->events.front().type, physics::EventType::Strike);
+  EXPECT_EQ(m->shotNumber(), 1u);
+  EXPECT_NE(m->phase(), MatchPhase::Break);
+  EXPECT_EQ(m->game().shooter, report->verdict.next.shooter);
+  EXPECT_EQ(m->seats()[0].last_seq, 1u);
+  EXPECT_FALSE(m->lastVerdict().empty());
+  for (const auto& b : m->balls()) {
+    EXPECT_LT(b.vel.norm(), 1e-6) << "ball " << b.id << " still moves";
+  }
+}
+
+TEST(MatchShot, UnpacedShotsHandOutEveryFrameAtOnceAndEndAtRest) {
+  MatchOptions fast;
+  fast.unpaced = true;
+  auto m = seatedMatch(fast);
+  ASSERT_TRUE(m->handleShot(breakShot(), 5.0).accepted());
+  const auto frames = m->takeDueFrames(5.0).frames;
+  ASSERT_GT(frames.size(), 60u);
+  EXPECT_FALSE(m->nextFrameDue());
+  const auto last_frame = frames.back();
+  const auto report = m->finishShot();
+  ASSERT_TRUE(report);
+  // The last frame is the table at rest (before any re-spot the verdict asked for).
+  ASSERT_EQ(last_frame.balls.size(), m->balls().size());
+  if (report->verdict.respots.empty() && !report->verdict.rerack) {
+    for (std::size_t i = 0; i < last_frame.balls.size(); ++i) {
+      EXPECT_EQ(last_frame.balls[i].pos, m->balls()[i].pos) << "ball " << i;
+    }
+  }
+}
+
+TEST(MatchShot, TheSameBreakOnTheSameRackGivesTheSameOutcome) {
+  MatchOptions fast;
+  fast.unpaced = true;
+  auto a = seatedMatch(fast);
+  auto b = seatedMatch(fast);
+  ASSERT_TRUE(a->handleShot(breakShot(), 0.0).accepted());
+  ASSERT_TRUE(b->handleShot(breakShot(), 0.0).accepted());
+  const auto ra = finishNow(*a);
+  const auto rb = finishNow(*b);
+  ASSERT_TRUE(ra && rb);
+  ASSERT_EQ(ra->events.size(), rb->events.size());
+  for (std::size_t i = 0; i < a->balls().size(); ++i) {
+    EXPECT_EQ(a->balls()[i].pos, b->balls()[i].pos);
+  }
+}
+
+TEST(MatchShot, AChoiceWithoutAShotIsDoneAtOnce) {
+  auto m = seatedMatch();
+  rules::GameState st = m->game();
+  st.phase = rules::Phase::Open;
+  st.shooter = 1;
+  st.options = {rules::Choice::PlayOn, rules::Choice::ReBreak};
+  ASSERT_TRUE(m->setPosition(st, m->balls()));
+  net::ShotRequest r = breakShot();
+  r.seat = 1;
+  r.seat_token = kToken1;
+  r.option = net::ShotOption::ReBreak;
+  r.cue.speed = 0.0;  // no shot: the cue values are not looked at
+  const CommandAnswer answer = m->handleShot(r, 1.0);
+  ASSERT_TRUE(answer.accepted()) << answer.rejection.text;
+  EXPECT_FALSE(answer.in_motion);
+  ASSERT_TRUE(answer.done);
+  EXPECT_TRUE(answer.done->verdict.rerack);
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
+  EXPECT_EQ(m->game().breaker, 1);
+  EXPECT_EQ(m->game().shooter, 1);
+  EXPECT_EQ(m->seats()[1].last_seq, 1u);
+}
+
+TEST(MatchPresence, ALeaverInPlayForfeitsToTheOpponent) {
+  auto m = seatedMatch();
+  ASSERT_TRUE(m->leave(kToken1).accepted());
+  EXPECT_EQ(m->phase(), MatchPhase::Over);
+  EXPECT_EQ(m->game().winner, 0);
+  EXPECT_EQ(m->game().end, rules::GameEnd::Forfeit);
+  EXPECT_EQ(m->seats()[0].racks_won, 1);
+  EXPECT_FALSE(m->seats()[1].taken());
+}
+
+TEST(MatchPresence, AnAwayPlayerKeepsTheSeatForTheGracePeriodAndMayRejoin) {
+  auto m = seatedMatch();
+  m->clientGone("b", 10.0);
+  EXPECT_FALSE(m->seats()[1].connected());
+  EXPECT_FALSE(m->expireAway(39.9, 30.0));
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
+  const JoinAnswer back = m->rejoin(kToken1, "b2");
+  ASSERT_TRUE(back.accepted());
+  EXPECT_EQ(back.seat, 1);
+  EXPECT_TRUE(m->seats()[1].connected());
+  EXPECT_FALSE(m->expireAway(100.0, 30.0));
+  EXPECT_EQ(m->rejoin(0x7777, "x").outcome, JoinOutcome::BadToken);
+}
+
+TEST(MatchPresence, PastTheGracePeriodTheGameIsForfeited) {
+  auto m = seatedMatch();
+  m->clientGone("a", 10.0);
+  EXPECT_TRUE(m->expireAway(40.0, 30.0));
+  EXPECT_EQ(m->phase(), MatchPhase::Over);
+  EXPECT_EQ(m->game().winner, 1);
+  EXPECT_EQ(m->game().end, rules::GameEnd::Forfeit);
+}
+
+TEST(MatchPresence, AForfeitDuringAShotWaitsForItsEnd) {
+  auto m = seatedMatch();
+  ASSERT_TRUE(m->handleShot(breakShot(), 0.0).accepted());
+  m->clientGone("b", 0.0);
+  EXPECT_TRUE(m->expireAway(31.0, 30.0));
+  EXPECT_TRUE(m->inMotion());
+  ASSERT_TRUE(finishNow(*m));
+  if (m->phase() != MatchPhase::Over || m->game().end != rules::GameEnd::Forfeit) {
+    ADD_FAILURE() << "not forfeited after the shot: " << toString(m->phase());
+  }
+  EXPECT_EQ(m->game().winner, 0);
+}
+
+TEST(MatchRematch, BothPlayersMustAskAndTheOtherSeatBreaks) {
+  auto m = seatedMatch();
+  EXPECT_EQ(m->rematch(kToken0).outcome, JoinOutcome::NotAllowed);  // not over yet
+  m->clientGone("b", 0.0);
+  m->expireAway(30.0, 30.0);
+  ASSERT_EQ(m->phase(), MatchPhase::Over);
+  ASSERT_TRUE(m->rejoin(kToken1, "b").accepted());
+  ASSERT_TRUE(m->rematch(kToken0).accepted());
+  EXPECT_EQ(m->phase(), MatchPhase::Over);
+  ASSERT_TRUE(m->rematch(kToken1).accepted());
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
+  EXPECT_EQ(m->rack(), 2u);
+  EXPECT_EQ(m->game().breaker, 1);
+  EXPECT_EQ(m->seats()[0].racks_won, 1);
+}
+
+}  // namespace
+}  // namespace pool::server

@@ -1,0 +1,109 @@
+// Integration-test fixture: a real pool-server on a test's own domain, seated players, shots.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "server_process.h"
+#include "test_client.h"
+
+namespace pool::server::test {
+
+/// Server integration tests use DDS domains 100–119, one per test (ctest runs them in parallel).
+enum Domain : std::uint32_t {
+  kBreakFlow = 100,
+  kRejections,
+  kSpectator,
+  kTwoMatches,
+  kSigterm,
+  kRejoin,
+  kForfeit,
+  kJoinRefusals,
+  kNewMatch,
+  kSideBySide,
+};
+
+/// Two players seated in one match.
+struct Seated {
+  std::string match;
+  std::uint64_t token[2] = {0, 0};
+};
+
+/// Starts pool-server in SetUp-called start(); prints its log when a test failed.
+class ServerTest : public ::testing::Test {
+ protected:
+  void SetUp() override { useLoopbackConfig(); }
+  void TearDown() override {
+    if (server_ && HasFailure()) std::cerr << "---- pool-server log ----\n" << server_->log();
+  }
+
+  /// Starts the server on `domain` with server id "t" and `args`.
+  void start(std::uint32_t domain, std::vector<std::string> args) {
+    args.insert(args.end(), {"--server-id", "t", "--log-level", "debug"});
+    server_ = std::make_unique<ServerProcess>(domain, args);
+    ASSERT_GT(server_->pid(), 0);
+  }
+
+  /// Seats `a` in seat 0 and `b` in seat 1 of `match`.
+  static Seated seat(TestClient& a, TestClient& b, const std::string& match) {
+    Seated s;
+    s.match = match;
+    const auto ra = a.join(pool_JOIN_SEAT, match, "Ada", 0);
+    const auto rb = b.join(pool_JOIN_SEAT, match, "Bob", 1);
+    EXPECT_TRUE(ra && ra->outcome == pool_JOIN_ACCEPTED);
+    EXPECT_TRUE(rb && rb->outcome == pool_JOIN_ACCEPTED);
+    if (ra) s.token[0] = ra->seat_token;
+    if (rb) s.token[1] = rb->seat_token;
+    return s;
+  }
+
+  std::unique_ptr<ServerProcess> server_;
+};
+
+/// A firm break up the table from where the server racks the cue ball.
+inline net::ShotRequest breakShot(const Seated& s, int seat, std::uint32_t seq) {
+  net::ShotRequest r;
+  r.match = s.match;
+  r.seat = seat;
+  r.seat_token = s.token[seat];
+  r.seq = seq;
+  r.cue.speed = 8.0;
+  r.cue.tip_height = 0.1;
+  return r;
+}
+
+/// A slow roll toward the head cushion, hitting nothing: about two seconds of motion.
+inline net::ShotRequest softShot(const Seated& s, int seat, std::uint32_t seq) {
+  net::ShotRequest r = breakShot(s, seat, seq);
+  r.cue.yaw = std::numbers::pi;
+  r.cue.speed = 0.3;
+  r.cue.tip_height = 0.0;
+  return r;
+}
+
+/// A safety by whoever is to shoot in `state`: the first offered choice that shoots, the cue
+/// ball placed behind the head string when it is in hand.
+inline net::ShotRequest anyLegalShot(const pool_MatchState& state, const Seated& s,
+                                     std::uint32_t seq) {
+  net::ShotRequest r = breakShot(s, state.shooter, seq);
+  r.safety = true;
+  for (std::uint32_t i = 0; i < state.options._length && r.option == net::ShotOption::None; ++i) {
+    const auto option = net::fromWire(state.options._buffer[i]);
+    if (option && net::optionShoots(*option)) r.option = *option;
+  }
+  const bool in_hand = state.ball_in_hand != pool_IN_HAND_NONE ||
+                       r.option == net::ShotOption::BallInHand;
+  if (in_hand) r.cue_ball_at = Eigen::Vector2d(-0.9, 0.3);
+  return r;
+}
+
+inline bool isFinal(const pool_ShotResult& r) {
+  return r.accepted && r.verdict_text[0] != '\0';
+}
+
+}  // namespace pool::server::test

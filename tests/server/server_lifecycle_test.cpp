@@ -1,0 +1,70 @@
+// pool-server's process life: clean exit on SIGTERM and SIGINT; flags, config file and their order.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "server_config.h"
+#include "server_fixture.h"
+
+namespace pool::server::test {
+namespace {
+
+class ServerLifecycle : public ServerTest {};
+
+TEST_F(ServerLifecycle, SigtermEndsTheServerCleanlyAndQuickly) {
+  start(kSigterm, {"--tables", "2", "--fast"});
+  TestClient watcher(kSigterm, "w");
+  ASSERT_TRUE(watcher.waitForServer(2));
+  const auto sent = std::chrono::steady_clock::now();
+  server_->signal(SIGTERM);
+  const auto code = server_->waitExit(5s);
+  ASSERT_TRUE(code) << "still running 5 s after SIGTERM";
+  EXPECT_EQ(*code, 0);
+  EXPECT_LT(std::chrono::steady_clock::now() - sent, 2s);
+  // The lobby entries were disposed on the way out.
+  EXPECT_TRUE(watcher.waitUntil([&] { return watcher.disposed_infos.size() == 2; }, 3s));
+}
+
+TEST_F(ServerLifecycle, NewMatchesAreOpenedOnRequestAndSigintEndsTheServer) {
+  start(kNewMatch, {});
+  TestClient a(kNewMatch, "a");
+  ASSERT_TRUE(a.waitForServer(0));
+  const auto created = a.join(pool_JOIN_SEAT, "new", "Ada");
+  ASSERT_TRUE(created);
+  EXPECT_EQ(created->outcome, pool_JOIN_ACCEPTED);
+  EXPECT_STREQ(created->match, "t-1");
+  EXPECT_TRUE(a.waitUntil([&] { return a.liveInfos() == 1; }));
+  server_->signal(SIGINT);
+  const auto code = server_->waitExit(5s);
+  ASSERT_TRUE(code);
+  EXPECT_EQ(*code, 0);
+}
+
+TEST(ServerConfig, FileValuesApplyAndFlagsWin) {
+  const std::string path = "/tmp/pool-server-config-test-" + std::to_string(::getpid()) + ".json";
+  std::ofstream(path) << R"({"domain": 7, "tables": 3, "snapshot_hz": 30, "fast": true,
+                             "server-id": "lab", "grace": 5})";
+  const char* argv[] = {"pool-server", "--config", path.c_str(), "--tables", "9"};
+  const ConfigOutcome out = parseConfig(5, argv);
+  std::remove(path.c_str());
+  ASSERT_FALSE(out.exit_code);
+  EXPECT_EQ(out.config.domain, 7u);
+  EXPECT_EQ(out.config.tables, 9);
+  EXPECT_EQ(out.config.snapshot_hz, 30.0);
+  EXPECT_TRUE(out.config.fast);
+  EXPECT_EQ(out.config.server_id, "lab");
+  EXPECT_EQ(out.config.grace, 5.0);
+}
+
+TEST(ServerConfig, BadValuesAreRefusedWithTheirKey) {
+  ServerConfig c;
+  EXPECT_EQ(applyConfigJson(R"({"grace": "soon"})", c), "grace: wrong type");
+  EXPECT_EQ(applyConfigJson("[1]", c), "not a JSON object");
+  c.snapshot_hz = 0;
+  EXPECT_NE(checkConfig(c).find("snapshot-hz"), std::string::npos);
+  const char* argv[] = {"pool-server", "--domain", "500"};
+  EXPECT_EQ(parseConfig(3, argv).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace pool::server::test

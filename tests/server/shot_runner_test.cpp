@@ -1,0 +1,57 @@
+// Shots through the physics: balls already down are carried through untouched, frames on the grid.
+#include <gtest/gtest.h>
+
+#include "match/shot_runner.h"
+#include "match_fixture.h"
+#include "physics/simulation.h"
+
+namespace pool::server {
+namespace {
+
+using namespace test;
+
+TEST(RackLayout, SixteenBallsAtRestAndTheCueBallJustBehindTheHeadString) {
+  const auto balls = rackLayout(*nineFoot(), 3);
+  ASSERT_EQ(balls.size(), 16u);
+  for (int id = 0; id < 16; ++id) EXPECT_EQ(balls[static_cast<std::size_t>(id)].id, id);
+  const auto& spots = nineFoot()->context.spots;
+  EXPECT_DOUBLE_EQ(balls[0].pos.x(), spots.head_spot.x() - kBreakCueSetback);
+  EXPECT_LT(balls[0].pos.x(), spots.head_string_x);
+  EXPECT_EQ(physics::checkPlacement(balls, nineFoot()->geometry, nineFoot()->spec.params), "");
+  EXPECT_NE(rackLayout(*nineFoot(), 4)[5].pos, balls[5].pos);  // another seed, another order
+}
+
+TEST(ShotRunner, BallsAlreadyDownStayOutAndComeBackUnchanged) {
+  auto balls = rackLayout(*nineFoot(), 3);
+  balls[9].state = physics::MotionState::Pocketed;
+  balls[9].pocket = "foot_left_corner";
+  balls[9].pos = physics::Vec3(1.4, 0.7, -0.1);
+  physics::CueShot cue;
+  cue.speed = 2.0;
+  cue.yaw = 3.0;  // away from the rack
+  auto outcome = runner()->run(balls, cue, 30.0, 60.0);
+  ASSERT_TRUE(outcome) << outcome.error();
+  ASSERT_EQ(outcome->balls.size(), 16u);
+  EXPECT_EQ(outcome->balls[9].pos, balls[9].pos);
+  EXPECT_EQ(outcome->balls[9].state, physics::MotionState::Pocketed);
+  ASSERT_GT(outcome->trajectory.size(), 2u);
+  for (std::size_t k = 0; k < outcome->trajectory.size(); ++k) {
+    const auto& frame = outcome->trajectory[k];
+    EXPECT_EQ(frame.t, static_cast<double>(k) / 30.0);
+    ASSERT_EQ(frame.balls.size(), 16u);
+    EXPECT_EQ(frame.balls[9].pos, balls[9].pos);
+  }
+}
+
+TEST(ShotRunner, ALayoutThePhysicsRefusesFails) {
+  auto balls = rackLayout(*nineFoot(), 3);
+  balls[0].pos = balls[1].pos;
+  physics::CueShot cue;
+  cue.speed = 2.0;
+  const auto outcome = runner()->run(balls, cue, 30.0, 60.0);
+  ASSERT_FALSE(outcome);
+  EXPECT_NE(outcome.error().find("overlaps"), std::string::npos) << outcome.error();
+}
+
+}  // namespace
+}  // namespace pool::server

@@ -1,0 +1,237 @@
+// A player or spectator for integration tests: its own DDS participant talking to a server.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "net/convert.h"
+#include "net/messages.h"
+#include "net/participant.h"
+#include "net/qos_profiles.h"
+#include "net/reader.h"
+#include "net/shot_request.h"
+#include "net/topic.h"
+#include "net/waitset.h"
+#include "net/wire_fields.h"
+#include "net/writer.h"
+
+namespace pool::server::test {
+
+using namespace std::chrono_literals;
+
+/// A profile that keeps every sample in this reader (so a test can look at each one in turn).
+inline net::QosProfile keepAll(net::QosProfile profile) {
+  profile.history_depth = 0;
+  return profile;
+}
+
+/// One client: writes joins and commands, and records every reply, result, state, lobby entry
+/// and frame it receives (in deques, so pointers to them stay valid). Every wait is bounded.
+class TestClient {
+ public:
+  TestClient(std::uint32_t domain, std::string id)
+      : id_(std::move(id)),
+        participant_(domain),
+        info_topic_(participant_),
+        join_topic_(participant_),
+        reply_topic_(participant_),
+        command_topic_(participant_),
+        result_topic_(participant_),
+        snapshot_topic_(participant_),
+        state_topic_(participant_),
+        join_writer_(participant_, join_topic_, net::qos::joinRequest()),
+        command_writer_(participant_, command_topic_, net::qos::command()),
+        infos_(participant_, info_topic_, keepAll(net::qos::lobby())),
+        replies_(participant_, reply_topic_, keepAll(net::qos::joinReply())),
+        results_(participant_, result_topic_, keepAll(net::qos::result())),
+        snapshots_(participant_, snapshot_topic_, keepAll(net::qos::snapshot())),
+        states_(participant_, state_topic_, keepAll(net::qos::state())),
+        waitset_(participant_) {
+    waitset_.attachData(infos_, 1);
+    waitset_.attachData(replies_, 2);
+    waitset_.attachData(results_, 3);
+    waitset_.attachData(snapshots_, 4);
+    waitset_.attachData(states_, 5);
+  }
+
+  const std::string& id() const { return id_; }
+
+  /// Pumps the readers until `done()` holds or `timeout` passes; returns done().
+  bool waitUntil(const std::function<bool()>& done, std::chrono::milliseconds timeout = 10s) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    pump();
+    while (!done()) {
+      if (std::chrono::steady_clock::now() >= deadline) return false;
+      waitset_.wait(20ms);
+      pump();
+    }
+    return true;
+  }
+
+  /// Waits until the server's lobby shows at least `matches` matches (the server is up and seen).
+  bool waitForServer(std::size_t matches = 1, std::chrono::milliseconds timeout = 15s) {
+    const bool seen = waitUntil([&] { return liveInfos() >= matches; }, timeout);
+    return seen && join_writer_.waitForReaders(1, timeout) &&
+           command_writer_.waitForReaders(1, timeout);
+  }
+
+  /// Sends a join request and waits for its reply.
+  std::optional<pool_JoinReply> join(pool_JoinAction action, const std::string& match,
+                                     const std::string& name = "", short seat = -1,
+                                     std::uint64_t token = 0,
+                                     std::uint32_t version = net::kProtocolVersion) {
+    pool_JoinRequest r{};
+    net::setText(r.client, id_);
+    r.request = ++requests_;
+    r.protocol_version = version;
+    net::setText(r.match, match);
+    r.action = action;
+    r.seat = seat;
+    net::setText(r.name, name);
+    r.seat_token = token;
+    EXPECT_TRUE(join_writer_.write(r));
+    const std::uint32_t wanted = r.request;
+    std::optional<pool_JoinReply> reply;
+    waitUntil([&] {
+      for (const auto& s : replies) {
+        if (s->request == wanted && net::textOf(s->client) == id_) reply = *s;
+      }
+      return reply.has_value();
+    });
+    return reply;
+  }
+
+  /// Writes a shot command as given.
+  void send(const pool_ShotCommand& command) { EXPECT_TRUE(command_writer_.write(command)); }
+  void send(const net::ShotRequest& request) { send(*net::toWire(request)); }
+
+  /// How many results are recorded: pass it to waitResult to look only at later ones.
+  std::size_t mark() const { return results.size(); }
+
+  /// The first result recorded at index `from` or later for (`match`, `seat`, `seq`) that
+  /// satisfies `also`, waiting for it; null on timeout.
+  const pool_ShotResult* waitResult(const std::string& match, int seat, std::uint32_t seq,
+                                    const std::function<bool(const pool_ShotResult&)>& also,
+                                    std::size_t from = 0,
+                                    std::chrono::milliseconds timeout = 10s) {
+    const pool_ShotResult* found = nullptr;
+    waitUntil([&] {
+      for (std::size_t i = from; i < results.size(); ++i) {
+        const pool_ShotResult& r = *results[i];
+        if (net::textOf(r.match) == match && r.seat == seat && r.seq == seq && also(r)) {
+          found = &r;
+          return true;
+        }
+      }
+      return false;
+    }, timeout);
+    return found;
+  }
+
+  /// The first answer (accepted or not) to a command recorded from index `from` on.
+  const pool_ShotResult* waitAnswer(const std::string& match, int seat, std::uint32_t seq,
+                                    std::size_t from = 0) {
+    return waitResult(match, seat, seq, [](const pool_ShotResult&) { return true; }, from);
+  }
+
+  /// The final result of an accepted command (with its verdict), waiting for it.
+  const pool_ShotResult* waitFinal(const std::string& match, int seat, std::uint32_t seq,
+                                   std::chrono::milliseconds timeout = 20s) {
+    return waitResult(match, seat, seq, [](const pool_ShotResult& r) {
+      return r.accepted && r.verdict_text[0] != '\0';
+    }, 0, timeout);
+  }
+
+  /// The latest recorded MatchState of `match`, or null.
+  const pool_MatchState* latestState(const std::string& match) const {
+    const pool_MatchState* latest = nullptr;
+    for (const auto& s : states) {
+      if (net::textOf(s->match) == match) latest = s.get();
+    }
+    return latest;
+  }
+
+  /// Waits until the latest MatchState of `match` satisfies `ok`; returns it (or null).
+  const pool_MatchState* waitState(const std::string& match,
+                                   const std::function<bool(const pool_MatchState&)>& ok,
+                                   std::chrono::milliseconds timeout = 10s) {
+    waitUntil([&] {
+      const auto* s = latestState(match);
+      return s && ok(*s);
+    }, timeout);
+    const auto* s = latestState(match);
+    return s && ok(*s) ? s : nullptr;
+  }
+
+  /// Recorded frames of `match`.
+  std::size_t snapshotCount(const std::string& match) const {
+    std::size_t n = 0;
+    for (const auto& s : snapshots) n += net::textOf(s->match) == match;
+    return n;
+  }
+
+  /// How many distinct matches the recorded lobby entries name.
+  std::size_t liveInfos() const {
+    std::vector<std::string> ids;
+    for (const auto& s : infos) {
+      const std::string id(net::textOf(s->match));
+      if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+    }
+    return ids.size();
+  }
+
+  std::deque<net::Sample<pool_MatchInfo>> infos;
+  std::deque<net::Sample<pool_JoinReply>> replies;
+  std::deque<net::Sample<pool_ShotResult>> results;
+  std::deque<net::Sample<pool_TableSnapshot>> snapshots;
+  std::deque<net::Sample<pool_MatchState>> states;
+  std::vector<std::string> disposed_infos;  ///< match ids whose lobby entry was disposed
+
+ private:
+  template <class T>
+  static void drain(const net::Reader<T>& reader, std::deque<net::Sample<T>>& into) {
+    for (auto& s : reader.take()) into.push_back(std::move(s));
+  }
+
+  void pump() {
+    for (auto& s : infos_.takeWithNotices()) {
+      if (s.meta().valid) {
+        infos.push_back(std::move(s));
+      } else if (s.meta().instance == net::InstanceState::Disposed) {
+        disposed_infos.emplace_back(net::textOf(s->match));
+      }
+    }
+    drain(replies_, replies);
+    drain(results_, results);
+    drain(snapshots_, snapshots);
+    drain(states_, states);
+  }
+
+  std::string id_;
+  std::uint32_t requests_ = 0;
+  net::Participant participant_;
+  net::Topic<pool_MatchInfo> info_topic_;
+  net::Topic<pool_JoinRequest> join_topic_;
+  net::Topic<pool_JoinReply> reply_topic_;
+  net::Topic<pool_ShotCommand> command_topic_;
+  net::Topic<pool_ShotResult> result_topic_;
+  net::Topic<pool_TableSnapshot> snapshot_topic_;
+  net::Topic<pool_MatchState> state_topic_;
+  net::Writer<pool_JoinRequest> join_writer_;
+  net::Writer<pool_ShotCommand> command_writer_;
+  net::Reader<pool_MatchInfo> infos_;
+  net::Reader<pool_JoinReply> replies_;
+  net::Reader<pool_ShotResult> results_;
+  net::Reader<pool_TableSnapshot> snapshots_;
+  net::Reader<pool_MatchState> states_;
+  net::WaitSet waitset_;
+};
+
+}  // namespace pool::server::test
