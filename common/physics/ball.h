@@ -49,4 +49,12 @@ struct Ball {
   std::string pocket;           ///< the pocket's name once pocketed
 };
 
+/// A ball at rest on the slate with its centre above `at` (table plane, m).
+inline Ball restingBall(int id, const Vec2& at, double radius) {
+  Ball b;
+  b.id = id;
+  b.pos = Vec3(at.x(), at.y(), radius);
+  return b;
+}
+
 }  // namespace pool::physics

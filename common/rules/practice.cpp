@@ -8,14 +8,6 @@
 namespace pool::rules {
 namespace {
 
-physics::Ball restingBall(int id, const Eigen::Vector2d& pos, double radius) {
-  physics::Ball b;
-  b.id = id;
-  b.pos = physics::Vec3(pos.x(), pos.y(), radius);
-  b.state = physics::MotionState::Stationary;
-  return b;
-}
-
 // Replaces ball `moved.id` in `balls`, or adds it.
 void putBall(std::vector<physics::Ball>& balls, const physics::Ball& moved) {
   for (auto& b : balls) {
@@ -57,10 +49,10 @@ Result<Verdict> judgePractice(const Shot& shot, const TableContext& table) {
 
 std::vector<physics::Ball> practiceRack(const TableContext& table, std::uint64_t seed) {
   std::vector<physics::Ball> balls;
-  balls.push_back(restingBall(physics::kCueBall, table.spots.head_spot, table.ball_radius));
+  balls.push_back(physics::restingBall(physics::kCueBall, table.spots.head_spot, table.ball_radius));
   for (const auto& p :
        table::rackBalls(table::RackType::EightBall, table.spec, table.ball_radius, seed)) {
-    balls.push_back(restingBall(p.id, p.pos, table.ball_radius));
+    balls.push_back(physics::restingBall(p.id, p.pos, table.ball_radius));
   }
   return balls;
 }
@@ -76,7 +68,7 @@ Result<std::vector<physics::Ball>> placeBalls(const std::vector<physics::Ball>& 
     }
     PlacementCheck check = checkBallPlacement(move.id, move.pos, placed, table);
     if (!check.ok()) return Result<std::vector<physics::Ball>>::fail(name + ": " + check.reason());
-    putBall(placed, restingBall(move.id, move.pos, table.ball_radius));
+    putBall(placed, physics::restingBall(move.id, move.pos, table.ball_radius));
   }
   return Result<std::vector<physics::Ball>>::ok(std::move(placed));
 }

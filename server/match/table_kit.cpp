@@ -7,18 +7,6 @@
 
 namespace pool::server {
 
-namespace {
-
-physics::Ball restingBall(int id, const Eigen::Vector2d& at, double radius) {
-  physics::Ball b;
-  b.id = id;
-  b.pos = physics::Vec3(at.x(), at.y(), radius);
-  b.state = physics::MotionState::Stationary;
-  return b;
-}
-
-}  // namespace
-
 Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name) {
   using Out = Result<std::shared_ptr<const TableKit>>;
   auto spec = table::loadTableSpec(name);
@@ -35,9 +23,9 @@ Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name) {
 std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed) {
   const double r = kit.context.ball_radius;
   const Eigen::Vector2d cue_at = kit.context.spots.head_spot - Eigen::Vector2d(kBreakCueSetback, 0);
-  std::vector<physics::Ball> balls{restingBall(physics::kCueBall, cue_at, r)};
+  std::vector<physics::Ball> balls{physics::restingBall(physics::kCueBall, cue_at, r)};
   for (const auto& p : table::rackBalls(table::RackType::EightBall, kit.spec, r, seed)) {
-    balls.push_back(restingBall(p.id, p.pos, r));
+    balls.push_back(physics::restingBall(p.id, p.pos, r));
   }
   std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
   return balls;
