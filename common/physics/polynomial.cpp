@@ -92,6 +92,9 @@ double earliestClosing(const Quartic& p, double t_max) {
     const double t = i < nc ? crit[i] : t_max;
     const double f = evaluate(p, t);
     if (prev_f > 0.0 && f <= 0.0) return bisect(p, 4, prev_t, t);
+    // Still closed (a contact that never opened past rounding) at a turn of the gap: from here
+    // it closes again, so this is the contact.
+    if (prev_f <= 0.0 && f <= 0.0 && i < nc) return t;
     prev_t = t;
     prev_f = f;
   }

@@ -129,15 +129,15 @@ TableHit nextTableHit(const Kinematics& k, bool airborne, const TableFeatures& f
     consider(t, FeatureKind::Point, i);
   }
 
-  if (!airborne) {
-    for (size_t i = 0; i < f.holes.size(); ++i) {
-      const Vec2 d = p2 - f.holes[i].c;
-      if (d.norm() - f.holes[i].radius > r) continue;
-      const double t = earliestClosing(
-          gapSquared(d, Vec2(k.v.head<2>()), Vec2(k.a.head<2>()), f.holes[i].radius),
-          std::min(horizon, best.t));
-      consider(t, FeatureKind::Hole, i);
-    }
+  // A centre passing over a hole's edge drops, airborne or not: the pocket world (ODE on the
+  // mesh: liner, rail, fascia) takes it from there.
+  for (size_t i = 0; i < f.holes.size(); ++i) {
+    const Vec2 d = p2 - f.holes[i].c;
+    if (d.norm() - f.holes[i].radius > r) continue;
+    const double t = earliestClosing(
+        gapSquared(d, Vec2(k.v.head<2>()), Vec2(k.a.head<2>()), f.holes[i].radius),
+        std::min(horizon, best.t));
+    consider(t, FeatureKind::Hole, i);
   }
   return best;
 }

@@ -57,7 +57,8 @@ struct TableHit {
 };
 
 /// The ball's next contact with a cushion nose, a jaw point, a pocket hole (its centre passing
-/// over the hole's edge) or, when airborne, the line over a cushion nose, within [0, horizon].
+/// over the hole's edge, on the slate or in the air) or, when airborne, the line over a cushion
+/// nose, within [0, horizon].
 /// `nose_height` is the cushion nose above the slate.
 TableHit nextTableHit(const Kinematics& k, bool airborne, const TableFeatures& f, double radius,
                       double nose_height, double horizon);

@@ -22,8 +22,16 @@ namespace {
 constexpr double kLiftOffSpeed = 0.15;  // m/s
 // A landing slower than this ends the bouncing: the ball stays on the slate.
 constexpr double kSettleSpeed = 0.05;   // m/s
-// A shot with more events than this is cut short (a guard, never reached by real shots).
-constexpr std::uint64_t kMaxEvents = 200000;
+// A shot with more loop turns than this is cut short (a guard, never reached by real shots).
+constexpr std::uint64_t kMaxIterations = 200000;
+// Contacts slower than this are pushes, not impacts (a ball driven into another, or into a
+// cushion, by its own cloth acceleration): no bounce, and the two are set this far apart so the
+// next contact is a fresh one. Without it, restitution makes the contacts come ever sooner
+// (Zeno) until rounding lets one ball through the other.
+constexpr double kPushSpeed = 0.01;  // m/s
+constexpr double kPushGap = 1e-7;    // m
+// An airborne ball this close to the slate is on it for a cushion's or a ball's impulse.
+constexpr double kNearSlate = 1e-3;  // m
 
 bool translates(MotionState s) {
   return s == MotionState::Sliding || s == MotionState::Rolling || s == MotionState::Airborne;
@@ -38,8 +46,6 @@ struct Track {
   ClothMotion motion;
   double t_end = kNever;  ///< absolute time of the motion's transition
   TableHit hit;           ///< absolute time
-  int ignore_kind = -1;   ///< a feature grazed without approach, skipped until the motion changes
-  int ignore_index = -1;
 };
 
 struct Simulation::Impl {
@@ -92,7 +98,10 @@ struct Simulation::Impl {
     const Ball& b = balls[j];
     if (!onTable(a.state) || !onTable(b.state)) return;
     if (!translates(a.state) && !translates(b.state)) return;
-    const double horizon = std::min(tracks[i].t_end, tracks[j].t_end) - now;
+    // Up to the first change of either ball's motion: its own transition or table contact (both
+    // re-predict every pair of that ball), which keeps the reach test tight.
+    const double horizon = std::min({tracks[i].t_end, tracks[j].t_end, tracks[i].hit.t,
+                                     tracks[j].hit.t, options.max_time}) - now;
     const double t = pairContactTime(kinematics(i), kinematics(j), R(), horizon);
     if (t < kNever) slot = now + t;
   }
@@ -103,16 +112,14 @@ struct Simulation::Impl {
     if (!translates(balls[i].state)) return;
     const bool airborne = balls[i].state == MotionState::Airborne;
     TableHit h = nextTableHit(kinematics(i), airborne, features, R(), p.cushion_height,
-                              tr.t_end - now);
-    if (static_cast<int>(h.kind) == tr.ignore_kind && h.index == tr.ignore_index) h = TableHit{};
+                              std::min(tr.t_end, options.max_time) - now);
     if (h.t < kNever) h.t += now;
     tr.hit = h;
   }
 
   /// The ball's motion changed now: new piece of motion, new predictions, ODE body updated.
-  void refresh(size_t i, bool keep_ignore = false) {
+  void refresh(size_t i) {
     Track& tr = tracks[i];
-    if (!keep_ignore) tr.ignore_kind = tr.ignore_index = -1;
     Ball& b = balls[i];
     if (onTable(b.state)) {
       tr.motion = cloth->motion(b);
@@ -181,7 +188,7 @@ struct Simulation::Impl {
   /// tiny upward speed) or lifts off; its motion state follows from its velocities.
   void settle(size_t i) {
     Ball& b = balls[i];
-    if (b.state == MotionState::Airborne) return;
+    if (b.state == MotionState::Airborne && b.pos.z() - R() > kNearSlate) return;
     if (b.vel.z() > kLiftOffSpeed) {
       b.state = MotionState::Airborne;
       emit(EventType::Airborne, i);
@@ -262,19 +269,20 @@ struct Simulation::Impl {
       return;
     }
     const Vec3 normal = contactNormal(b.pos, features, hit.kind, hit.index, p.cushion_height);
-    const double speed =
-        resolveFixedContact(b.vel, b.ang_vel, normal, p.e_c, p.u_c, R(), p.ball_mass);
-    if (speed <= 0.0) {
-      // Grazed without approaching: nothing happens; skip this feature until the motion changes.
-      tracks[i].ignore_kind = static_cast<int>(hit.kind);
-      tracks[i].ignore_index = hit.index;
-      predictTable(i);
-      return;
+    const double approach = -(b.vel + b.ang_vel.cross(-R() * normal)).dot(normal);
+    const double e = approach < kPushSpeed ? 0.0 : p.e_c;
+    const double speed = resolveFixedContact(b.vel, b.ang_vel, normal, e, p.u_c, R(), p.ball_mass);
+    if (approach < kPushSpeed) {
+      // A push or a graze: step off the nose so the next contact is predicted afresh.
+      const Vec2 away = Vec2(normal.x(), normal.y()).normalized();
+      b.pos.head<2>() += kPushGap * away;
     }
-    const std::string& name = hit.kind == FeatureKind::Nose
-                                  ? features.noses[static_cast<size_t>(hit.index)].name
-                                  : features.points[static_cast<size_t>(hit.index)].name;
-    emit(EventType::BallCushion, i, -1, name, speed);
+    if (speed > 0.0) {
+      const std::string& name = hit.kind == FeatureKind::Nose
+                                    ? features.noses[static_cast<size_t>(hit.index)].name
+                                    : features.points[static_cast<size_t>(hit.index)].name;
+      emit(EventType::BallCushion, i, -1, name, speed);
+    }
     settle(i);
     refresh(i);
   }
@@ -282,13 +290,17 @@ struct Simulation::Impl {
   void ballBall(size_t i, size_t j) {
     Ball& a = balls[i];
     Ball& b = balls[j];
-    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, p.e_b,
+    const Vec3 n = (b.pos - a.pos).normalized();
+    const double approach = (a.vel + a.ang_vel.cross(R() * n) - b.vel - b.ang_vel.cross(-R() * n)).dot(n);
+    const double e = approach < kPushSpeed ? 0.0 : p.e_b;
+    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e,
                                          p.u_b, R(), p.ball_mass);
-    if (speed <= 0.0) {
-      pair_t[i * n() + j] = kNever;  // touching but separating: no contact
-      return;
+    if (approach < kPushSpeed) {
+      // A push or a graze: part them so the next contact is predicted afresh.
+      a.pos -= 0.5 * kPushGap * n;
+      b.pos += 0.5 * kPushGap * n;
     }
-    emit(EventType::BallBall, i, b.id, {}, speed);
+    if (speed > 0.0) emit(EventType::BallBall, i, b.id, {}, speed);
     settle(i);
     settle(j);
     refresh(i);
@@ -330,14 +342,19 @@ struct Simulation::Impl {
   }
 
   void runLoop() {
+    std::uint64_t iterations = 0;
     while (true) {
       double t;
       size_t i = 0, j = 0;
       const Next next = findNext(t, i, j);
       if (next == Next::None) break;
-      if (t > options.max_time || out.events.size() >= kMaxEvents) {
+      if (t > options.max_time) {
         advanceTo(options.max_time);
         out.truncated = true;
+        break;
+      }
+      if (++iterations > kMaxIterations) {
+        out.truncated = true;  // stop where we are: stepping on would run past transitions
         break;
       }
       advanceTo(std::max(t, now));
@@ -442,6 +459,9 @@ Simulation::Simulation(const table::TableSpec& spec, const table::TableGeometry&
 Simulation::~Simulation() = default;
 
 Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
+  if (auto reason = table::validate(impl_->p); !reason.empty()) {
+    return Result<bool>::fail("params: " + reason);
+  }
   if (auto reason = checkPlacement(balls, impl_->geometry, impl_->p); !reason.empty()) {
     return Result<bool>::fail(reason);
   }

@@ -36,8 +36,9 @@ constexpr Range kClosed(double lo, double hi) { return Range{lo, hi, false, fals
 const std::array<ParamInfo, 14>& paramTable() {
   static const std::array<ParamInfo, 14> table{{
       {"u_s", &PhysicsParams::u_s, kOpenTo(2.0)},
-      {"u_r", &PhysicsParams::u_r, kClosed(0.0, 1.0)},
-      {"spin_decel", &PhysicsParams::spin_decel, kClosed(0.0, 1000.0)},
+      // Zero rolling resistance or spin decay would let a ball roll or spin for ever.
+      {"u_r", &PhysicsParams::u_r, kOpenTo(1.0)},
+      {"spin_decel", &PhysicsParams::spin_decel, kOpenTo(1000.0)},
       {"e_b", &PhysicsParams::e_b, kClosed(0.0, 1.0)},
       {"u_b", nullptr, kClosed(0.0, 1.0)},
       {"e_c", &PhysicsParams::e_c, kClosed(0.0, 1.0)},

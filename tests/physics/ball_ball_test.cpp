@@ -156,6 +156,30 @@ TEST(BallBall, SideSpinTransfersReversedAndThrows) {
   }
 }
 
+// A slow ball with heavy follow touching another keeps pushing it: contacts slower than a push
+// threshold do not bounce, so the contacts never pile up toward one instant and the balls never
+// pass into each other (1 µm tolerance, as in the break test).
+TEST(BallBall, PushingBallNeverSinksIntoTheOther) {
+  for (double e : {0.95, 0.0}) {
+    auto spec = openSpec();
+    spec.params.e_b = e;
+    SimOptions opt;
+    opt.sample_hz = 2000;
+    Simulation sim(spec, openGeometry(spec));
+    ASSERT_TRUE(sim.setBalls({movingBall(0, 0, 0, Vec3(0.05, 0, 0), Vec3(0, 100, 0)),
+                              ballAt(1, 2 * R + 1e-9, 0)}));
+    const auto out = sim.run(opt);
+    EXPECT_FALSE(out.truncated);
+    ASSERT_TRUE(out.t_rest.has_value());
+    double overlap = 0;
+    for (const auto& s : out.trajectory) {
+      overlap = std::max(overlap, 2 * R - (s.balls[0].pos - s.balls[1].pos).norm());
+    }
+    EXPECT_LT(overlap, 1e-6) << "e_b " << e;
+    EXPECT_GT(out.balls[1].pos.x(), 2 * R + 0.05) << "the ball was not pushed along";
+  }
+}
+
 TEST(BallBall, FrictionFitFallsWithSlidingSpeed) {
   EXPECT_NEAR(alciatoreFriction(0.0), 0.11795, 1e-6);
   EXPECT_LT(alciatoreFriction(3.0), alciatoreFriction(0.5));

@@ -213,7 +213,8 @@ TEST(PhysicsParams, SetParamAcceptsInRangeValues) {
   EXPECT_EQ(setParam(p, "u_s", 0.25), "");
   EXPECT_DOUBLE_EQ(p.u_s, 0.25);
   EXPECT_EQ(setParam(p, "u_s", 2.0), "");  // closed upper end
-  EXPECT_EQ(setParam(p, "u_r", 0.0), "");  // closed lower end
+  EXPECT_EQ(setParam(p, "u_r", 1.0), "");  // closed upper end
+  EXPECT_EQ(setParam(p, "u_r", 0.0), "must be a finite number in (0, 1]");  // would roll for ever
   EXPECT_EQ(setParam(p, "u_b", 0.06), "");
   ASSERT_TRUE(p.u_b.has_value());
   EXPECT_DOUBLE_EQ(*p.u_b, 0.06);
@@ -232,7 +233,7 @@ TEST(PhysicsParams, SetParamRejectsAndLeavesValuesAlone) {
   EXPECT_EQ(setParam(p, "e_b", 1.01), "must be a finite number in [0, 1]");
   EXPECT_EQ(setParam(p, "u_b", -0.1), "must be a finite number in [0, 1]");
   EXPECT_EQ(setParam(p, "ball_mass", inf), "must be a finite number in (0, 10]");
-  EXPECT_EQ(setParam(p, "spin_decel", -1.0), "must be a finite number in [0, 1000]");
+  EXPECT_EQ(setParam(p, "spin_decel", -1.0), "must be a finite number in (0, 1000]");
   EXPECT_EQ(setParam(p, "miscue_limit", 0.0), "must be a finite number in (0, 1]");
   EXPECT_EQ(setParam(p, "friction", 0.2), "unknown parameter");
   const PhysicsParams defaults;
@@ -276,7 +277,7 @@ TEST(PhysicsParams, ValidateChecksRangesAndConsistency) {
   EXPECT_EQ(validate(q), "u_b: must be a finite number in [0, 1]");
   q = PhysicsParams{};
   q.u_r = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(validate(q), "u_r: must be a finite number in [0, 1]");
+  EXPECT_EQ(validate(q), "u_r: must be a finite number in (0, 1]");
   q = PhysicsParams{};
   q.cue_end_mass = 1.0;
   EXPECT_EQ(validate(q), "cue_end_mass: must not exceed cue_mass");
