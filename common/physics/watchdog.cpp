@@ -44,7 +44,11 @@ bool freeSpot(const std::vector<Ball>& balls, size_t self, const TableFeatures& 
 bool onSlate(const Vec2& p, const TableFeatures& f, const table::PhysicsParams& params) {
   const double dh = noseReach(params);
   const double eps = 1e-9;
-  if (std::abs(p.x()) > f.half_length - dh + eps || std::abs(p.y()) > f.half_width - dh + eps) {
+  // Within the cushions' outline: the noses and jaw points below say where the cushions are;
+  // this only keeps out points beyond every cushion. A ball may rest in a pocket's mouth, past
+  // the line of the rails, as long as it is not over the hole.
+  if (std::abs(p.x()) > f.half_length + kOutlineMargin ||
+      std::abs(p.y()) > f.half_width + kOutlineMargin) {
     return false;
   }
   for (const auto& h : f.holes) {

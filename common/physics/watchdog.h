@@ -18,8 +18,9 @@ struct WatchdogFix {
   std::string reason;   ///< "non-finite state", "inside another ball", "left the slate"
 };
 
-/// True if a ball's centre at p may rest on the slate: within the cushion noses, not inside a
-/// cushion or jaw, not over a pocket hole.
+/// True if a ball's centre at p may rest on the slate: not inside a cushion or jaw (at least the
+/// nose's reach from every nose line and jaw point, on the playing side), not over a pocket
+/// hole; a pocket's mouth, past the line of the rails, counts.
 bool onSlate(const Vec2& p, const TableFeatures& features, const table::PhysicsParams& params);
 
 /// Checks every ball on the table. A ball that is non-finite, overlaps another by more than

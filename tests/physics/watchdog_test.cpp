@@ -61,3 +61,22 @@ TEST(Watchdog, AnOrdinaryShotNeverNeedsIt) {
 
 }  // namespace
 }  // namespace pool::physics::test
+
+namespace pool::physics::test {
+namespace {
+
+// A ball that stopped in the left side pocket's mouth (past the rails' nose line, short of the
+// hole) is on the slate; the next shot must accept that layout.
+TEST(Placement, BallRestingInAPocketMouthIsOnTheSlate) {
+  const auto& t = realTable();
+  const auto& p = t.spec.params;
+  EXPECT_TRUE(onSlate(Vec2(0.035, 0.638), features(), p));
+  EXPECT_TRUE(checkPlacement({ballAt(0, 0.0, 0.0), ballAt(2, 0.035, 0.638)}, t.geometry, p).empty());
+  // Inside the rail beside the mouth, over the hole, or beyond the table: not on the slate.
+  EXPECT_FALSE(onSlate(Vec2(0.3, 0.62), features(), p));
+  EXPECT_FALSE(onSlate(Vec2(0.0, 0.70), features(), p));
+  EXPECT_FALSE(onSlate(Vec2(2.0, 0.0), features(), p));
+}
+
+}  // namespace
+}  // namespace pool::physics::test

@@ -1,0 +1,42 @@
+// The planner's shared turn state and the layout evaluation used for position and safety play.
+#include "client/bot/ai/plan_context.h"
+
+#include "rules/eight_ball.h"
+
+namespace pool::bot {
+
+std::optional<Trial> PlanContext::tryShot(const PlannedShot& shot) {
+  if (runs_left <= 0) return std::nullopt;
+  --runs_left;
+  return verifier.run(balls, judge_state, shot);
+}
+
+PlannedShot PlanContext::blank(ShotKind kind) const {
+  PlannedShot shot;
+  shot.kind = kind;
+  shot.choice = choice;
+  return shot;
+}
+
+std::vector<int> PlanContext::legalBalls() const { return rules::legalFirstBalls(play_state, balls); }
+
+double shooterChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
+                      const TableView& view) {
+  if (state.phase == rules::Phase::Over) return 0.0;
+  if (state.ball_in_hand != rules::BallInHand::None) return 1.0;
+  const auto cue = ballAt(balls, physics::kCueBall);
+  if (!cue) return 1.0;
+  const auto lines = potLines(*cue, balls, rules::legalFirstBalls(state, balls), view);
+  return lines.empty() ? 0.0 : 1.0 / (1.0 + lines.front().difficulty);
+}
+
+physics::CueShot stroke(double yaw, double speed, double tip) {
+  physics::CueShot cue;
+  cue.yaw = yaw;
+  cue.speed = speed;
+  cue.speed_is_ball = true;
+  cue.tip_height = tip;
+  return cue;
+}
+
+}  // namespace pool::bot

@@ -1,0 +1,43 @@
+// What every part of the planner shares for one turn: the table, the physics trials and their
+// budget, the rules state to judge with and the answer to pending options.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "client/bot/ai/ghost_ball.h"
+#include "client/bot/ai/planned_shot.h"
+#include "client/bot/ai/shot_verifier.h"
+#include "client/bot/ai/table_view.h"
+#include "physics/ball.h"
+#include "rules/game_state.h"
+
+namespace pool::bot {
+
+/// One turn's planning inputs.
+struct PlanContext {
+  const TableView& view;
+  ShotVerifier& verifier;
+  std::vector<physics::Ball> balls;  ///< the layout at rest, every ball
+  rules::GameState judge_state;      ///< the rules state as it stands (options pending included)
+  rules::GameState play_state;       ///< the state once the chosen option applies
+  std::optional<rules::Choice> choice;  ///< the answer carried with the shot
+  int runs_left = 0;                 ///< physics trials still allowed this turn
+
+  /// Runs `shot` if the budget allows; empty when it is spent.
+  std::optional<Trial> tryShot(const PlannedShot& shot);
+  /// A shot skeleton carrying the turn's choice.
+  PlannedShot blank(ShotKind kind) const;
+  /// The legal object balls for the shooter (legalFirstBalls on play_state).
+  std::vector<int> legalBalls() const;
+};
+
+/// How good a layout is for the player to shoot in `state`: 1 with the cue ball in hand, else
+/// 1 / (1 + difficulty) of the easiest clear pot line, 0 when none (or the game is over).
+double shooterChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
+                      const TableView& view);
+
+/// A cue shot along `yaw` at ball speed `speed` (m/s) with tip height `tip` (fraction of R).
+physics::CueShot stroke(double yaw, double speed, double tip = 0.0);
+
+}  // namespace pool::bot

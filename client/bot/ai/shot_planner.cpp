@@ -1,0 +1,63 @@
+// Turn planning: options, the break, pots from the lie or from hand, safeties, the fallback.
+#include "client/bot/ai/shot_planner.h"
+
+#include <algorithm>
+
+#include "client/bot/ai/break_shot.h"
+#include "client/bot/ai/cue_placement.h"
+#include "client/bot/ai/plan_context.h"
+#include "client/bot/ai/pot_search.h"
+#include "client/bot/ai/safety_shot.h"
+
+namespace pool::bot {
+namespace {
+
+bool offered(const std::vector<rules::Choice>& options, rules::Choice choice) {
+  return std::find(options.begin(), options.end(), choice) != options.end();
+}
+
+// The state the shot is played in once `choice` applies (it only changes the ball in hand).
+rules::GameState stateAfterChoice(rules::GameState state, std::optional<rules::Choice> choice) {
+  if (!choice) return state;
+  if (*choice == rules::Choice::BallInHand) state.ball_in_hand = rules::BallInHand::BehindHeadString;
+  state.options.clear();
+  return state;
+}
+
+PlannedShot planPlay(PlanContext& context) {
+  const bool in_hand = context.play_state.ball_in_hand != rules::BallInHand::None;
+  const auto pots = in_hand ? potsFromHand(context) : potsFromLie(context);
+  if (auto pot = searchPots(context, pots)) return *pot;
+  const auto spots = in_hand ? restingSpots(context) : std::vector<Vec2>{};
+  if (auto safety = searchSafety(context, spots)) return *safety;
+  return fallbackShot(context, spots.empty() ? std::nullopt : std::optional<Vec2>(spots.front()));
+}
+
+}  // namespace
+
+std::optional<rules::Choice> chooseOption(const std::vector<rules::Choice>& options) {
+  if (options.empty()) return std::nullopt;
+  for (rules::Choice c : {rules::Choice::BallInHand, rules::Choice::PlayOn, rules::Choice::ReBreak,
+                          rules::Choice::OpponentReBreaks}) {
+    if (offered(options, c)) return c;
+  }
+  return options.front();
+}
+
+ShotPlanner::ShotPlanner(const TableView& view, PlannerOptions options)
+    : view_(view), options_(options), verifier_(view) {}
+
+PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
+                              const rules::GameState& state) {
+  const auto choice = chooseOption(state.options);
+  PlanContext context{view_, verifier_, balls, state, stateAfterChoice(state, choice), choice,
+                      options_.max_runs};
+  if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand) {
+    // Re-racking answers carry no stroke (a re-spotted 8 is never chosen: re-breaking is simpler).
+    return context.blank(ShotKind::Choice);
+  }
+  if (state.phase == rules::Phase::Break) return planBreak(context);
+  return planPlay(context);
+}
+
+}  // namespace pool::bot

@@ -1,0 +1,43 @@
+// The bot's brain for one turn: from the layout at rest and the rules state to a planned shot.
+#pragma once
+
+#include <vector>
+
+#include "client/bot/ai/planned_shot.h"
+#include "client/bot/ai/shot_verifier.h"
+#include "client/bot/ai/table_view.h"
+#include "physics/ball.h"
+#include "rules/game_state.h"
+
+namespace pool::bot {
+
+/// Limits of one turn's search.
+struct PlannerOptions {
+  int max_runs = 80;  ///< physics trials per turn, at most
+};
+
+/// Chooses shots on one table. Pure apart from the physics trials it runs: the same layout and
+/// state give the same shot.
+class ShotPlanner {
+ public:
+  explicit ShotPlanner(const TableView& view, PlannerOptions options = {});
+
+  /// The shot for the shooter of `state` on the layout `balls` (every ball, pocketed ones too):
+  /// the break; else, after answering pending options, the best verified pot (from the cue ball,
+  /// or from a chosen spot when in hand); else the best verified safety; else a fallback hit.
+  PlannedShot plan(const std::vector<physics::Ball>& balls, const rules::GameState& state);
+
+  /// Physics trials run so far (all turns).
+  int runs() const { return verifier_.runs(); }
+
+ private:
+  const TableView& view_;
+  PlannerOptions options_;
+  ShotVerifier verifier_;
+};
+
+/// The option the bot takes among `options` (ball in hand, else play on, else re-break), or empty
+/// when none is pending.
+std::optional<rules::Choice> chooseOption(const std::vector<rules::Choice>& options);
+
+}  // namespace pool::bot

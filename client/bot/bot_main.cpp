@@ -1,0 +1,93 @@
+// pool-bot: a headless player that takes a seat and plays one match to its end.
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+#include "client/bot/bot_player.h"
+#include "client/net/game_client.h"
+#include "net/dds_error.h"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+void onSignal(int) { g_stop = true; }
+
+struct Flags {
+  std::uint32_t domain = 0;
+  std::string name;
+  std::string log_level = "info";
+  double timeout = 0.0;  // s; 0: none
+  pool::bot::BotConfig bot;
+};
+
+int run(const Flags& flags) {
+  using namespace pool;
+  std::optional<bot::SeatRecord> saved;
+  if (!flags.bot.seat_file.empty()) {
+    auto read = bot::readSeatFile(flags.bot.seat_file);
+    if (!read) spdlog::warn("ignoring seat file: {}", read.error());
+    if (read && *read) saved = **read;
+  }
+  client::GameClient client({flags.domain, "", flags.name});
+  bot::BotPlayer player(client, flags.bot, saved);
+  const auto start = std::chrono::steady_clock::now();
+  auto now = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  spdlog::info("{} on domain {} as client {}{}", flags.name, flags.domain, client.clientId(),
+               saved ? " (rejoining " + saved->match + ")" : std::string());
+  while (!player.done() && !g_stop) {
+    if (flags.timeout > 0 && now() > flags.timeout) {
+      spdlog::error("gave up after {} s ({})", flags.timeout, bot::toString(player.stage()));
+      return 3;
+    }
+    client.wait(std::chrono::milliseconds(20));
+    player.step(now());
+  }
+  if (player.stage() == bot::BotStage::Failed) {
+    spdlog::error("{}", player.failure());
+    return 2;
+  }
+  if (g_stop) return 130;
+  std::cout << player.resultLine() << std::endl;
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Flags flags;
+  CLI::App app{"pool-bot: a headless 8-ball player"};
+  app.add_option("--domain", flags.domain, "DDS domain id")->check(CLI::Range(0, 232));
+  app.add_option("--match", flags.bot.match,
+                 "match id to sit in (default: the lowest-numbered with a free seat)");
+  app.add_option("--name", flags.name, "player name")->required();
+  app.add_option("--skill", flags.bot.skill, "0..1; 1 = no aim or speed error")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--seed", flags.bot.seed, "seed of the skill noise");
+  app.add_option("--token-file", flags.bot.seat_file,
+                 "file keeping the seat token: read at start to rejoin, written when seated");
+  app.add_option("--think", flags.bot.think, "seconds to wait on each turn before shooting")
+      ->check(CLI::Range(0.0, 60.0));
+  app.add_option("--timeout", flags.timeout, "give up (exit 3) after this many seconds; 0: never");
+  app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error, off");
+  CLI11_PARSE(app, argc, argv);
+
+  // Logs go to stderr: stdout carries only the result line.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("pool-bot"));
+  spdlog::set_level(spdlog::level::from_str(flags.log_level));
+  spdlog::set_pattern("[%H:%M:%S.%e] [" + flags.name + "] [%l] %v");
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  try {
+    return run(flags);
+  } catch (const pool::net::DdsError& e) {
+    spdlog::error("DDS: {}", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,104 @@
+// pool-bot's life on the network: finding a match, taking (or taking back) a seat, playing its
+// turns with the AI, noticing a lost server, and ending with the result.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "client/bot/ai/shot_planner.h"
+#include "client/bot/ai/skill_noise.h"
+#include "client/bot/ai/table_view.h"
+#include "client/bot/seat_file.h"
+#include "client/net/game_client.h"
+
+namespace pool::bot {
+
+/// What the bot was told on the command line.
+struct BotConfig {
+  std::string match;              ///< a match id; empty: the lowest-numbered with a free seat
+  double skill = 1.0;             ///< 0..1; 1 = no aim or speed error
+  std::uint64_t seed = 1;         ///< seeds the skill noise
+  std::filesystem::path seat_file;  ///< where the seat and its token are kept; empty: nowhere
+  double join_retry = 1.0;        ///< s between join attempts while unanswered
+  double lost_seat_wait = 5.0;    ///< s to wait for a lost match to reappear before seating anew
+  double answer_timeout = 10.0;   ///< s without an answer to a shot before sending it again
+  double think = 0.0;             ///< s to wait on each turn before shooting (pace for watchers)
+};
+
+/// Where the bot is in its life.
+enum class BotStage : std::uint8_t {
+  FindingMatch,  ///< no seat: waiting for a server and a match with a free seat
+  Joining,       ///< a seat or rejoin request is out
+  Playing,       ///< seated: shooting when it is our turn
+  SeatLost,      ///< the server or the match went away: waiting to rejoin
+  Finished,      ///< the match is over (resultLine says how)
+  Failed,        ///< the server refused us for good (failure says why)
+};
+
+const char* toString(BotStage stage);
+
+/// Plays one match through `client`. Time is passed in (s on any monotonic clock).
+class BotPlayer {
+ public:
+  BotPlayer(client::GameClient& client, BotConfig config, std::optional<SeatRecord> saved);
+
+  /// Handles what arrived since the last step and acts on it.
+  void step(double now);
+
+  BotStage stage() const { return stage_; }
+  bool done() const { return stage_ == BotStage::Finished || stage_ == BotStage::Failed; }
+  /// "result: win 1-0 (eight_pocketed after 23 shots)" once finished.
+  const std::string& resultLine() const { return result_line_; }
+  const std::string& failure() const { return failure_; }
+
+ private:
+  void handle(const client::ClientEvent& event, double now);
+  void onAnswer(const client::JoinAnswer& answer, double now);
+  void onLobby(const client::LobbyEntry& entry, double now);
+  void onGone(const client::MatchGone& gone, double now);
+  void onState(const client::MatchView& view);
+  void onReport(const client::ShotReport& report, double now);
+
+  void act(double now);
+  void findMatch(double now);
+  void sendJoin(double now);
+  void maybeShoot(double now);
+  void loseSeat(double now, const std::string& why);
+  void finish(const client::MatchView& view);
+  void saveSeat();
+  bool myTurn(const client::MatchView& view) const;
+  const TableView* tableFor(const std::string& match);
+
+  client::GameClient& client_;
+  BotConfig config_;
+  std::optional<SeatRecord> saved_;  ///< the seat to take back (from a file or a lost server)
+  BotStage stage_ = BotStage::FindingMatch;
+  std::string target_;               ///< the match being joined or played
+  std::optional<std::uint32_t> join_request_;
+  double join_sent_at_ = -1e9;
+  double lost_at_ = 0.0;
+
+  // The shot in flight: its sequence number, when it left, the state it was planned on.
+  std::optional<std::uint32_t> pending_seq_;
+  double shot_sent_at_ = 0.0;
+  std::uint32_t shot_revision_ = 0;
+  std::uint32_t wait_for_shot_ = 0;  ///< after an accepted shot: play again once state has it
+  std::optional<std::uint32_t> blocked_revision_;  ///< a rejection said: wait for a new state
+  double retry_at_ = 0.0;
+  std::optional<std::uint32_t> turn_revision_;  ///< the state our current turn was first seen in
+  double turn_since_ = 0.0;
+  int rejections_ = 0;
+
+  std::map<std::string, std::unique_ptr<TableView>> tables_;
+  std::unique_ptr<ShotPlanner> planner_;
+  std::string planner_table_;
+  SkillNoise noise_;
+  std::string result_line_;
+  std::string failure_;
+};
+
+}  // namespace pool::bot

@@ -1,0 +1,29 @@
+// The bot's identity on disk: the seat it holds (match, seat, token) and the last sequence
+// number it used, so a restarted bot can rejoin with its token (pool-bot --token-file).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/result.h"
+
+namespace pool::bot {
+
+/// What a bot remembers of its seat.
+struct SeatRecord {
+  std::string match;
+  int seat = -1;
+  std::uint64_t token = 0;
+  std::uint32_t last_seq = 0;  ///< the last sequence number sent
+};
+
+/// Reads a seat file (JSON: {"match", "seat", "token", "last_seq"}). Empty when the file does
+/// not exist; a failure when it exists but cannot be read.
+Result<std::optional<SeatRecord>> readSeatFile(const std::filesystem::path& path);
+
+/// Writes it atomically (a temporary file renamed over it). Empty string on success, else why.
+std::string writeSeatFile(const std::filesystem::path& path, const SeatRecord& record);
+
+}  // namespace pool::bot

@@ -1,0 +1,33 @@
+// Planned shots to shot requests.
+#include "client/bot/shot_command.h"
+
+namespace pool::bot {
+
+net::ShotOption optionOf(rules::Choice choice) {
+  switch (choice) {
+    case rules::Choice::PlayOn: return net::ShotOption::PlayOn;
+    case rules::Choice::BallInHand: return net::ShotOption::BallInHand;
+    case rules::Choice::RespotEight: return net::ShotOption::RespotEight;
+    case rules::Choice::ReBreak: return net::ShotOption::ReBreak;
+    case rules::Choice::OpponentReBreaks: return net::ShotOption::OpponentReBreaks;
+  }
+  return net::ShotOption::None;
+}
+
+net::ShotRequest requestOf(const PlannedShot& shot) {
+  net::ShotRequest request;
+  request.cue = shot.cue;
+  if (!shoots(shot)) {
+    request.cue = physics::CueShot{};
+    request.cue.speed = 1.0;
+    request.cue.speed_is_ball = true;
+  }
+  request.called_ball = shot.called_ball;
+  request.called_pocket = shot.called_pocket;
+  request.safety = shot.safety;
+  request.cue_ball_at = shot.cue_ball_at;
+  request.option = shot.choice ? optionOf(*shot.choice) : net::ShotOption::None;
+  return request;
+}
+
+}  // namespace pool::bot

@@ -1,0 +1,79 @@
+// pool-client: the player's client. For now only the headless spectator (--spectate MATCH
+// --no-window --json); the windowed mode plugs in as another Mode.
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+#include "client/net/game_client.h"
+#include "client/spectate/spectator.h"
+#include "net/dds_error.h"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+void onSignal(int) { g_stop = true; }
+
+/// How the client runs. Only Spectate exists; a windowed mode comes with the renderer.
+enum class Mode { Spectate, Window };
+
+struct Flags {
+  std::uint32_t domain = 0;
+  std::string spectate;
+  bool no_window = false;
+  bool json = false;
+  bool follow = false;   // keep watching after the match is over
+  double timeout = 0.0;  // s; 0: none
+};
+
+int runSpectator(const Flags& flags) {
+  using namespace pool::client;
+  GameClient client({flags.domain, "", "spectator"});
+  SpectatorConfig config;
+  config.match = flags.spectate;
+  config.exit_when_over = !flags.follow;
+  Spectator spectator(client, config, [](const std::string& line) {
+    std::cout << line << '\n' << std::flush;
+  });
+  const auto start = std::chrono::steady_clock::now();
+  auto now = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  while (!spectator.done() && !g_stop) {
+    if (flags.timeout > 0 && now() > flags.timeout) return 3;
+    client.wait(std::chrono::milliseconds(20));
+    spectator.step(now());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Flags flags;
+  CLI::App app{"pool-client: play or watch 8-ball over DDS"};
+  app.add_option("--domain", flags.domain, "DDS domain id")->check(CLI::Range(0, 232));
+  app.add_option("--spectate", flags.spectate, "watch MATCH (an id, or 'any': the first in play)");
+  app.add_flag("--no-window", flags.no_window, "no window (the only mode for now)");
+  app.add_flag("--json", flags.json, "print JSON lines: states, shot results, frame counts");
+  app.add_flag("--follow", flags.follow, "keep watching after the match is over");
+  app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
+  CLI11_PARSE(app, argc, argv);
+
+  const Mode mode = flags.spectate.empty() || !flags.no_window ? Mode::Window : Mode::Spectate;
+  if (mode == Mode::Window || !flags.json) {
+    std::cerr << "only --spectate MATCH --no-window --json is available so far\n";
+    return 2;
+  }
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  try {
+    return runSpectator(flags);
+  } catch (const pool::net::DdsError& e) {
+    std::cerr << "DDS: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,117 @@
+// The client side of the protocol, for players, bots and spectators: joining, leaving and
+// rejoining matches, the lobby, shots with a per-seat sequence, and what the server publishes.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "client/net/lobby.h"
+#include "client/net/match_types.h"
+#include "core/result.h"
+#include "net/shot_request.h"
+
+namespace pool::client {
+
+struct ClientEndpoints;
+
+/// Something received, as poll() hands it out.
+using ClientEvent =
+    std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport, TableFrame>;
+
+/// The seat this client holds in a match.
+struct SeatHolding {
+  std::string match;
+  int seat = -1;
+  std::uint64_t token = 0;
+};
+
+/// Who the client is on the domain.
+struct ClientOptions {
+  std::uint32_t domain = 0;  ///< DDS domain id, 0–232
+  std::string client_id;     ///< unique per process; empty: random hex
+  std::string name;          ///< the player's name in seat requests
+};
+
+/// One client's session on a DDS domain. Not thread-safe; nothing in it reads a clock (waits
+/// take a timeout). Throws net::DdsError from the constructor only.
+class GameClient {
+ public:
+  explicit GameClient(ClientOptions options);
+  ~GameClient();
+  GameClient(const GameClient&) = delete;
+  GameClient& operator=(const GameClient&) = delete;
+
+  const std::string& clientId() const { return options_.client_id; }
+  const std::string& name() const { return options_.name; }
+
+  // ---- Join requests: each returns its request number, which the answer echoes -------------
+  std::uint32_t requestSeat(const std::string& match, int seat = -1);
+  std::uint32_t requestSpectate(const std::string& match);
+  std::uint32_t requestRejoin(const std::string& match, std::uint64_t token);
+  /// Leaves the seat held (or stops watching `match` when no seat is held there).
+  std::uint32_t requestLeave(const std::string& match);
+  std::uint32_t requestRematch();
+
+  /// The seat held: set by an accepted seat or rejoin answer to one of our requests, cleared by
+  /// an accepted leave.
+  const std::optional<SeatHolding>& seat() const { return seat_; }
+
+  // ---- Shots ----------------------------------------------------------------------------------
+  /// Sends `request` for the seat held, filling in match, seat, token and the next sequence
+  /// number. Returns the sequence number used, or why nothing was sent.
+  Result<std::uint32_t> shoot(net::ShotRequest request);
+  /// Makes the next sequence number larger than `seq` (after a restart, from a saved number or
+  /// from the server's last result for the seat).
+  void noteSequence(std::uint32_t seq);
+  std::uint32_t lastSequence() const { return last_seq_; }
+
+  // ---- Receiving ------------------------------------------------------------------------------
+  /// Blocks until something arrives or `timeout` passes.
+  void wait(std::chrono::nanoseconds timeout) const;
+  /// Takes everything received since the last poll: lobby entries and their disappearance,
+  /// answers to our own join requests, match states, shot results and frames. Updates the lobby,
+  /// the seat held, the latest state of each match and the sequence floor on the way.
+  std::vector<ClientEvent> poll();
+
+  const Lobby& lobby() const { return lobby_; }
+  /// The latest state of `match`, if any arrived.
+  const MatchView* state(const std::string& match) const;
+  /// Samples dropped because they could not be read, and the last reason.
+  std::uint64_t unreadable() const { return unreadable_; }
+  const std::string& lastProblem() const { return last_problem_; }
+
+ private:
+  std::uint32_t sendJoin(const std::string& match, JoinAction action, int seat,
+                         std::uint64_t token);
+  void pollLobby(std::vector<ClientEvent>& out);
+  void pollReplies(std::vector<ClientEvent>& out);
+  void pollStates(std::vector<ClientEvent>& out);
+  void pollResults(std::vector<ClientEvent>& out);
+  void pollFrames(std::vector<ClientEvent>& out);
+  void accept(const JoinAnswer& answer);
+  void problem(const std::string& what);
+
+  ClientOptions options_;
+  std::unique_ptr<ClientEndpoints> endpoints_;
+  std::uint32_t next_request_ = 1;
+  std::map<std::uint32_t, JoinAction> pending_;  ///< our requests not answered yet
+  std::optional<SeatHolding> seat_;
+  std::uint32_t last_seq_ = 0;
+  std::map<std::pair<std::string, int>, std::uint32_t> seen_seq_;  ///< highest seq per seat seen
+  Lobby lobby_;
+  std::map<std::string, MatchView> states_;
+  std::uint64_t unreadable_ = 0;
+  std::string last_problem_;
+};
+
+/// A random client id (hex, 16 characters).
+std::string randomClientId();
+
+}  // namespace pool::client

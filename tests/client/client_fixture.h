@@ -1,0 +1,112 @@
+// Shared setup of the client integration tests: one DDS domain per test, the loopback config,
+// and launchers for pool-server, pool-bot and pool-client.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "child_process.h"
+#include "match_recorder.h"
+
+namespace pool::client::test {
+
+/// Client integration tests use DDS domains 200–219, one per test (ctest runs them in parallel;
+/// net tests use 150–199, server tests 100–119).
+enum Domain : std::uint32_t {
+  kFullMatch = 200,
+  kSpectator = 201,
+  kRejoin = 202,
+  kForfeit = 203,
+};
+
+/// A test with its own domain, scratch folder and processes (killed in teardown).
+class ClientIntegrationTest : public ::testing::Test {
+ protected:
+  void SetUp() override { useLoopbackConfig(); }
+
+  void open(Domain domain, const std::string& tag) {
+    domain_ = domain;
+    scratch_ = std::make_unique<ScratchDir>(tag);
+  }
+
+  ChildProcess& startServer(const std::vector<std::string>& extra) {
+    std::vector<std::string> args{"--domain", std::to_string(domain_), "--tables", "1",
+                                  "--server-id", "srv"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return start("pool-server", args, "server");
+  }
+
+  /// A bot named `name` with skill 0.8 and `extra` flags; it gives up after 90 s.
+  ChildProcess& startBot(const std::string& name, std::uint64_t seed,
+                         const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args{"--domain", std::to_string(domain_), "--name", name, "--skill",
+                                  "0.8", "--seed", std::to_string(seed), "--timeout", "90"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return start("pool-bot", args, name + "-" + std::to_string(++runs_));
+  }
+
+  ChildProcess& startSpectator(const std::string& match) {
+    return start("pool-client",
+                 {"--domain", std::to_string(domain_), "--spectate", match, "--no-window", "--json",
+                  "--timeout", "90"},
+                 "spectator");
+  }
+
+  ChildProcess& start(const std::string& program, const std::vector<std::string>& args,
+                      const std::string& tag) {
+    processes_.push_back(std::make_unique<ChildProcess>(
+        program, args, scratch_->file(tag + ".out"), scratch_->file(tag + ".err")));
+    return *processes_.back();
+  }
+
+  std::string file(const std::string& name) const { return scratch_->file(name); }
+
+  /// The stderr of every process so far, for failure messages.
+  std::string logs() const {
+    std::string text;
+    for (const auto& p : processes_) text += p->err().substr(0, 20000) + "\n----\n";
+    return text;
+  }
+
+  /// The seat of the player called `name` in `view`, or -1.
+  static int seatOf(const MatchView& view, const std::string& name) {
+    for (int s = 0; s < 2; ++s) {
+      if (view.seats[static_cast<std::size_t>(s)].name == name) return s;
+    }
+    return -1;
+  }
+
+  /// True when the server keeps refusing shots because the physics refuses the layout it left
+  /// (a ball at rest in a pocket mouth): the match cannot go on.
+  static bool stalledOnLayout(const MatchRecorder& recorder) {
+    int refused = 0;
+    for (const auto& r : recorder.rejections()) {
+      refused += r.reject_text.find("the physics refused") != std::string::npos ? 1 : 0;
+    }
+    return refused >= 3;
+  }
+
+  /// Where the balls on the table lie in the latest state of `match` (for a stall's message).
+  static std::string layoutOf(const MatchRecorder& recorder, const std::string& match) {
+    std::string text;
+    const MatchView* v = recorder.latest(match);
+    if (!v) return text;
+    char line[96];
+    for (const auto& b : v->balls) {
+      if (!physics::onTable(b.state)) continue;
+      std::snprintf(line, sizeof line, "ball %d at (%.5f, %.5f)\n", b.id, b.pos.x(), b.pos.y());
+      text += line;
+    }
+    return text;
+  }
+
+  Domain domain_ = kFullMatch;
+  std::unique_ptr<ScratchDir> scratch_;
+  std::vector<std::unique_ptr<ChildProcess>> processes_;  // destroyed first: children killed
+  int runs_ = 0;
+};
+
+}  // namespace pool::client::test

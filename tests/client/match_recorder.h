@@ -1,0 +1,109 @@
+// An in-process observer for the integration tests: everything the server publishes about the
+// matches on a domain, plus every shot command the players send, in arrival order.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "client/net/game_client.h"
+#include "net/convert.h"
+#include "net/participant.h"
+#include "net/qos_profiles.h"
+#include "net/reader.h"
+#include "net/topic.h"
+
+namespace pool::client::test {
+
+/// Records one domain's traffic. Poll it with pump().
+class MatchRecorder {
+ public:
+  explicit MatchRecorder(std::uint32_t domain)
+      : client_({domain, "", "recorder"}),
+        participant_(domain),
+        command_topic_(participant_),
+        commands_(participant_, command_topic_, net::qos::command()) {}
+
+  /// Polls until `until()` holds or `timeout` passes; true when it held.
+  bool pump(std::chrono::milliseconds timeout, const std::function<bool()>& until = [] {
+    return false;
+  }) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (true) {
+      drain();
+      if (until()) return true;
+      if (std::chrono::steady_clock::now() >= deadline) return false;
+      client_.wait(std::chrono::milliseconds(5));
+    }
+  }
+
+  /// Blocks until `count` players' command writers are matched (so no command is missed).
+  bool waitForPlayers(std::uint32_t count, std::chrono::milliseconds timeout) const {
+    return commands_.waitForWriters(count, timeout);
+  }
+
+  const GameClient& client() const { return client_; }
+  /// The first match of the lobby (lowest-numbered), or "".
+  std::string firstMatch() const {
+    const auto entries = client_.lobby().entries();
+    return entries.empty() ? std::string() : entries.front()->match;
+  }
+  const MatchView* latest(const std::string& match) const { return client_.state(match); }
+  /// Every state of `match` received, in arrival order.
+  std::vector<MatchView> states(const std::string& match) const {
+    std::vector<MatchView> out;
+    for (const auto& s : states_) {
+      if (s.match == match) out.push_back(s);
+    }
+    return out;
+  }
+  /// The final report of each accepted shot of `match`, by shot number.
+  std::map<std::uint32_t, ShotReport> finals(const std::string& match) const {
+    std::map<std::uint32_t, ShotReport> out;
+    for (const auto& r : reports_) {
+      if (r.match == match && r.final()) out[r.shot_number] = r;
+    }
+    return out;
+  }
+  /// Every rejection seen.
+  std::vector<ShotReport> rejections() const {
+    std::vector<ShotReport> out;
+    for (const auto& r : reports_) {
+      if (!r.accepted) out.push_back(r);
+    }
+    return out;
+  }
+  /// The command a seat sent with a sequence number, if seen.
+  const net::ShotRequest* command(const std::string& match, int seat, std::uint32_t seq) const {
+    const auto it = commands_seen_.find({match, seat, seq});
+    return it == commands_seen_.end() ? nullptr : &it->second;
+  }
+
+ private:
+  using CommandKey = std::tuple<std::string, int, std::uint32_t>;
+
+  void drain() {
+    for (auto& event : client_.poll()) {
+      if (auto* view = std::get_if<MatchView>(&event)) states_.push_back(std::move(*view));
+      if (auto* report = std::get_if<ShotReport>(&event)) reports_.push_back(std::move(*report));
+    }
+    for (auto& sample : commands_.take()) {
+      auto request = net::fromWire(*sample);
+      if (request) commands_seen_[{request->match, request->seat, request->seq}] = *request;
+    }
+  }
+
+  GameClient client_;
+  net::Participant participant_;
+  net::Topic<pool_ShotCommand> command_topic_;
+  net::Reader<pool_ShotCommand> commands_;
+  std::vector<MatchView> states_;
+  std::vector<ShotReport> reports_;
+  std::map<CommandKey, net::ShotRequest> commands_seen_;
+};
+
+}  // namespace pool::client::test

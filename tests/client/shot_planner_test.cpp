@@ -1,0 +1,102 @@
+// The bot's shot choice: straight pots found and verified, blocked balls avoided, the 8 only
+// when it is on, safeties when nothing is, the break.
+#include <gtest/gtest.h>
+
+#include "ai_fixture.h"
+#include "client/bot/ai/ghost_ball.h"
+#include "client/bot/ai/shot_verifier.h"
+#include "rules/eight_ball.h"
+
+namespace pool::bot::test {
+namespace {
+
+TEST(ShotPlannerTest, StraightInShotIsFoundAndPotsInThePhysics) {
+  const Vec2 object = onPocketLine("foot_left_corner", Vec2::Zero(), 0.6);
+  const Vec2 cue = onPocketLine("foot_left_corner", Vec2::Zero(), 1.2);
+  const auto balls = layout({resting(0, cue.x(), cue.y()), resting(3, object.x(), object.y()),
+                             resting(8, -0.8, -0.4), resting(12, 0.9, -0.45)});
+  ShotPlanner planner(nineFoot());
+  const PlannedShot shot = planner.plan(balls, solidsToShoot());
+  ASSERT_EQ(shot.kind, ShotKind::Pot) << describe(shot);
+  EXPECT_EQ(shot.called_ball, 3);
+  EXPECT_EQ(shot.called_pocket, "foot_left_corner");
+  EXPECT_FALSE(shot.cue_ball_at);
+  // The chosen stroke, replayed on its own, pockets the 3 legally and keeps the turn.
+  ShotVerifier verifier(nineFoot());
+  const Trial trial = verifier.run(balls, solidsToShoot(), shot);
+  ASSERT_TRUE(trial.judged) << trial.error;
+  EXPECT_TRUE(trial.potted_call);
+  EXPECT_TRUE(trial.verdict.legal());
+  EXPECT_TRUE(trial.verdict.turn_continues);
+}
+
+TEST(ShotPlannerTest, ABlockedBallIsNotCalled) {
+  // The 3 sits straight in front of a pocket but a stripe stands between it and the cue ball;
+  // the 5 has an open, longer shot.
+  const Vec2 object = onPocketLine("foot_left_corner", Vec2::Zero(), 0.5);
+  const Vec2 cue = onPocketLine("foot_left_corner", Vec2::Zero(), 1.3);
+  const Vec2 blocker = onPocketLine("foot_left_corner", Vec2::Zero(), 0.9);
+  const auto balls =
+      layout({resting(0, cue.x(), cue.y()), resting(3, object.x(), object.y()),
+              resting(10, blocker.x(), blocker.y()), resting(5, -0.6, -0.4), resting(8, 1.0, -0.1)});
+  EXPECT_FALSE(pathClear(cue, object, balls, nineFoot().radius(), 0, 3));
+  ShotPlanner planner(nineFoot());
+  const PlannedShot shot = planner.plan(balls, solidsToShoot());
+  EXPECT_NE(shot.called_ball, 3) << describe(shot);
+  if (shot.kind == ShotKind::Pot) {
+    EXPECT_EQ(shot.called_ball, 5);
+  }
+}
+
+TEST(ShotPlannerTest, TheEightIsCalledOnlyWhenItIsTheLegalBall) {
+  // An easy 8 and a harder solid: the solid is called while it is on the table.
+  const Vec2 eight = onPocketLine("head_right_corner", Vec2::Zero(), 0.3);
+  const auto with_solid = layout({resting(0, 0.0, 0.0), resting(8, eight.x(), eight.y()),
+                                  resting(6, 0.8, 0.45), resting(14, -0.2, 0.5)});
+  ShotPlanner planner(nineFoot());
+  const PlannedShot shot = planner.plan(with_solid, solidsToShoot());
+  EXPECT_NE(shot.called_ball, 8) << describe(shot);
+  // Once the solids are gone the 8 is the shot, and pocketing it wins.
+  const auto on_eight =
+      layout({resting(0, 0.0, 0.0), resting(8, eight.x(), eight.y()), resting(14, -0.2, 0.5)});
+  ASSERT_TRUE(rules::onTheEight(solidsToShoot(), on_eight));
+  const PlannedShot final_shot = planner.plan(on_eight, solidsToShoot());
+  ASSERT_EQ(final_shot.kind, ShotKind::Pot) << describe(final_shot);
+  EXPECT_EQ(final_shot.called_ball, 8);
+  EXPECT_GE(final_shot.value, 1000.0);
+}
+
+TEST(ShotPlannerTest, NothingOnGivesADeclaredSafety) {
+  // The only solid is walled off from every pocket by stripes.
+  const Vec2 one(0.3, 0.0);
+  std::vector<physics::Ball> balls = layout({resting(0, 0.9, 0.0), resting(1, one.x(), one.y())});
+  int stripe = 9;
+  for (const auto& pocket : nineFoot().pockets) {
+    const Vec2 b = one + (pocket.mouth - one).normalized() * 4 * nineFoot().radius();
+    balls[static_cast<std::size_t>(stripe)] = resting(stripe, b.x(), b.y());
+    ++stripe;
+  }
+  ShotPlanner planner(nineFoot());
+  const PlannedShot shot = planner.plan(balls, solidsToShoot());
+  EXPECT_TRUE(shot.kind == ShotKind::Safety || shot.kind == ShotKind::Fallback) << describe(shot);
+  EXPECT_TRUE(shot.safety);
+  EXPECT_FALSE(shot.called_ball);
+}
+
+TEST(ShotPlannerTest, BreakIsFromBehindTheHeadStringAndHard) {
+  std::vector<physics::Ball> balls{resting(0, 0.0, 0.0)};
+  for (const auto& p : table::rackBalls(table::RackType::EightBall, nineFoot().spec,
+                                        nineFoot().radius(), 7)) {
+    balls.push_back(resting(p.id, p.pos.x(), p.pos.y()));
+  }
+  ShotPlanner planner(nineFoot());
+  const PlannedShot shot = planner.plan(balls, rules::newRack(0));
+  ASSERT_EQ(shot.kind, ShotKind::Break);
+  ASSERT_TRUE(shot.cue_ball_at);
+  EXPECT_LT(shot.cue_ball_at->x(), nineFoot().headStringX());
+  EXPECT_GE(shot.cue.speed, 8.0);
+  EXPECT_GT(shot.value, 0.0) << "no break tried was legal";
+}
+
+}  // namespace
+}  // namespace pool::bot::test
