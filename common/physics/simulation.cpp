@@ -30,6 +30,8 @@ constexpr std::uint64_t kMaxIterations = 200000;
 // (Zeno) until rounding lets one ball through the other.
 constexpr double kPushSpeed = 0.01;  // m/s
 constexpr double kPushGap = 1e-7;    // m
+// Balls this close (or closer) count as overlapping for a placement.
+constexpr double kPlacementTolerance = 1e-6;  // m
 // An airborne ball this close to the slate is on it for a cushion's or a ball's impulse.
 constexpr double kNearSlate = 1e-3;  // m
 
@@ -388,8 +390,33 @@ struct Simulation::Impl {
     refresh(i);
   }
 
+  /// The layout a shot leaves is the next shot's input: a ball at rest where setBalls would
+  /// refuse it (inside a cushion, over a hole, in another ball) is re-spotted here, with an event.
+  void checkRestingLayout() {
+    const double min_dist = 2.0 * R() - kPlacementTolerance;
+    for (size_t i = 0; i < n(); ++i) {
+      Ball& b = balls[i];
+      if (!onTable(b.state) || b.state == MotionState::Airborne) continue;
+      const char* reason = onSlate(b.pos.head<2>(), features, p) ? nullptr : "came to rest off the slate";
+      for (size_t k = 0; k < i && !reason; ++k) {
+        if (onTable(balls[k].state) && (balls[k].pos - b.pos).norm() < min_dist) {
+          reason = "came to rest inside another ball";
+        }
+      }
+      if (!reason) continue;
+      WatchdogFix fix;
+      fix.index = i;
+      fix.reason = reason;
+      fix.remove = !freeSpotOnLongString(balls, i, features, p, fix.spot);
+      applyFix(fix);
+    }
+  }
+
   ShotOutcome finish() {
-    if (!out.truncated) out.t_rest = now;
+    if (!out.truncated) {
+      checkRestingLayout();
+      out.t_rest = now;
+    }
     recordSamples(now);
     if (pockets) {
       pockets->settle();
@@ -440,7 +467,8 @@ std::string checkPlacement(const std::vector<Ball>& balls, const table::TableGeo
       return "ball " + std::to_string(b.id) + " is off the slate";
     }
   }
-  const double min_dist = 2.0 * params.ball_radius - 1e-9;
+  // Contacts are resolved to well under a micrometre; touching balls may sit that close.
+  const double min_dist = 2.0 * params.ball_radius - kPlacementTolerance;
   for (size_t i = 0; i < balls.size(); ++i) {
     for (size_t k = i + 1; k < balls.size(); ++k) {
       if (!onTable(balls[i].state) || !onTable(balls[k].state)) continue;

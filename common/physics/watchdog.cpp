@@ -15,10 +15,10 @@ double noseReach(const table::PhysicsParams& p) {
   return std::sqrt(std::max(0.0, p.ball_radius * p.ball_radius - lift * lift));
 }
 
-/// The first free point on the long string, from the foot spot toward the foot, then toward the
-/// head (the physics has no spec, so the foot spot is a quarter length from the foot cushion).
-bool freeSpot(const std::vector<Ball>& balls, size_t self, const TableFeatures& f,
-              const table::PhysicsParams& p, Vec2& spot) {
+}  // namespace
+
+bool freeSpotOnLongString(const std::vector<Ball>& balls, size_t self, const TableFeatures& f,
+                          const table::PhysicsParams& p, Vec2& spot) {
   const double R = p.ball_radius;
   const double foot_x = f.half_length / 2.0;
   const double step = R / 4.0;
@@ -38,8 +38,6 @@ bool freeSpot(const std::vector<Ball>& balls, size_t self, const TableFeatures& 
   }
   return false;
 }
-
-}  // namespace
 
 bool onSlate(const Vec2& p, const TableFeatures& f, const table::PhysicsParams& params) {
   const double dh = noseReach(params);
@@ -71,7 +69,7 @@ std::vector<WatchdogFix> checkBalls(const std::vector<Ball>& balls, const TableF
     WatchdogFix w;
     w.index = i;
     w.reason = reason;
-    w.remove = !freeSpot(balls, i, f, p, w.spot);
+    w.remove = !freeSpotOnLongString(balls, i, f, p, w.spot);
     fixes.push_back(w);
   };
   for (size_t i = 0; i < balls.size(); ++i) {

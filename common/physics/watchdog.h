@@ -23,6 +23,11 @@ struct WatchdogFix {
 /// hole; a pocket's mouth, past the line of the rails, counts.
 bool onSlate(const Vec2& p, const TableFeatures& features, const table::PhysicsParams& params);
 
+/// The first point on the long string free of every other ball on the table, from the foot
+/// spot toward the foot cushion, then toward the head; false if there is none.
+bool freeSpotOnLongString(const std::vector<Ball>& balls, size_t self, const TableFeatures& f,
+                          const table::PhysicsParams& p, Vec2& spot);
+
 /// Checks every ball on the table. A ball that is non-finite, overlaps another by more than
 /// 1 mm, or is outside the table's outline while not airborne gets a fix: re-spotted on the
 /// long string at the first free point from the foot spot, or removed if there is none.
