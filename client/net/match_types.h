@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "net/protocol_enums.h"
 #include "net/shot_request.h"
 #include "physics/ball.h"
 #include "physics/events.h"
@@ -16,47 +17,13 @@
 
 namespace pool::client {
 
-/// Where a match stands (MatchPhase of pool.idl).
-enum class MatchPhase : std::uint8_t { Lobby, Break, Open, Assigned, Over, Closed };
+// The protocol's enums, shared with the server.
+using net::JoinAction;
+using net::JoinOutcome;
+using net::MatchPhase;
+using net::RejectReason;
+using net::toString;
 
-/// What a client asks the server (JoinAction of pool.idl).
-enum class JoinAction : std::uint8_t { Seat, Spectate, Rejoin, Leave, Rematch };
-
-/// The server's answer to a join request (JoinOutcome of pool.idl).
-enum class JoinOutcome : std::uint8_t {
-  Accepted,
-  NoSuchMatch,
-  SeatTaken,
-  MatchFull,
-  BadToken,
-  BadName,
-  VersionMismatch,
-  NotAllowed,
-  ServerFull,
-};
-
-/// Why the server rejected a shot command (RejectReason of pool.idl).
-enum class RejectReason : std::uint8_t {
-  None,
-  Malformed,
-  NoSuchMatch,
-  WrongSeat,
-  BadToken,
-  NotYourTurn,
-  BallsMoving,
-  StaleSequence,
-  IllegalPlacement,
-  OptionRequired,
-  OptionNotOffered,
-  BadCall,
-  MatchOver,
-  BadSignature,
-};
-
-const char* toString(MatchPhase phase);      ///< snake_case, e.g. "assigned"
-const char* toString(JoinAction action);     ///< e.g. "rejoin"
-const char* toString(JoinOutcome outcome);   ///< e.g. "seat_taken"
-const char* toString(RejectReason reason);   ///< e.g. "stale_sequence"
 
 /// True while a rack is being played (break, open or assigned).
 bool inPlay(MatchPhase phase);

@@ -4,32 +4,12 @@
 #include <cstdint>
 #include <string>
 
+#include "net/protocol_enums.h"
+
 namespace pool::server {
 
-/// What a client asks for (JoinAction of pool.idl).
-enum class JoinAction : std::uint8_t {
-  Seat,      ///< take a seat (0, 1, or -1 for any free one)
-  Spectate,  ///< watch
-  Rejoin,    ///< take back one's seat with its token
-  Leave,     ///< give up the seat (with its token) or stop watching
-  Rematch,   ///< a new rack with the same players once the match is over
-};
-
-/// The outcome of a join request (JoinOutcome of pool.idl).
-enum class JoinOutcome : std::uint8_t {
-  Accepted,
-  NoSuchMatch,
-  SeatTaken,
-  MatchFull,
-  BadToken,
-  BadName,
-  VersionMismatch,
-  NotAllowed,
-  ServerFull,
-};
-
-const char* toString(JoinAction action);    ///< snake_case, e.g. "rejoin"
-const char* toString(JoinOutcome outcome);  ///< snake_case, e.g. "seat_taken"
+using net::JoinAction;   ///< what a JoinRequest asks for (shared with the clients)
+using net::JoinOutcome;  ///< its outcome
 
 /// The match id that asks for a new match.
 inline constexpr const char* kNewMatch = "new";

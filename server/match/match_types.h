@@ -6,17 +6,15 @@
 #include <string>
 
 #include "match/reject.h"
+#include "net/protocol_enums.h"
 #include "physics/events.h"
 #include "rules/eight_ball.h"
 #include "rules/verdict.h"
 
 namespace pool::server {
 
-/// Where a match stands (MatchPhase of pool.idl). Lobby: waiting for two players. Break, Open,
-/// Assigned: a rack in play. Over: a winner is known. Closed: the server is removing it.
-enum class MatchPhase : std::uint8_t { Lobby, Break, Open, Assigned, Over, Closed };
+using net::MatchPhase;  ///< where a match stands (shared with the clients)
 
-const char* toString(MatchPhase phase);  ///< snake_case, e.g. "assigned"
 
 /// How a match is played and published.
 struct MatchOptions {

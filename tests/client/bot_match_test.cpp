@@ -14,6 +14,12 @@ TEST_F(BotMatchTest, TwoBotsPlayAFullMatchToAWinner) {
   open(kFullMatch, "full");
   MatchRecorder recorder(kFullMatch);
   startServer({"--fast"});
+  // The recorder must hold the match's state before any bot sits down: states are keep-last 1,
+  // and with --fast the break can follow the second seat within milliseconds.
+  ASSERT_TRUE(recorder.pump(20s, [&] {
+    const std::string m = recorder.firstMatch();
+    return !m.empty() && recorder.latest(m) != nullptr;
+  })) << "the server's match never reached the recorder";
   ChildProcess& alice = startBot("alice", 11);
   ChildProcess& bob = startBot("bob", 22);
   ASSERT_TRUE(recorder.waitForPlayers(2, 20s)) << "the bots' command writers never appeared";

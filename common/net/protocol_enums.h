@@ -1,0 +1,51 @@
+// The protocol's enums in domain terms (no DDS types), shared by the server and the clients.
+#pragma once
+
+#include <cstdint>
+
+namespace pool::net {
+
+/// Where a match stands (MatchPhase of pool.idl).
+enum class MatchPhase : std::uint8_t { Lobby, Break, Open, Assigned, Over, Closed };
+
+/// What a JoinRequest asks for (JoinAction of pool.idl).
+enum class JoinAction : std::uint8_t { Seat, Spectate, Rejoin, Leave, Rematch };
+
+/// The outcome of a JoinRequest (JoinOutcome of pool.idl).
+enum class JoinOutcome : std::uint8_t {
+  Accepted,
+  NoSuchMatch,
+  SeatTaken,
+  MatchFull,
+  BadToken,
+  BadName,
+  VersionMismatch,
+  NotAllowed,
+  ServerFull,
+};
+
+/// Why the server refused a shot command (RejectReason of pool.idl), in the order it checks.
+enum class RejectReason : std::uint8_t {
+  None,              ///< accepted
+  Malformed,         ///< a field is non-finite, out of range or not a valid value
+  NoSuchMatch,       ///< no match of that id on this server
+  WrongSeat,         ///< nobody sits in that seat
+  BadToken,          ///< the seat token does not match the seat's
+  MatchOver,         ///< the match has a winner (or was closed)
+  NotYourTurn,       ///< the other seat is to shoot (or the match has not started)
+  BallsMoving,       ///< a shot is still being published
+  StaleSequence,     ///< seq not above the seat's last accepted one
+  OptionRequired,    ///< the rules offered a choice and none was made
+  OptionNotOffered,  ///< a choice the rules did not offer
+  IllegalPlacement,  ///< the cue ball cannot be placed there (or must be placed)
+  BadCall,           ///< the called ball or pocket is not allowed (or no call in standard play)
+  BadSignature,      ///< reserved for signed commands
+};
+
+/// snake_case names, e.g. "stale_sequence"; "unknown" for a value outside the enum.
+const char* toString(MatchPhase phase);
+const char* toString(JoinAction action);
+const char* toString(JoinOutcome outcome);
+const char* toString(RejectReason reason);
+
+}  // namespace pool::net
