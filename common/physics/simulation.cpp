@@ -190,12 +190,14 @@ struct Simulation::Impl {
   /// tiny upward speed) or lifts off; its motion state follows from its velocities.
   void settle(size_t i) {
     Ball& b = balls[i];
-    if (b.state == MotionState::Airborne && b.pos.z() - R() > kNearSlate) return;
+    const bool was_airborne = b.state == MotionState::Airborne;
+    if (was_airborne && b.pos.z() - R() > kNearSlate) return;
     if (b.vel.z() > kLiftOffSpeed) {
       b.state = MotionState::Airborne;
-      emit(EventType::Airborne, i);
+      if (!was_airborne) emit(EventType::Airborne, i);
       return;
     }
+    if (was_airborne) emit(EventType::Land, i, -1, {}, std::max(0.0, -b.vel.z()));
     b.vel.z() = 0.0;
     b.pos.z() = R();
     b.state = cloth->classify(b);
