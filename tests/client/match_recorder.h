@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "client/net/game_client.h"
+#include "client/net/wire_read.h"
 #include "net/convert.h"
 #include "net/participant.h"
 #include "net/qos_profiles.h"
@@ -26,7 +27,9 @@ class MatchRecorder {
       : client_({domain, "", "recorder"}),
         participant_(domain),
         command_topic_(participant_),
-        commands_(participant_, command_topic_, net::qos::command()) {}
+        commands_(participant_, command_topic_, net::qos::command()),
+        state_topic_(participant_),
+        all_states_(participant_, state_topic_, keepAll(net::qos::state())) {}
 
   /// Polls until `until()` holds or `timeout` passes; true when it held.
   bool pump(std::chrono::milliseconds timeout, const std::function<bool()>& until = [] {
@@ -86,10 +89,18 @@ class MatchRecorder {
  private:
   using CommandKey = std::tuple<std::string, int, std::uint32_t>;
 
+  /// The state profile with every sample kept: a game client keeps the latest state only, but
+  /// the replay needs each one, and under load several arrive between two polls.
+  static net::QosProfile keepAll(net::QosProfile profile) {
+    profile.history_depth = 0;
+    return profile;
+  }
   void drain() {
     for (auto& event : client_.poll()) {
-      if (auto* view = std::get_if<MatchView>(&event)) states_.push_back(std::move(*view));
       if (auto* report = std::get_if<ShotReport>(&event)) reports_.push_back(std::move(*report));
+    }
+    for (auto& sample : all_states_.take()) {
+      if (auto view = fromWire(*sample)) states_.push_back(std::move(*view));
     }
     for (auto& sample : commands_.take()) {
       auto request = net::fromWire(*sample);
@@ -101,6 +112,8 @@ class MatchRecorder {
   net::Participant participant_;
   net::Topic<pool_ShotCommand> command_topic_;
   net::Reader<pool_ShotCommand> commands_;
+  net::Topic<pool_MatchState> state_topic_;
+  net::Reader<pool_MatchState> all_states_;
   std::vector<MatchView> states_;
   std::vector<ShotReport> reports_;
   std::map<CommandKey, net::ShotRequest> commands_seen_;
