@@ -4,14 +4,7 @@
 namespace pool::server {
 
 ServerBus::ServerBus(std::uint32_t domain)
-    : participant(domain),
-      match_info_topic(participant),
-      join_request_topic(participant),
-      join_reply_topic(participant),
-      command_topic(participant),
-      result_topic(participant),
-      snapshot_topic(participant),
-      state_topic(participant),
+    : ProtocolTopics(domain),
       join_requests(participant, join_request_topic, net::qos::joinRequest()),
       commands(participant, command_topic, net::qos::command()),
       match_info(participant, match_info_topic, net::qos::lobby()),

@@ -5,6 +5,7 @@
 
 #include "net/messages.h"
 #include "net/participant.h"
+#include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
 #include "net/topic.h"
@@ -15,18 +16,9 @@ namespace pool::server {
 
 /// Every topic of pool.idl as the server uses it, with DESIGN.md's QoS (common/net's profiles).
 /// Members are built in declaration order and destroyed in reverse, the participant last.
-struct ServerBus {
+struct ServerBus : net::ProtocolTopics {
   /// Joins `domain` (its configuration from CYCLONEDDS_URI). Throws net::DdsError on failure.
   explicit ServerBus(std::uint32_t domain);
-
-  net::Participant participant;
-  net::Topic<pool_MatchInfo> match_info_topic;
-  net::Topic<pool_JoinRequest> join_request_topic;
-  net::Topic<pool_JoinReply> join_reply_topic;
-  net::Topic<pool_ShotCommand> command_topic;
-  net::Topic<pool_ShotResult> result_topic;
-  net::Topic<pool_TableSnapshot> snapshot_topic;
-  net::Topic<pool_MatchState> state_topic;
 
   net::Reader<pool_JoinRequest> join_requests;
   net::Reader<pool_ShotCommand> commands;

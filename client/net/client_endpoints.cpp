@@ -16,14 +16,7 @@ enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kState
 }  // namespace
 
 ClientEndpoints::ClientEndpoints(std::uint32_t domain)
-    : participant(domain),
-      match_info_topic(participant),
-      join_request_topic(participant),
-      join_reply_topic(participant),
-      command_topic(participant),
-      result_topic(participant),
-      snapshot_topic(participant),
-      state_topic(participant),
+    : ProtocolTopics(domain),
       match_info(participant, match_info_topic, net::qos::lobby()),
       join_replies(participant, join_reply_topic, net::qos::joinReply()),
       results(participant, result_topic, deeper(net::qos::result())),

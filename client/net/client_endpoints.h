@@ -7,6 +7,7 @@
 
 #include "net/messages.h"
 #include "net/participant.h"
+#include "net/protocol_topics.h"
 #include "net/reader.h"
 #include "net/topic.h"
 #include "net/waitset.h"
@@ -22,17 +23,8 @@ inline constexpr std::uint32_t kReaderDepth = 16;
 inline constexpr std::uint32_t kSnapshotDepth = 512;
 
 /// Every endpoint a player or spectator needs. Throws net::DdsError when DDS refuses one.
-struct ClientEndpoints {
+struct ClientEndpoints : net::ProtocolTopics {
   explicit ClientEndpoints(std::uint32_t domain);
-
-  net::Participant participant;
-  net::Topic<pool_MatchInfo> match_info_topic;
-  net::Topic<pool_JoinRequest> join_request_topic;
-  net::Topic<pool_JoinReply> join_reply_topic;
-  net::Topic<pool_ShotCommand> command_topic;
-  net::Topic<pool_ShotResult> result_topic;
-  net::Topic<pool_TableSnapshot> snapshot_topic;
-  net::Topic<pool_MatchState> state_topic;
 
   net::Reader<pool_MatchInfo> match_info;
   net::Reader<pool_JoinReply> join_replies;

@@ -1,0 +1,16 @@
+// Creating the participant and the protocol's topics.
+#include "net/protocol_topics.h"
+
+namespace pool::net {
+
+ProtocolTopics::ProtocolTopics(std::uint32_t domain)
+    : participant(domain),
+      match_info_topic(participant),
+      join_request_topic(participant),
+      join_reply_topic(participant),
+      command_topic(participant),
+      result_topic(participant),
+      snapshot_topic(participant),
+      state_topic(participant) {}
+
+}  // namespace pool::net
