@@ -1,5 +1,5 @@
-// pool-client: the player's client. For now only the headless spectator (--spectate MATCH
-// --no-window --json); the windowed mode plugs in as another Mode.
+// pool-client: the player's client. For now the headless spectator (--spectate MATCH
+// --no-window --json) and offscreen screenshots (--screenshot FILE); the window comes later.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <chrono>
@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "client/net/game_client.h"
+#include "client/render/screenshot.h"
 #include "client/spectate/spectator.h"
 #include "net/dds_error.h"
 
@@ -27,6 +28,7 @@ struct Flags {
   bool json = false;
   bool follow = false;   // keep watching after the match is over
   double timeout = 0.0;  // s; 0: none
+  pool::render::ScreenshotOptions screenshot;
 };
 
 int runSpectator(const Flags& flags) {
@@ -57,11 +59,19 @@ int main(int argc, char** argv) {
   CLI::App app{"pool-client: play or watch 8-ball over DDS"};
   app.add_option("--domain", flags.domain, "DDS domain id")->check(CLI::Range(0, 232));
   app.add_option("--spectate", flags.spectate, "watch MATCH (an id, or 'any': the first in play)");
-  app.add_flag("--no-window", flags.no_window, "no window (the only mode for now)");
+  app.add_flag("--no-window", flags.no_window, "no window (the only spectator mode for now)");
   app.add_flag("--json", flags.json, "print JSON lines: states, shot results, frame counts");
   app.add_flag("--follow", flags.follow, "keep watching after the match is over");
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
+  app.add_option("--screenshot", flags.screenshot.path,
+                 "render offscreen and write the last frame to this PNG");
+  app.add_option("--frames", flags.screenshot.frames, "frames to render with --screenshot")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack)")
+      ->check(CLI::IsMember({"rack"}));
   CLI11_PARSE(app, argc, argv);
+
+  if (!flags.screenshot.path.empty()) return pool::render::runScreenshot(flags.screenshot);
 
   const Mode mode = flags.spectate.empty() || !flags.no_window ? Mode::Window : Mode::Spectate;
   if (mode == Mode::Window || !flags.json) {

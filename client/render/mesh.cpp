@@ -1,0 +1,105 @@
+// Mesh builders (flat-shaded table parts, UV spheres, discs) and their upload into VAOs.
+#include "client/render/mesh.h"
+
+#include <glad/gl.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace pool::render {
+
+namespace {
+
+void addTriangle(MeshData& mesh, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 na, glm::vec3 nb,
+                 glm::vec3 nc) {
+  mesh.positions.insert(mesh.positions.end(), {a, b, c});
+  mesh.normals.insert(mesh.normals.end(), {na, nb, nc});
+}
+
+glm::vec3 toVec(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+glm::vec3 spherePoint(int stack, int slice, int stacks, int slices) {
+  const double theta = std::numbers::pi * stack / stacks;
+  const double phi = 2.0 * std::numbers::pi * slice / slices;
+  return {static_cast<float>(std::sin(theta) * std::cos(phi)),
+          static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta))};
+}
+
+}  // namespace
+
+MeshData meshFromPart(const pool::table::MeshPart& part) {
+  MeshData mesh;
+  for (const auto& tri : part.triangles) {
+    const glm::vec3 a = toVec(part.vertices[tri[0]]);
+    const glm::vec3 b = toVec(part.vertices[tri[1]]);
+    const glm::vec3 c = toVec(part.vertices[tri[2]]);
+    const glm::vec3 cross = glm::cross(b - a, c - a);
+    if (glm::length(cross) <= 0.0f) continue;
+    const glm::vec3 n = glm::normalize(cross);
+    addTriangle(mesh, a, b, c, n, n, n);
+  }
+  return mesh;
+}
+
+MeshData unitSphere(int stacks, int slices) {
+  MeshData mesh;
+  for (int i = 0; i < stacks; ++i) {
+    for (int j = 0; j < slices; ++j) {
+      const glm::vec3 p00 = spherePoint(i, j, stacks, slices);
+      const glm::vec3 p01 = spherePoint(i, j + 1, stacks, slices);
+      const glm::vec3 p10 = spherePoint(i + 1, j, stacks, slices);
+      const glm::vec3 p11 = spherePoint(i + 1, j + 1, stacks, slices);
+      addTriangle(mesh, p00, p10, p11, p00, p10, p11);
+      addTriangle(mesh, p00, p11, p01, p00, p11, p01);
+    }
+  }
+  return mesh;
+}
+
+MeshData unitDisc(int slices) {
+  MeshData mesh;
+  const glm::vec3 up(0.0f, 0.0f, 1.0f);
+  for (int j = 0; j < slices; ++j) {
+    const glm::vec3 a = spherePoint(1, j, 2, slices);
+    const glm::vec3 b = spherePoint(1, j + 1, 2, slices);
+    addTriangle(mesh, glm::vec3(0.0f), a, b, up, up, up);
+  }
+  return mesh;
+}
+
+GpuMesh::GpuMesh(const MeshData& data) : count_(static_cast<int>(data.positions.size())) {
+  std::vector<float> interleaved;
+  interleaved.reserve(data.positions.size() * 6);
+  for (std::size_t i = 0; i < data.positions.size(); ++i) {
+    const glm::vec3& p = data.positions[i];
+    const glm::vec3& n = data.normals[i];
+    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+  }
+  glGenVertexArrays(1, &vao_);
+  glBindVertexArray(vao_);
+  glGenBuffers(1, &vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+               interleaved.data(), GL_STATIC_DRAW);
+  const auto stride = static_cast<GLsizei>(6 * sizeof(float));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
+  glBindVertexArray(0);
+}
+
+GpuMesh::~GpuMesh() {
+  glDeleteBuffers(1, &vbo_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void GpuMesh::draw() const {
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, count_);
+}
+
+}  // namespace pool::render

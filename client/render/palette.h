@@ -1,0 +1,24 @@
+// Colours of the table's materials and of the balls (linear RGB, 0..1).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <string>
+
+namespace pool::render {
+
+/// How a ball looks: a solid colour, or white with a band of `colour` (stripes, 9–15).
+struct BallLook {
+  glm::vec3 colour;
+  bool striped = false;
+};
+
+/// The look of ball `id` (0: the cue ball, 1–15 the object balls).
+BallLook ballLook(int id);
+
+/// Colour of a table mesh part by its name (slate, cushion_*, jaw_*, rail_*, pocket_*, trough).
+glm::vec3 partColour(const std::string& part_name);
+
+/// The colour drawn in the pocket holes.
+glm::vec3 holeColour();
+
+}  // namespace pool::render

@@ -1,0 +1,64 @@
+// Offscreen rendering of a scene to a PNG file (stb_image_write).
+#include "client/render/screenshot.h"
+
+#include <stb_image_write.h>
+
+#include <exception>
+#include <iostream>
+
+#include "client/render/offscreen.h"
+#include "client/render/renderer.h"
+
+namespace pool::render {
+
+namespace {
+
+bool writePng(const std::string& path, int width, int height,
+              const std::vector<std::uint8_t>& rgb) {
+  return stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3) != 0;
+}
+
+int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
+  OffscreenContext context(options.width, options.height);
+  const Renderer renderer(scene);
+  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  const Camera camera = overviewCamera(scene.geometry, aspect);
+  std::vector<std::uint8_t> pixels;
+  for (int frame = 0; frame < options.frames; ++frame) {
+    context.bind();
+    renderer.draw(camera, options.width, options.height);
+    if (frame + 1 == options.frames) pixels = context.readRgb();
+    context.endFrame();
+  }
+  if (!writePng(options.path, options.width, options.height, pixels)) {
+    std::cerr << "could not write " << options.path << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int runScreenshot(const ScreenshotOptions& options) {
+  if (options.scene != "rack") {
+    std::cerr << "unknown scene '" << options.scene << "' (known: rack)\n";
+    return 2;
+  }
+  if (options.frames < 1) {
+    std::cerr << "--frames must be at least 1\n";
+    return 2;
+  }
+  auto scene = rackScene();
+  if (!scene) {
+    std::cerr << "scene: " << scene.error() << '\n';
+    return 1;
+  }
+  try {
+    return renderToPng(options, *scene);
+  } catch (const std::exception& e) {
+    std::cerr << "render: " << e.what() << '\n';
+    return 1;
+  }
+}
+
+}  // namespace pool::render
