@@ -23,6 +23,7 @@
 #include "client/net/wire_read.h"
 #include "net/convert.h"
 #include "net/participant.h"
+#include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
 #include "net/topic.h"
@@ -133,18 +134,15 @@ std::size_t snapshotBytes(const pool_TableSnapshot& s) {
 class Driver {
  public:
   explicit Driver(std::uint32_t domain)
-      : participant_(domain),
-        info_topic_(participant_), request_topic_(participant_), reply_topic_(participant_),
-        command_topic_(participant_), result_topic_(participant_), snapshot_topic_(participant_),
-        state_topic_(participant_),
-        lobby_(participant_, info_topic_, net::qos::lobby()),
-        replies_(participant_, reply_topic_, net::qos::joinReply()),
-        results_(participant_, result_topic_, deep(net::qos::result())),
-        snapshots_(participant_, snapshot_topic_, deep(net::qos::snapshot())),
-        states_(participant_, state_topic_, deep(net::qos::state())),
-        requests_(participant_, request_topic_, net::qos::joinRequest()),
-        commands_(participant_, command_topic_, net::qos::command()),
-        waitset_(participant_) {
+      : bus_(domain),
+        lobby_(bus_.participant, bus_.match_info_topic, net::qos::lobby()),
+        replies_(bus_.participant, bus_.join_reply_topic, net::qos::joinReply()),
+        results_(bus_.participant, bus_.result_topic, deep(net::qos::result())),
+        snapshots_(bus_.participant, bus_.snapshot_topic, deep(net::qos::snapshot())),
+        states_(bus_.participant, bus_.state_topic, deep(net::qos::state())),
+        requests_(bus_.participant, bus_.join_request_topic, net::qos::joinRequest()),
+        commands_(bus_.participant, bus_.command_topic, net::qos::command()),
+        waitset_(bus_.participant) {
     waitset_.attachData(lobby_, 1);
     waitset_.attachData(replies_, 2);
     waitset_.attachData(results_, 3);
@@ -333,14 +331,7 @@ class Driver {
     }, 4096);
   }
 
-  net::Participant participant_;
-  net::Topic<pool_MatchInfo> info_topic_;
-  net::Topic<pool_JoinRequest> request_topic_;
-  net::Topic<pool_JoinReply> reply_topic_;
-  net::Topic<pool_ShotCommand> command_topic_;
-  net::Topic<pool_ShotResult> result_topic_;
-  net::Topic<pool_TableSnapshot> snapshot_topic_;
-  net::Topic<pool_MatchState> state_topic_;
+  net::ProtocolTopics bus_;  ///< the participant and the protocol's topics
   net::Reader<pool_MatchInfo> lobby_;
   net::Reader<pool_JoinReply> replies_;
   net::Reader<pool_ShotResult> results_;

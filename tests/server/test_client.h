@@ -14,6 +14,7 @@
 #include "net/convert.h"
 #include "net/messages.h"
 #include "net/participant.h"
+#include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
 #include "net/shot_request.h"
@@ -38,22 +39,15 @@ class TestClient {
  public:
   TestClient(std::uint32_t domain, std::string id)
       : id_(std::move(id)),
-        participant_(domain),
-        info_topic_(participant_),
-        join_topic_(participant_),
-        reply_topic_(participant_),
-        command_topic_(participant_),
-        result_topic_(participant_),
-        snapshot_topic_(participant_),
-        state_topic_(participant_),
-        join_writer_(participant_, join_topic_, net::qos::joinRequest()),
-        command_writer_(participant_, command_topic_, net::qos::command()),
-        infos_(participant_, info_topic_, keepAll(net::qos::lobby())),
-        replies_(participant_, reply_topic_, keepAll(net::qos::joinReply())),
-        results_(participant_, result_topic_, keepAll(net::qos::result())),
-        snapshots_(participant_, snapshot_topic_, keepAll(net::qos::snapshot())),
-        states_(participant_, state_topic_, keepAll(net::qos::state())),
-        waitset_(participant_) {
+        bus_(domain),
+        join_writer_(bus_.participant, bus_.join_request_topic, net::qos::joinRequest()),
+        command_writer_(bus_.participant, bus_.command_topic, net::qos::command()),
+        infos_(bus_.participant, bus_.match_info_topic, keepAll(net::qos::lobby())),
+        replies_(bus_.participant, bus_.join_reply_topic, keepAll(net::qos::joinReply())),
+        results_(bus_.participant, bus_.result_topic, keepAll(net::qos::result())),
+        snapshots_(bus_.participant, bus_.snapshot_topic, keepAll(net::qos::snapshot())),
+        states_(bus_.participant, bus_.state_topic, keepAll(net::qos::state())),
+        waitset_(bus_.participant) {
     waitset_.attachData(infos_, 1);
     waitset_.attachData(replies_, 2);
     waitset_.attachData(results_, 3);
@@ -216,14 +210,7 @@ class TestClient {
 
   std::string id_;
   std::uint32_t requests_ = 0;
-  net::Participant participant_;
-  net::Topic<pool_MatchInfo> info_topic_;
-  net::Topic<pool_JoinRequest> join_topic_;
-  net::Topic<pool_JoinReply> reply_topic_;
-  net::Topic<pool_ShotCommand> command_topic_;
-  net::Topic<pool_ShotResult> result_topic_;
-  net::Topic<pool_TableSnapshot> snapshot_topic_;
-  net::Topic<pool_MatchState> state_topic_;
+  net::ProtocolTopics bus_;  ///< the participant and the protocol's topics
   net::Writer<pool_JoinRequest> join_writer_;
   net::Writer<pool_ShotCommand> command_writer_;
   net::Reader<pool_MatchInfo> infos_;
