@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pool::server {
 
@@ -14,6 +15,7 @@ struct Seat {
   std::string client;                ///< the client id that holds the seat (for presence)
   std::optional<double> away_since;  ///< s on the server's clock, while the player is gone
   std::uint32_t last_seq = 0;        ///< the last accepted command's sequence number
+  std::vector<std::uint8_t> public_key;  ///< Ed25519 key its commands are signed with; empty: none
   int fouls = 0;                     ///< fouls this rack
   int racks_won = 0;
   bool wants_rematch = false;
