@@ -38,10 +38,23 @@ Renderer::Renderer(const Scene& scene)
   }
 }
 
-void Renderer::setFrameUniforms(const Camera& camera, float aspect) const {
+glm::mat4 viewProjection(const Camera& camera, float aspect) {
   const glm::mat4 view = glm::lookAt(camera.eye, camera.target, glm::vec3(0.0f, 0.0f, 1.0f));
   const glm::mat4 proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, 0.05f, 50.0f);
-  program_.set("uViewProj", proj * view);
+  return proj * view;
+}
+
+glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3 p) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const glm::vec4 clip = viewProjection(camera, aspect) * glm::vec4(p, 1.0f);
+  if (clip.w <= 0.0f) return {0.0f, 0.0f, -1.0f};
+  const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+  return {(ndc.x * 0.5f + 0.5f) * static_cast<float>(width),
+          (0.5f - ndc.y * 0.5f) * static_cast<float>(height), ndc.z * 0.5f + 0.5f};
+}
+
+void Renderer::setFrameUniforms(const Camera& camera, float aspect) const {
+  program_.set("uViewProj", viewProjection(camera, aspect));
   program_.set("uEye", camera.eye);
   const float x = static_cast<float>(scene_.geometry.length) * 0.25f;
   program_.set("uLightPos[0]", glm::vec3(-x, 0.0f, kLightHeight));
@@ -74,7 +87,8 @@ void Renderer::drawHoles() const {
 void Renderer::drawBalls() const {
   const auto r = static_cast<float>(scene_.ball_radius);
   for (const SceneBall& ball : scene_.balls) {
-    const glm::vec3 centre(static_cast<float>(ball.pos.x()), static_cast<float>(ball.pos.y()), r);
+    const glm::vec3 centre(static_cast<float>(ball.pos.x()), static_cast<float>(ball.pos.y()),
+                           static_cast<float>(ball.pos.z()));
     const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(r));
     const BallLook look = ballLook(ball.id);
     drawMesh(sphere_, model, look.colour, look.striped, 0.5f);

@@ -20,11 +20,36 @@ struct Camera {
 
 /// A camera above the long side that frames the whole table for the given aspect (w / h).
 Camera overviewCamera(const pool::table::TableGeometry& geometry, float aspect);
+/// The camera's projection × view matrix for the given aspect (w / h).
+glm::mat4 viewProjection(const Camera& camera, float aspect);
+/// Where table point `p` lands in a width × height image: pixels from the top-left corner, and
+/// its depth in [0, 1] as z (z < 0 when the point is behind the camera).
+glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3 p);
+
+/// Switches of the drawing (the client's P, T and L keys).
+struct RenderOptions {
+  bool wireframe = false;
+  bool textures = true;
+  bool lighting = true;
+};
+
+/// A coloured segment drawn over the scene, unlit (aim line, cue, direction vectors).
+struct OverlayLine {
+  glm::vec3 a;
+  glm::vec3 b;
+  glm::vec3 colour;
+};
 
 /// GPU resources of one scene; needs a current OpenGL 3.3 core context.
 class Renderer {
  public:
   explicit Renderer(const Scene& scene);
+  /// Replaces the balls (positions and orientations from the latest snapshot).
+  void setBalls(std::vector<SceneBall> balls) { scene_.balls = std::move(balls); }
+  void setOptions(const RenderOptions& options) { options_ = options; }
+  const RenderOptions& options() const { return options_; }
+  /// Replaces the overlay segments drawn after the scene.
+  void setOverlay(std::vector<OverlayLine> lines) { overlay_ = std::move(lines); }
 
   /// Clears and draws the scene into the bound framebuffer of size width × height.
   void draw(const Camera& camera, int width, int height) const;
@@ -41,6 +66,8 @@ class Renderer {
   void drawHoles() const;
 
   Scene scene_;
+  RenderOptions options_;
+  std::vector<OverlayLine> overlay_;
   ShaderProgram program_;
   std::vector<Part> parts_;
   GpuMesh sphere_;

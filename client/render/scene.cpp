@@ -15,9 +15,11 @@ Result<Scene> rackScene(const std::string& table) {
   Scene scene;
   scene.geometry = std::move(*geometry);
   scene.ball_radius = spec->params.ball_radius;
-  scene.balls.push_back({0, spotsFor(*spec).head_spot});
-  for (const BallPlacement& b : rackBalls(RackType::EightBall, *spec, scene.ball_radius, 0)) {
-    scene.balls.push_back({b.id, b.pos});
+  const double r = scene.ball_radius;
+  const Eigen::Vector2d head = spotsFor(*spec).head_spot;
+  scene.balls.push_back({0, Eigen::Vector3d(head.x(), head.y(), r)});
+  for (const BallPlacement& b : rackBalls(RackType::EightBall, *spec, r, 0)) {
+    scene.balls.push_back({b.id, Eigen::Vector3d(b.pos.x(), b.pos.y(), r)});
   }
   return Result<Scene>::ok(std::move(scene));
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
@@ -10,10 +11,13 @@
 
 namespace pool::render {
 
-/// One ball on the table (table frame, metres; the centre is at z = radius).
+/// One ball (table frame, metres): on the slate its centre is at z = radius; pocketed balls lie
+/// lower, in the trough under the table.
 struct SceneBall {
   int id = 0;  ///< 0: cue ball
-  Eigen::Vector2d pos;
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body → table frame
+  bool pocketed = false;
 };
 
 /// A table and its balls.
