@@ -1,0 +1,68 @@
+// The client's sound: one object told each shot's events and each frame's playback time.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "client/audio/audio_sink.h"
+#include "client/audio/cue_schedule.h"
+#include "client/audio/impact_law.h"
+#include "client/audio/mixer.h"
+#include "client/audio/sound_bank.h"
+#include "physics/events.h"
+
+namespace pool::audio {
+
+struct SoundOptions {
+  bool mute = false;  ///< play nothing (the silent sink still keeps time)
+  int rate = kDefaultSampleRate;
+  ImpactLaws laws;
+  MixerOptions mixer;  ///< its rate is set from `rate`
+  ScheduleOptions schedule;
+  SinkOptions sink;  ///< its rate and mute are set from the fields above
+  /// Where the one line about the output goes (default: stderr).
+  std::function<void(const std::string&)> log;
+};
+
+/// Sound from the server's events. Usage, from the app loop:
+///   audio::SoundBoard board(options);
+///   board.onShot(report.events, report.shot_number);  // when a shot's events are known
+///   board.update(frame.sim_time);                     // every frame
+/// update() starts the sounds whose event time playback has reached (each once; none lost when
+/// frames are skipped; a shot joined late skips what happened before), then tops up the output.
+/// With no audio device it plays silently; it never blocks.
+class SoundBoard {
+ public:
+  explicit SoundBoard(const SoundOptions& options = {});
+  /// With a given output (tests, tools).
+  SoundBoard(const SoundOptions& options, std::unique_ptr<AudioSink> sink);
+
+  /// A shot's event log. Replaces the previous shot's cues still to come (sounds already playing
+  /// ring out). `shot_key` ≠ 0 identifies the shot: the same key again is ignored.
+  void onShot(const physics::EventLog& events, std::uint64_t shot_key = 0);
+
+  /// The current playback time of the shot, s since the strike.
+  void update(double playback_time);
+
+  bool silent() const { return sink_->silent(); }
+  std::string outputName() const { return sink_->name(); }
+  const MixerStats& mixerStats() const { return mixer_.stats(); }
+  const CueSchedule& schedule() const { return schedule_; }
+  const SoundBank& bank() const { return bank_; }
+
+ private:
+  void pump();
+
+  SoundOptions options_;
+  SoundBank bank_;
+  Mixer mixer_;
+  CueSchedule schedule_;
+  std::unique_ptr<AudioSink> sink_;
+  std::vector<DueCue> due_;   ///< reused each update
+  std::vector<float> block_;  ///< one block of mixed samples
+};
+
+}  // namespace pool::audio
