@@ -18,8 +18,17 @@ void CueSchedule::setShot(std::vector<SoundCue> cues, std::uint64_t key) {
   last_ = 0.0;
 }
 
+void CueSchedule::addCues(const std::vector<SoundCue>& cues) {
+  for (const SoundCue& c : cues) {
+    // Among the cues still to come, in time order; never behind one already started.
+    const auto at = std::upper_bound(cues_.begin() + static_cast<long>(next_), cues_.end(), c.t,
+                                     [](double t, const SoundCue& x) { return t < x.t; });
+    cues_.insert(at, c);
+  }
+}
+
 void CueSchedule::advance(double t, std::vector<DueCue>& due) {
-  if (!std::isfinite(t) || next_ >= cues_.size()) return;
+  if (!std::isfinite(t)) return;
   if (!joined_) {
     // Joining: what happened before the late window is history.
     joined_ = true;

@@ -33,6 +33,10 @@ class CueSchedule {
   /// that a report delivered twice does not sound twice.
   void setShot(std::vector<SoundCue> cues, std::uint64_t key = 0);
 
+  /// More cues of the current shot, learnt as it plays (from frames): each starts at the next
+  /// advance() that reaches it, even when its time has passed already.
+  void addCues(const std::vector<SoundCue>& cues);
+
   /// Appends to `due` the cues whose time playback `t` (s since the strike) has reached and that
   /// have not started yet. Time going backwards starts nothing.
   void advance(double t, std::vector<DueCue>& due);
@@ -41,6 +45,8 @@ class CueSchedule {
   std::size_t pending() const { return cues_.size() - next_; }
   /// Cues skipped because the shot was joined late.
   std::size_t skipped() const { return skipped_; }
+  /// The key of the current shot (0: none given).
+  std::uint64_t key() const { return key_; }
 
  private:
   ScheduleOptions options_;

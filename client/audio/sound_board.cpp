@@ -40,8 +40,33 @@ SoundBoard::SoundBoard(const SoundOptions& options, std::unique_ptr<AudioSink> s
   due_.reserve(256);
 }
 
+bool SoundBoard::stale(std::uint64_t shot_key) {
+  if (shot_key == 0) return false;
+  if (latest_key_ && shot_key < *latest_key_) return true;
+  latest_key_ = shot_key;
+  return false;
+}
+
 void SoundBoard::onShot(const physics::EventLog& events, std::uint64_t shot_key) {
+  // A shot that sounded from its frames is over when its log arrives: nothing to replay.
+  if (stale(shot_key) || (shot_key != 0 && frames_key_ == shot_key)) return;
+  events_key_ = shot_key;
+  frames_key_.reset();
   schedule_.setShot(cuesFromEvents(events, options_.laws), shot_key);
+}
+
+void SoundBoard::onFrame(std::uint64_t shot_key, double sim_time,
+                         const std::vector<physics::Ball>& balls) {
+  if (stale(shot_key)) return;
+  if (shot_key != 0 && events_key_ == shot_key) return;  // the exact log drives this shot
+  if (frames_key_ != shot_key) {
+    frames_key_ = shot_key;
+    events_key_.reset();
+    impacts_.reset();
+    schedule_.setShot({}, shot_key);
+  }
+  const auto events = impacts_.onFrame(balls, sim_time);
+  if (!events.empty()) schedule_.addCues(cuesFromEvents(events, options_.laws));
 }
 
 void SoundBoard::update(double playback_time) {

@@ -4,11 +4,13 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "client/audio/audio_sink.h"
 #include "client/audio/cue_schedule.h"
+#include "client/audio/frame_impacts.h"
 #include "client/audio/impact_law.h"
 #include "client/audio/mixer.h"
 #include "client/audio/sound_bank.h"
@@ -30,9 +32,12 @@ struct SoundOptions {
 /// Sound from the server's events. Usage, from the app loop:
 ///   audio::SoundBoard board(options);
 ///   board.onShot(report.events, report.shot_number);  // when a shot's events are known
-///   board.update(frame.sim_time);                     // every frame
+///   board.onFrame(frame.shot_number, frame.sim_time, frame.balls);  // each TableFrame received
+///   board.update(playback_time);                      // every rendered frame
 /// update() starts the sounds whose event time playback has reached (each once; none lost when
 /// frames are skipped; a shot joined late skips what happened before), then tops up the output.
+/// The server sends a shot's event log after its last frame: until then the impacts read off
+/// the frames sound, and the log of a shot that already sounded is not played again.
 /// With no audio device it plays silently; it never blocks.
 class SoundBoard {
  public:
@@ -41,8 +46,13 @@ class SoundBoard {
   SoundBoard(const SoundOptions& options, std::unique_ptr<AudioSink> sink);
 
   /// A shot's event log. Replaces the previous shot's cues still to come (sounds already playing
-  /// ring out). `shot_key` ≠ 0 identifies the shot: the same key again is ignored.
+  /// ring out). `shot_key` ≠ 0 identifies the shot (its number, which grows): the same key again,
+  /// an older one, or that of a shot already sounding from its frames is ignored.
   void onShot(const physics::EventLog& events, std::uint64_t shot_key = 0);
+
+  /// One table frame of shot `shot_key`. Unless that shot's event log is known, the impacts
+  /// read off consecutive frames (FrameImpacts) are added to the shot's sounds.
+  void onFrame(std::uint64_t shot_key, double sim_time, const std::vector<physics::Ball>& balls);
 
   /// The current playback time of the shot, s since the strike.
   void update(double playback_time);
@@ -55,11 +65,17 @@ class SoundBoard {
 
  private:
   void pump();
+  /// True for a shot older than the newest seen (then nothing of it sounds); notes new ones.
+  bool stale(std::uint64_t shot_key);
 
   SoundOptions options_;
   SoundBank bank_;
   Mixer mixer_;
   CueSchedule schedule_;
+  FrameImpacts impacts_;
+  std::optional<std::uint64_t> frames_key_;  ///< the shot sounding from its frames
+  std::optional<std::uint64_t> events_key_;  ///< the shot sounding from its event log
+  std::optional<std::uint64_t> latest_key_;  ///< the newest shot seen: older ones are stale
   std::unique_ptr<AudioSink> sink_;
   std::vector<DueCue> due_;   ///< reused each update
   std::vector<float> block_;  ///< one block of mixed samples

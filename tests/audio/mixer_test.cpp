@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "audio/break_events.h"
+#include "audio/shots.h"
 #include "client/audio/mixer.h"
 #include "client/audio/offline_render.h"
 #include "client/audio/sound_cue.h"

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "audio/break_events.h"
+#include "audio/shots.h"
 #include "client/audio/sound_board.h"
 
 namespace pool::audio {
@@ -102,12 +102,53 @@ TEST(SoundBoard, ANewShotCutsOffTheOldAndARepeatedReportIsIgnored) {
   const double reached = play(board, 0.5, 0.8);
   const auto sounded = board.mixerStats().started + board.mixerStats().dropped;
   const auto cues = cuesFromEvents(events, ImpactLaws{});
-  EXPECT_EQ(sounded, static_cast<std::size_t>(std::count_if(
-                         cues.begin(), cues.end(), [&](const SoundCue& c) { return c.t <= reached; })));
+  EXPECT_EQ(sounded,
+            static_cast<std::size_t>(std::count_if(
+                cues.begin(), cues.end(), [&](const SoundCue& c) { return c.t <= reached; })));
   ASSERT_LT(sounded, cues.size());
   board.onShot({test::event(EventType::Strike, 0.0, 3.0, 0)}, 2);
   play(board, 0.0, 3.0);
   EXPECT_EQ(board.mixerStats().started + board.mixerStats().dropped, sounded + 1);
+}
+
+std::size_t sounded(const SoundBoard& board) {
+  return board.mixerStats().started + board.mixerStats().dropped;
+}
+
+TEST(SoundBoard, FramesSoundAShotAndItsLogArrivingAfterwardsAddsNothing) {
+  std::vector<float> heard;
+  SoundBoard board({}, std::make_unique<CaptureSink>(heard));
+  const auto shot = test::framedShot("straight_pocket");
+  for (const auto& frame : shot.trajectory) {
+    board.onFrame(5, frame.t, frame.balls);
+    board.update(frame.t);
+  }
+  // The strike, the click and the drop, heard as the frames played.
+  EXPECT_EQ(sounded(board), 3u);
+  board.onShot(shot.events, 5);  // the server's log, after the last frame
+  play(board, shot.trajectory.back().t, shot.trajectory.back().t + 1.0);
+  EXPECT_EQ(sounded(board), 3u);
+  board.onShot(shot.events, 4);  // an older shot's log: stale
+  play(board, 0.0, 1.0);
+  EXPECT_EQ(sounded(board), 3u);
+}
+
+TEST(SoundBoard, AShotWhoseLogCameFirstIgnoresItsFrames) {
+  std::vector<float> heard;
+  SoundBoard board({}, std::make_unique<CaptureSink>(heard));
+  const auto shot = test::framedShot("straight_pocket");
+  board.onShot(shot.events, 6);
+  for (const auto& frame : shot.trajectory) {
+    board.onFrame(6, frame.t, frame.balls);
+    board.update(frame.t);
+  }
+  play(board, shot.trajectory.back().t, shot.trajectory.back().t + 1.0);
+  EXPECT_EQ(sounded(board), audibleCues(shot.events));
+  // The next shot's frames take over.
+  const auto& first = shot.trajectory.front();
+  board.onFrame(7, first.t, first.balls);
+  board.update(first.t);
+  EXPECT_EQ(sounded(board), audibleCues(shot.events) + 1);  // its strike
 }
 
 TEST(SoundBoard, MutedItIsSilentSaysSoOnceAndStillWorks) {

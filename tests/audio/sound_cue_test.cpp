@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "audio/break_events.h"
+#include "audio/shots.h"
 #include "client/audio/offline_render.h"
 #include "client/audio/sound_cue.h"
 

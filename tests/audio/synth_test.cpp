@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "audio/break_events.h"
+#include "audio/shots.h"
 #include "client/audio/sound_bank.h"
 #include "client/audio/synth.h"
 

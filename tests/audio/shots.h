@@ -1,8 +1,10 @@
-// The shared break scene run through the real physics once: its event log, for the audio tests.
+// Shared scenes run through the real physics for the audio tests: event logs and 60 Hz frames.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "physics/events.h"
 #include "scenario/scenario.h"
@@ -19,6 +21,19 @@ inline const physics::EventLog& breakEvents() {
     return outcome->events;
   }();
   return events;
+}
+
+/// A scene's shot with 60 Hz frames as the server sends them: every sample, then the table at
+/// rest when the shot ended.
+inline physics::ShotOutcome framedShot(const std::string& scene) {
+  auto s = scenario::loadScenario(scene);
+  if (!s) throw std::runtime_error(s.error());
+  s->options.sample_hz = 60.0;
+  auto outcome = scenario::runScenario(*s);
+  if (!outcome) throw std::runtime_error(outcome.error());
+  const double last = outcome->trajectory.back().t;
+  outcome->trajectory.push_back({std::max(last, outcome->t_rest.value_or(last)), outcome->balls});
+  return *outcome;
 }
 
 /// One event of a type at a time and speed.
