@@ -74,34 +74,45 @@ double detune(Noise& noise) {
   return 1.0 + 0.03 * noise.next();
 }
 
-void ballClick(Canvas& c, Noise& noise, double b) {
-  // Phenolic resin rings high and briefly; the contact itself is a sub-millisecond tick.
-  const Mode modes[] = {{3600 * b * detune(noise), 1.0, 0.009},
-                        {5900 * b * detune(noise), 0.6, 0.005},
-                        {8300 * b * detune(noise), 0.35, 0.003}};
-  addModes(c, 0.0, 1.0, modes, 3);
-  addBurst(c, noise, 0.0, 0.5, 0.0006, 6000 * b);
+/// A struck body: its ringing modes (scaled by the brightness unless `fixed`) and the contact's
+/// noise burst.
+struct BodySpec {
+  Mode modes[4];
+  bool fixed[4];
+  int count;
+  struct {
+    double gain, decay, cutoff;  ///< cutoff (Hz) scaled by the brightness
+  } burst;
+};
+
+void strikeBody(Canvas& c, Noise& noise, double b, const BodySpec& body) {
+  Mode modes[4];
+  for (int m = 0; m < body.count; ++m) {
+    modes[m] = body.modes[m];
+    modes[m].freq *= (body.fixed[m] ? 1.0 : b) * detune(noise);
+  }
+  addModes(c, 0.0, 1.0, modes, body.count);
+  addBurst(c, noise, 0.0, body.burst.gain, body.burst.decay, body.burst.cutoff * b);
 }
 
-void cueStrike(Canvas& c, Noise& noise, double b) {
-  // The leather tip softens the hit: a mid "tock", the shaft's low body, a dull transient.
-  const Mode modes[] = {{1100 * b * detune(noise), 1.0, 0.012},
-                        {2300 * b * detune(noise), 0.5, 0.007},
-                        {4100 * b * detune(noise), 0.3, 0.004},
-                        {320 * detune(noise), 0.6, 0.015}};
-  addModes(c, 0.0, 1.0, modes, 4);
-  addBurst(c, noise, 0.0, 0.6, 0.0015, 3000 * b);
-}
-
-void cushionThump(Canvas& c, Noise& noise, double b) {
-  // Rubber and wood: low, heavily damped modes, a muffled burst and a faint click of the ball.
-  const Mode modes[] = {{95 * b * detune(noise), 1.0, 0.035},
-                        {170 * b * detune(noise), 0.6, 0.025},
-                        {260 * b * detune(noise), 0.3, 0.015},
-                        {3600 * b * detune(noise), 0.12, 0.004}};
-  addModes(c, 0.0, 1.0, modes, 4);
-  addBurst(c, noise, 0.0, 0.8, 0.006, 800 * b);
-}
+// Phenolic resin rings high and briefly; the contact itself is a sub-millisecond tick.
+constexpr BodySpec kBallClick{
+    .modes = {{3600, 1.0, 0.009}, {5900, 0.6, 0.005}, {8300, 0.35, 0.003}},
+    .fixed = {},
+    .count = 3,
+    .burst = {0.5, 0.0006, 6000}};
+// The leather tip softens the hit: a mid "tock", the shaft's low body, a dull transient.
+constexpr BodySpec kCueStrike{
+    .modes = {{1100, 1.0, 0.012}, {2300, 0.5, 0.007}, {4100, 0.3, 0.004}, {320, 0.6, 0.015}},
+    .fixed = {false, false, false, true},
+    .count = 4,
+    .burst = {0.6, 0.0015, 3000}};
+// Rubber and wood: low, heavily damped modes, a muffled burst and a faint click of the ball.
+constexpr BodySpec kCushionThump{
+    .modes = {{95, 1.0, 0.035}, {170, 0.6, 0.025}, {260, 0.3, 0.015}, {3600, 0.12, 0.004}},
+    .fixed = {},
+    .count = 4,
+    .burst = {0.8, 0.006, 800}};
 
 void pocketDrop(Canvas& c, Noise& noise) {
   // The rattle: the ball bounces off the liner a few times, each hit softer and sooner.
@@ -161,13 +172,13 @@ std::vector<float> synthesize(SoundKind kind, double brightness, int variant, in
               static_cast<std::uint64_t>(variant));
   switch (kind) {
     case SoundKind::CueStrike:
-      cueStrike(c, noise, brightness);
+      strikeBody(c, noise, brightness, kCueStrike);
       break;
     case SoundKind::BallClick:
-      ballClick(c, noise, brightness);
+      strikeBody(c, noise, brightness, kBallClick);
       break;
     case SoundKind::CushionThump:
-      cushionThump(c, noise, brightness);
+      strikeBody(c, noise, brightness, kCushionThump);
       break;
     case SoundKind::PocketDrop:
       pocketDrop(c, noise);
