@@ -35,8 +35,19 @@ bool FrameImpacts::contactTime(const Seen& a, const Seen& b, double dt, double& 
   return tau >= 0.0 && tau <= dt;
 }
 
-void FrameImpacts::pairs(const std::vector<int>& hit, double dt, physics::EventLog& out,
-                         std::vector<bool>& paired) const {
+void FrameImpacts::pairs(const std::vector<int>& hit, const std::vector<double>& jolt, double dt,
+                         physics::EventLog& out, std::vector<bool>& paired) const {
+  auto add = [&](int a, int b, double t, double speed, const physics::Vec3& pos) {
+    Event e;
+    e.t = t;
+    e.type = EventType::BallBall;
+    e.ball_a = a;
+    e.ball_b = b;
+    e.speed = speed;
+    e.pos = pos;
+    out.push_back(e);
+  };
+  // First, pairs whose straight paths meet: time and closing speed as the physics defines them.
   for (std::size_t i = 0; i < hit.size(); ++i) {
     for (std::size_t j = i + 1; j < hit.size() && !paired[i]; ++j) {
       if (paired[j]) continue;
@@ -44,19 +55,23 @@ void FrameImpacts::pairs(const std::vector<int>& hit, double dt, physics::EventL
       const Seen& b = prev_[static_cast<std::size_t>(hit[j])];
       double tau = 0.0;
       if (!contactTime(a, b, dt, tau)) continue;
-      // Closing speed along the line of centres at contact, before the impulse.
       const physics::Vec3 n = ((b.pos + b.vel * tau) - (a.pos + a.vel * tau)).normalized();
       const double speed = (a.vel - b.vel).dot(n);
       if (!(speed > 0.0)) continue;
-      Event e;
-      e.t = prev_t_ + tau;
-      e.type = EventType::BallBall;
-      e.ball_a = hit[i];
-      e.ball_b = hit[j];
-      e.speed = speed;
-      e.pos = a.pos + a.vel * tau;
-      out.push_back(e);
+      add(hit[i], hit[j], prev_t_ + tau, speed, a.pos + a.vel * tau);
       paired[i] = paired[j] = true;
+    }
+  }
+  // Then chains inside one frame (a rack): a jolted ball that touched another jolted one was hit
+  // by it, at about the speed it left with (equal masses, e ≈ 1).
+  const double touch = 2.0 * options_.ball_radius + 0.003;
+  for (std::size_t i = 0; i < hit.size(); ++i) {
+    for (std::size_t j = 0; j < hit.size() && !paired[i]; ++j) {
+      const Seen& a = prev_[static_cast<std::size_t>(hit[i])];
+      const Seen& b = prev_[static_cast<std::size_t>(hit[j])];
+      if (i == j || (a.pos - b.pos).norm() > touch) continue;
+      add(hit[j], hit[i], prev_t_ + 0.5 * dt, jolt[i], 0.5 * (a.pos + b.pos));
+      paired[i] = true;
     }
   }
 }
@@ -86,6 +101,7 @@ physics::EventLog FrameImpacts::onFrame(const std::vector<physics::Ball>& balls,
     // Drops into pockets, and the balls whose velocity jumped beyond the cloth's doing.
     const double cloth = 0.25 * physics::kGravity * dt;
     std::vector<int> hit;
+    std::vector<double> jolt;  // |Δv| of each ball of `hit`
     for (int id = 0; id <= physics::kMaxBallId; ++id) {
       const Seen& a = prev_[static_cast<std::size_t>(id)];
       const Seen& b = now[static_cast<std::size_t>(id)];
@@ -104,10 +120,14 @@ physics::EventLog FrameImpacts::onFrame(const std::vector<physics::Ball>& balls,
           b.state == MotionState::Airborne) {
         continue;
       }
-      if ((b.vel - a.vel).norm() > cloth + options_.min_dv) hit.push_back(id);
+      const double dv = (b.vel - a.vel).norm();
+      if (dv > cloth + options_.min_dv) {
+        hit.push_back(id);
+        jolt.push_back(dv);
+      }
     }
     std::vector<bool> paired(hit.size(), false);
-    pairs(hit, dt, out, paired);
+    pairs(hit, jolt, dt, out, paired);
     // A jump with no ball to share it: a cushion or a jaw.
     for (std::size_t i = 0; i < hit.size(); ++i) {
       if (paired[i]) continue;
@@ -116,7 +136,7 @@ physics::EventLog FrameImpacts::onFrame(const std::vector<physics::Ball>& balls,
       e.t = sim_time - 0.5 * dt;
       e.type = EventType::BallCushion;
       e.ball_a = hit[i];
-      e.speed = (now[id].vel - prev_[id].vel).norm() / (1.0 + options_.cushion_restitution);
+      e.speed = jolt[i] / (1.0 + options_.cushion_restitution);
       e.pos = now[id].pos;
       out.push_back(e);
     }

@@ -20,7 +20,8 @@ struct FrameImpactOptions {
 
 /// Infers the sounding events of a shot (strike, ball–ball, cushion, pocket) from its 60 Hz frames
 /// (positions, velocities, states). A ball–ball contact gets its time and closing speed from the
-/// two balls' straight paths between the frames, as the physics defines them; a rebound off a
+/// two balls' straight paths between the frames, as the physics defines them (a ball jolted while
+/// touching a jolted one, as in a rack, was hit at the speed it left with); a rebound off a
 /// cushion gets Δv / (1 + e) half a frame back. Approximate by nature, but in time with the
 /// picture: the server sends a shot's exact event log only after its last frame.
 class FrameImpacts {
@@ -46,9 +47,10 @@ class FrameImpacts {
 
   /// Contact time (s after the previous frame) of balls a and b moving straight, if within dt.
   bool contactTime(const Seen& a, const Seen& b, double dt, double& tau) const;
-  /// Pairs balls of `hit` whose straight paths met between the frames: ball–ball events.
-  void pairs(const std::vector<int>& hit, double dt, physics::EventLog& out,
-             std::vector<bool>& paired) const;
+  /// Ball–ball events among the balls of `hit` (their velocity jumped by `jolt`, m/s): pairs
+  /// whose straight paths met between the frames, then balls that touched a jolted one.
+  void pairs(const std::vector<int>& hit, const std::vector<double>& jolt, double dt,
+             physics::EventLog& out, std::vector<bool>& paired) const;
 
   FrameImpactOptions options_;
   Table prev_{};

@@ -70,8 +70,13 @@ TEST(FrameImpacts, ABreakReadsWithItsFirstClickAndEveryDrop) {
   const auto true_clicks = ofType(shot.outcome.events, EventType::BallBall);
   ASSERT_FALSE(clicks.empty());
   EXPECT_NEAR(clicks.front().t, true_clicks.front().t, kFrame);
-  // Several contacts inside one frame cannot all be told apart, but most are heard.
-  EXPECT_GT(clicks.size(), true_clicks.size() / 4);
+  // Several contacts inside one frame cannot all be told apart, but most are heard, and the
+  // rack's chains are not taken for cushions.
+  EXPECT_GT(clicks.size(), true_clicks.size() / 2);
+  const auto thumps = ofType(shot.inferred, EventType::BallCushion).size();
+  const auto true_thumps = ofType(shot.outcome.events, EventType::BallCushion).size();
+  EXPECT_GT(thumps, true_thumps / 2);
+  EXPECT_LT(thumps, true_thumps * 3 / 2);
   std::multiset<int> dropped, true_dropped;
   for (const auto& e : ofType(shot.inferred, EventType::Pocket)) dropped.insert(e.ball_a);
   for (const auto& e : ofType(shot.outcome.events, EventType::Pocket))
