@@ -1,5 +1,6 @@
 // Benchmark: mixing the busiest second of the break (its first) block by block, against real time
-// and against mixing a second of silence through the same limiter and clipper.
+// and against mixing a second of silence through the same limiter and clipper; and the sound
+// bank's synthesis at start-up.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -76,6 +77,18 @@ void BM_BaselineMixSilentSecond(benchmark::State& state) {
 BENCHMARK(BM_BaselineMixSilentSecond)
     ->Unit(benchmark::kMicrosecond)
     ->Repetitions(15)
+    ->ReportAggregatesOnly(true);
+
+/// What a SoundBoard spends at construction: synthesising every template sound.
+void BM_SynthesiseBank(benchmark::State& state) {
+  for (auto _ : state) {
+    audio::SoundBank b;
+    benchmark::DoNotOptimize(&b);
+  }
+}
+BENCHMARK(BM_SynthesiseBank)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
     ->ReportAggregatesOnly(true);
 
 }  // namespace
