@@ -4,20 +4,17 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
-#include <stdexcept>
 #include <vector>
 
-#include "client/audio/mixer.h"
+#include "audio/shots.h"
+#include "client/audio/offline_render.h"
 #include "client/audio/sound_bank.h"
 #include "client/audio/sound_cue.h"
 #include "ratio_reporter.h"
-#include "scenario/scenario.h"
 
 namespace {
 
 using namespace pool;
-
-constexpr std::size_t kBlock = 512;  // the board's block: ≈ 11 ms at 48 kHz
 
 const audio::SoundBank& bank() {
   static const audio::SoundBank b;
@@ -27,34 +24,21 @@ const audio::SoundBank& bank() {
 /// The cues of the break's first second.
 const std::vector<audio::SoundCue>& breakSecond() {
   static const std::vector<audio::SoundCue> cues = [] {
-    auto scene = scenario::loadScenario("break");
-    if (!scene) throw std::runtime_error(scene.error());
-    auto outcome = scenario::runScenario(*scene);
-    if (!outcome) throw std::runtime_error(outcome.error());
-    auto all = audio::cuesFromEvents(outcome->events, audio::ImpactLaws{});
+    auto all = audio::cuesFromEvents(audio::test::breakEvents(), audio::ImpactLaws{});
     std::erase_if(all, [](const audio::SoundCue& c) { return c.t >= 1.0; });
     return all;
   }();
   return cues;
 }
 
-/// One second of audio mixed as the board does it: cues started in the block they fall in.
+/// One second of audio mixed as the board mixes it, each cue started at its sample.
 void mixSecond(benchmark::State& state, const std::vector<audio::SoundCue>& cues) {
-  const int rate = bank().rate();
-  std::vector<float> block(kBlock);
+  const double tail = 1.0 - (cues.empty() ? 0.0 : cues.back().t);
   std::uint64_t started = 0;
   for (auto _ : state) {
-    audio::Mixer mixer;
-    std::size_t next = 0;
-    for (std::size_t pos = 0; pos < static_cast<std::size_t>(rate); pos += kBlock) {
-      for (; next < cues.size() && cues[next].t * rate < static_cast<double>(pos + kBlock);
-           ++next) {
-        mixer.start(bank().pick(cues[next]), static_cast<float>(cues[next].amplitude));
-      }
-      mixer.mix(block);
-      benchmark::DoNotOptimize(block.data());
-    }
-    started = mixer.stats().started;
+    const auto mixed = audio::renderCues(cues, bank(), {}, tail);
+    benchmark::DoNotOptimize(mixed.samples.data());
+    started = mixed.stats.started;
   }
   state.counters["sounds"] = static_cast<double>(started);
   // Seconds of audio per second of CPU: how many times faster than real time.
