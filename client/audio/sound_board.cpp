@@ -20,22 +20,43 @@ SinkOptions sinkOptionsOf(const SoundOptions& o) {
   return s;
 }
 
+std::function<void(const std::string&)> logOf(const SoundOptions& o) {
+  if (o.log) return o.log;
+  return [](const std::string& line) { std::cerr << line << '\n'; };
+}
+
+/// Puts a setting outside [lo, hi] back to its default, saying so in one line.
+template <class T>
+void keepIn(T& value, T lo, T hi, T fallback, const char* what, const SoundOptions& o) {
+  if (value >= lo && value <= hi) return;
+  logOf(o)("sound: " + std::string(what) + " " + std::to_string(value) + " is outside [" +
+           std::to_string(lo) + ", " + std::to_string(hi) + "]; using " + std::to_string(fallback));
+  value = fallback;
+}
+
+SoundOptions checked(SoundOptions o) {
+  keepIn(o.rate, 8000, 192000, kDefaultSampleRate, "sample rate (Hz)", o);
+  keepIn(o.mixer.voices, 1, 256, MixerOptions{}.voices, "voices", o);
+  keepIn(o.sink.block, std::size_t{64}, std::size_t{16384}, SinkOptions{}.block, "block (frames)",
+         o);
+  keepIn(o.sink.blocks, 2, 64, SinkOptions{}.blocks, "blocks queued", o);
+  return o;
+}
+
 std::unique_ptr<AudioSink> openFor(const SoundOptions& o) {
-  auto log = o.log ? o.log : [](const std::string& line) { std::cerr << line << '\n'; };
-  return openSink(sinkOptionsOf(o), log);
+  return openSink(sinkOptionsOf(o), logOf(o));
 }
 
 }  // namespace
 
-SoundBoard::SoundBoard(const SoundOptions& options) : SoundBoard(options, openFor(options)) {}
+SoundBoard::SoundBoard(const SoundOptions& options) : SoundBoard(options, nullptr) {}
 
 SoundBoard::SoundBoard(const SoundOptions& options, std::unique_ptr<AudioSink> sink)
-    : options_(options),
-      bank_(options.rate),
-      mixer_(mixerOptionsOf(options)),
-      schedule_(options.schedule),
-      sink_(std::move(sink)) {
-  if (!sink_) sink_ = std::make_unique<SilentSink>(options.rate, options.sink.block);
+    : options_(checked(options)),
+      bank_(options_.rate),
+      mixer_(mixerOptionsOf(options_)),
+      schedule_(options_.schedule),
+      sink_(sink ? std::move(sink) : openFor(options_)) {
   block_.resize(sink_->blockFrames());
   due_.reserve(256);
 }

@@ -41,8 +41,10 @@ struct SoundOptions {
 /// With no audio device it plays silently; it never blocks.
 class SoundBoard {
  public:
+  /// Settings out of range (rate outside [8000, 192000] Hz, voices outside [1, 256], ...) fall
+  /// back to their defaults with one log line each.
   explicit SoundBoard(const SoundOptions& options = {});
-  /// With a given output (tests, tools).
+  /// With a given output (tests, tools); null: the device or silence, as above.
   SoundBoard(const SoundOptions& options, std::unique_ptr<AudioSink> sink);
 
   /// A shot's event log. Replaces the previous shot's cues still to come (sounds already playing

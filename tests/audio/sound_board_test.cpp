@@ -167,3 +167,27 @@ TEST(SoundBoard, MutedItIsSilentSaysSoOnceAndStillWorks) {
 
 }  // namespace
 }  // namespace pool::audio
+
+namespace pool::audio {
+namespace {
+
+TEST(SoundBoard, SettingsOutOfRangeFallBackWithOneLineEach) {
+  SoundOptions options;
+  options.mute = true;
+  options.rate = 0;
+  options.mixer.voices = -3;
+  std::vector<std::string> lines;
+  options.log = [&](const std::string& l) { lines.push_back(l); };
+  SoundBoard board(options);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "sound: sample rate (Hz) 0 is outside [8000, 192000]; using 48000");
+  EXPECT_EQ(lines[1], "sound: voices -3 is outside [1, 256]; using 24");
+  EXPECT_EQ(lines[2], "sound: muted");
+  EXPECT_EQ(board.bank().rate(), kDefaultSampleRate);
+  board.onShot({test::event(physics::EventType::Strike, 0.0, 3.0, 0)}, 1);
+  board.update(0.0);
+  EXPECT_EQ(board.mixerStats().started, 1u);
+}
+
+}  // namespace
+}  // namespace pool::audio
