@@ -71,15 +71,23 @@ bool SoundBoard::stale(std::uint64_t shot_key) {
 void SoundBoard::onShot(const physics::EventLog& events, std::uint64_t shot_key) {
   // A shot that sounded from its frames is over when its log arrives: nothing to replay.
   if (stale(shot_key) || (shot_key != 0 && frames_key_ == shot_key)) return;
+  if (shot_key != 0 && events_key_ == shot_key) return;  // the same report again
   events_key_ = shot_key;
   frames_key_.reset();
   schedule_.setShot(cuesFromEvents(events, options_.laws), shot_key);
+  // A numbered log waits for a frame of its shot: the last shot's report, kept for late
+  // joiners, belongs to a shot that is over and must not sound.
+  armed_ = shot_key == 0;
 }
 
 void SoundBoard::onFrame(std::uint64_t shot_key, double sim_time,
                          const std::vector<physics::Ball>& balls) {
   if (stale(shot_key)) return;
-  if (shot_key != 0 && events_key_ == shot_key) return;  // the exact log drives this shot
+  if (shot_key != 0 && events_key_ == shot_key) {
+    armed_ = true;  // the exact log drives this shot, from its first frame on
+    return;
+  }
+  armed_ = true;
   if (frames_key_ != shot_key) {
     frames_key_ = shot_key;
     events_key_.reset();
@@ -92,7 +100,7 @@ void SoundBoard::onFrame(std::uint64_t shot_key, double sim_time,
 
 void SoundBoard::update(double playback_time) {
   due_.clear();
-  schedule_.advance(playback_time, due_);
+  if (armed_) schedule_.advance(playback_time, due_);
   for (const DueCue& d : due_) {
     const auto delay = static_cast<std::uint32_t>(std::lround(d.delay * options_.rate));
     mixer_.start(bank_.pick(d.cue), static_cast<float>(d.cue.amplitude), delay);

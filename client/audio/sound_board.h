@@ -31,7 +31,7 @@ struct SoundOptions {
 
 /// Sound from the server's events. Usage, from the app loop:
 ///   audio::SoundBoard board(options);
-///   board.onShot(report.events, report.shot_number);  // when a shot's events are known
+///   board.onShot(report.events, report.shot_number);  // when a shot's event log arrives
 ///   board.onFrame(frame.shot_number, frame.sim_time, frame.balls);  // each TableFrame received
 ///   board.update(playback_time);                      // every rendered frame
 /// update() starts the sounds whose event time playback has reached (each once; none lost when
@@ -49,7 +49,9 @@ class SoundBoard {
 
   /// A shot's event log. Replaces the previous shot's cues still to come (sounds already playing
   /// ring out). `shot_key` ≠ 0 identifies the shot (its number, which grows): the same key again,
-  /// an older one, or that of a shot already sounding from its frames is ignored.
+  /// an older one, or that of a shot already sounding from its frames is ignored, and the log
+  /// sounds only once a frame of its shot arrives (a report of a shot already over, as a late
+  /// joiner receives, stays silent). With key 0 it sounds from the next update.
   void onShot(const physics::EventLog& events, std::uint64_t shot_key = 0);
 
   /// One table frame of shot `shot_key`. Unless that shot's event log is known, the impacts
@@ -78,6 +80,7 @@ class SoundBoard {
   std::optional<std::uint64_t> frames_key_;  ///< the shot sounding from its frames
   std::optional<std::uint64_t> events_key_;  ///< the shot sounding from its event log
   std::optional<std::uint64_t> latest_key_;  ///< the newest shot seen: older ones are stale
+  bool armed_ = true;  ///< the current shot's cues may start (a numbered log waits for a frame)
   std::unique_ptr<AudioSink> sink_;
   std::vector<DueCue> due_;   ///< reused each update
   std::vector<float> block_;  ///< one block of mixed samples

@@ -52,6 +52,7 @@ TEST(SoundBoard, PlaysABreakThroughItsOutputUnderFullScale) {
   SoundBoard board({}, std::make_unique<CaptureSink>(heard));
   const auto& events = test::breakEvents();
   board.onShot(events, 1);
+  board.onFrame(1, 0.0, {});  // the shot's first frame
   play(board, 0.0, events.back().t + 1.5);
   const auto& stats = board.mixerStats();
   EXPECT_EQ(stats.started + stats.dropped, audibleCues(events));
@@ -66,7 +67,7 @@ TEST(SoundBoard, PlaysABreakThroughItsOutputUnderFullScale) {
 TEST(SoundBoard, ASoundStartsInTheAudioAtItsEventTime) {
   std::vector<float> heard;
   SoundBoard board({}, std::make_unique<CaptureSink>(heard));
-  board.onShot({test::event(EventType::BallBall, 0.5, 2.0)}, 1);
+  board.onShot({test::event(EventType::BallBall, 0.5, 2.0)}, 0);  // no key: sounds at once
   play(board, 0.0, 1.0);
   const auto first = std::find_if(heard.begin(), heard.end(), [](float s) { return s != 0.0f; });
   ASSERT_NE(first, heard.end());
@@ -85,6 +86,7 @@ TEST(SoundBoard, ASpectatorJoiningMidShotHearsOnlyWhatFollows) {
       std::count_if(cues.begin(), cues.end(), [&](const SoundCue& c) { return c.t < join - 0.1; }));
   ASSERT_GT(before, 20u);
   board.onShot(events, 9);
+  board.onFrame(9, join, {});  // the first frame this spectator sees
   board.update(join);
   EXPECT_EQ(board.schedule().skipped(), before);
   EXPECT_LT(board.mixerStats().started + board.mixerStats().dropped, 10u);
@@ -97,6 +99,7 @@ TEST(SoundBoard, ANewShotCutsOffTheOldAndARepeatedReportIsIgnored) {
   SoundBoard board({}, std::make_unique<CaptureSink>(heard));
   const auto& events = test::breakEvents();
   board.onShot(events, 1);
+  board.onFrame(1, 0.0, {});
   play(board, 0.0, 0.5);
   board.onShot(events, 1);  // delivered again: nothing restarts
   const double reached = play(board, 0.5, 0.8);
@@ -107,6 +110,7 @@ TEST(SoundBoard, ANewShotCutsOffTheOldAndARepeatedReportIsIgnored) {
                 cues.begin(), cues.end(), [&](const SoundCue& c) { return c.t <= reached; })));
   ASSERT_LT(sounded, cues.size());
   board.onShot({test::event(EventType::Strike, 0.0, 3.0, 0)}, 2);
+  board.onFrame(2, 0.0, {});
   play(board, 0.0, 3.0);
   EXPECT_EQ(board.mixerStats().started + board.mixerStats().dropped, sounded + 1);
 }
@@ -130,6 +134,24 @@ TEST(SoundBoard, FramesSoundAShotAndItsLogArrivingAfterwardsAddsNothing) {
   EXPECT_EQ(sounded(board), 3u);
   board.onShot(shot.events, 4);  // an older shot's log: stale
   play(board, 0.0, 1.0);
+  EXPECT_EQ(sounded(board), 3u);
+}
+
+TEST(SoundBoard, TheReportOfAShotAlreadyOverStaysSilent) {
+  // A spectator joins between shots and receives the last shot's report: no frames follow.
+  std::vector<float> heard;
+  SoundBoard board({}, std::make_unique<CaptureSink>(heard));
+  const auto& events = test::breakEvents();
+  board.onShot(events, 12);
+  play(board, 0.0, events.back().t + 1.0);
+  EXPECT_EQ(sounded(board), 0u);
+  EXPECT_EQ(test::rms(heard), 0.0);
+  // The next shot's frames sound as usual.
+  const auto shot = test::framedShot("straight_pocket");
+  for (const auto& frame : shot.trajectory) {
+    board.onFrame(13, frame.t, frame.balls);
+    board.update(frame.t);
+  }
   EXPECT_EQ(sounded(board), 3u);
 }
 
@@ -159,7 +181,7 @@ TEST(SoundBoard, MutedItIsSilentSaysSoOnceAndStillWorks) {
   SoundBoard board(options);
   EXPECT_TRUE(board.silent());
   EXPECT_EQ(board.outputName(), "silent");
-  board.onShot({test::event(EventType::Strike, 0.0, 3.0, 0)}, 1);
+  board.onShot({test::event(EventType::Strike, 0.0, 3.0, 0)}, 0);
   play(board, 0.0, 0.2);
   EXPECT_EQ(board.mixerStats().started, 1u);
   EXPECT_EQ(lines, std::vector<std::string>{"sound: muted"});
@@ -184,7 +206,7 @@ TEST(SoundBoard, SettingsOutOfRangeFallBackWithOneLineEach) {
   EXPECT_EQ(lines[1], "sound: voices -3 is outside [1, 256]; using 24");
   EXPECT_EQ(lines[2], "sound: muted");
   EXPECT_EQ(board.bank().rate(), kDefaultSampleRate);
-  board.onShot({test::event(physics::EventType::Strike, 0.0, 3.0, 0)}, 1);
+  board.onShot({test::event(physics::EventType::Strike, 0.0, 3.0, 0)}, 0);
   board.update(0.0);
   EXPECT_EQ(board.mixerStats().started, 1u);
 }

@@ -27,7 +27,7 @@ void play(const physics::EventLog& events, const Flags& flags, double length) {
   audio::SoundOptions options;
   options.mute = flags.mute;
   audio::SoundBoard board(options);
-  board.onShot(events, 1);
+  board.onShot(events);  // no shot number: it sounds from the first update
   const double until = flags.seconds > 0.0 ? std::min(flags.seconds, length) : length;
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
