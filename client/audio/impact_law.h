@@ -21,7 +21,7 @@ const char* toString(SoundKind kind);
 /// which moves the ringing modes' excitation (the brightness) up by the same factor:
 ///   amplitude(v) = ref_amplitude · (min(v, cap) / ref_speed)^exponent   for v ≥ floor, else 0
 ///   brightness(v) = clamp((min(v, cap) / ref_speed)^(1/5), 0.7, 1.4)
-/// Amplitude is the RMS of the sound in full-scale units (1 = a full-scale sine's RMS × √2).
+/// Amplitude is the RMS of the sound over its whole length, in full-scale units (±1 = full scale).
 struct ImpactLaw {
   double floor = 0.05;          ///< m/s: slower impacts make no sound
   double cap = 8.0;             ///< m/s: faster impacts sound like this one
@@ -35,7 +35,7 @@ struct ImpactLaw {
   double brightness(double speed) const;
 };
 
-/// The laws of the four kinds, tuned so that a hard break stays clear of full scale.
+/// The laws of the four kinds, tuned so that any one impact stays under the clipper's knee.
 struct ImpactLaws {
   // The sounds' peaks are about 8 times their RMS: a capped click peaks near 0.5, a break's
   // strike near 0.6, and a burst of them is left to the mixer's limiter.
