@@ -35,7 +35,7 @@ struct ImpactLaw {
   double brightness(double speed) const;
 };
 
-/// The laws of the four kinds, tuned so that any one impact stays under the clipper's knee.
+/// The laws of the four kinds, tuned so that one impact at a break's speeds peaks near half scale.
 struct ImpactLaws {
   // The sounds' peaks are about 8 times their RMS: a capped click peaks near 0.5, a break's
   // strike near 0.6, and a burst of them is left to the mixer's limiter.
