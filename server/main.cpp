@@ -12,6 +12,7 @@
 #include "server_bus.h"
 #include "server_config.h"
 #include "server_loop.h"
+#include "store/match_store.h"
 
 namespace {
 
@@ -35,14 +36,31 @@ void setUpLogging(const pool::server::ServerConfig& config) {
   spdlog::set_level(spdlog::level::from_str(config.log_level));
 }
 
-pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& config) {
+pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& config,
+                                             pool::store::MatchStore& store) {
   pool::server::RegistryOptions options;
-  options.server_id = config.server_id;
+  // The file keeps the server's id, so match ids go on where they stopped.
+  options.server_id = config.server_id.empty() ? store.serverId() : config.server_id;
   options.table = config.table;
   options.match.snapshot_hz = config.snapshot_hz;
   options.match.unpaced = config.fast;
   options.protocol_version = pool::net::kProtocolVersion;
   return options;
+}
+
+/// Adopts every unfinished match of `store`; returns how many.
+int resume(pool::server::MatchRegistry& registry, pool::store::MatchStore& store) {
+  registry.continueAfter(store.opened());
+  int resumed = 0;
+  for (const auto& match : store.matches()) {
+    if (!pool::store::unfinished(match)) continue;
+    // Seated players are away from the start: the grace period runs from the resume.
+    if (!registry.adopt(match, 0.0)) continue;
+    spdlog::info("resumed {} ({}) at shot {}: {}", match.id, match.name, match.shot_number,
+                 pool::rules::describe(match.game));
+    ++resumed;
+  }
+  return resumed;
 }
 
 }  // namespace
@@ -60,18 +78,31 @@ int main(int argc, char** argv) {
     spdlog::error("{}", kit.error());
     return 1;
   }
-  MatchRegistry registry(registryOptions(config), *kit);
-  for (int i = 0; i < config.tables; ++i) registry.open();
+  const std::string db_path = config.db.empty() ? pool::store::defaultDbPath() : config.db;
+  auto store = pool::store::MatchStore::open(db_path);
+  if (!store) {
+    spdlog::error("--db {}", store.error());
+    return 1;
+  }
   try {
+    (*store)->setTable(config.table);
+    MatchRegistry registry(registryOptions(config, **store), *kit);
+    const int resumed = resume(registry, **store);
+    for (int i = 0; i < config.tables; ++i) registry.open();
     ServerBus bus(config.domain);
-    ServerLoop loop(config, registry, bus);
-    spdlog::info("server {} on domain {}: {} tables, {} Hz{}", registry.serverId(), config.domain,
-                 config.tables, config.snapshot_hz, config.fast ? ", unpaced" : "");
+    ServerLoop loop(config, registry, bus, store->get());
+    spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}",
+                 registry.serverId(), config.domain, config.tables, resumed, config.snapshot_hz,
+                 config.fast ? ", unpaced" : "", db_path);
     loop.run(g_stop);
     spdlog::info("shutting down");
     loop.disposeAll();
   } catch (const pool::net::DdsError& e) {
     spdlog::error("DDS: {}", e.what());
+    return 1;
+  } catch (const pool::store::StoreError& e) {
+    // Nothing is published that is not stored: stop rather than go on without the file.
+    spdlog::error("--db {}: {}", db_path, e.what());
     return 1;
   }
   return 0;

@@ -2,6 +2,7 @@
 #include "match/match_registry.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace pool::server {
 
@@ -37,6 +38,23 @@ Match* MatchRegistry::open(std::string name) {
   matches_.push_back(
       std::make_unique<Match>(id, std::move(name), runner_, options_.match, random_.next()));
   return matches_.back().get();
+}
+
+Match* MatchRegistry::adopt(const MatchSnapshot& snapshot, double now) {
+  if (matches_.size() >= options_.max_matches || find(snapshot.id)) return nullptr;
+  continueAfter(snapshot.number);
+  matches_.push_back(std::make_unique<Match>(snapshot, runner_, options_.match, now));
+  if (snapshot.client_made) client_made_.insert(snapshot.id);
+  return matches_.back().get();
+}
+
+MatchSnapshot MatchRegistry::snapshotOf(const Match& match) const {
+  MatchSnapshot out = match.snapshot();
+  // Ids are "<server id>-<n>": the number is what follows the last dash.
+  const auto dash = out.id.rfind('-');
+  if (dash != std::string::npos) out.number = std::strtoull(out.id.c_str() + dash + 1, nullptr, 10);
+  out.client_made = client_made_.count(out.id) > 0;
+  return out;
 }
 
 Match* MatchRegistry::find(std::string_view id) {

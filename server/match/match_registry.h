@@ -1,6 +1,7 @@
 // The lobby: every match of one server, with unique ids, joins and leaves, and presence.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -47,6 +48,16 @@ class MatchRegistry {
   Match* find(std::string_view id);
   /// Every open match, oldest first.
   std::vector<Match*> matches();
+
+  /// Matches opened so far (the n of the latest id).
+  std::uint64_t opened() const { return opened_; }
+  /// Numbers the next match from `count` + 1 on (a restarted server: ids are never reused).
+  void continueAfter(std::uint64_t count) { opened_ = std::max(opened_, count); }
+  /// Resumes a stored match at `now` (its players away from then on); null when the server is
+  /// full or the id is open already.
+  Match* adopt(const MatchSnapshot& snapshot, double now);
+  /// `match` as plain data, with its number and whether a client made it.
+  MatchSnapshot snapshotOf(const Match& match) const;
 
   /// Answers a join request (the JoinAction's meaning is in join.h).
   JoinAnswer join(const JoinCommand& command);

@@ -30,6 +30,8 @@ class ClientIntegrationTest : public ::testing::Test {
   void open(Domain domain, const std::string& tag) {
     domain_ = domain;
     scratch_ = std::make_unique<ScratchDir>(tag);
+    // The servers' default database goes to the scratch folder, never the real home.
+    ::setenv("XDG_DATA_HOME", scratch_->file("data").c_str(), 1);
   }
 
   ChildProcess& startServer(const std::vector<std::string>& extra) {
