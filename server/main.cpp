@@ -48,12 +48,12 @@ pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& 
   return options;
 }
 
-/// Adopts every unfinished match of `store`; returns how many.
+/// Adopts every resumable match of `store`; returns how many.
 int resume(pool::server::MatchRegistry& registry, pool::store::MatchStore& store) {
   registry.continueAfter(store.opened());
   int resumed = 0;
   for (const auto& match : store.matches()) {
-    if (!pool::store::unfinished(match)) continue;
+    if (!pool::store::resumable(match)) continue;
     // Seated players are away from the start: the grace period runs from the resume.
     if (!registry.adopt(match, 0.0)) continue;
     spdlog::info("resumed {} ({}) at shot {}: {}", match.id, match.name, match.shot_number,

@@ -44,10 +44,8 @@ server::MatchSnapshot matchAt(const Statement& row) {
 
 }  // namespace
 
-bool unfinished(const server::MatchSnapshot& m) {
-  if (m.closed) return false;
-  if (m.started) return m.game.phase != rules::Phase::Over;
-  return m.seats[0].taken() || m.seats[1].taken();
+bool resumable(const server::MatchSnapshot& m) {
+  return !m.closed && (m.seats[0].taken() || m.seats[1].taken());
 }
 
 std::string defaultDbPath() {

@@ -21,8 +21,9 @@ struct StoredShot {
   std::string verdict_text;
 };
 
-/// A match a restarted server picks up: started and not over, or a lobby with someone seated.
-bool unfinished(const server::MatchSnapshot& match);
+/// A match a restarted server picks up: not closed, with someone seated (a match that is over is
+/// kept for its players, who may ask for a rematch, as a running server keeps it).
+bool resumable(const server::MatchSnapshot& match);
 
 /// The store. Writes throw StoreError (the file went bad under us: the caller stops rather than
 /// publish what is not stored).

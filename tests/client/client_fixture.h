@@ -13,13 +13,14 @@
 
 namespace pool::client::test {
 
-/// Client integration tests use DDS domains 200–219, one per test (ctest runs them in parallel;
-/// net tests use 150–199, server tests 100–119).
+/// Client integration tests use DDS domains 200–219 and 120–134, one per test (ctest runs them in
+/// parallel; net tests use 150–199, server tests 100–119).
 enum Domain : std::uint32_t {
   kFullMatch = 200,
   kSpectator = 201,
   kRejoin = 202,
   kForfeit = 203,
+  kCrash = 120,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
