@@ -70,6 +70,14 @@ std::string checkHeader(const std::string& path) {
   return {};
 }
 
+/// SQLite's multi-line report as one line.
+std::string oneLine(std::string text) {
+  const std::string banner = "*** in database main ***\n";
+  if (text.rfind(banner, 0) == 0) text.erase(0, banner.size());
+  for (char& c : text) c = c == '\n' ? ' ' : c;
+  return text;
+}
+
 }  // namespace
 
 std::span<const char* const> migrationSteps() {
@@ -82,7 +90,9 @@ std::string checkFile(const std::string& path) {
   if (!db) return db.error();
   try {
     auto check = db->prepare("PRAGMA quick_check");
-    if (check.step() && check.text(0) != "ok") return "fails its integrity check: " + check.text(0);
+    if (check.step() && check.text(0) != "ok") {
+      return "fails its integrity check: " + oneLine(check.text(0));
+    }
     const std::int64_t app = db->integer("PRAGMA application_id");
     const std::int64_t version = db->integer("PRAGMA user_version");
     const std::int64_t tables = db->integer("SELECT count(*) FROM sqlite_master");
