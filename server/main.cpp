@@ -6,6 +6,8 @@
 #include <atomic>
 
 #include "match/match_registry.h"
+#include "match/match_replay.h"
+#include "match/token_source.h"
 #include "match/table_kit.h"
 #include "net/dds_error.h"
 #include "net/messages.h"
@@ -36,11 +38,9 @@ void setUpLogging(const pool::server::ServerConfig& config) {
   spdlog::set_level(spdlog::level::from_str(config.log_level));
 }
 
-pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& config,
-                                             pool::store::MatchStore& store) {
+pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& config) {
   pool::server::RegistryOptions options;
-  // The file keeps the server's id, so match ids go on where they stopped.
-  options.server_id = config.server_id.empty() ? store.serverId() : config.server_id;
+  options.server_id = config.server_id;
   options.table = config.table;
   options.match.snapshot_hz = config.snapshot_hz;
   options.match.unpaced = config.fast;
@@ -61,6 +61,62 @@ int resume(pool::server::MatchRegistry& registry, pool::store::MatchStore& store
     ++resumed;
   }
   return resumed;
+}
+
+/// Serves matches, resuming those of `store` and keeping every change in it.
+void serve(const pool::server::ServerConfig& config,
+           std::shared_ptr<const pool::server::TableKit> kit, pool::store::MatchStore& store,
+           const std::string& db_path) {
+  using namespace pool::server;
+  store.setTable(config.table);
+  RegistryOptions options = registryOptions(config);
+  // The file keeps the server's id, so match ids go on where they stopped.
+  if (options.server_id.empty()) options.server_id = store.serverId();
+  MatchRegistry registry(options, std::move(kit));
+  const int resumed = resume(registry, store);
+  for (int i = 0; i < config.tables; ++i) registry.open();
+  ServerBus bus(config.domain);
+  ServerLoop loop(config, registry, bus, &store);
+  spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}",
+               registry.serverId(), config.domain, config.tables, resumed, config.snapshot_hz,
+               config.fast ? ", unpaced" : "", db_path);
+  loop.run(g_stop);
+  spdlog::info("shutting down");
+  loop.disposeAll();
+}
+
+/// Plays stored match config.replay again as a new match (beside --tables empty ones); writes
+/// nothing. Returns the exit code.
+int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStore& store) {
+  using namespace pool::server;
+  const auto stored = store.match(config.replay);
+  if (!stored) {
+    spdlog::error("--replay {}: no such match in the database", config.replay);
+    return 1;
+  }
+  auto kit = loadTableKit(store.tableOf(config.replay));
+  if (!kit) {
+    spdlog::error("--replay {}: {}", config.replay, kit.error());
+    return 1;
+  }
+  std::vector<ShotRecord> commands;
+  for (auto& shot : store.shots(config.replay)) commands.push_back(std::move(shot.record));
+  const std::size_t count = commands.size();
+  MatchRegistry registry(registryOptions(config), *kit);
+  for (int i = 0; i < config.tables; ++i) registry.open();
+  Match* target = registry.open("Replay of " + stored->id, stored->rack_seed);
+  TokenSource tokens(randomSeed());
+  MatchReplay replay(*stored, std::move(commands), *target, {tokens.token(), tokens.token()},
+                     config.fast ? 0.0 : 1.0);
+  ServerBus bus(config.domain);
+  ServerLoop loop(config, registry, bus);
+  loop.replay(&replay);
+  spdlog::info("server {} on domain {}: replaying {} ({} commands) as {}", registry.serverId(),
+               config.domain, stored->id, count, target->id());
+  loop.run(g_stop);
+  spdlog::info("shutting down");
+  loop.disposeAll();
+  return 0;
 }
 
 }  // namespace
@@ -85,18 +141,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    (*store)->setTable(config.table);
-    MatchRegistry registry(registryOptions(config, **store), *kit);
-    const int resumed = resume(registry, **store);
-    for (int i = 0; i < config.tables; ++i) registry.open();
-    ServerBus bus(config.domain);
-    ServerLoop loop(config, registry, bus, store->get());
-    spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}",
-                 registry.serverId(), config.domain, config.tables, resumed, config.snapshot_hz,
-                 config.fast ? ", unpaced" : "", db_path);
-    loop.run(g_stop);
-    spdlog::info("shutting down");
-    loop.disposeAll();
+    if (!config.replay.empty()) return replayMatch(config, **store);
+    serve(config, *kit, **store, db_path);
   } catch (const pool::net::DdsError& e) {
     spdlog::error("DDS: {}", e.what());
     return 1;

@@ -45,6 +45,7 @@ void ServerLoop::run(const std::atomic<bool>& stop) {
 void ServerLoop::step(double now) {
   readJoins(now);
   readCommands(now);
+  stepReplay(now);
   publishFrames(now);
   registry_.expireAway(now, config_.grace);
   const auto closed = registry_.sweepEmpty();
@@ -121,6 +122,22 @@ void ServerLoop::publishResult(const std::string& match, const CommandAnswer& an
   if (!registry_.find(match) || (answer.seat != 0 && answer.seat != 1)) {
     bus_.results.unregister(*result);
   }
+}
+
+void ServerLoop::stepReplay(double now) {
+  if (!replay_ || replay_reported_) return;
+  if (auto answer = replay_->step(now)) {
+    spdlog::info("replay {}: seat {} seq {} {}", replay_->matchId(), answer->seat, answer->seq,
+                 answer->accepted() ? "replayed" : answer->rejection.text);
+    publishResult(replay_->matchId(), *answer);
+  }
+  if (!replay_->done()) return;
+  replay_reported_ = true;
+  for (const auto& difference : replay_->differences()) {
+    spdlog::error("replay {}: {}", replay_->matchId(), difference);
+  }
+  spdlog::info("replay {} done: {} commands replayed, {} differ from the stored shots",
+               replay_->matchId(), replay_->replayed(), replay_->differences().size());
 }
 
 void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match) {

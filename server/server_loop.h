@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "match/match_registry.h"
+#include "match/match_replay.h"
 #include "net/shot_command_check.h"
 #include "server_bus.h"
 #include "server_config.h"
@@ -30,6 +31,9 @@ class ServerLoop {
   /// and every visible change of a match is saved before it is published.
   ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus,
              store::MatchStore* store = nullptr);
+
+  /// Plays `replay` on this loop: its commands are answered and published like players' ones.
+  void replay(MatchReplay* replay) { replay_ = replay; }
 
   /// Runs passes until `stop` is set (checked at least every kMaxWait).
   void run(const std::atomic<bool>& stop);
@@ -54,6 +58,7 @@ class ServerLoop {
   void publishResult(const std::string& match, const CommandAnswer& answer);
   void publishChanges();
   void storeShot(const CommandAnswer& answer, const std::string& match);
+  void stepReplay(double now);
   void storeChanges(const std::vector<std::string>& closed);
   void dispose(const std::string& match);
   std::chrono::nanoseconds waitTimeout(double now) const;
@@ -63,6 +68,8 @@ class ServerLoop {
   ServerBus& bus_;
   net::CommandLimits limits_;
   store::MatchStore* store_;
+  MatchReplay* replay_ = nullptr;
+  bool replay_reported_ = false;
   std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
   std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
   std::chrono::steady_clock::time_point epoch_;

@@ -21,6 +21,7 @@ enum Domain : std::uint32_t {
   kRejoin = 202,
   kForfeit = 203,
   kCrash = 120,
+  kReplay = 121,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
