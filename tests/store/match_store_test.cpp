@@ -7,6 +7,7 @@
 #include "store/match_store.h"
 #include "store/record_json.h"
 #include "store_fixture.h"
+#include "stored_break.h"
 
 namespace pool::store::test {
 namespace {
@@ -17,13 +18,6 @@ using server::test::kToken0;
 using server::test::kToken1;
 using server::test::nineFoot;
 using server::test::runner;
-using server::test::seatedMatch;
-
-/// A seated match with its break accepted (in motion), the answer kept.
-struct BrokenMatch {
-  std::unique_ptr<server::Match> match = seatedMatch();
-  server::CommandAnswer answer = match->handleShot(breakShot(), 0.0);
-};
 
 void expectSameMatch(const server::MatchSnapshot& a, const server::MatchSnapshot& b) {
   EXPECT_EQ(a.id, b.id);
@@ -66,11 +60,11 @@ TEST(MatchStoreTest, AStoredShotAndMatchReadBackBitForBit) {
   ASSERT_TRUE(store) << store.error();
   BrokenMatch b;
   ASSERT_TRUE(b.answer.record);
-  server::MatchSnapshot after = b.match->snapshot();
-  after.number = 1;
+  server::MatchSnapshot after = storeBreak(**store, b);
+  // A key on a seat goes through the match's own save.
   after.seats[1].public_key = {9, 8, 7};
+  (*store)->saveMatches("srv", 1, {after});
   const std::string text = rules::describe(b.answer.record->verdict);
-  (*store)->recordShot(*b.answer.record, text, after);
 
   const auto back = (*store)->match("srv-1");
   ASSERT_TRUE(back);
@@ -103,9 +97,7 @@ TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
   auto store = MatchStore::open(scratch.file("pool.db"));
   ASSERT_TRUE(store) << store.error();
   BrokenMatch b;
-  server::MatchSnapshot after = b.match->snapshot();
-  after.number = 1;
-  (*store)->recordShot(*b.answer.record, "", after);
+  storeBreak(**store, b);
   ASSERT_TRUE(finishNow(*b.match));
 
   server::RegistryOptions options;
@@ -154,9 +146,7 @@ TEST(MatchStoreTest, TheAuditPassesAStoredLogAndFindsATamperedOne) {
   auto store = MatchStore::open(scratch.file("pool.db"));
   ASSERT_TRUE(store) << store.error();
   BrokenMatch b;
-  server::MatchSnapshot after = b.match->snapshot();
-  after.number = 1;
-  (*store)->recordShot(*b.answer.record, rules::describe(b.answer.record->verdict), after);
+  storeBreak(**store, b);
   const Audit sound = auditMatch(**store, "srv-1", *nineFoot());
   EXPECT_TRUE(sound.sound()) << sound.problems.front();
   EXPECT_EQ(sound.shots, 1u);

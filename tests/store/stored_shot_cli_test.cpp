@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/process_runner.h"
-#include "server/match_fixture.h"
 #include "store/match_store.h"
 #include "store_fixture.h"
+#include "stored_break.h"
 
 namespace pool::store::test {
 namespace {
@@ -16,22 +16,19 @@ namespace {
 const std::string kSim = std::string(POOL_BIN_DIR) + "/pool-sim";
 
 /// A database holding the break of a seated match (shot 1 of srv-1); returns its stored events.
-physics::EventLog storeBreak(const std::string& path) {
+physics::EventLog storeBreakIn(const std::string& path) {
   auto store = MatchStore::open(path);
   EXPECT_TRUE(store) << store.error();
-  auto match = server::test::seatedMatch();
-  const auto answer = match->handleShot(server::test::breakShot(), 0.0);
-  EXPECT_TRUE(answer.record);
-  server::MatchSnapshot after = match->snapshot();
-  after.number = 1;
-  (*store)->recordShot(*answer.record, rules::describe(answer.record->verdict), after);
-  return answer.record->events;
+  if (!store) return {};
+  BrokenMatch b;
+  storeBreak(**store, b);
+  return b.answer.record ? b.answer.record->events : physics::EventLog{};
 }
 
 TEST(StoredShotCliTest, AStoredShotRunsAgainToItsStoredEvents) {
   Scratch scratch;
   const std::string db = scratch.file("pool.db");
-  const physics::EventLog stored = storeBreak(db);
+  const physics::EventLog stored = storeBreakIn(db);
   ASSERT_GT(stored.size(), 20u);
   const auto r = pool::scenario::testing::runProcess({kSim, "--db", db, "--match", "srv-1", "--shot", "1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -49,7 +46,7 @@ TEST(StoredShotCliTest, AStoredShotRunsAgainToItsStoredEvents) {
 TEST(StoredShotCliTest, AShotThatIsNotStoredIsOneLineAndExitCodeTwo) {
   Scratch scratch;
   const std::string db = scratch.file("pool.db");
-  storeBreak(db);
+  storeBreakIn(db);
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{kSim, "--db", db, "--match", "srv-1", "--shot", "2"}, "--shot 2: match srv-1 has no such"},
       {{kSim, "--db", db, "--match", "srv-9", "--shot", "1"}, "--match srv-9: no such match"},
