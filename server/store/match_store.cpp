@@ -68,9 +68,12 @@ Result<std::unique_ptr<MatchStore>> MatchStore::open(const std::string& path) {
   auto db = Database::open(path, /*read_only=*/false, /*create=*/true);
   if (!db) return Out::fail(path + ": " + db.error());
   try {
-    // Every commit is on disk before the server publishes what it stored.
-    db->exec("PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL; PRAGMA busy_timeout = 5000");
+    // Every commit is on disk before the server publishes what it stored. One server per file:
+    // the lock taken by the first write is held until the process ends (a crash frees it).
+    db->exec("PRAGMA busy_timeout = 2000; PRAGMA locking_mode = EXCLUSIVE; "
+             "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL");
     migrate(*db);
+    db->exec("BEGIN IMMEDIATE; COMMIT");
   } catch (const StoreError& e) {
     return Out::fail(path + ": " + e.what());
   }

@@ -158,6 +158,19 @@ TEST(SchemaTest, AnotherProgramsDatabaseIsRefusedUntouched) {
   expectRefused(path, "not a pool database");
 }
 
+TEST(SchemaTest, AFileInUseByAnotherServerIsRefused) {
+  Scratch scratch;
+  const std::string path = scratch.file("busy.db");
+  auto first = MatchStore::open(path);
+  ASSERT_TRUE(first) << first.error();
+  auto second = MatchStore::open(path);
+  ASSERT_FALSE(second) << "two stores on one file";
+  EXPECT_NE(second.error().find("locked"), std::string::npos) << second.error();
+  first->reset();
+  auto third = MatchStore::open(path);
+  EXPECT_TRUE(third) << "still refused once the first was closed: " << third.error();
+}
+
 TEST(SchemaTest, PoolServerRefusesABadFileWithOneLineAndExitCodeOne) {
   Scratch scratch;
   const std::string path = validFile(scratch, "newer.db");
