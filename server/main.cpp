@@ -7,8 +7,8 @@
 
 #include "match/match_registry.h"
 #include "match/match_replay.h"
-#include "match/token_source.h"
 #include "match/table_kit.h"
+#include "match/token_source.h"
 #include "net/dds_error.h"
 #include "net/messages.h"
 #include "server_bus.h"
@@ -77,8 +77,8 @@ void serve(const pool::server::ServerConfig& config,
   for (int i = 0; i < config.tables; ++i) registry.open();
   ServerBus bus(config.domain);
   ServerLoop loop(config, registry, bus, &store);
-  spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}",
-               registry.serverId(), config.domain, config.tables, resumed, config.snapshot_hz,
+  spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}", registry.serverId(),
+               config.domain, config.tables, resumed, config.snapshot_hz,
                config.fast ? ", unpaced" : "", db_path);
   loop.run(g_stop);
   spdlog::info("shutting down");

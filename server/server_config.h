@@ -19,7 +19,7 @@ struct ServerConfig {
   std::string name = "pool-server";  ///< this server's name in logs
   std::string table = "wpa-9ft";     ///< table spec of every match
   std::string log_level = "info";    ///< spdlog level name
-  std::string db;  ///< the SQLite file matches are kept in; empty: store::defaultDbPath()
+  std::string db;      ///< the SQLite file matches are kept in; empty: store::defaultDbPath()
   std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
 };
 

@@ -194,9 +194,8 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
     answer.rejection = {Reject::Malformed, "the rules refused the shot: " + verdict.error()};
     return answer;
   }
-  answer.record = ShotRecord{command,     shot_number_ + 1, true,          plan.state,
-                             plan.before, plan.intent,      outcome->events, outcome->balls,
-                             *verdict};
+  answer.record = ShotRecord{command,     shot_number_ + 1, true,           plan.state, plan.before,
+                             plan.intent, outcome->events,  outcome->balls, *verdict};
   // Accepted: the seat's number is used up and the shot is in motion from now on.
   seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
   ShotReport report{command.seat, command.seq, shot_number_ + 1, std::move(outcome->events),

@@ -35,9 +35,8 @@ Match* MatchRegistry::open(std::string name, std::optional<std::uint64_t> rack_s
   ++opened_;
   if (name.empty()) name = "Table " + std::to_string(opened_);
   const std::string id = server_id_ + "-" + std::to_string(opened_);
-  matches_.push_back(
-      std::make_unique<Match>(id, std::move(name), runner_, options_.match,
-                              rack_seed ? *rack_seed : random_.next()));
+  matches_.push_back(std::make_unique<Match>(id, std::move(name), runner_, options_.match,
+                                             rack_seed ? *rack_seed : random_.next()));
   return matches_.back().get();
 }
 

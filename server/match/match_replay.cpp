@@ -62,8 +62,8 @@ std::optional<CommandAnswer> MatchReplay::step(double now) {
 }
 
 void MatchReplay::check(const ShotRecord& stored, const CommandAnswer& answer) {
-  const std::string which = "command " + std::to_string(next_) + " (shot " +
-                            std::to_string(stored.shot_number) + ")";
+  const std::string which =
+      "command " + std::to_string(next_) + " (shot " + std::to_string(stored.shot_number) + ")";
   if (!answer.accepted() || !answer.record) {
     differences_.push_back(which + " refused: " + answer.rejection.text);
     return;

@@ -22,7 +22,7 @@ struct MatchSnapshot {
   std::uint64_t layouts = 0;    ///< racks laid out so far
   bool started = false;
   bool closed = false;
-  bool client_made = false;     ///< opened by a join to "new" (closed once empty)
+  bool client_made = false;  ///< opened by a join to "new" (closed once empty)
   std::uint32_t shot_number = 0;
   std::uint32_t rack = 0;
   std::uint64_t revision = 1;

@@ -16,9 +16,9 @@ namespace pool::server {
 /// An accepted shot (or a choice without a shot) with everything needed to judge or run it again.
 struct ShotRecord {
   net::ShotRequest command;
-  std::uint32_t shot_number = 0;  ///< the shot's number; a choice keeps the shots so far
-  bool shoots = true;             ///< false: a choice that re-racked, no physics
-  rules::GameState state;         ///< the state it was judged in (any choice applied)
+  std::uint32_t shot_number = 0;      ///< the shot's number; a choice keeps the shots so far
+  bool shoots = true;                 ///< false: a choice that re-racked, no physics
+  rules::GameState state;             ///< the state it was judged in (any choice applied)
   std::vector<physics::Ball> before;  ///< the table at the strike (placement, respots applied)
   rules::Intent intent;
   physics::EventLog events;

@@ -50,8 +50,8 @@ Audit auditMatch(MatchStore& store, const std::string& id, const server::TableKi
     judgeAgain(stored, kit, rules, audit);
   }
   if (match->shot_number != audit.shots) {
-    audit.problems.push_back("the match counts " + std::to_string(match->shot_number) +
-                             " shots, " + std::to_string(audit.shots) + " are stored");
+    audit.problems.push_back("the match counts " + std::to_string(match->shot_number) + " shots, " +
+                             std::to_string(audit.shots) + " are stored");
   }
   const bool over = match->game.phase == rules::Phase::Over;
   if (over && match->game.end != rules::GameEnd::Forfeit && match->game.winner != audit.winner) {

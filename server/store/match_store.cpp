@@ -70,8 +70,9 @@ Result<std::unique_ptr<MatchStore>> MatchStore::open(const std::string& path) {
   try {
     // Every commit is on disk before the server publishes what it stored. One server per file:
     // the lock taken by the first write is held until the process ends (a crash frees it).
-    db->exec("PRAGMA busy_timeout = 2000; PRAGMA locking_mode = EXCLUSIVE; "
-             "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL");
+    db->exec(
+        "PRAGMA busy_timeout = 2000; PRAGMA locking_mode = EXCLUSIVE; "
+        "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL");
     migrate(*db);
     db->exec("BEGIN IMMEDIATE; COMMIT");
   } catch (const StoreError& e) {
@@ -89,8 +90,9 @@ std::string MatchStore::readMeta(const std::string& key) {
 }
 
 void MatchStore::writeMeta(const std::string& key, const std::string& value) {
-  db_.prepare("INSERT INTO meta(key, value) VALUES(?, ?) ON CONFLICT(key) DO UPDATE SET value = "
-              "excluded.value")
+  db_.prepare(
+         "INSERT INTO meta(key, value) VALUES(?, ?) ON CONFLICT(key) DO UPDATE SET value = "
+         "excluded.value")
       .bind(1, key)
       .bind(2, value)
       .run();
@@ -196,7 +198,8 @@ std::vector<server::MatchSnapshot> MatchStore::matches() {
     seats.bind(1, m.id);
     while (seats.step()) {
       const auto i = seats.integer(0);
-      if (i != 0 && i != 1) throw StoreError("match " + m.id + ": a seat numbered " + std::to_string(i));
+      if (i != 0 && i != 1)
+        throw StoreError("match " + m.id + ": a seat numbered " + std::to_string(i));
       server::Seat& s = m.seats[static_cast<std::size_t>(i)];
       s.player = seats.text(1);
       s.token = u64(seats.integer(2));

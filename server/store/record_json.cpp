@@ -63,13 +63,10 @@ auto parse(const std::string& text, const char* what, F read) {
 
 Json ballOf(const physics::Ball& b) {
   const auto& q = b.orient;
-  return {{"id", b.id},
-          {"pos", vec(b.pos)},
-          {"q", Json::array({q.w(), q.x(), q.y(), q.z()})},
-          {"vel", vec(b.vel)},
-          {"w", vec(b.ang_vel)},
-          {"state", num(b.state)},
-          {"pocket", b.pocket}};
+  return {
+      {"id", b.id},        {"pos", vec(b.pos)},   {"q", Json::array({q.w(), q.x(), q.y(), q.z()})},
+      {"vel", vec(b.vel)}, {"w", vec(b.ang_vel)}, {"state", num(b.state)},
+      {"pocket", b.pocket}};
 }
 
 physics::Ball ballAt(const Json& j) {

@@ -22,9 +22,9 @@ class RatioReporter : public benchmark::ConsoleReporter {
     for (const Run& r : runs) {
       if (r.aggregate_name != "median") continue;
       const double time = wall_clock_ ? r.GetAdjustedRealTime() : r.GetAdjustedCPUTime();
-      medians_[r.run_name.function_name] = time *
-                                           benchmark::GetTimeUnitMultiplier(benchmark::kMillisecond) /
-                                           benchmark::GetTimeUnitMultiplier(r.time_unit);
+      medians_[r.run_name.function_name] =
+          time * benchmark::GetTimeUnitMultiplier(benchmark::kMillisecond) /
+          benchmark::GetTimeUnitMultiplier(r.time_unit);
     }
   }
 

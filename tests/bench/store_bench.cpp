@@ -73,18 +73,20 @@ struct ScratchStore {
 void BM_BaselineEncodeShot(benchmark::State& state) {
   const BreakRecord& b = breakRecord();
   for (auto _ : state) {
-    std::size_t bytes = store::commandJson(b.record.command).size() +
-                        store::gameJson(b.record.state).size() +
-                        store::ballsJson(b.record.before).size() +
-                        store::intentJson(b.record.intent).size() +
-                        store::eventsJson(b.record.events).size() +
-                        store::ballsJson(b.record.after).size() +
-                        store::verdictJson(b.record.verdict).size() +
-                        store::gameJson(b.after.game).size() + store::ballsJson(b.after.balls).size();
+    std::size_t bytes =
+        store::commandJson(b.record.command).size() + store::gameJson(b.record.state).size() +
+        store::ballsJson(b.record.before).size() + store::intentJson(b.record.intent).size() +
+        store::eventsJson(b.record.events).size() + store::ballsJson(b.record.after).size() +
+        store::verdictJson(b.record.verdict).size() + store::gameJson(b.after.game).size() +
+        store::ballsJson(b.after.balls).size();
     benchmark::DoNotOptimize(bytes);
   }
 }
-BENCHMARK(BM_BaselineEncodeShot)->UseRealTime()->Unit(benchmark::kMillisecond)->Repetitions(9)->ReportAggregatesOnly(true);
+BENCHMARK(BM_BaselineEncodeShot)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(9)
+    ->ReportAggregatesOnly(true);
 
 void BM_CommitShot(benchmark::State& state) {
   const BreakRecord& b = breakRecord();
@@ -92,14 +94,22 @@ void BM_CommitShot(benchmark::State& state) {
   for (auto _ : state) scratch.store->recordShot(b.record, "legal", b.after);
   state.counters["events"] = static_cast<double>(b.record.events.size());
 }
-BENCHMARK(BM_CommitShot)->UseRealTime()->Unit(benchmark::kMillisecond)->Repetitions(9)->ReportAggregatesOnly(true);
+BENCHMARK(BM_CommitShot)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(9)
+    ->ReportAggregatesOnly(true);
 
 void BM_CommitMatchChange(benchmark::State& state) {
   const BreakRecord& b = breakRecord();
   ScratchStore scratch;
   for (auto _ : state) scratch.store->saveMatches("srv", 1, {b.after});
 }
-BENCHMARK(BM_CommitMatchChange)->UseRealTime()->Unit(benchmark::kMillisecond)->Repetitions(9)->ReportAggregatesOnly(true);
+BENCHMARK(BM_CommitMatchChange)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(9)
+    ->ReportAggregatesOnly(true);
 
 }  // namespace
 

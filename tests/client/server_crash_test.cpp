@@ -59,8 +59,8 @@ class ServerCrashTest : public ClientIntegrationTest {
   }
 
   ChildProcess& startNumberedServer(const std::vector<std::string>& extra) {
-    std::vector<std::string> args{"--domain", std::to_string(domain_), "--tables", "1",
-                                  "--server-id", "srv"};
+    std::vector<std::string> args{"--domain", std::to_string(domain_), "--tables",
+                                  "1",        "--server-id",           "srv"};
     args.insert(args.end(), extra.begin(), extra.end());
     return start("pool-server", args, "server" + std::to_string(restarts_ + 1));
   }
@@ -87,9 +87,10 @@ TEST_F(ServerCrashTest, KilledAtRandomMomentsTheMatchesLoseNoShotAndEndAsTheRule
   while (kills < kKills && !stalled) {
     if (pairDone()) startPair();
     const std::size_t before = acceptedSeen(recorder);
-    ASSERT_TRUE(recorder.pump(60s, [&] {
-      return acceptedSeen(recorder) > before || pairDone() || stalledOnLayout(recorder);
-    })) << "no progress after kill " << kills << "\n"
+    ASSERT_TRUE(recorder.pump(
+        60s,
+        [&] { return acceptedSeen(recorder) > before || pairDone() || stalledOnLayout(recorder); }))
+        << "no progress after kill " << kills << "\n"
         << logs();
     stalled = stalledOnLayout(recorder);
     if (pairDone() || stalled) continue;
@@ -163,10 +164,11 @@ TEST_F(ServerCrashTest, KilledAtRandomMomentsTheMatchesLoseNoShotAndEndAsTheRule
     sum += t;
     worst = std::max(worst, t);
   }
-  std::printf("%d kills survived, %zu matches, %u stored shots re-judged, %zu accepted results "
-              "checked; commit per shot: mean %.2f ms, max %.2f ms over %zu commits\n",
-              kills, matches.size(), shots, observed, times.empty() ? 0.0 : sum / static_cast<double>(times.size()),
-              worst, times.size());
+  std::printf(
+      "%d kills survived, %zu matches, %u stored shots re-judged, %zu accepted results "
+      "checked; commit per shot: mean %.2f ms, max %.2f ms over %zu commits\n",
+      kills, matches.size(), shots, observed,
+      times.empty() ? 0.0 : sum / static_cast<double>(times.size()), worst, times.size());
 }
 
 }  // namespace

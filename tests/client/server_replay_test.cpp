@@ -46,11 +46,10 @@ TEST_F(ServerReplayTest, AStoredMatchIsPlayedAgainShotByShotForSpectators) {
   const std::string before = bytesOf(db);
 
   // Played again as match rep-1 of a replaying server, watched by the recorder.
-  ChildProcess& replay = start(
-      "pool-server",
-      {"--domain", std::to_string(kReplay), "--server-id", "rep", "--fast", "--replay", "srv-1",
-       "--db", db},
-      "replay");
+  ChildProcess& replay = start("pool-server",
+                               {"--domain", std::to_string(kReplay), "--server-id", "rep", "--fast",
+                                "--replay", "srv-1", "--db", db},
+                               "replay");
   ASSERT_TRUE(recorder.pump(60s, [&] {
     const MatchView* v = recorder.latest("rep-1");
     return v && v->phase == MatchPhase::Over;

@@ -30,7 +30,8 @@ TEST(StoredShotCliTest, AStoredShotRunsAgainToItsStoredEvents) {
   const std::string db = scratch.file("pool.db");
   const physics::EventLog stored = storeBreakIn(db);
   ASSERT_GT(stored.size(), 20u);
-  const auto r = pool::scenario::testing::runProcess({kSim, "--db", db, "--match", "srv-1", "--shot", "1"});
+  const auto r =
+      pool::scenario::testing::runProcess({kSim, "--db", db, "--match", "srv-1", "--shot", "1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   const auto result = nlohmann::json::parse(r.out);
