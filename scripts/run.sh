@@ -11,11 +11,14 @@ bin=$build/bin
 export CYCLONEDDS_URI=${CYCLONEDDS_URI:-file://$root/assets/cyclone-lo.xml}
 domain=${POOL_DOMAIN:-7}
 
+# The demo match is kept in a database of its own, gone afterwards (pool-server's default is the
+# user's data folder, where unfinished matches are resumed).
+data=$(mktemp -d)
 pids=()
-cleanup() { kill "${pids[@]}" 2>/dev/null || true; wait 2>/dev/null || true; }
+cleanup() { kill "${pids[@]}" 2>/dev/null || true; wait 2>/dev/null || true; rm -rf "$data"; }
 trap cleanup EXIT INT TERM
 
-"$bin/pool-server" --domain "$domain" --tables 1 --log-level warn &
+"$bin/pool-server" --domain "$domain" --tables 1 --log-level warn --db "$data/pool.db" &
 pids+=($!)
 "$bin/pool-bot" --domain "$domain" --name Ada --skill 0.8 --seed 1 > /dev/null &
 pids+=($!)

@@ -57,6 +57,7 @@ std::string applyConfigJson(const std::string& text, ServerConfig& c) {
     take(doc, "name", c.name);
     take(doc, "table", c.table);
     take(doc, "log-level", c.log_level);
+    take(doc, "db", c.db);
   } catch (const std::runtime_error& e) {
     return e.what();
   }
@@ -85,6 +86,10 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   app.add_option("--name", flags.name, "this server's name in logs");
   app.add_option("--table", flags.table, "table spec name or path");
   app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error");
+  app.add_option("--db", flags.db,
+                 "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)");
+  app.add_option("--replay", flags.replay,
+                 "play stored match MATCH again as a new match for spectators (stores nothing)");
   ConfigOutcome out;
   try {
     app.parse(argc, argv);
@@ -113,6 +118,8 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   if (app.count("--name")) c.name = flags.name;
   if (app.count("--table")) c.table = flags.table;
   if (app.count("--log-level")) c.log_level = flags.log_level;
+  if (app.count("--db")) c.db = flags.db;
+  if (app.count("--replay")) c.replay = flags.replay;
   if (auto error = checkConfig(c); !error.empty()) {
     std::cerr << error << "\n";
     out.exit_code = 2;

@@ -19,6 +19,8 @@ struct ServerConfig {
   std::string name = "pool-server";  ///< this server's name in logs
   std::string table = "wpa-9ft";     ///< table spec of every match
   std::string log_level = "info";    ///< spdlog level name
+  std::string db;      ///< the SQLite file matches are kept in; empty: store::defaultDbPath()
+  std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
 };
 
 /// The outcome of reading the command line: run with `config`, or exit with `exit_code` (help,
@@ -29,7 +31,8 @@ struct ConfigOutcome {
 };
 
 /// Reads flags (--domain, --tables, --snapshot-hz, --fast, --config FILE, --server-id, --grace,
-/// --name, --table, --log-level). A --config JSON file gives values under the flags' names
+/// --name, --table, --log-level, --db,
+/// --replay). A --config JSON file gives values under the flags' names
 /// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.
 ConfigOutcome parseConfig(int argc, const char* const* argv);
 

@@ -20,11 +20,13 @@ void publish(const net::Writer<T>& writer, const T& sample, const char* what) {
 
 }  // namespace
 
-ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus)
+ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus,
+                       store::MatchStore* store)
     : config_(config),
       registry_(registry),
       bus_(bus),
       limits_(commandLimits(registry.table().spec)),
+      store_(store),
       epoch_(std::chrono::steady_clock::now()) {}
 
 double ServerLoop::now() const {
@@ -32,6 +34,7 @@ double ServerLoop::now() const {
 }
 
 void ServerLoop::run(const std::atomic<bool>& stop) {
+  storeChanges({});
   publishChanges();
   while (!stop.load()) {
     bus_.waitset.wait(waitTimeout(now()));
@@ -42,9 +45,12 @@ void ServerLoop::run(const std::atomic<bool>& stop) {
 void ServerLoop::step(double now) {
   readJoins(now);
   readCommands(now);
+  stepReplay(now);
   publishFrames(now);
   registry_.expireAway(now, config_.grace);
-  for (const auto& id : registry_.sweepEmpty()) dispose(id);
+  const auto closed = registry_.sweepEmpty();
+  for (const auto& id : closed) dispose(id);
+  storeChanges(closed);
   publishChanges();
 }
 
@@ -96,6 +102,7 @@ void ServerLoop::readCommands(double now) {
       continue;
     }
     const CommandAnswer answer = registry_.shoot(read.request, now);
+    storeShot(answer, match);
     if (answer.accepted()) {
       spdlog::info("command {} seat {} seq {}: accepted, shot {}", match, answer.seat, answer.seq,
                    answer.shot_number);
@@ -115,6 +122,50 @@ void ServerLoop::publishResult(const std::string& match, const CommandAnswer& an
   if (!registry_.find(match) || (answer.seat != 0 && answer.seat != 1)) {
     bus_.results.unregister(*result);
   }
+}
+
+void ServerLoop::stepReplay(double now) {
+  if (!replay_ || replay_reported_) return;
+  if (auto answer = replay_->step(now)) {
+    spdlog::info("replay {}: seat {} seq {} {}", replay_->matchId(), answer->seat, answer->seq,
+                 answer->accepted() ? "replayed" : answer->rejection.text);
+    publishResult(replay_->matchId(), *answer);
+  }
+  if (!replay_->done()) return;
+  replay_reported_ = true;
+  for (const auto& difference : replay_->differences()) {
+    spdlog::error("replay {}: {}", replay_->matchId(), difference);
+  }
+  spdlog::info("replay {} done: {} commands replayed, {} differ from the stored shots",
+               replay_->matchId(), replay_->replayed(), replay_->differences().size());
+}
+
+void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match) {
+  const Match* m = registry_.find(match);
+  if (!store_ || !answer.record || !m) return;
+  const auto start = std::chrono::steady_clock::now();
+  store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
+                     registry_.snapshotOf(*m));
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  spdlog::info("stored shot {} of {} (seat {} seq {}) in {:.2f} ms", answer.record->shot_number,
+               match, answer.seat, answer.seq, ms);
+}
+
+void ServerLoop::storeChanges(const std::vector<std::string>& closed) {
+  if (!store_) return;
+  std::vector<MatchSnapshot> changed;
+  for (Match* m : registry_.matches()) {
+    auto& stored = stored_[m->id()];
+    if (stored == m->revision()) continue;
+    stored = m->revision();
+    changed.push_back(registry_.snapshotOf(*m));
+  }
+  for (const auto& id : closed) {
+    stored_.erase(id);
+    store_->closeMatch(id);
+  }
+  if (!changed.empty()) store_->saveMatches(registry_.serverId(), registry_.opened(), changed);
 }
 
 void ServerLoop::publishFrames(double now) {

@@ -6,11 +6,14 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "match/match_registry.h"
+#include "match/match_replay.h"
 #include "net/shot_command_check.h"
 #include "server_bus.h"
 #include "server_config.h"
+#include "store/match_store.h"
 
 namespace pool::server {
 
@@ -24,7 +27,13 @@ namespace pool::server {
 /// hands the server a notice, and the client's seats go away for `grace` seconds.
 class ServerLoop {
  public:
-  ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus);
+  /// With a `store`, every accepted command is committed to it before its result is published,
+  /// and every visible change of a match is saved before it is published.
+  ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus,
+             store::MatchStore* store = nullptr);
+
+  /// Plays `replay` on this loop: its commands are answered and published like players' ones.
+  void replay(MatchReplay* replay) { replay_ = replay; }
 
   /// Runs passes until `stop` is set (checked at least every kMaxWait).
   void run(const std::atomic<bool>& stop);
@@ -48,6 +57,9 @@ class ServerLoop {
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
   void publishChanges();
+  void storeShot(const CommandAnswer& answer, const std::string& match);
+  void stepReplay(double now);
+  void storeChanges(const std::vector<std::string>& closed);
   void dispose(const std::string& match);
   std::chrono::nanoseconds waitTimeout(double now) const;
 
@@ -55,7 +67,11 @@ class ServerLoop {
   MatchRegistry& registry_;
   ServerBus& bus_;
   net::CommandLimits limits_;
+  store::MatchStore* store_;
+  MatchReplay* replay_ = nullptr;
+  bool replay_reported_ = false;
   std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
+  std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
   std::chrono::steady_clock::time_point epoch_;
 };
 

@@ -57,7 +57,7 @@ void BotPlayer::handle(const client::ClientEvent& event, double now) {
         if constexpr (std::is_same_v<E, client::JoinAnswer>) onAnswer(e, now);
         if constexpr (std::is_same_v<E, client::LobbyEntry>) onLobby(e, now);
         if constexpr (std::is_same_v<E, client::MatchGone>) onGone(e, now);
-        if constexpr (std::is_same_v<E, client::MatchView>) onState(e);
+        if constexpr (std::is_same_v<E, client::MatchView>) onState(e, now);
         if constexpr (std::is_same_v<E, client::ShotReport>) onReport(e, now);
       },
       event);
@@ -176,10 +176,20 @@ void BotPlayer::saveSeat() {
 
 // ---- Playing ------------------------------------------------------------------------------------
 
-void BotPlayer::onState(const client::MatchView& view) {
+void BotPlayer::onState(const client::MatchView& view, double now) {
   const auto& seat = client_.seat();
   if (!seat || view.match != seat->match || stage_ != BotStage::Playing) return;
-  if (view.phase == client::MatchPhase::Over) finish(view);
+  if (view.phase == client::MatchPhase::Over) {
+    finish(view);
+    return;
+  }
+  const client::SeatView& mine = view.seats[static_cast<std::size_t>(seat->seat)];
+  if (mine.name == client_.name() && !mine.connected) {
+    // The server takes us for gone while we are here (it restarted and resumed the match, before
+    // its old self's lease ran out): take the seat back with our token.
+    loseSeat(now, "the server shows us away");
+    sendJoin(now);
+  }
 }
 
 void BotPlayer::onReport(const client::ShotReport& report, double now) {

@@ -60,7 +60,7 @@ class BotPlayer {
   void onAnswer(const client::JoinAnswer& answer, double now);
   void onLobby(const client::LobbyEntry& entry, double now);
   void onGone(const client::MatchGone& gone, double now);
-  void onState(const client::MatchView& view);
+  void onState(const client::MatchView& view, double now);
   void onReport(const client::ShotReport& report, double now);
 
   void act(double now);

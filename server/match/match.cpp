@@ -42,6 +42,29 @@ Match::Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runne
   balls_ = rackLayout(runner_->kit(), rack_seed_ + layouts_++);
 }
 
+Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
+             MatchOptions options, double now)
+    : id_(snapshot.id),
+      name_(snapshot.name),
+      runner_(std::move(runner)),
+      options_(options),
+      rack_seed_(snapshot.rack_seed),
+      layouts_(snapshot.layouts),
+      seats_(snapshot.seats),
+      started_(snapshot.started),
+      closed_(snapshot.closed),
+      game_(snapshot.game),
+      balls_(snapshot.balls),
+      shot_number_(snapshot.shot_number),
+      rack_(snapshot.rack),
+      last_verdict_(snapshot.last_verdict),
+      // Past every revision published before the restart, so readers take the new states.
+      revision_(snapshot.revision + 1) {
+  for (Seat& s : seats_) {
+    if (s.taken()) s.away_since = now;
+  }
+}
+
 // ---- Seats --------------------------------------------------------------------------------------
 
 JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::string& client,
@@ -171,6 +194,8 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
     answer.rejection = {Reject::Malformed, "the rules refused the shot: " + verdict.error()};
     return answer;
   }
+  answer.record = ShotRecord{command,     shot_number_ + 1, true,           plan.state, plan.before,
+                             plan.intent, outcome->events,  outcome->balls, *verdict};
   // Accepted: the seat's number is used up and the shot is in motion from now on.
   seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
   ShotReport report{command.seat, command.seq, shot_number_ + 1, std::move(outcome->events),
@@ -187,9 +212,10 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
 CommandAnswer Match::applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
                                     std::vector<physics::Ball> balls) {
   seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  CommandAnswer answer;
+  answer.record = ShotRecord{command, shot_number_, false, game_, balls, {}, {}, balls, verdict};
   auto after = tableAfter(verdict, std::move(balls));
   commit(verdict, std::move(after), command.seat);
-  CommandAnswer answer;
   answer.seat = command.seat;
   answer.seq = command.seq;
   answer.shot_number = shot_number_;
@@ -214,6 +240,12 @@ std::optional<ShotReport> Match::finishShot() {
   if (!flight_ || !flight_->pacer.done()) return std::nullopt;
   Flight flight = std::move(*flight_);
   flight_.reset();
+  ShotReport report = flight.report;
+  land(std::move(flight));
+  return report;
+}
+
+void Match::land(Flight flight) {
   ++shot_number_;
   commit(flight.report.verdict, std::move(flight.after), flight.report.seat);
   if (pending_forfeit_) {
@@ -221,7 +253,6 @@ std::optional<ShotReport> Match::finishShot() {
     pending_forfeit_.reset();
     if (inPlay()) forfeitSeat(loser, "left");
   }
-  return std::move(flight.report);
 }
 
 std::uint32_t Match::shotInMotion() const {
@@ -259,6 +290,32 @@ void Match::close() {
   closed_ = true;
   flight_.reset();
   touch();
+}
+
+MatchSnapshot Match::snapshot() const {
+  Match settled = *this;
+  if (settled.flight_) {
+    // Lands the shot in motion at once on the copy: its frames are not needed.
+    Flight flight = std::move(*settled.flight_);
+    settled.flight_.reset();
+    flight.frames.clear();
+    settled.land(std::move(flight));
+  }
+  MatchSnapshot out;
+  out.id = id_;
+  out.name = name_;
+  out.rack_seed = rack_seed_;
+  out.layouts = settled.layouts_;
+  out.started = settled.started_;
+  out.closed = settled.closed_;
+  out.shot_number = settled.shot_number_;
+  out.rack = settled.rack_;
+  out.revision = settled.revision_;
+  out.last_verdict = settled.last_verdict_;
+  out.game = settled.game_;
+  out.balls = settled.balls_;
+  out.seats = settled.seats_;
+  return out;
 }
 
 bool Match::empty() const {

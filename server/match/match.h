@@ -12,6 +12,7 @@
 
 #include "match/frame_pacer.h"
 #include "match/join.h"
+#include "match/match_snapshot.h"
 #include "match/match_types.h"
 #include "match/seat.h"
 #include "match/shot_runner.h"
@@ -35,6 +36,10 @@ class Match {
  public:
   Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner,
         MatchOptions options, std::uint64_t rack_seed);
+  /// A match resumed from `snapshot` (a restarted server): its seated players are away since
+  /// `now`, so the grace period starts at the resume.
+  Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner, MatchOptions options,
+        double now);
 
   // ---- Seats and spectators (the registry checks names, versions and ids first) -------------
 
@@ -108,6 +113,8 @@ class Match {
   void close();
   /// True when nobody sits or watches.
   bool empty() const;
+  /// The match as plain data, as it stands once the shot in motion (if any) is done.
+  MatchSnapshot snapshot() const;
 
  private:
   struct Flight {
@@ -120,6 +127,7 @@ class Match {
   CommandAnswer accept(const net::ShotRequest& command);
   CommandAnswer applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
                                std::vector<physics::Ball> after);
+  void land(Flight flight);
   void startRack(int breaker);
   void commit(const rules::Verdict& verdict, std::vector<physics::Ball> after, int shooter);
   void forfeitSeat(int loser, const std::string& why);

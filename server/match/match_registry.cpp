@@ -2,6 +2,7 @@
 #include "match/match_registry.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace pool::server {
 
@@ -29,14 +30,31 @@ MatchRegistry::MatchRegistry(RegistryOptions options, std::shared_ptr<const Tabl
       server_id_(options_.server_id.empty() ? randomHex(random_) : options_.server_id),
       runner_(std::make_shared<ShotRunner>(std::move(kit))) {}
 
-Match* MatchRegistry::open(std::string name) {
+Match* MatchRegistry::open(std::string name, std::optional<std::uint64_t> rack_seed) {
   if (matches_.size() >= options_.max_matches) return nullptr;
   ++opened_;
   if (name.empty()) name = "Table " + std::to_string(opened_);
   const std::string id = server_id_ + "-" + std::to_string(opened_);
-  matches_.push_back(
-      std::make_unique<Match>(id, std::move(name), runner_, options_.match, random_.next()));
+  matches_.push_back(std::make_unique<Match>(id, std::move(name), runner_, options_.match,
+                                             rack_seed ? *rack_seed : random_.next()));
   return matches_.back().get();
+}
+
+Match* MatchRegistry::adopt(const MatchSnapshot& snapshot, double now) {
+  if (matches_.size() >= options_.max_matches || find(snapshot.id)) return nullptr;
+  continueAfter(snapshot.number);
+  matches_.push_back(std::make_unique<Match>(snapshot, runner_, options_.match, now));
+  if (snapshot.client_made) client_made_.insert(snapshot.id);
+  return matches_.back().get();
+}
+
+MatchSnapshot MatchRegistry::snapshotOf(const Match& match) const {
+  MatchSnapshot out = match.snapshot();
+  // Ids are "<server id>-<n>": the number is what follows the last dash.
+  const auto dash = out.id.rfind('-');
+  if (dash != std::string::npos) out.number = std::strtoull(out.id.c_str() + dash + 1, nullptr, 10);
+  out.client_made = client_made_.count(out.id) > 0;
+  return out;
 }
 
 Match* MatchRegistry::find(std::string_view id) {

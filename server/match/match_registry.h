@@ -1,6 +1,7 @@
 // The lobby: every match of one server, with unique ids, joins and leaves, and presence.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -41,12 +42,23 @@ class MatchRegistry {
   /// The table every match of this registry is played on.
   const TableKit& table() const { return runner_->kit(); }
 
-  /// Opens an empty match named `name` (default "Table <n>"); null when the server is full.
-  Match* open(std::string name = {});
+  /// Opens an empty match named `name` (default "Table <n>") whose racks come from `rack_seed`
+  /// (default: random); null when the server is full.
+  Match* open(std::string name = {}, std::optional<std::uint64_t> rack_seed = {});
   /// The open match of `id`, or null.
   Match* find(std::string_view id);
   /// Every open match, oldest first.
   std::vector<Match*> matches();
+
+  /// Matches opened so far (the n of the latest id).
+  std::uint64_t opened() const { return opened_; }
+  /// Numbers the next match from `count` + 1 on (a restarted server: ids are never reused).
+  void continueAfter(std::uint64_t count) { opened_ = std::max(opened_, count); }
+  /// Resumes a stored match at `now` (its players away from then on); null when the server is
+  /// full or the id is open already.
+  Match* adopt(const MatchSnapshot& snapshot, double now);
+  /// `match` as plain data, with its number and whether a client made it.
+  MatchSnapshot snapshotOf(const Match& match) const;
 
   /// Answers a join request (the JoinAction's meaning is in join.h).
   JoinAnswer join(const JoinCommand& command);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "match/reject.h"
+#include "match/shot_record.h"
 #include "net/protocol_enums.h"
 #include "physics/events.h"
 #include "rules/eight_ball.h"
@@ -42,6 +43,7 @@ struct CommandAnswer {
   std::uint32_t shot_number = 0;  ///< accepted: the shot's number; rejected: shots so far
   bool in_motion = false;         ///< accepted shot: frames follow, then Match::finishShot
   std::optional<ShotReport> done; ///< accepted choice without a shot: done already
+  std::optional<ShotRecord> record;  ///< accepted: what to store before answering
 
   bool accepted() const { return rejection.accepted(); }
 };

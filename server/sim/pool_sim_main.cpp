@@ -11,6 +11,7 @@
 
 #include "scenario/json_document.h"
 #include "scenario/scenario.h"
+#include "sim/stored_shot.h"
 
 namespace {
 
@@ -20,12 +21,16 @@ namespace sc = pool::scenario;
 constexpr int kOk = 0;
 constexpr int kInternalError = 1;
 constexpr int kBadInput = 2;
-constexpr const char* kUsage = "usage: pool-sim SCENARIO.json|- [--plot OUT.svg]";
+constexpr const char* kUsage =
+    "usage: pool-sim SCENARIO.json|- [--plot OUT.svg] | pool-sim --db PATH --match ID --shot N";
 
 struct Args {
   std::string scenario;
   std::string plot;
   bool plot_given = false;
+  std::string db;  ///< with match and shot: a stored shot instead of a scenario file
+  std::string match;
+  std::uint32_t shot = 0;
 };
 
 // Prints one line on stderr and returns the exit code.
@@ -56,7 +61,8 @@ std::string writePlot(const sc::Scenario& scenario, const pool::physics::ShotOut
 }
 
 int run(const Args& args) {
-  auto scenario = readScenario(args.scenario);
+  auto scenario = args.db.empty() ? readScenario(args.scenario)
+                                  : pool::sim::storedShotScenario(args.db, args.match, args.shot);
   if (!scenario) return failWith(scenario.error());
   auto outcome = sc::runScenario(*scenario);
   if (!outcome) return failWith(outcome.error());
@@ -75,11 +81,13 @@ int run(const Args& args) {
 int main(int argc, char** argv) {
   CLI::App app{"pool-sim: runs one shot of the physics lab (docs/SIM-CONTRACT.md)", "pool-sim"};
   Args args;
-  app.add_option("scenario", args.scenario,
-                 "scenario file, scene name (e.g. break), or - for stdin")
-      ->required();
+  auto* scenario = app.add_option("scenario", args.scenario,
+                                  "scenario file, scene name (e.g. break), or - for stdin");
   auto* plot =
       app.add_option("--plot", args.plot, "also write a top-down SVG of the table and every path");
+  auto* db = app.add_option("--db", args.db, "a pool-server database: run one of its stored shots");
+  auto* match = app.add_option("--match", args.match, "the stored shot's match id (with --db)");
+  auto* shot = app.add_option("--shot", args.shot, "the stored shot's number, from 1 (with --db)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -89,6 +97,14 @@ int main(int argc, char** argv) {
     return failWith(std::string(e.what()) + "; " + kUsage);
   }
   args.plot_given = plot->count() > 0;
+  // Either a scenario, or a stored shot named by all three of --db, --match and --shot.
+  const std::size_t stored = db->count() + match->count() + shot->count();
+  if ((scenario->count() == 0) == (stored == 0) || (stored != 0 && stored != 3)) {
+    return failWith(std::string(scenario->count() == 0 && stored == 0
+                                    ? "scenario is required"
+                                    : "a scenario, or all of --db, --match and --shot") +
+                    "; " + kUsage);
+  }
   try {
     return run(args);
   } catch (const std::exception& e) {

@@ -59,7 +59,8 @@ class PinnedServer {
   PinnedServer(std::uint32_t domain, int tables, int cpu) {
     std::vector<std::string> argv{std::string(POOL_BIN_DIR) + "/pool-server", "--domain",
                                   std::to_string(domain), "--tables", std::to_string(tables),
-                                  "--server-id", "bench", "--log-level", "warn"};
+                                  "--server-id", "bench", "--log-level", "warn",
+                                  "--db", db_};
     std::vector<char*> raw;
     for (auto& a : argv) raw.push_back(a.data());
     raw.push_back(nullptr);
@@ -76,6 +77,7 @@ class PinnedServer {
   ~PinnedServer() {
     ::kill(pid_, SIGKILL);
     ::waitpid(pid_, nullptr, 0);
+    for (const char* suffix : {"", "-wal", "-shm"}) std::remove((db_ + suffix).c_str());
   }
   PinnedServer(const PinnedServer&) = delete;
   PinnedServer& operator=(const PinnedServer&) = delete;
@@ -94,6 +96,7 @@ class PinnedServer {
   }
 
  private:
+  std::string db_ = "/tmp/pool-net-bench-" + std::to_string(::getpid()) + ".db";
   pid_t pid_ = -1;
 };
 

@@ -10,18 +10,21 @@
 namespace pool::bench {
 
 /// Prints the usual table, then "name: median cpu X ms (Y× faster than baseline)" lines where
-/// the baseline is the benchmark whose name starts with `baseline_prefix`.
+/// the baseline is the benchmark whose name starts with `baseline_prefix`. With `wall_clock` the
+/// medians are of real time (work that waits on a disk), not CPU time.
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
-  explicit RatioReporter(std::string baseline_prefix) : baseline_(std::move(baseline_prefix)) {}
+  explicit RatioReporter(std::string baseline_prefix, bool wall_clock = false)
+      : baseline_(std::move(baseline_prefix)), wall_clock_(wall_clock) {}
 
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {
       if (r.aggregate_name != "median") continue;
-      medians_[r.run_name.function_name] = r.GetAdjustedCPUTime() *
-                                           benchmark::GetTimeUnitMultiplier(benchmark::kMillisecond) /
-                                           benchmark::GetTimeUnitMultiplier(r.time_unit);
+      const double time = wall_clock_ ? r.GetAdjustedRealTime() : r.GetAdjustedCPUTime();
+      medians_[r.run_name.function_name] =
+          time * benchmark::GetTimeUnitMultiplier(benchmark::kMillisecond) /
+          benchmark::GetTimeUnitMultiplier(r.time_unit);
     }
   }
 
@@ -31,7 +34,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     for (const auto& [name, ms] : medians_) {
       if (name.rfind(baseline_, 0) == 0) base = ms;
     }
-    std::printf("\nmedian CPU time per run, and speed-up against %s*:\n", baseline_.c_str());
+    std::printf("\nmedian %s time per run, and speed-up against %s*:\n",
+                wall_clock_ ? "wall-clock" : "CPU", baseline_.c_str());
     for (const auto& [name, ms] : medians_) {
       std::printf("  %-40s %10.3f ms", name.c_str(), ms);
       if (base > 0 && ms > 0) std::printf("   x%.1f", base / ms);
@@ -41,6 +45,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
  private:
   std::string baseline_;
+  bool wall_clock_ = false;
   std::map<std::string, double> medians_;
 };
 

@@ -85,6 +85,11 @@ TEST_F(BotRejoinTest, PastTheGracePeriodTheMatchIsForfeitedToTheOpponent) {
   MatchRecorder recorder(kForfeit);
   startServer({"--fast", "--grace", "2"});
   ChildProcess& alice = startBot("alice", 7, {"--think", "0.2"});
+  // Alice sits first, so she breaks: a turn of hers comes before the match can end.
+  ASSERT_TRUE(recorder.pump(20s, [&] {
+    const MatchView* v = recorder.latest(recorder.firstMatch());
+    return v && seatOf(*v, "alice") == 0;
+  })) << logs();
   ChildProcess& bob = startBot("bob", 8, {"--think", "0.2"});
   ASSERT_TRUE(untilTurnOf(recorder, "alice", 0))
       << (stalledOnLayout(recorder) ? "stalled: the physics refuses a layout it left"

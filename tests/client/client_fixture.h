@@ -13,13 +13,15 @@
 
 namespace pool::client::test {
 
-/// Client integration tests use DDS domains 200–219, one per test (ctest runs them in parallel;
-/// net tests use 150–199, server tests 100–119).
+/// Client integration tests use DDS domains 200–219 and 120–134, one per test (ctest runs them in
+/// parallel; net tests use 150–199, server tests 100–119).
 enum Domain : std::uint32_t {
   kFullMatch = 200,
   kSpectator = 201,
   kRejoin = 202,
   kForfeit = 203,
+  kCrash = 120,
+  kReplay = 121,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
@@ -30,6 +32,8 @@ class ClientIntegrationTest : public ::testing::Test {
   void open(Domain domain, const std::string& tag) {
     domain_ = domain;
     scratch_ = std::make_unique<ScratchDir>(tag);
+    // The servers' default database goes to the scratch folder, never the real home.
+    ::setenv("XDG_DATA_HOME", scratch_->file("data").c_str(), 1);
   }
 
   ChildProcess& startServer(const std::vector<std::string>& extra) {

@@ -72,6 +72,8 @@ class MatchRecorder {
     }
     return out;
   }
+  /// Every ShotResult seen, in arrival order.
+  const std::vector<ShotReport>& reports() const { return reports_; }
   /// Every rejection seen.
   std::vector<ShotReport> rejections() const {
     std::vector<ShotReport> out;

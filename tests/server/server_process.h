@@ -47,6 +47,7 @@ class ServerProcess {
       ::waitpid(pid_, nullptr, 0);
     }
     std::remove(log_path_.c_str());
+    std::system(("rm -rf '" + data_home_ + "'").c_str());
   }
   ServerProcess(const ServerProcess&) = delete;
   ServerProcess& operator=(const ServerProcess&) = delete;
@@ -86,6 +87,8 @@ class ServerProcess {
       ::close(fd);
     }
     ::setenv("CYCLONEDDS_URI", loopbackUri().c_str(), 1);
+    // Its default database goes to a scratch folder, never the real home.
+    ::setenv("XDG_DATA_HOME", data_home_.c_str(), 1);
     std::vector<char*> args;
     for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -94,6 +97,7 @@ class ServerProcess {
   }
 
   std::string log_path_;
+  std::string data_home_ = log_path_ + ".data";
   pid_t pid_ = -1;
   bool exited_ = false;
 };

@@ -1,0 +1,81 @@
+// Replaying: seats, rematches between racks, the stored commands re-addressed to the replay match.
+#include "match/match_replay.h"
+
+#include "match/shot_runner.h"
+
+namespace pool::server {
+
+namespace {
+
+/// The same table, ball for ball, bit for bit.
+bool sameBalls(const std::vector<physics::Ball>& a, const std::vector<physics::Ball>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].id != b[i].id || a[i].pos != b[i].pos || a[i].state != b[i].state) return false;
+  }
+  return true;
+}
+
+bool sameEvents(const physics::EventLog& a, const physics::EventLog& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].t != b[i].t || a[i].type != b[i].type || a[i].ball_a != b[i].ball_a ||
+        a[i].ball_b != b[i].ball_b || a[i].where != b[i].where || a[i].pos != b[i].pos) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> commands,
+                         Match& target, std::array<std::uint64_t, 2> tokens, double pause)
+    : commands_(std::move(commands)), target_(target), tokens_(tokens), pause_(pause) {
+  for (int s = 0; s < 2; ++s) {
+    std::string player = stored.seats[static_cast<std::size_t>(s)].player;
+    if (player.empty()) player = "seat " + std::to_string(s);
+    target_.takeSeat(s, player, "replay-" + std::to_string(s),
+                     tokens_[static_cast<std::size_t>(s)]);
+  }
+}
+
+std::optional<CommandAnswer> MatchReplay::step(double now) {
+  if (next_ >= commands_.size() || target_.inMotion()) {
+    idle_since_.reset();
+    return std::nullopt;
+  }
+  if (!idle_since_) idle_since_ = now;
+  if (now - *idle_since_ < pause_) return std::nullopt;
+  idle_since_.reset();
+  // A stored match that went on to another rack: both players asked for it.
+  if (target_.phase() == MatchPhase::Over) {
+    for (const auto token : tokens_) target_.rematch(token);
+  }
+  const ShotRecord& stored = commands_[next_++];
+  net::ShotRequest command = stored.command;
+  command.match = target_.id();
+  command.seat_token = tokens_[static_cast<std::size_t>(command.seat)];
+  CommandAnswer answer = target_.handleShot(command, now);
+  check(stored, answer);
+  return answer;
+}
+
+void MatchReplay::check(const ShotRecord& stored, const CommandAnswer& answer) {
+  const std::string which =
+      "command " + std::to_string(next_) + " (shot " + std::to_string(stored.shot_number) + ")";
+  if (!answer.accepted() || !answer.record) {
+    differences_.push_back(which + " refused: " + answer.rejection.text);
+    return;
+  }
+  ++replayed_;
+  if (!sameBalls(answer.record->before, stored.before)) {
+    differences_.push_back(which + ": another table at the strike");
+  } else if (!sameEvents(answer.record->events, stored.events)) {
+    differences_.push_back(which + ": the physics told another story (" +
+                           std::to_string(answer.record->events.size()) + " events, stored " +
+                           std::to_string(stored.events.size()) + ")");
+  }
+}
+
+}  // namespace pool::server

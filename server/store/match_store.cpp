@@ -1,0 +1,255 @@
+// Reading and writing matches, seats and commands; one transaction per change.
+#include "store/match_store.h"
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "store/record_json.h"
+#include "store/schema.h"
+
+namespace pool::store {
+
+namespace {
+
+constexpr const char* kMatchColumns =
+    "id, number, name, table_name, rack_seed, layouts, started, closed, client_made, shot_number, "
+    "rack, revision, last_verdict, game, balls";
+
+std::int64_t i64(std::uint64_t v) {
+  return static_cast<std::int64_t>(v);
+}
+
+std::uint64_t u64(std::int64_t v) {
+  return static_cast<std::uint64_t>(v);
+}
+
+server::MatchSnapshot matchAt(const Statement& row) {
+  server::MatchSnapshot m;
+  m.id = row.text(0);
+  m.number = u64(row.integer(1));
+  m.name = row.text(2);
+  m.rack_seed = u64(row.integer(4));
+  m.layouts = u64(row.integer(5));
+  m.started = row.integer(6) != 0;
+  m.closed = row.integer(7) != 0;
+  m.client_made = row.integer(8) != 0;
+  m.shot_number = static_cast<std::uint32_t>(row.integer(9));
+  m.rack = static_cast<std::uint32_t>(row.integer(10));
+  m.revision = u64(row.integer(11));
+  m.last_verdict = row.text(12);
+  m.game = gameFrom(row.text(13));
+  m.balls = ballsFrom(row.text(14));
+  return m;
+}
+
+}  // namespace
+
+bool resumable(const server::MatchSnapshot& m) {
+  return !m.closed && (m.seats[0].taken() || m.seats[1].taken());
+}
+
+std::string defaultDbPath() {
+  const char* xdg = std::getenv("XDG_DATA_HOME");
+  if (xdg && *xdg) return std::string(xdg) + "/pool/pool.db";
+  const char* home = std::getenv("HOME");
+  return std::string(home && *home ? home : ".") + "/.local/share/pool/pool.db";
+}
+
+Result<std::unique_ptr<MatchStore>> MatchStore::open(const std::string& path) {
+  using Out = Result<std::unique_ptr<MatchStore>>;
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec)) {
+    if (auto error = checkFile(path); !error.empty()) return Out::fail(path + ": " + error);
+  } else {
+    const auto folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+    if (ec) return Out::fail(path + ": cannot create its folder: " + ec.message());
+  }
+  auto db = Database::open(path, /*read_only=*/false, /*create=*/true);
+  if (!db) return Out::fail(path + ": " + db.error());
+  try {
+    // Every commit is on disk before the server publishes what it stored. One server per file:
+    // the lock taken by the first write is held until the process ends (a crash frees it).
+    db->exec(
+        "PRAGMA busy_timeout = 2000; PRAGMA locking_mode = EXCLUSIVE; "
+        "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL");
+    migrate(*db);
+    db->exec("BEGIN IMMEDIATE; COMMIT");
+  } catch (const StoreError& e) {
+    return Out::fail(path + ": " + e.what());
+  }
+  return Out::ok(std::unique_ptr<MatchStore>(new MatchStore(std::move(*db))));
+}
+
+// ---- Meta ---------------------------------------------------------------------------------------
+
+std::string MatchStore::readMeta(const std::string& key) {
+  auto q = db_.prepare("SELECT value FROM meta WHERE key = ?");
+  q.bind(1, key);
+  return q.step() ? q.text(0) : std::string();
+}
+
+void MatchStore::writeMeta(const std::string& key, const std::string& value) {
+  db_.prepare(
+         "INSERT INTO meta(key, value) VALUES(?, ?) ON CONFLICT(key) DO UPDATE SET value = "
+         "excluded.value")
+      .bind(1, key)
+      .bind(2, value)
+      .run();
+}
+
+std::string MatchStore::serverId() {
+  return readMeta("server_id");
+}
+
+std::uint64_t MatchStore::opened() {
+  const std::string text = readMeta("opened");
+  return text.empty() ? 0 : std::strtoull(text.c_str(), nullptr, 10);
+}
+
+// ---- Writing ------------------------------------------------------------------------------------
+
+void MatchStore::writeMatch(const server::MatchSnapshot& m) {
+  db_.prepare(std::string("INSERT OR REPLACE INTO matches(") + kMatchColumns +
+              ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+      .bind(1, m.id)
+      .bind(2, i64(m.number))
+      .bind(3, m.name)
+      .bind(4, table_)
+      .bind(5, i64(m.rack_seed))
+      .bind(6, i64(m.layouts))
+      .bind(7, std::int64_t{m.started})
+      .bind(8, std::int64_t{m.closed})
+      .bind(9, std::int64_t{m.client_made})
+      .bind(10, std::int64_t{m.shot_number})
+      .bind(11, std::int64_t{m.rack})
+      .bind(12, i64(m.revision))
+      .bind(13, m.last_verdict)
+      .bind(14, gameJson(m.game))
+      .bind(15, ballsJson(m.balls))
+      .run();
+  auto seat = db_.prepare(
+      "INSERT OR REPLACE INTO seats(match, seat, player, token, client, last_seq, fouls, "
+      "racks_won, wants_rematch, public_key) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < 2; ++i) {
+    const server::Seat& s = m.seats[i];
+    seat.bind(1, m.id)
+        .bind(2, static_cast<std::int64_t>(i))
+        .bind(3, s.player)
+        .bind(4, i64(s.token))
+        .bind(5, s.client)
+        .bind(6, std::int64_t{s.last_seq})
+        .bind(7, std::int64_t{s.fouls})
+        .bind(8, std::int64_t{s.racks_won})
+        .bind(9, std::int64_t{s.wants_rematch})
+        .bindBlob(10, s.public_key)
+        .run();
+    seat.reset();
+  }
+}
+
+void MatchStore::saveMatches(const std::string& server_id, std::uint64_t opened,
+                             const std::vector<server::MatchSnapshot>& matches) {
+  Transaction tx(db_);
+  writeMeta("server_id", server_id);
+  writeMeta("opened", std::to_string(opened));
+  for (const auto& m : matches) writeMatch(m);
+  tx.commit();
+}
+
+void MatchStore::closeMatch(const std::string& id) {
+  db_.prepare("UPDATE matches SET closed = 1 WHERE id = ?").bind(1, id).run();
+}
+
+void MatchStore::recordShot(const server::ShotRecord& r, const std::string& verdict_text,
+                            const server::MatchSnapshot& after) {
+  Transaction tx(db_);
+  writeMatch(after);
+  db_.prepare(
+         "INSERT INTO shots(match, shot_number, shoots, seat, seq, command, state, before, intent, "
+         "events, after, verdict, verdict_text) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+      .bind(1, after.id)
+      .bind(2, std::int64_t{r.shot_number})
+      .bind(3, std::int64_t{r.shoots})
+      .bind(4, std::int64_t{r.command.seat})
+      .bind(5, std::int64_t{r.command.seq})
+      .bind(6, commandJson(r.command))
+      .bind(7, gameJson(r.state))
+      .bind(8, ballsJson(r.before))
+      .bind(9, intentJson(r.intent))
+      .bind(10, eventsJson(r.events))
+      .bind(11, ballsJson(r.after))
+      .bind(12, verdictJson(r.verdict))
+      .bind(13, verdict_text)
+      .run();
+  tx.commit();
+}
+
+// ---- Reading ------------------------------------------------------------------------------------
+
+std::vector<server::MatchSnapshot> MatchStore::matches() {
+  std::vector<server::MatchSnapshot> out;
+  auto q = db_.prepare(std::string("SELECT ") + kMatchColumns + " FROM matches ORDER BY number");
+  while (q.step()) out.push_back(matchAt(q));
+  auto seats = db_.prepare(
+      "SELECT seat, player, token, client, last_seq, fouls, racks_won, wants_rematch, public_key "
+      "FROM seats WHERE match = ?");
+  for (auto& m : out) {
+    seats.bind(1, m.id);
+    while (seats.step()) {
+      const auto i = seats.integer(0);
+      if (i != 0 && i != 1)
+        throw StoreError("match " + m.id + ": a seat numbered " + std::to_string(i));
+      server::Seat& s = m.seats[static_cast<std::size_t>(i)];
+      s.player = seats.text(1);
+      s.token = u64(seats.integer(2));
+      s.client = seats.text(3);
+      s.last_seq = static_cast<std::uint32_t>(seats.integer(4));
+      s.fouls = static_cast<int>(seats.integer(5));
+      s.racks_won = static_cast<int>(seats.integer(6));
+      s.wants_rematch = seats.integer(7) != 0;
+      s.public_key = seats.blob(8);
+    }
+    seats.reset();
+  }
+  return out;
+}
+
+std::optional<server::MatchSnapshot> MatchStore::match(const std::string& id) {
+  for (auto& m : matches()) {
+    if (m.id == id) return m;
+  }
+  return std::nullopt;
+}
+
+std::string MatchStore::tableOf(const std::string& id) {
+  auto q = db_.prepare("SELECT table_name FROM matches WHERE id = ?");
+  q.bind(1, id);
+  return q.step() ? q.text(0) : std::string();
+}
+
+std::vector<StoredShot> MatchStore::shots(const std::string& id) {
+  std::vector<StoredShot> out;
+  auto q = db_.prepare(
+      "SELECT shot_number, shoots, command, state, before, intent, events, after, verdict, "
+      "verdict_text FROM shots WHERE match = ? ORDER BY id");
+  q.bind(1, id);
+  while (q.step()) {
+    StoredShot s;
+    s.match = id;
+    s.record.shot_number = static_cast<std::uint32_t>(q.integer(0));
+    s.record.shoots = q.integer(1) != 0;
+    s.record.command = commandFrom(q.text(2));
+    s.record.state = gameFrom(q.text(3));
+    s.record.before = ballsFrom(q.text(4));
+    s.record.intent = intentFrom(q.text(5));
+    s.record.events = eventsFrom(q.text(6));
+    s.record.after = ballsFrom(q.text(7));
+    s.record.verdict = verdictFrom(q.text(8));
+    s.verdict_text = q.text(9);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace pool::store

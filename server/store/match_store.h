@@ -1,0 +1,79 @@
+// The server's SQLite file: its id and match counter, every match, and every accepted command.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "match/match_snapshot.h"
+#include "match/shot_record.h"
+#include "store/sqlite_db.h"
+
+namespace pool::store {
+
+/// One stored command with the match it belongs to.
+struct StoredShot {
+  std::string match;
+  server::ShotRecord record;
+  std::string verdict_text;
+};
+
+/// A match a restarted server picks up: not closed, with someone seated (a match that is over is
+/// kept for its players, who may ask for a rematch, as a running server keeps it).
+bool resumable(const server::MatchSnapshot& match);
+
+/// The store. Writes throw StoreError (the file went bad under us: the caller stops rather than
+/// publish what is not stored).
+class MatchStore {
+ public:
+  /// Opens the file at `path` (created with its folder when missing) and migrates it forward.
+  /// Refuses a file that is not SQLite, truncated, failing quick_check, not a pool database, or
+  /// of a newer schema, without writing to it: the reason is "<path>: <why>".
+  static Result<std::unique_ptr<MatchStore>> open(const std::string& path);
+
+  /// The table spec the matches written from now on are played on.
+  void setTable(std::string table) { table_ = std::move(table); }
+
+  /// The server id kept in the file; empty when none yet.
+  std::string serverId();
+  /// The number of matches opened so far (ids are never reused).
+  std::uint64_t opened();
+
+  /// Saves the server id, the counter and `matches` (with their seats) in one transaction.
+  void saveMatches(const std::string& server_id, std::uint64_t opened,
+                   const std::vector<server::MatchSnapshot>& matches);
+  /// Marks match `id` closed (a client-made match nobody uses any more).
+  void closeMatch(const std::string& id);
+  /// Stores an accepted command and the match as it left it (at rest), in one transaction, so the
+  /// result may then be published.
+  void recordShot(const server::ShotRecord& record, const std::string& verdict_text,
+                  const server::MatchSnapshot& after);
+
+  /// Every stored match, oldest first.
+  std::vector<server::MatchSnapshot> matches();
+  /// The stored match `id`.
+  std::optional<server::MatchSnapshot> match(const std::string& id);
+  /// The table spec match `id` is played on (empty when no such match).
+  std::string tableOf(const std::string& id);
+  /// Every stored command of match `id`, in the order they were accepted.
+  std::vector<StoredShot> shots(const std::string& id);
+
+  Database& database() { return db_; }
+
+ private:
+  explicit MatchStore(Database db) : db_(std::move(db)) {}
+  void writeMatch(const server::MatchSnapshot& match);
+  void writeMeta(const std::string& key, const std::string& value);
+  std::string readMeta(const std::string& key);
+
+  Database db_;
+  std::string table_ = "wpa-9ft";
+};
+
+/// $XDG_DATA_HOME/pool/pool.db, else ~/.local/share/pool/pool.db (the folder may not exist yet).
+std::string defaultDbPath();
+
+}  // namespace pool::store

@@ -1,0 +1,120 @@
+// Schema version 1 (matches, seats, shots) and 2 (seats' public keys), and the refusals.
+#include "store/schema.h"
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+
+namespace pool::store {
+
+namespace {
+
+constexpr const char* kVersion1 = R"sql(
+CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE matches(
+  id TEXT PRIMARY KEY, number INTEGER NOT NULL, name TEXT NOT NULL, table_name TEXT NOT NULL,
+  rack_seed INTEGER NOT NULL, layouts INTEGER NOT NULL, started INTEGER NOT NULL,
+  closed INTEGER NOT NULL, client_made INTEGER NOT NULL, shot_number INTEGER NOT NULL,
+  rack INTEGER NOT NULL, revision INTEGER NOT NULL, last_verdict TEXT NOT NULL,
+  game TEXT NOT NULL, balls TEXT NOT NULL);
+CREATE TABLE seats(
+  match TEXT NOT NULL REFERENCES matches(id), seat INTEGER NOT NULL, player TEXT NOT NULL,
+  token INTEGER NOT NULL, client TEXT NOT NULL, last_seq INTEGER NOT NULL,
+  fouls INTEGER NOT NULL, racks_won INTEGER NOT NULL, wants_rematch INTEGER NOT NULL,
+  PRIMARY KEY(match, seat));
+CREATE TABLE shots(
+  id INTEGER PRIMARY KEY, match TEXT NOT NULL REFERENCES matches(id),
+  shot_number INTEGER NOT NULL, shoots INTEGER NOT NULL, seat INTEGER NOT NULL,
+  seq INTEGER NOT NULL, command TEXT NOT NULL, state TEXT NOT NULL, before TEXT NOT NULL,
+  intent TEXT NOT NULL, events TEXT NOT NULL, after TEXT NOT NULL, verdict TEXT NOT NULL,
+  verdict_text TEXT NOT NULL);
+CREATE INDEX shots_of_match ON shots(match, shot_number);
+)sql";
+
+// Signed commands: the key each seat's commands are signed with (empty: unsigned).
+constexpr const char* kVersion2 = R"sql(
+ALTER TABLE seats ADD COLUMN public_key BLOB NOT NULL DEFAULT x'';
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2};
+
+std::uint64_t bigEndian(const unsigned char* p, int n) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < n; ++i) v = (v << 8) | p[i];
+  return v;
+}
+
+/// The header's promise: the file holds page_count pages of page_size bytes.
+std::string checkHeader(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) return "cannot read it: " + ec.message();
+  if (size == 0) return {};
+  std::array<unsigned char, 100> header{};
+  std::ifstream in(path, std::ios::binary);
+  in.read(reinterpret_cast<char*>(header.data()), header.size());
+  static const char kMagic[] = "SQLite format 3";
+  if (in.gcount() < 100 || std::equal(kMagic, kMagic + 16, header.begin()) == false) {
+    return "not an SQLite database";
+  }
+  const std::uint64_t raw_page = bigEndian(&header[16], 2);
+  const std::uint64_t page_size = raw_page == 1 ? 65536 : raw_page;
+  const std::uint64_t pages = bigEndian(&header[28], 4);
+  const std::string wal = path + "-wal";
+  // With a write-ahead log beside it the main file may lag its header until a checkpoint.
+  const bool has_wal = std::filesystem::exists(wal, ec) && std::filesystem::file_size(wal, ec) > 0;
+  if (!has_wal && pages * page_size > size) {
+    return "truncated (" + std::to_string(size) + " of " + std::to_string(pages * page_size) +
+           " bytes)";
+  }
+  return {};
+}
+
+/// SQLite's multi-line report as one line.
+std::string oneLine(std::string text) {
+  const std::string banner = "*** in database main ***\n";
+  if (text.rfind(banner, 0) == 0) text.erase(0, banner.size());
+  for (char& c : text) c = c == '\n' ? ' ' : c;
+  return text;
+}
+
+}  // namespace
+
+std::span<const char* const> migrationSteps() {
+  return kSteps;
+}
+
+std::string checkFile(const std::string& path) {
+  if (auto error = checkHeader(path); !error.empty()) return error;
+  auto db = Database::open(path, /*read_only=*/true, /*create=*/false);
+  if (!db) return db.error();
+  try {
+    auto check = db->prepare("PRAGMA quick_check");
+    if (check.step() && check.text(0) != "ok") {
+      return "fails its integrity check: " + oneLine(check.text(0));
+    }
+    const std::int64_t app = db->integer("PRAGMA application_id");
+    const std::int64_t version = db->integer("PRAGMA user_version");
+    const std::int64_t tables = db->integer("SELECT count(*) FROM sqlite_master");
+    if (app != kApplicationId && (app != 0 || tables > 0)) return "not a pool database";
+    if (version > kSchemaVersion) {
+      return "schema version " + std::to_string(version) + " is newer than this program's " +
+             std::to_string(kSchemaVersion);
+    }
+  } catch (const StoreError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+void migrate(Database& db) {
+  for (auto version = db.integer("PRAGMA user_version"); version < kSchemaVersion; ++version) {
+    Transaction step(db);
+    db.exec(kSteps[static_cast<std::size_t>(version)]);
+    db.exec("PRAGMA user_version = " + std::to_string(version + 1));
+    db.exec("PRAGMA application_id = " + std::to_string(kApplicationId));
+    step.commit();
+  }
+}
+
+}  // namespace pool::store
