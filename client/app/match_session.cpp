@@ -1,0 +1,197 @@
+// Joining, following and shooting in one match from this screen.
+#include "client/app/match_session.h"
+
+#include <algorithm>
+#include <variant>
+
+namespace pool::app {
+
+MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)) {
+  const int count = options_.hotseat ? 2 : 1;
+  for (int i = 0; i < count; ++i) {
+    const std::string name =
+        options_.hotseat ? options_.name + " " + std::to_string(i + 1) : options_.name;
+    clients_.push_back(std::make_unique<client::GameClient>(client::ClientOptions{
+        options_.domain, "", name}));
+  }
+}
+
+MatchSession::~MatchSession() = default;
+
+const client::Lobby& MatchSession::lobby() const { return clients_.front()->lobby(); }
+
+void MatchSession::note(std::string text, bool problem) {
+  notes_.push_back({std::move(text), problem});
+}
+
+std::vector<SessionNote> MatchSession::takeNotes() {
+  auto out = std::move(notes_);
+  notes_.clear();
+  return out;
+}
+
+void MatchSession::play(const std::string& match) {
+  want_ = Want::Play;
+  wanted_match_ = match;
+  stage_ = SessionStage::Joining;
+  startPending();
+}
+
+void MatchSession::spectate(const std::string& match) {
+  want_ = Want::Spectate;
+  wanted_match_ = match == "any" ? std::string() : match;
+  stage_ = SessionStage::Joining;
+  startPending();
+}
+
+void MatchSession::leave() {
+  if (!match_.empty()) {
+    for (auto& c : clients_) c->requestLeave(match_);
+  }
+  match_.clear();
+  want_ = Want::None;
+  answers_pending_ = 0;
+  stage_ = SessionStage::Lobby;
+  playback_.clear();
+  unanswered_.reset();
+}
+
+void MatchSession::rematch() {
+  for (auto& c : clients_) {
+    if (c->seat()) c->requestRematch();
+  }
+}
+
+void MatchSession::startPending() {
+  // Requests go out once the lobby names a match to send them to.
+  if (want_ == Want::None || answers_pending_ > 0 || !match_.empty()) return;
+  std::string target = wanted_match_;
+  if (target.empty()) {
+    const auto found =
+        want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
+    if (!found) return;
+    target = *found;
+  }
+  if (want_ == Want::Play) {
+    for (auto& c : clients_) c->requestSeat(target);
+    answers_pending_ = static_cast<int>(clients_.size());
+  } else {
+    clients_.front()->requestSpectate(target);
+    answers_pending_ = 1;
+  }
+  wanted_match_ = target;
+}
+
+void MatchSession::onAnswer(const client::JoinAnswer& answer) {
+  if (answer.action == client::JoinAction::Leave || answer.action == client::JoinAction::Rematch) {
+    return;
+  }
+  answers_pending_ = std::max(0, answers_pending_ - 1);
+  if (!answer.accepted()) {
+    note("join " + answer.match + ": " + client::toString(answer.outcome) +
+             (answer.reason.empty() ? "" : " (" + answer.reason + ")"),
+         true);
+    if (answers_pending_ == 0 && match_.empty()) {
+      stage_ = SessionStage::Lobby;
+      want_ = Want::None;
+    }
+    return;
+  }
+  match_ = answer.match;
+  stage_ = want_ == Want::Play ? SessionStage::Playing : SessionStage::Spectating;
+  note(answer.action == client::JoinAction::Spectate
+           ? "watching " + answer.match
+           : "seat " + std::to_string(answer.seat + 1) + " in " + answer.match);
+}
+
+void MatchSession::onReport(const client::ShotReport& report) {
+  if (report.match != match_) return;
+  const auto seats = localSeats();
+  const bool ours = std::find(seats.begin(), seats.end(), report.seat) != seats.end();
+  if (!report.accepted) {
+    if (ours && unanswered_ == report.seq) {
+      unanswered_.reset();
+      note("shot refused: " + std::string(client::toString(report.reject_reason)) + " " +
+               report.reject_text,
+           true);
+    }
+    return;
+  }
+  if (report.final()) {
+    last_verdict_ = report.verdict_text;
+  } else if (ours) {
+    note("shot " + std::to_string(report.seq) + " of seat " + std::to_string(report.seat + 1) +
+         " accepted");
+  }
+}
+
+void MatchSession::handle(client::ClientEvent& event, std::size_t from, double now) {
+  if (auto* answer = std::get_if<client::JoinAnswer>(&event)) return onAnswer(*answer);
+  // Everything else reaches every client alike: the first one's copy is used.
+  if (from != 0) return;
+  if (auto* frame = std::get_if<client::TableFrame>(&event)) {
+    if (frame->match != match_) return;
+    playback_.push(std::move(*frame), now);
+    rest_after_frames_ = false;
+  } else if (auto* view = std::get_if<client::MatchView>(&event)) {
+    if (view->match != match_) return;
+    rest_after_frames_ = true;
+    unanswered_.reset();
+    if (!view->last_verdict.empty()) last_verdict_ = view->last_verdict;
+  } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
+    onReport(*report);
+  }
+}
+
+void MatchSession::poll(double now) {
+  for (std::size_t i = 0; i < clients_.size(); ++i) {
+    for (auto& event : clients_[i]->poll()) handle(event, i, now);
+  }
+  startPending();
+}
+
+void MatchSession::wait(std::chrono::nanoseconds timeout) const { clients_.front()->wait(timeout); }
+
+const client::MatchView* MatchSession::view() const {
+  return match_.empty() ? nullptr : clients_.front()->state(match_);
+}
+
+bool MatchSession::inMotion() const {
+  return playback_.shot() && (!playback_.caughtUp() || !rest_after_frames_);
+}
+
+std::optional<std::vector<physics::Ball>> MatchSession::balls(double now) {
+  if (playback_.shot()) {
+    auto moving = playback_.sample(now);
+    if (inMotion()) return moving;
+  }
+  if (const auto* v = view()) return v->balls;
+  return std::nullopt;
+}
+
+std::vector<int> MatchSession::localSeats() const {
+  std::vector<int> seats;
+  for (const auto& c : clients_) {
+    if (c->seat() && c->seat()->match == match_) seats.push_back(c->seat()->seat);
+  }
+  return seats;
+}
+
+int MatchSession::localShooter() const {
+  const auto* v = view();
+  if (!v || !client::inPlay(v->phase) || v->shooter < 0 || inMotion() || unanswered_) return -1;
+  const auto seats = localSeats();
+  return std::find(seats.begin(), seats.end(), v->shooter) != seats.end() ? v->shooter : -1;
+}
+
+Result<std::uint32_t> MatchSession::shoot(int seat, net::ShotRequest request) {
+  for (auto& c : clients_) {
+    if (!c->seat() || c->seat()->match != match_ || c->seat()->seat != seat) continue;
+    auto sent = c->shoot(std::move(request));
+    if (sent) unanswered_ = *sent;
+    return sent;
+  }
+  return Result<std::uint32_t>::fail("seat " + std::to_string(seat) + " is not held here");
+}
+
+}  // namespace pool::app
