@@ -36,9 +36,15 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
   if (verb == "wait") {
     std::string what;
     words >> what;
-    if (what != "aiming") return R::fail("wait needs 'aiming'");
-    step.kind = ScriptStep::Kind::WaitAiming;
-    return R::ok(step);
+    if (what == "aiming") {
+      step.kind = ScriptStep::Kind::WaitAiming;
+      return R::ok(step);
+    }
+    if (what == "shot" && (words >> step.count) && step.count >= 0) {
+      step.kind = ScriptStep::Kind::WaitShot;
+      return R::ok(step);
+    }
+    return R::fail("wait needs 'aiming' or 'shot N'");
   }
   if (verb == "quit") {
     step.kind = ScriptStep::Kind::Quit;
@@ -77,7 +83,7 @@ Result<std::vector<ScriptStep>> loadScript(const std::string& path) {
   return steps;
 }
 
-std::vector<ScriptStep> ScriptPlayer::frame(bool can_aim) {
+std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
   std::vector<ScriptStep> due;
   if (frames_left_ > 0) {
     --frames_left_;
@@ -85,12 +91,15 @@ std::vector<ScriptStep> ScriptPlayer::frame(bool can_aim) {
   }
   while (next_ < steps_.size()) {
     const ScriptStep& step = steps_[next_];
-    if (step.kind == ScriptStep::Kind::WaitAiming) {
-      if (!can_aim) return due;
-      ++next_;
+    const bool waiting =
+        (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
+        (step.kind == ScriptStep::Kind::WaitShot &&
+         now.shot_number < static_cast<std::uint32_t>(step.count));
+    if (waiting) return due;
+    ++next_;
+    if (step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot) {
       continue;
     }
-    ++next_;
     if (step.kind == ScriptStep::Kind::Frames) {
       frames_left_ = step.count;
       if (frames_left_ > 0) {

@@ -18,6 +18,7 @@ struct ScriptStep {
     Up,          ///< release `key`
     Frames,      ///< let `count` frames pass
     WaitAiming,  ///< wait until this screen may aim
+    WaitShot,    ///< wait until the match's shot number reaches `count`
     Quit,        ///< close the client
   };
   Kind kind = Kind::Frames;
@@ -27,21 +28,27 @@ struct ScriptStep {
 };
 
 /// Parses a script: one step a line, '#' starts a comment.
-///   down KEY [shift] [ctrl] | up KEY | frames N | wait aiming | quit
+///   down KEY [shift] [ctrl] | up KEY | frames N | wait aiming | wait shot N | quit
 /// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
 Result<std::vector<ScriptStep>> parseScript(const std::string& text);
 
 /// Reads and parses a script file.
 Result<std::vector<ScriptStep>> loadScript(const std::string& path);
 
+/// What the `wait` steps wait for, as the client sees it this frame.
+struct ScriptConditions {
+  bool can_aim = false;
+  std::uint32_t shot_number = 0;  ///< of the match followed
+};
+
 /// Plays a script: each frame, the steps due now.
 class ScriptPlayer {
  public:
   explicit ScriptPlayer(std::vector<ScriptStep> steps) : steps_(std::move(steps)) {}
 
-  /// The steps to apply this frame (key presses and releases, or a Quit). `can_aim` says whether
-  /// a `wait aiming` step is satisfied.
-  std::vector<ScriptStep> frame(bool can_aim);
+  /// The steps to apply this frame (key presses and releases, or a Quit), the waits judged on
+  /// `now`.
+  std::vector<ScriptStep> frame(const ScriptConditions& now);
   bool done() const { return next_ >= steps_.size() && frames_left_ == 0; }
 
  private:

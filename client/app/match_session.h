@@ -64,6 +64,8 @@ class MatchSession {
   std::optional<std::vector<physics::Ball>> balls(double now);
   /// True while a shot's motion is still being drawn.
   bool inMotion() const;
+  /// The shot whose frames were played last, if any arrived.
+  std::optional<std::uint32_t> motionShot() const { return playback_.shot(); }
 
   /// The seat whose player sits at this screen and may aim now (their turn, balls at rest, no shot
   /// of theirs unanswered); -1: none.

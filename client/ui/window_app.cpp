@@ -191,7 +191,10 @@ class WindowApp {
 
   void applyScript() {
     if (!script_) return;
-    for (const auto& step : script_->frame(controls_.mode() == app::ControlMode::Aiming)) {
+    app::ScriptConditions now;
+    now.can_aim = controls_.mode() == app::ControlMode::Aiming;
+    if (const auto* v = session_.view()) now.shot_number = v->shot_number;
+    for (const auto& step : script_->frame(now)) {
       switch (step.kind) {
         case app::ScriptStep::Kind::Down: controls_.keyDown(step.key, step.mods); break;
         case app::ScriptStep::Kind::Up: controls_.keyUp(step.key); break;
@@ -386,8 +389,33 @@ class WindowApp {
     }
   }
 
+  /// With --json: a line for each new state of the match and each shot whose motion starts.
+  void reportProgress() {
+    if (!options_.json) return;
+    const client::MatchView* v = session_.view();
+    if (v && (!last_revision_ || *last_revision_ != v->revision)) {
+      last_revision_ = v->revision;
+      std::cout << nlohmann::json{{"event", "state"},         {"match", v->match},
+                                  {"revision", v->revision},   {"phase", client::toString(v->phase)},
+                                  {"shot_number", v->shot_number}, {"shooter", v->shooter}}
+                       .dump()
+                << '\n'
+                << std::flush;
+    }
+    const auto shot = session_.motionShot();
+    if (shot && session_.inMotion() && shot != last_motion_) {
+      last_motion_ = shot;
+      std::cout << nlohmann::json{{"event", "motion"}, {"match", session_.match()},
+                                  {"shot_number", *shot}}
+                       .dump()
+                << '\n'
+                << std::flush;
+    }
+  }
+
   void frame(double now, double dt) {
     session_.poll(now);
+    reportProgress();
     for (auto& note : session_.takeNotes()) addNote(std::move(note));
     followTurn();
     applyScript();
@@ -410,6 +438,8 @@ class WindowApp {
   bool in_room_ = false;
   EightBallRoomState room_;
   bool quit_ = false;
+  std::optional<std::uint32_t> last_revision_;
+  std::optional<std::uint32_t> last_motion_;
   bool captured_ = true;  ///< false once writing the capture failed
 };
 

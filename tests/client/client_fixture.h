@@ -20,6 +20,8 @@ enum Domain : std::uint32_t {
   kSpectator = 201,
   kRejoin = 202,
   kForfeit = 203,
+  kWindowShot = 210,
+  kWindowSpectate = 211,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
