@@ -132,10 +132,8 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
   if (auto* frame = std::get_if<client::TableFrame>(&event)) {
     if (frame->match != match_) return;
     playback_.push(std::move(*frame), now);
-    rest_after_frames_ = false;
   } else if (auto* view = std::get_if<client::MatchView>(&event)) {
     if (view->match != match_) return;
-    rest_after_frames_ = true;
     unanswered_.reset();
     if (!view->last_verdict.empty()) last_verdict_ = view->last_verdict;
   } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
@@ -157,7 +155,12 @@ const client::MatchView* MatchSession::view() const {
 }
 
 bool MatchSession::inMotion() const {
-  return playback_.shot() && (!playback_.caughtUp() || !rest_after_frames_);
+  const auto shot = playback_.shot();
+  if (!shot) return false;
+  // Frames and states come on different topics, in either order: the shot is over once the
+  // playback reached its last frame and a state counts the shot as played.
+  const client::MatchView* v = view();
+  return !playback_.caughtUp() || !v || v->shot_number < *shot;
 }
 
 std::optional<std::vector<physics::Ball>> MatchSession::balls(double now) {

@@ -96,7 +96,6 @@ class MatchSession {
   std::string match_;
   int answers_pending_ = 0;
   PlaybackClock playback_;
-  bool rest_after_frames_ = true;  ///< a state arrived after the latest frame
   std::optional<std::uint32_t> unanswered_;  ///< a shot sent, no new state or rejection yet
   std::string last_verdict_;
   std::vector<SessionNote> notes_;
