@@ -12,8 +12,8 @@ namespace {
 
 // Distance along unit `dir` from `from` to where a point comes within `reach` of `centre`;
 // infinity when it never does ahead.
-double sweep(const Eigen::Vector2d& from, const Eigen::Vector2d& dir,
-             const Eigen::Vector2d& centre, double reach) {
+double sweep(const Eigen::Vector2d& from, const Eigen::Vector2d& dir, const Eigen::Vector2d& centre,
+             double reach) {
   const Eigen::Vector2d rel = centre - from;
   const double along = rel.dot(dir);
   const double miss2 = rel.squaredNorm() - along * along;
@@ -80,8 +80,8 @@ ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
   ShotCall call;
   if (state.phase == rules::Phase::Break || state.phase == rules::Phase::Over) return call;
   const auto legal = rules::legalFirstBalls(state, balls);
-  const bool callable =
-      aim.ball && aim.pocket >= 0 && std::find(legal.begin(), legal.end(), *aim.ball) != legal.end();
+  const bool callable = aim.ball && aim.pocket >= 0 &&
+                        std::find(legal.begin(), legal.end(), *aim.ball) != legal.end();
   if (!callable) {
     call.safety = true;
     return call;

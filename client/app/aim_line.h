@@ -18,7 +18,7 @@ namespace pool::app {
 struct AimPrediction {
   Eigen::Vector2d from = Eigen::Vector2d::Zero();     ///< cue ball centre
   Eigen::Vector2d contact = Eigen::Vector2d::Zero();  ///< cue ball centre at its first contact
-  std::optional<int> ball;                  ///< the first ball touched; empty: a cushion
+  std::optional<int> ball;                            ///< the first ball touched; empty: a cushion
   Eigen::Vector2d object_dir = Eigen::Vector2d::Zero();  ///< unit: that ball's heading
   int pocket = -1;  ///< index into TableView::pockets the ball heads closest to; -1: none
 };

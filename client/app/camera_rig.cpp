@@ -12,7 +12,9 @@ constexpr double kAimElevation = 0.22;  // rad: a player's eye a little above th
 constexpr double kAimDistance = 0.75;   // m behind the cue ball
 constexpr double kMargin = 0.25;        // m of floor shown beyond the table's ends
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
 
 }  // namespace
 
@@ -39,8 +41,8 @@ void CameraRig::resetOverview() {
   const double half_fov_x = std::atan(std::tan(half_fov_y) * aspect_);
   const double along = (table_length_ / 2 + kMargin) / std::tan(half_fov_x);
   const double across = (table_width_ / 2 + kMargin) / std::tan(half_fov_y);
-  watch_.distance = std::clamp(std::max(along, across) * 1.15, limits_.min_distance,
-                               limits_.max_distance);
+  watch_.distance =
+      std::clamp(std::max(along, across) * 1.15, limits_.min_distance, limits_.max_distance);
 }
 
 void CameraRig::setAspect(double aspect) {
@@ -74,7 +76,9 @@ void CameraRig::zoom(double factor) {
   o.distance = std::clamp(o.distance * factor, limits_.min_distance, limits_.max_distance);
 }
 
-ViewPoint CameraRig::view() const { return (aiming_ ? aim_ : watch_).view(fov_y_deg_); }
+ViewPoint CameraRig::view() const {
+  return (aiming_ ? aim_ : watch_).view(fov_y_deg_);
+}
 
 std::optional<Eigen::Vector2d> pointUnderPixel(const ViewPoint& view, int width, int height,
                                                double px, double py, double plane_z) {

@@ -13,7 +13,9 @@ namespace {
 // How far behind the head string a cue ball in hand is put when it must be behind it, m.
 constexpr double kHeadStringSetback = 0.01;
 
-int axis(bool minus, bool plus) { return (plus ? 1 : 0) - (minus ? 1 : 0); }
+int axis(bool minus, bool plus) {
+  return (plus ? 1 : 0) - (minus ? 1 : 0);
+}
 
 }  // namespace
 
@@ -48,7 +50,9 @@ Eigen::Vector3d Controls::cueBall() const {
   return {aim_.cue_ball_at->x(), aim_.cue_ball_at->y(), area_.ball_radius};
 }
 
-void Controls::followCue() { camera_.followCue(cueBall(), aim_.yaw); }
+void Controls::followCue() {
+  camera_.followCue(cueBall(), aim_.yaw);
+}
 
 void Controls::placeCueBall(const Eigen::Vector2d& at) {
   const double r = area_.ball_radius;
@@ -56,9 +60,9 @@ void Controls::placeCueBall(const Eigen::Vector2d& at) {
   if (in_hand_ == rules::BallInHand::BehindHeadString) {
     max_x = std::min(max_x, area_.head_string_x - kHeadStringSetback);
   }
-  aim_.cue_ball_at = Eigen::Vector2d(std::clamp(at.x(), -(area_.half_length - r), max_x),
-                                     std::clamp(at.y(), -(area_.half_width - r),
-                                                area_.half_width - r));
+  aim_.cue_ball_at =
+      Eigen::Vector2d(std::clamp(at.x(), -(area_.half_length - r), max_x),
+                      std::clamp(at.y(), -(area_.half_width - r), area_.half_width - r));
 }
 
 void Controls::keyDown(Key key, Mods mods) {
@@ -100,12 +104,23 @@ void Controls::keyUp(Key key) {
 
 void Controls::toggle(Key key) {
   switch (key) {
-    case Key::G: toggles_.aim_line = !toggles_.aim_line; break;
-    case Key::V: toggles_.vectors = !toggles_.vectors; break;
-    case Key::P: toggles_.wireframe = !toggles_.wireframe; break;
-    case Key::T: toggles_.textures = !toggles_.textures; break;
-    case Key::L: toggles_.lighting = !toggles_.lighting; break;
-    default: break;
+    case Key::G:
+      toggles_.aim_line = !toggles_.aim_line;
+      break;
+    case Key::V:
+      toggles_.vectors = !toggles_.vectors;
+      break;
+    case Key::P:
+      toggles_.wireframe = !toggles_.wireframe;
+      break;
+    case Key::T:
+      toggles_.textures = !toggles_.textures;
+      break;
+    case Key::L:
+      toggles_.lighting = !toggles_.lighting;
+      break;
+    default:
+      break;
   }
 }
 
@@ -184,7 +199,8 @@ void Controls::mouseMove(double x, double y) {
   const Eigen::Vector2d delta = Eigen::Vector2d(x, y) - mouse_;
   mouse_ = {x, y};
   switch (drag_) {
-    case Drag::None: return;
+    case Drag::None:
+      return;
     case Drag::View:
       camera_.orbit(-delta.x() * rates_.mouse_orbit);
       camera_.raise(delta.y() * rates_.mouse_orbit);
@@ -195,8 +211,8 @@ void Controls::mouseMove(double x, double y) {
       break;
     case Drag::CueBall:
       // The camera follows the ball: take the ray from the view the press was seen in.
-      if (const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y,
-                                           area_.ball_radius)) {
+      if (const auto hit =
+              pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius)) {
         placeCueBall(*hit);
       }
       break;
@@ -204,7 +220,9 @@ void Controls::mouseMove(double x, double y) {
   if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
 }
 
-void Controls::scroll(double steps) { camera_.zoom(std::pow(rates_.scroll_zoom, steps)); }
+void Controls::scroll(double steps) {
+  camera_.zoom(std::pow(rates_.scroll_zoom, steps));
+}
 
 void Controls::setViewport(int width, int height) {
   if (width <= 0 || height <= 0) return;

@@ -17,23 +17,23 @@ namespace pool::app {
 
 /// How fast held keys and the mouse move things.
 struct ControlRates {
-  double yaw = 0.5;               ///< rad/s, left/right while aiming
-  double tip = 0.5;               ///< fractions of R per s, Ctrl+arrows
-  double elevation = 0.5;         ///< rad/s, A/Z
-  double charge_time = 1.5;       ///< s of Space from empty to full power
-  double orbit = 1.2;             ///< rad/s, arrows (watching) or Shift+arrows (aiming)
-  double raise = 0.8;             ///< rad/s
-  double zoom = 2.0;              ///< distance factor per s, S (÷) and X (×)
-  double mouse_yaw = 0.003;       ///< rad per pixel, dragging while aiming
-  double mouse_orbit = 0.006;     ///< rad per pixel, dragging the view
-  double scroll_zoom = 0.9;       ///< distance factor per scroll step
+  double yaw = 0.5;            ///< rad/s, left/right while aiming
+  double tip = 0.5;            ///< fractions of R per s, Ctrl+arrows
+  double elevation = 0.5;      ///< rad/s, A/Z
+  double charge_time = 1.5;    ///< s of Space from empty to full power
+  double orbit = 1.2;          ///< rad/s, arrows (watching) or Shift+arrows (aiming)
+  double raise = 0.8;          ///< rad/s
+  double zoom = 2.0;           ///< distance factor per s, S (÷) and X (×)
+  double mouse_yaw = 0.003;    ///< rad per pixel, dragging while aiming
+  double mouse_orbit = 0.006;  ///< rad per pixel, dragging the view
+  double scroll_zoom = 0.9;    ///< distance factor per scroll step
 };
 
 /// Where the cue ball may be put with ball in hand (table frame, m).
 struct PlacementArea {
-  double half_length = 1.27;     ///< playing surface half extent in x
-  double half_width = 0.635;     ///< playing surface half extent in y
-  double head_string_x = -0.635; ///< behind the head string: x < this
+  double half_length = 1.27;      ///< playing surface half extent in x
+  double half_width = 0.635;      ///< playing surface half extent in y
+  double head_string_x = -0.635;  ///< behind the head string: x < this
   double ball_radius = 0.028575;
 };
 

@@ -14,17 +14,17 @@ enum class Key : std::uint8_t {
   Up,
   Down,
   Space,
-  A,       ///< raise the cue
-  Z,       ///< lower the cue
-  S,       ///< zoom in
-  X,       ///< zoom out
-  G,       ///< aim line on/off
-  V,       ///< direction vectors on/off
-  C,       ///< next called pocket
-  K,       ///< declare a safety on/off
-  P,       ///< wireframe
-  T,       ///< textures
-  L,       ///< lighting
+  A,  ///< raise the cue
+  Z,  ///< lower the cue
+  S,  ///< zoom in
+  X,  ///< zoom out
+  G,  ///< aim line on/off
+  V,  ///< direction vectors on/off
+  C,  ///< next called pocket
+  K,  ///< declare a safety on/off
+  P,  ///< wireframe
+  T,  ///< textures
+  L,  ///< lighting
   Escape,
 };
 

@@ -91,10 +91,9 @@ std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
   }
   while (next_ < steps_.size()) {
     const ScriptStep& step = steps_[next_];
-    const bool waiting =
-        (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
-        (step.kind == ScriptStep::Kind::WaitShot &&
-         now.shot_number < static_cast<std::uint32_t>(step.count));
+    const bool waiting = (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
+                         (step.kind == ScriptStep::Kind::WaitShot &&
+                          now.shot_number < static_cast<std::uint32_t>(step.count));
     if (waiting) return due;
     ++next_;
     if (step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot) {

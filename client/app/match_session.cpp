@@ -11,14 +11,16 @@ MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)
   for (int i = 0; i < count; ++i) {
     const std::string name =
         options_.hotseat ? options_.name + " " + std::to_string(i + 1) : options_.name;
-    clients_.push_back(std::make_unique<client::GameClient>(client::ClientOptions{
-        options_.domain, "", name}));
+    clients_.push_back(
+        std::make_unique<client::GameClient>(client::ClientOptions{options_.domain, "", name}));
   }
 }
 
 MatchSession::~MatchSession() = default;
 
-const client::Lobby& MatchSession::lobby() const { return clients_.front()->lobby(); }
+const client::Lobby& MatchSession::lobby() const {
+  return clients_.front()->lobby();
+}
 
 void MatchSession::note(std::string text, bool problem) {
   notes_.push_back({std::move(text), problem});
@@ -67,8 +69,7 @@ void MatchSession::startPending() {
   if (want_ == Want::None || answers_pending_ > 0 || !match_.empty()) return;
   std::string target = wanted_match_;
   if (target.empty()) {
-    const auto found =
-        want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
+    const auto found = want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
     if (!found) return;
     target = *found;
   }
@@ -148,7 +149,9 @@ void MatchSession::poll(double now) {
   startPending();
 }
 
-void MatchSession::wait(std::chrono::nanoseconds timeout) const { clients_.front()->wait(timeout); }
+void MatchSession::wait(std::chrono::nanoseconds timeout) const {
+  clients_.front()->wait(timeout);
+}
 
 const client::MatchView* MatchSession::view() const {
   return match_.empty() ? nullptr : clients_.front()->state(match_);

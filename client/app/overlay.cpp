@@ -17,7 +17,9 @@ constexpr double kSpinScale = 0.004;       // m per rad/s
 constexpr double kCueLength = 1.2;         // m of cue drawn
 constexpr double kObjectLine = 0.4;        // m of the object ball's heading drawn
 
-Eigen::Vector3d at(const Eigen::Vector2d& p, double z) { return {p.x(), p.y(), z}; }
+Eigen::Vector3d at(const Eigen::Vector2d& p, double z) {
+  return {p.x(), p.y(), z};
+}
 
 }  // namespace
 
@@ -43,10 +45,10 @@ std::vector<OverlaySegment> motionOverlay(const std::vector<physics::Ball>& ball
   std::vector<OverlaySegment> out;
   for (const auto& b : balls) {
     if (!physics::onTable(b.state)) continue;
-    if (b.vel.squaredNorm() > 1e-8) out.push_back({b.pos, b.pos + b.vel * kVelocitySeconds,
-                                                   kVelocityColour});
-    if (b.ang_vel.squaredNorm() > 1e-4) out.push_back({b.pos, b.pos + b.ang_vel * kSpinScale,
-                                                       kSpinColour});
+    if (b.vel.squaredNorm() > 1e-8)
+      out.push_back({b.pos, b.pos + b.vel * kVelocitySeconds, kVelocityColour});
+    if (b.ang_vel.squaredNorm() > 1e-4)
+      out.push_back({b.pos, b.pos + b.ang_vel * kSpinScale, kSpinColour});
   }
   return out;
 }

@@ -5,8 +5,7 @@
 
 namespace pool::app {
 
-PlaybackClock::PlaybackClock(PlaybackConfig config)
-    : config_(config), buffer_(config.capacity) {}
+PlaybackClock::PlaybackClock(PlaybackConfig config) : config_(config), buffer_(config.capacity) {}
 
 void PlaybackClock::clear() {
   buffer_.clear();
@@ -41,7 +40,8 @@ std::optional<std::vector<physics::Ball>> PlaybackClock::sample(double now) {
   // Slew the offset toward its target at a bounded rate, or jump when far behind.
   const double gap = target_offset_ - offset_;
   const double step = config_.max_skew * dt;
-  offset_ = std::abs(gap) > config_.resync ? target_offset_ : offset_ + std::clamp(gap, -step, step);
+  offset_ =
+      std::abs(gap) > config_.resync ? target_offset_ : offset_ + std::clamp(gap, -step, step);
   play_ = std::max(play_, now - offset_ - config_.delay);
   return buffer_.sample(play_);
 }

@@ -14,10 +14,10 @@ namespace pool::app {
 
 /// How the playback follows the stream.
 struct PlaybackConfig {
-  double delay = 0.1;        ///< s behind the earliest-arriving frame (covers a lost snapshot)
-  double max_skew = 0.05;    ///< fraction the playback rate may differ from 1 while catching up
-  double resync = 0.5;       ///< s: a lag beyond this is jumped over at once
-  std::size_t capacity = 32; ///< frames kept
+  double delay = 0.1;         ///< s behind the earliest-arriving frame (covers a lost snapshot)
+  double max_skew = 0.05;     ///< fraction the playback rate may differ from 1 while catching up
+  double resync = 0.5;        ///< s: a lag beyond this is jumped over at once
+  std::size_t capacity = 32;  ///< frames kept
 };
 
 /// One match's shot in motion, as drawn. Time (`now`, s) is the caller's, on any steady clock.

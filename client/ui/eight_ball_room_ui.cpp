@@ -24,8 +24,8 @@ bool drawEightBallRoom(EightBallRoomState& state) {
   ImGui::TextUnformatted("Ask the eight ball a question:");
   char buffer[256] = {};
   state.question.copy(buffer, sizeof buffer - 1);
-  const bool entered = ImGui::InputText("##question", buffer, sizeof buffer,
-                                        ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool entered =
+      ImGui::InputText("##question", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
   state.question = buffer;
   ImGui::SameLine();
   if ((ImGui::Button("Ask") || entered) && !state.question.empty()) {

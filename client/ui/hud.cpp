@@ -11,7 +11,9 @@
 namespace pool::ui {
 namespace {
 
-double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
+double degrees(double rad) {
+  return rad * 180.0 / std::numbers::pi;
+}
 
 void seatLine(const client::MatchView& view, int s, const std::vector<int>& local) {
   const auto& seat = view.seats[static_cast<std::size_t>(s)];
@@ -45,8 +47,8 @@ void matchPanel(const HudInput& in, HudActions& actions) {
     ImGui::Text("winner: %s (%s)",
                 v.winner >= 0 ? v.seats[static_cast<std::size_t>(v.winner)].name.c_str() : "-",
                 rules::toString(v.end));
-    const bool won = std::find(in.local_seats.begin(), in.local_seats.end(), v.winner) !=
-                     in.local_seats.end();
+    const bool won =
+        std::find(in.local_seats.begin(), in.local_seats.end(), v.winner) != in.local_seats.end();
     if (won && ImGui::Button("Visit the Magic Eight Ball room")) actions.visit_room = true;
     if (!in.local_seats.empty() && ImGui::Button("Rematch")) actions.rematch = true;
   }

@@ -27,7 +27,8 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
                                : "New game at the first free table";
     if (ImGui::Button(play)) choice = LobbyChoice{LobbyChoice::Kind::Play, ""};
     ImGui::SameLine();
-    if (ImGui::Button("Watch a match in play")) choice = LobbyChoice{LobbyChoice::Kind::Spectate, ""};
+    if (ImGui::Button("Watch a match in play"))
+      choice = LobbyChoice{LobbyChoice::Kind::Spectate, ""};
   }
   ImGui::Separator();
   if (lobby.empty()) ImGui::TextUnformatted("no server found yet (is pool-server running?)");

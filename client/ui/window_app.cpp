@@ -5,10 +5,10 @@
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
 // clang-format on
-#include <imgui.h>
-#include <stb_image_write.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <stb_image_write.h>
 
 #include <chrono>
 #include <deque>
@@ -151,8 +151,8 @@ class WindowApp {
     glReadBuffer(GL_BACK);
     glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
     stbi_flip_vertically_on_write(1);
-    captured_ = stbi_write_png(options_.capture.c_str(), width, height, 3, rgb.data(),
-                               width * 3) != 0;
+    captured_ =
+        stbi_write_png(options_.capture.c_str(), width, height, 3, rgb.data(), width * 3) != 0;
     if (!captured_) std::cerr << "could not write " << options_.capture << '\n';
   }
 
@@ -180,9 +180,8 @@ class WindowApp {
           button == GLFW_MOUSE_BUTTON_LEFT ? app::MouseButton::Left : app::MouseButton::Right,
           action == GLFW_PRESS, x, y);
     });
-    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
-      self(win).controls_.mouseMove(x, y);
-    });
+    glfwSetCursorPosCallback(
+        w, [](GLFWwindow* win, double x, double y) { self(win).controls_.mouseMove(x, y); });
     glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
       if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
       self(win).controls_.scroll(dy);
@@ -196,10 +195,17 @@ class WindowApp {
     if (const auto* v = session_.view()) now.shot_number = v->shot_number;
     for (const auto& step : script_->frame(now)) {
       switch (step.kind) {
-        case app::ScriptStep::Kind::Down: controls_.keyDown(step.key, step.mods); break;
-        case app::ScriptStep::Kind::Up: controls_.keyUp(step.key); break;
-        case app::ScriptStep::Kind::Quit: quit_ = true; break;
-        default: break;
+        case app::ScriptStep::Kind::Down:
+          controls_.keyDown(step.key, step.mods);
+          break;
+        case app::ScriptStep::Kind::Up:
+          controls_.keyUp(step.key);
+          break;
+        case app::ScriptStep::Kind::Quit:
+          quit_ = true;
+          break;
+        default:
+          break;
       }
     }
   }
@@ -257,7 +263,8 @@ class WindowApp {
       line["called_ball"] = *request.called_ball;
       line["called_pocket"] = request.called_pocket;
     }
-    if (request.cue_ball_at) line["cue_ball_at"] = {request.cue_ball_at->x(), request.cue_ball_at->y()};
+    if (request.cue_ball_at)
+      line["cue_ball_at"] = {request.cue_ball_at->x(), request.cue_ball_at->y()};
     std::cout << line.dump() << '\n' << std::flush;
   }
 
@@ -302,8 +309,8 @@ class WindowApp {
     const app::Toggles& t = controls_.toggles();
     placement_problem_.clear();
     if (controls_.mode() == app::ControlMode::Aiming && session_.view()) {
-      const auto prediction = app::predictAim(controls_.cueBall().head<2>(), controls_.aim().yaw,
-                                              balls, view_);
+      const auto prediction =
+          app::predictAim(controls_.cueBall().head<2>(), controls_.aim().yaw, balls, view_);
       controls_.suggestCall(
           app::autoCall(prediction, client::gameStateOf(*session_.view()), balls, view_));
       if (t.aim_line) {
@@ -352,8 +359,8 @@ class WindowApp {
     if (in_room_) {
       in_room_ = drawEightBallRoom(room_);
     } else if (stage == app::SessionStage::Lobby || stage == app::SessionStage::Joining) {
-      if (const auto choice = drawLobby(session_.lobby(), stage == app::SessionStage::Joining,
-                                        options_.hotseat)) {
+      if (const auto choice =
+              drawLobby(session_.lobby(), stage == app::SessionStage::Joining, options_.hotseat)) {
         if (choice->kind == LobbyChoice::Kind::Play) session_.play(choice->match);
         if (choice->kind == LobbyChoice::Kind::Spectate) session_.spectate(choice->match);
       }
@@ -395,9 +402,12 @@ class WindowApp {
     const client::MatchView* v = session_.view();
     if (v && (!last_revision_ || *last_revision_ != v->revision)) {
       last_revision_ = v->revision;
-      std::cout << nlohmann::json{{"event", "state"},         {"match", v->match},
-                                  {"revision", v->revision},   {"phase", client::toString(v->phase)},
-                                  {"shot_number", v->shot_number}, {"shooter", v->shooter}}
+      std::cout << nlohmann::json{{"event", "state"},
+                                  {"match", v->match},
+                                  {"revision", v->revision},
+                                  {"phase", client::toString(v->phase)},
+                                  {"shot_number", v->shot_number},
+                                  {"shooter", v->shooter}}
                        .dump()
                 << '\n'
                 << std::flush;
@@ -405,7 +415,8 @@ class WindowApp {
     const auto shot = session_.motionShot();
     if (shot && session_.inMotion() && shot != last_motion_) {
       last_motion_ = shot;
-      std::cout << nlohmann::json{{"event", "motion"}, {"match", session_.match()},
+      std::cout << nlohmann::json{{"event", "motion"},
+                                  {"match", session_.match()},
                                   {"shot_number", *shot}}
                        .dump()
                 << '\n'

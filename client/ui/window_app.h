@@ -12,14 +12,14 @@ namespace pool::ui {
 struct WindowOptions {
   std::uint32_t domain = 0;
   std::string name = "Player";
-  bool hotseat = false;      ///< two seats on this screen
-  bool play = false;         ///< take a seat at once (in `match`, or the first free table)
-  std::string spectate;      ///< watch this match at once ("any": the first in play)
-  std::string match;         ///< with `play`: this match
-  std::string script;        ///< input script file (see client/app/input_script.h)
-  bool json = false;         ///< print shots sent and messages as JSON lines on stdout
-  double timeout = 0.0;      ///< s; exit with code 3 after this long; 0: never
-  std::string capture;       ///< write the last frame drawn to this PNG when the window closes
+  bool hotseat = false;  ///< two seats on this screen
+  bool play = false;     ///< take a seat at once (in `match`, or the first free table)
+  std::string spectate;  ///< watch this match at once ("any": the first in play)
+  std::string match;     ///< with `play`: this match
+  std::string script;    ///< input script file (see client/app/input_script.h)
+  bool json = false;     ///< print shots sent and messages as JSON lines on stdout
+  double timeout = 0.0;  ///< s; exit with code 3 after this long; 0: never
+  std::string capture;   ///< write the last frame drawn to this PNG when the window closes
   std::string table = "wpa-9ft";
   int width = 1280;
   int height = 720;

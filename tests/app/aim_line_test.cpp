@@ -93,7 +93,8 @@ TEST(AimLineTest, TheCallFollowsTheRules) {
   const Eigen::Vector2d cue(0.3, -0.2);
   const std::vector balls{resting(0, cue.x(), cue.y()), resting(11, 0.9, 0.35),
                           resting(8, -0.9, 0.35)};
-  const auto at_eleven = predictAim(cue, aimAt(cue, {0.9, 0.35}, easiestPocket(cue, {0.9, 0.35})), balls, nineFoot());
+  const auto at_eleven =
+      predictAim(cue, aimAt(cue, {0.9, 0.35}, easiestPocket(cue, {0.9, 0.35})), balls, nineFoot());
   rules::GameState state;
 
   state.phase = rules::Phase::Break;

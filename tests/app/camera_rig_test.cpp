@@ -30,8 +30,8 @@ TEST(CameraRigTest, ARayUnderAPixelHitsThePointProjectedThere) {
   rig.orbit(0.7);
   rig.raise(-0.3);
   const ViewPoint view = rig.view();
-  for (const Eigen::Vector2d& at : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, -0.5),
-                                   Eigen::Vector2d(-1.1, 0.4)}) {
+  for (const Eigen::Vector2d& at :
+       {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, -0.5), Eigen::Vector2d(-1.1, 0.4)}) {
     const glm::vec3 p = render::projectToPixels(
         cameraOf(view), 1280, 720,
         glm::vec3(static_cast<float>(at.x()), static_cast<float>(at.y()), kRadius));

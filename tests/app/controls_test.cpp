@@ -135,8 +135,8 @@ TEST_F(ControlsTest, WatchingArrowsOrbitAndSpaceDoesNothing) {
   EXPECT_NEAR(controls.camera().watching().azimuth - before.azimuth, -0.5 * kRates.orbit, 1e-9);
   EXPECT_NEAR(controls.camera().watching().elevation - before.elevation, -0.25 * kRates.raise,
               1e-9);
-  EXPECT_NEAR(controls.camera().watching().distance / before.distance,
-              std::pow(kRates.zoom, -0.5), 1e-9);
+  EXPECT_NEAR(controls.camera().watching().distance / before.distance, std::pow(kRates.zoom, -0.5),
+              1e-9);
   EXPECT_FALSE(shoot(controls, 0.5));
   EXPECT_EQ(controls.aim().yaw, 0.0);
 }
