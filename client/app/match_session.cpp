@@ -158,12 +158,8 @@ const client::MatchView* MatchSession::view() const {
 }
 
 bool MatchSession::inMotion() const {
-  const auto shot = playback_.shot();
-  if (!shot) return false;
-  // Frames and states come on different topics, in either order: the shot is over once the
-  // playback reached its last frame and a state counts the shot as played.
   const client::MatchView* v = view();
-  return !playback_.caughtUp() || !v || v->shot_number < *shot;
+  return playback_.inMotion(v ? v->shot_number : 0);
 }
 
 std::optional<std::vector<physics::Ball>> MatchSession::balls(double now) {

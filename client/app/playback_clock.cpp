@@ -51,4 +51,9 @@ bool PlaybackClock::caughtUp() const {
   return latest && play_ >= latest->sim_time;
 }
 
+bool PlaybackClock::inMotion(std::uint32_t settled_shots) const {
+  const auto playing = shot();
+  return playing && (!caughtUp() || settled_shots < *playing);
+}
+
 }  // namespace pool::app

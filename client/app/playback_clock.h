@@ -35,6 +35,10 @@ class PlaybackClock {
   double playTime() const { return play_; }
   /// True once the playback has reached the newest frame received.
   bool caughtUp() const;
+  /// True while the shot being played is still to be drawn: the playback has not reached its
+  /// newest frame, or the match's state counts only `settled_shots` shots, fewer than its number
+  /// (frames and states travel on different topics and may arrive in either order).
+  bool inMotion(std::uint32_t settled_shots) const;
   /// The shot being played, if any frame arrived.
   std::optional<std::uint32_t> shot() const;
   void clear();

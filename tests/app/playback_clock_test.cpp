@@ -88,7 +88,7 @@ Smoothness play(double fps, int dropped) {
 
 // Error bound: a few percent of the top speed (3 m/s), well below what a frame held for a whole
 // snapshot interval would show (the full speed).
-constexpr double kVelocityTolerance = 0.2;  // m/s
+constexpr double kVelocityTolerance = 0.1;  // m/s
 
 TEST(PlaybackClockTest, ThirtyHertzAtSixtyFramesIsSmooth) {
   const Smoothness s = play(60.0, -1);
@@ -140,6 +140,19 @@ TEST(PlaybackClockTest, ANewShotStartsItsOwnPlayback) {
   ASSERT_TRUE(clock.sample(20.05));
   EXPECT_LT(clock.playTime(), 0.01);
   EXPECT_EQ(clock.shot(), 5u);
+}
+
+TEST(PlaybackClockTest, AShotEndsWhenPlayedOutAndCountedByAState) {
+  PlaybackClock clock;
+  EXPECT_FALSE(clock.inMotion(0));
+  clock.push(frameAt(0, 0.0), 10.0);
+  clock.push(frameAt(30, 1.0), 11.0);  // shot 4 (frameAt's), one second of motion
+  ASSERT_TRUE(clock.sample(10.5));
+  EXPECT_TRUE(clock.inMotion(4));  // the state came first, the playback is still going
+  ASSERT_TRUE(clock.sample(12.0));
+  EXPECT_TRUE(clock.caughtUp());
+  EXPECT_TRUE(clock.inMotion(3));   // played out, but no state counts the shot yet
+  EXPECT_FALSE(clock.inMotion(4));  // played out and counted
 }
 
 }  // namespace
