@@ -98,6 +98,11 @@ void MatchSession::onAnswer(const client::JoinAnswer& answer) {
     }
     return;
   }
+  if (want_ == Want::None) {
+    // Cancelled while the request was on its way: give the place back.
+    for (auto& c : clients_) c->requestLeave(answer.match);
+    return;
+  }
   match_ = answer.match;
   stage_ = want_ == Want::Play ? SessionStage::Playing : SessionStage::Spectating;
   note(answer.action == client::JoinAction::Spectate

@@ -21,7 +21,9 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
                           ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::Begin("Lobby", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   if (joining) {
-    ImGui::TextUnformatted("joining...");
+    ImGui::TextUnformatted("joining (waiting for a free table or a match in play)...");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) choice = LobbyChoice{LobbyChoice::Kind::Cancel, ""};
   } else {
     const char* play = hotseat ? "New game: two players here, first free table"
                                : "New game at the first free table";

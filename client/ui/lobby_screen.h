@@ -10,8 +10,9 @@ namespace pool::ui {
 
 /// What the player picked in the lobby.
 struct LobbyChoice {
-  enum class Kind : std::uint8_t { Play, Spectate } kind = Kind::Play;
+  enum class Kind : std::uint8_t { Play, Spectate, Cancel } kind = Kind::Play;
   std::string match;  ///< empty: the first free table (Play) or the first match in play
+                      ///< (Spectate); Cancel: stop waiting for a match to join
 };
 
 /// Draws the lobby for this frame; `joining` greys the buttons while answers are pending.

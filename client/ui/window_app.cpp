@@ -41,6 +41,7 @@ namespace {
 
 constexpr double kScriptStep = 1.0 / 60.0;  // s of input time per frame under a script
 constexpr std::size_t kNotesShown = 6;
+constexpr std::chrono::microseconds kMinFrame(1000000 / 144);  // at most 144 frames a second
 
 /// GLFW and a window with an OpenGL 3.3 core context; ImGui on top.
 class GlfwWindow {
@@ -128,6 +129,7 @@ class WindowApp {
     const auto start = std::chrono::steady_clock::now();
     double last = 0.0;
     while (!glfwWindowShouldClose(window_.get()) && !stop && !quit_) {
+      const auto frame_start = std::chrono::steady_clock::now();
       const double now =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (options_.timeout > 0 && now > options_.timeout) return 3;
@@ -136,6 +138,8 @@ class WindowApp {
       last = now;
       if (!options_.capture.empty()) capture();
       glfwSwapBuffers(window_.get());
+      // Without vsync (e.g. under Xvfb) the loop would spin: no more frames than a fast screen.
+      std::this_thread::sleep_until(frame_start + kMinFrame);
     }
     return captured_ ? 0 : 1;
   }
@@ -363,6 +367,7 @@ class WindowApp {
               drawLobby(session_.lobby(), stage == app::SessionStage::Joining, options_.hotseat)) {
         if (choice->kind == LobbyChoice::Kind::Play) session_.play(choice->match);
         if (choice->kind == LobbyChoice::Kind::Spectate) session_.spectate(choice->match);
+        if (choice->kind == LobbyChoice::Kind::Cancel) session_.leave();
       }
     } else {
       hudActions(drawHud(hudInput()));
