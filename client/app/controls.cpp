@@ -37,6 +37,12 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   followCue();
 }
 
+void Controls::moveCueBall(const Eigen::Vector2d& at) {
+  if (mode_ != ControlMode::Aiming || in_hand_ == rules::BallInHand::None) return;
+  placeCueBall(at);
+  followCue();
+}
+
 void Controls::stopAiming() {
   mode_ = ControlMode::Watching;
   charging_ = false;

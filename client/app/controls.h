@@ -61,6 +61,9 @@ class Controls {
   /// the rules say (a placement starts where the ball lies, moved behind the head string if it
   /// must be). The aim's heading, tip and elevation are kept from the last shot.
   void startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_hand);
+  /// Moves the cue ball in hand to `at` (kept on the slate, behind the head string when it must
+  /// be); nothing without ball in hand.
+  void moveCueBall(const Eigen::Vector2d& at);
   /// Back to watching (the shot was sent, or the turn went away).
   void stopAiming();
   ControlMode mode() const { return mode_; }

@@ -91,14 +91,16 @@ std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
   }
   while (next_ < steps_.size()) {
     const ScriptStep& step = steps_[next_];
+    const bool wait =
+        step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot;
+    // `now` was seen before this frame's steps: a wait after one is judged on the next frame.
+    if (wait && !due.empty()) return due;
     const bool waiting = (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
                          (step.kind == ScriptStep::Kind::WaitShot &&
                           now.shot_number < static_cast<std::uint32_t>(step.count));
     if (waiting) return due;
     ++next_;
-    if (step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot) {
-      continue;
-    }
+    if (wait) continue;
     if (step.kind == ScriptStep::Kind::Frames) {
       frames_left_ = step.count;
       if (frames_left_ > 0) {

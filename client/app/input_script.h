@@ -47,7 +47,8 @@ class ScriptPlayer {
   explicit ScriptPlayer(std::vector<ScriptStep> steps) : steps_(std::move(steps)) {}
 
   /// The steps to apply this frame (key presses and releases, or a Quit), the waits judged on
-  /// `now`.
+  /// `now` (as seen before this frame's steps: a wait that follows a step of this frame is
+  /// judged on the next one).
   std::vector<ScriptStep> frame(const ScriptConditions& now);
   bool done() const { return next_ >= steps_.size() && frames_left_ == 0; }
 

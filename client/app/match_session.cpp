@@ -5,6 +5,13 @@
 #include <variant>
 
 namespace pool::app {
+namespace {
+
+// How long a state counting a new shot waits for that shot's frames before the table is shown
+// at rest (a spectator who came late never gets them), s.
+constexpr double kFrameGrace = 1.0;
+
+}  // namespace
 
 MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)) {
   const int count = options_.hotseat ? 2 : 1;
@@ -56,6 +63,8 @@ void MatchSession::leave() {
   stage_ = SessionStage::Lobby;
   playback_.clear();
   unanswered_.reset();
+  shots_seen_ = 0;
+  frames_due_until_ = 0.0;
 }
 
 void MatchSession::rematch() {
@@ -137,10 +146,18 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
   if (from != 0) return;
   if (auto* frame = std::get_if<client::TableFrame>(&event)) {
     if (frame->match != match_) return;
+    if (frame->shot_number >= shots_seen_) frames_due_until_ = 0.0;
     playback_.push(std::move(*frame), now);
   } else if (auto* view = std::get_if<client::MatchView>(&event)) {
     if (view->match != match_) return;
-    unanswered_.reset();
+    // A state that counts a new shot may overtake the shot's frames: wait a little for them.
+    const auto playing = playback_.shot();
+    if (view->shot_number > shots_seen_ && (!playing || *playing < view->shot_number)) {
+      frames_due_until_ = now + kFrameGrace;
+    }
+    shots_seen_ = std::max(shots_seen_, view->shot_number);
+    // Our shot is answered by the state that counts it (other states may come in between).
+    if (unanswered_ && view->shot_number >= awaited_shots_) unanswered_.reset();
     if (!view->last_verdict.empty()) last_verdict_ = view->last_verdict;
   } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
     onReport(*report);
@@ -148,6 +165,7 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
 }
 
 void MatchSession::poll(double now) {
+  last_poll_ = now;
   for (std::size_t i = 0; i < clients_.size(); ++i) {
     for (auto& event : clients_[i]->poll()) handle(event, i, now);
   }
@@ -164,7 +182,7 @@ const client::MatchView* MatchSession::view() const {
 
 bool MatchSession::inMotion() const {
   const client::MatchView* v = view();
-  return playback_.inMotion(v ? v->shot_number : 0);
+  return playback_.inMotion(v ? v->shot_number : 0) || last_poll_ < frames_due_until_;
 }
 
 std::optional<std::vector<physics::Ball>> MatchSession::balls(double now) {
@@ -194,8 +212,14 @@ int MatchSession::localShooter() const {
 Result<std::uint32_t> MatchSession::shoot(int seat, net::ShotRequest request) {
   for (auto& c : clients_) {
     if (!c->seat() || c->seat()->match != match_ || c->seat()->seat != seat) continue;
+    const client::MatchView* v = view();
+    const bool shoots = net::optionShoots(request.option);
     auto sent = c->shoot(std::move(request));
-    if (sent) unanswered_ = *sent;
+    if (sent) {
+      unanswered_ = *sent;
+      // A stroke is counted by the next state's shot number; a re-rack by any new state.
+      awaited_shots_ = v && shoots ? v->shot_number + 1 : 0;
+    }
     return sent;
   }
   return Result<std::uint32_t>::fail("seat " + std::to_string(seat) + " is not held here");

@@ -96,7 +96,11 @@ class MatchSession {
   std::string match_;
   int answers_pending_ = 0;
   PlaybackClock playback_;
-  std::optional<std::uint32_t> unanswered_;  ///< a shot sent, no new state or rejection yet
+  std::optional<std::uint32_t> unanswered_;  ///< a shot sent, no state or rejection for it yet
+  std::uint32_t awaited_shots_ = 0;          ///< the shot number of the state that answers it
+  std::uint32_t shots_seen_ = 0;             ///< the highest shot number of a state
+  double frames_due_until_ = 0.0;            ///< a new shot's frames are awaited until then, s
+  double last_poll_ = 0.0;
   std::string last_verdict_;
   std::vector<SessionNote> notes_;
 };

@@ -24,6 +24,7 @@
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
 #include "client/app/overlay.h"
+#include "client/app/placement_search.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
 #include "client/render/renderer.h"
@@ -234,8 +235,13 @@ class WindowApp {
     if (controls_.mode() == app::ControlMode::Aiming && shooter == aiming_seat_) return;
     controls_.startTurn(cueBallOf(*v), v->ball_in_hand);
     aiming_seat_ = shooter;
+    // Ball in hand starts where the rules accept it; the first choice that shoots is preselected.
+    if (const auto& at = controls_.aim().cue_ball_at) {
+      const auto legal = app::nearestLegalPlacement(v->ball_in_hand, *at, v->balls, view_.context);
+      if (legal) controls_.moveCueBall(*legal);
+    }
     for (const rules::Choice c : v->options) {
-      if (c == rules::Choice::PlayOn || c == rules::Choice::BallInHand) {
+      if (net::optionShoots(bot::optionOf(c))) {
         controls_.setOption(bot::optionOf(c));
         break;
       }

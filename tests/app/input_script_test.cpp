@@ -68,5 +68,17 @@ TEST(InputScriptTest, WaitsHoldTheScriptUntilTheirConditionHolds) {
   EXPECT_EQ(quit[0].kind, Kind::Quit);
 }
 
+TEST(InputScriptTest, AWaitAfterAStepIsJudgedOnTheNextFrame) {
+  // Releasing Space shoots, which ends the aiming the frame's conditions still show.
+  ScriptPlayer player(*parseScript("up SPACE\nwait aiming\ndown UP\n"));
+  auto first = player.frame({true, 0});
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].kind, Kind::Up);
+  EXPECT_TRUE(player.frame({false, 0}).empty());
+  auto pressed = player.frame({true, 0});
+  ASSERT_EQ(pressed.size(), 1u);
+  EXPECT_EQ(pressed[0].key, Key::Up);
+}
+
 }  // namespace
 }  // namespace pool::app::test

@@ -1,6 +1,6 @@
 // The windowed pool-client under Xvfb against a real server over DDS: scripted keys send the
-// ShotCommand the controls promise and the server accepts it; a spectating window follows a bot
-// match.
+// ShotCommands the controls promise and the server accepts them; a spectating window follows a
+// bot match.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,7 +63,7 @@ class WindowClientTest : public ClientIntegrationTest {
   std::future<int> window_;
 };
 
-TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandTheControlsPromise) {
+TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   open(kWindowShot, "window-shot");
   MatchRecorder recorder(kWindowShot);
   startServer({"--fast"});
@@ -73,17 +73,24 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandTheControlsPromise) {
               "down LEFT\nframes 30\nup LEFT\n"
               "down A\nframes 12\nup A\n"
               "down SPACE\nframes 45\nup SPACE\n"
+              // The next shot, whoever's it is: tip raised for 20 frames, the call left automatic.
+              "wait aiming\n"
+              "down UP ctrl\nframes 20\nup UP\n"
+              "down SPACE\nframes 30\nup SPACE\n"
               "frames 30\nquit\n");
   const app::ControlRates rates;
   const net::CommandLimits limits;
   std::string match;
   const net::ShotRequest* sent = nullptr;
+  const net::ShotRequest* second = nullptr;
   const bool seen = recorder.pump(120s, [&] {
     match = recorder.firstMatch();
     const MatchView* v = recorder.latest(match);
     if (!v || v->breaker < 0) return false;
     sent = recorder.command(match, v->breaker, 1);
-    return sent && !recorder.finals(match).empty();
+    second = recorder.command(match, v->breaker, 2);
+    if (!second) second = recorder.command(match, 1 - v->breaker, 1);
+    return sent && second && recorder.finals(match).size() >= 2;
   });
   const int status = windowExit();
   ASSERT_TRUE(seen) << "no accepted shot from the window\n" << windowErr() << logs();
@@ -100,16 +107,24 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandTheControlsPromise) {
   ASSERT_TRUE(sent->cue_ball_at);   // the breaker has the cue ball in hand behind the head string
   EXPECT_LT(sent->cue_ball_at->x(), app::PlacementArea{}.head_string_x);
 
-  // The server took it: no rejection, and the break's verdict came back.
+  // The next shot: the tip, the heading kept, and a call the rules accept (a ball and a pocket,
+  // or a safety), with the cue ball placed legally if it is in hand.
+  EXPECT_NEAR(second->cue.tip_height, 20.0 / 60.0 * rates.tip, 1e-9);
+  EXPECT_DOUBLE_EQ(second->cue.tip_side, 0.0);
+  EXPECT_DOUBLE_EQ(second->cue.yaw, sent->cue.yaw);
+  EXPECT_NEAR(second->cue.speed, app::cueSpeedOf(30.0 / 60.0 / rates.charge_time, limits), 1e-9);
+  EXPECT_NE(second->safety, second->called_ball.has_value());
+  EXPECT_EQ(second->called_ball.has_value(), !second->called_pocket.empty());
+
+  // The server took both: no rejection, and both verdicts came back.
   EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
-  const auto finals = recorder.finals(match);
-  ASSERT_FALSE(finals.empty());
-  EXPECT_EQ(finals.begin()->second.seq, 1u);
+  EXPECT_GE(recorder.finals(match).size(), 2u);
 
   // The window said what it sent.
   const auto shots = windowLines("shot");
-  ASSERT_EQ(shots.size(), 1u);
+  ASSERT_EQ(shots.size(), 2u);
   EXPECT_NEAR(shots[0]["yaw"].get<double>(), sent->cue.yaw, 1e-12);
+  EXPECT_NEAR(shots[1]["tip_height"].get<double>(), second->cue.tip_height, 1e-12);
 }
 
 TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
