@@ -5,19 +5,10 @@
 
 #include <cmath>
 
-#include "client/bot/ai/table_view.h"
+#include "app_fixture.h"
 
 namespace pool::app::test {
 namespace {
-
-const bot::TableView& nineFoot() {
-  static const bot::TableView view = [] {
-    auto loaded = bot::loadTableView("wpa-9ft");
-    if (!loaded) throw std::runtime_error(loaded.error());
-    return std::move(*loaded);
-  }();
-  return view;
-}
 
 physics::Ball resting(int id, double x, double y) {
   return physics::restingBall(id, Eigen::Vector2d(x, y), nineFoot().radius());

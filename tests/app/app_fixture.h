@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "client/app/controls.h"
+#include "client/bot/ai/table_view.h"
 #include "client/render/renderer.h"
 #include "net/convert.h"
 #include "net/shot_command_check.h"
@@ -14,6 +15,16 @@
 namespace pool::app::test {
 
 inline constexpr double kRadius = 0.028575;
+
+/// The wpa-9ft table as the client loads it, once per test program.
+inline const bot::TableView& nineFoot() {
+  static const bot::TableView view = [] {
+    auto loaded = bot::loadTableView("wpa-9ft");
+    if (!loaded) throw std::runtime_error(loaded.error());
+    return std::move(*loaded);
+  }();
+  return view;
+}
 
 /// Controls of a 9-ft table in a 1280 × 720 viewport.
 inline Controls nineFootControls() {

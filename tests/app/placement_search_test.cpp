@@ -3,19 +3,14 @@
 
 #include <gtest/gtest.h>
 
-#include "client/bot/ai/table_view.h"
+#include "app_fixture.h"
 #include "rules/placement.h"
 
 namespace pool::app::test {
 namespace {
 
 const rules::TableContext& nineFootContext() {
-  static const rules::TableContext context = [] {
-    auto view = bot::loadTableView("wpa-9ft");
-    if (!view) throw std::runtime_error(view.error());
-    return view->context;
-  }();
-  return context;
+  return nineFoot().context;
 }
 
 TEST(PlacementSearchTest, AFreeSpotIsKept) {
@@ -36,7 +31,7 @@ TEST(PlacementSearchTest, ASpotOnABallMovesJustClearOfIt) {
   EXPECT_TRUE(rules::checkCueBallPlacement(rules::BallInHand::Anywhere, *at, balls, table).ok());
   const double distance = (*at - Eigen::Vector2d(0.5, 0.2)).norm();
   EXPECT_GE(distance, 2 * r - 1e-6);  // touching is allowed (the rules give 1 µm)
-  EXPECT_LT(distance, 2 * r + r);  // the grid's half-radius steps: within a radius of touching
+  EXPECT_LT(distance, 2 * r + r);     // the grid's half-radius steps: within a radius of touching
 }
 
 TEST(PlacementSearchTest, BehindTheHeadStringItStaysBehindIt) {
