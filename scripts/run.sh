@@ -35,7 +35,8 @@ trap cleanup EXIT INT TERM
 pids+=($!)
 
 bot() {  # name seed
-  "$bin/pool-bot" --domain "$domain" --name "$1" --skill 0.8 --seed "$2" --think 0.8 > /dev/null &
+  "$bin/pool-bot" --domain "$domain" --name "$1" --skill 0.8 --seed "$2" --think 0.8 \
+    --log-level warn > /dev/null &
   pids+=($!)
 }
 
