@@ -10,6 +10,8 @@ namespace {
 // How long a state counting a new shot waits for that shot's frames before the table is shown
 // at rest (a spectator who came late never gets them), s.
 constexpr double kFrameGrace = 1.0;
+// How long a join request waits for its answer before it is sent again, s.
+constexpr double kJoinRetry = 2.0;
 
 }  // namespace
 
@@ -21,6 +23,7 @@ MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)
     clients_.push_back(
         std::make_unique<client::GameClient>(client::ClientOptions{options_.domain, "", name}));
   }
+  awaiting_.assign(clients_.size(), false);
 }
 
 MatchSession::~MatchSession() = default;
@@ -59,7 +62,7 @@ void MatchSession::leave() {
   }
   match_.clear();
   want_ = Want::None;
-  answers_pending_ = 0;
+  awaiting_.assign(clients_.size(), false);
   stage_ = SessionStage::Lobby;
   playback_.clear();
   unanswered_.reset();
@@ -73,35 +76,52 @@ void MatchSession::rematch() {
   }
 }
 
-void MatchSession::startPending() {
-  // Requests go out once the lobby names a match to send them to.
-  if (want_ == Want::None || answers_pending_ > 0 || !match_.empty()) return;
-  std::string target = wanted_match_;
-  if (target.empty()) {
-    const auto found = want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
-    if (!found) return;
-    target = *found;
-  }
-  if (want_ == Want::Play) {
-    for (auto& c : clients_) c->requestSeat(target);
-    answers_pending_ = static_cast<int>(clients_.size());
-  } else {
-    clients_.front()->requestSpectate(target);
-    answers_pending_ = 1;
-  }
-  wanted_match_ = target;
+bool MatchSession::joining() const {
+  return std::find(awaiting_.begin(), awaiting_.end(), true) != awaiting_.end();
 }
 
-void MatchSession::onAnswer(const client::JoinAnswer& answer) {
+void MatchSession::sendJoin(std::size_t i) {
+  if (want_ == Want::Play) {
+    clients_[i]->requestSeat(wanted_match_);
+  } else {
+    clients_[i]->requestSpectate(wanted_match_);
+  }
+  awaiting_[i] = true;
+  join_sent_at_ = last_poll_;
+}
+
+void MatchSession::startPending() {
+  // Requests go out once the lobby names a match to send them to.
+  if (want_ == Want::None || joining() || !match_.empty()) return;
+  if (wanted_match_.empty()) {
+    const auto found = want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
+    if (!found) return;
+    wanted_match_ = *found;
+  }
+  const std::size_t count = want_ == Want::Play ? clients_.size() : 1;
+  for (std::size_t i = 0; i < count; ++i) sendJoin(i);
+}
+
+void MatchSession::retryJoins() {
+  // A request written before the server's reader matched ours is lost: ask again.
+  if (want_ == Want::None || last_poll_ - join_sent_at_ < kJoinRetry) return;
+  for (std::size_t i = 0; i < clients_.size(); ++i) {
+    if (awaiting_[i]) sendJoin(i);
+  }
+}
+
+void MatchSession::onAnswer(const client::JoinAnswer& answer, std::size_t from) {
   if (answer.action == client::JoinAction::Leave || answer.action == client::JoinAction::Rematch) {
     return;
   }
-  answers_pending_ = std::max(0, answers_pending_ - 1);
+  // A repeated request's second answer changes nothing.
+  if (!awaiting_[from]) return;
+  awaiting_[from] = false;
   if (!answer.accepted()) {
     note("join " + answer.match + ": " + client::toString(answer.outcome) +
              (answer.reason.empty() ? "" : " (" + answer.reason + ")"),
          true);
-    if (answers_pending_ == 0 && match_.empty()) {
+    if (!joining() && match_.empty()) {
       stage_ = SessionStage::Lobby;
       want_ = Want::None;
     }
@@ -141,7 +161,7 @@ void MatchSession::onReport(const client::ShotReport& report) {
 }
 
 void MatchSession::handle(client::ClientEvent& event, std::size_t from, double now) {
-  if (auto* answer = std::get_if<client::JoinAnswer>(&event)) return onAnswer(*answer);
+  if (auto* answer = std::get_if<client::JoinAnswer>(&event)) return onAnswer(*answer, from);
   // Everything else reaches every client alike: the first one's copy is used.
   if (from != 0) return;
   if (auto* frame = std::get_if<client::TableFrame>(&event)) {
@@ -170,6 +190,7 @@ void MatchSession::poll(double now) {
     for (auto& event : clients_[i]->poll()) handle(event, i, now);
   }
   startPending();
+  retryJoins();
 }
 
 void MatchSession::wait(std::chrono::nanoseconds timeout) const {

@@ -83,7 +83,10 @@ class MatchSession {
 
  private:
   void handle(client::ClientEvent& event, std::size_t from, double now);
-  void onAnswer(const client::JoinAnswer& answer);
+  void onAnswer(const client::JoinAnswer& answer, std::size_t from);
+  bool joining() const;
+  void sendJoin(std::size_t client);
+  void retryJoins();
   void onReport(const client::ShotReport& report);
   void startPending();
   void note(std::string text, bool problem = false);
@@ -94,7 +97,8 @@ class MatchSession {
   enum class Want : std::uint8_t { None, Play, Spectate } want_ = Want::None;
   std::string wanted_match_;
   std::string match_;
-  int answers_pending_ = 0;
+  std::vector<bool> awaiting_;  ///< per client: a join request not answered yet
+  double join_sent_at_ = 0.0;
   PlaybackClock playback_;
   std::optional<std::uint32_t> unanswered_;  ///< a shot sent, no state or rejection for it yet
   std::uint32_t awaited_shots_ = 0;          ///< the shot number of the state that answers it

@@ -136,8 +136,9 @@ TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
   constexpr int kShots = 3;
   startWindow({"--spectate", "any"}, "wait shot " + std::to_string(kShots) + "\nquit\n");
   const int status = windowExit();
-  ASSERT_EQ(status, 0) << windowErr() << logs();
   recorder.pump(10s, [] { return false; });
+  ASSERT_EQ(status, 0) << (stalledOnLayout(recorder) ? "the bots' match stalled on a layout\n" : "")
+                       << windowErr() << logs();
 
   const auto notes = windowLines("note");
   ASSERT_FALSE(notes.empty());
