@@ -1,5 +1,5 @@
-// pool-client: the player's client. For now the headless spectator (--spectate MATCH
-// --no-window --json) and offscreen screenshots (--screenshot FILE); the window comes later.
+// pool-client: the player's client: the window (lobby, play, watch), the headless spectator
+// (--spectate MATCH --no-window --json) and offscreen screenshots (--screenshot FILE).
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <chrono>
@@ -10,6 +10,7 @@
 #include "client/net/game_client.h"
 #include "client/render/screenshot.h"
 #include "client/spectate/spectator.h"
+#include "client/ui/window_app.h"
 #include "net/dds_error.h"
 
 namespace {
@@ -18,7 +19,7 @@ std::atomic<bool> g_stop{false};
 
 void onSignal(int) { g_stop = true; }
 
-/// How the client runs. Only Spectate exists; a windowed mode comes with the renderer.
+/// How the client runs: the headless spectator, or the window.
 enum class Mode { Spectate, Window };
 
 struct Flags {
@@ -29,6 +30,7 @@ struct Flags {
   bool follow = false;   // keep watching after the match is over
   double timeout = 0.0;  // s; 0: none
   pool::render::ScreenshotOptions screenshot;
+  pool::ui::WindowOptions window;
 };
 
 int runSpectator(const Flags& flags) {
@@ -63,6 +65,15 @@ int main(int argc, char** argv) {
   app.add_flag("--json", flags.json, "print JSON lines: states, shot results, frame counts");
   app.add_flag("--follow", flags.follow, "keep watching after the match is over");
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
+  app.add_option("--name", flags.window.name, "the player's name (window)");
+  app.add_flag("--hotseat", flags.window.hotseat, "two players on this screen (window)");
+  app.add_flag("--play", flags.window.play, "take a seat at once, skipping the lobby (window)");
+  app.add_option("--match", flags.window.match, "with --play: the match to join");
+  app.add_option("--script", flags.window.script, "play timed key presses from FILE (window)");
+  app.add_option("--capture", flags.window.capture, "write the window's last frame to this PNG");
+  app.add_option("--table", flags.window.table, "table spec the window draws");
+  app.add_option("--width", flags.window.width, "window width")->check(CLI::Range(320, 8192));
+  app.add_option("--height", flags.window.height, "window height")->check(CLI::Range(240, 8192));
   app.add_option("--screenshot", flags.screenshot.path,
                  "render offscreen and write the last frame to this PNG");
   app.add_option("--frames", flags.screenshot.frames, "frames to render with --screenshot")
@@ -74,12 +85,23 @@ int main(int argc, char** argv) {
   if (!flags.screenshot.path.empty()) return pool::render::runScreenshot(flags.screenshot);
 
   const Mode mode = flags.spectate.empty() || !flags.no_window ? Mode::Window : Mode::Spectate;
-  if (mode == Mode::Window || !flags.json) {
-    std::cerr << "only --spectate MATCH --no-window --json is available so far\n";
-    return 2;
-  }
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
+  if (mode == Mode::Window) {
+    if (flags.no_window) {
+      std::cerr << "--no-window needs --spectate MATCH\n";
+      return 2;
+    }
+    flags.window.domain = flags.domain;
+    flags.window.spectate = flags.spectate;
+    flags.window.json = flags.json;
+    flags.window.timeout = flags.timeout;
+    return pool::ui::runWindow(flags.window, g_stop);
+  }
+  if (!flags.json) {
+    std::cerr << "--spectate MATCH --no-window needs --json\n";
+    return 2;
+  }
   try {
     return runSpectator(flags);
   } catch (const pool::net::DdsError& e) {

@@ -1,9 +1,25 @@
 #!/usr/bin/env bash
-# Builds everything and runs the main job: a local pool-server with a match between two bots,
-# followed live by a spectator in this terminal (the graphical client comes with its issue).
+# Builds everything and runs the main job on a local pool-server. With a display: the game window,
+# you against a bot (--hotseat: two players on this screen; --watch: watch two bots). Without a
+# display (or with --headless): two bots play and a spectator prints the match in this terminal.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${POOL_BUILD_DIR:-$root/build}
+
+mode=play
+for arg in "$@"; do
+  case $arg in
+    --hotseat) mode=hotseat ;;
+    --watch) mode=watch ;;
+    --headless) mode=headless ;;
+    *) echo "usage: $0 [--hotseat | --watch | --headless]" >&2; exit 2 ;;
+  esac
+done
+if [[ $mode != headless && -z ${DISPLAY:-} && -z ${WAYLAND_DISPLAY:-} ]]; then
+  echo "no display: running headless (two bots, followed in this terminal)" >&2
+  mode=headless
+fi
+
 "$root/scripts/build.sh"
 bin=$build/bin
 
@@ -20,12 +36,37 @@ trap cleanup EXIT INT TERM
 
 "$bin/pool-server" --domain "$domain" --tables 1 --log-level warn --db "$data/pool.db" &
 pids+=($!)
-"$bin/pool-bot" --domain "$domain" --name Ada --skill 0.8 --seed 1 > /dev/null &
-pids+=($!)
-"$bin/pool-bot" --domain "$domain" --name Bert --skill 0.8 --seed 2 &
-bot=$!
-pids+=($bot)
-echo "A match between two bots on a local pool-server; watching it (Ctrl+C to stop):" >&2
-"$bin/pool-client" --domain "$domain" --spectate any --no-window --json &
-pids+=($!)
-wait "$bot"
+
+bot() {  # name seed
+  "$bin/pool-bot" --domain "$domain" --name "$1" --skill 0.8 --seed "$2" --think 0.8 \
+    --log-level warn > /dev/null &
+  pids+=($!)
+}
+
+case $mode in
+  play)
+    bot Bert 2
+    echo "You against the bot Bert: aim with the arrows, hold Space to shoot (keys: README.md)" >&2
+    "$bin/pool-client" --domain "$domain" --play --name "${USER:-Player}"
+    ;;
+  hotseat)
+    echo "Two players on this screen: the HUD says whose turn it is (keys: README.md)" >&2
+    "$bin/pool-client" --domain "$domain" --play --hotseat
+    ;;
+  watch)
+    bot Ada 1
+    bot Bert 2
+    "$bin/pool-client" --domain "$domain" --spectate any
+    ;;
+  headless)
+    "$bin/pool-bot" --domain "$domain" --name Ada --skill 0.8 --seed 1 > /dev/null &
+    pids+=($!)
+    "$bin/pool-bot" --domain "$domain" --name Bert --skill 0.8 --seed 2 &
+    last_bot=$!
+    pids+=($last_bot)
+    echo "A match between two bots on a local pool-server; watching it (Ctrl+C to stop):" >&2
+    "$bin/pool-client" --domain "$domain" --spectate any --no-window --json &
+    pids+=($!)
+    wait "$last_bot"
+    ;;
+esac

@@ -16,6 +16,8 @@ std::vector<physics::Ball> blend(const TableFrame& a, const TableFrame& b, doubl
     if (it == b.balls.end()) continue;
     ball.pos = (1 - u) * ball.pos + u * it->pos;
     ball.vel = (1 - u) * ball.vel + u * it->vel;
+    // A rolling ball must turn smoothly too, not in steps at each snapshot.
+    ball.orient = ball.orient.slerp(u, it->orient);
   }
   return out;
 }

@@ -22,6 +22,8 @@ enum Domain : std::uint32_t {
   kForfeit = 203,
   kCrash = 120,
   kReplay = 121,
+  kWindowShot = 210,
+  kWindowSpectate = 211,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

@@ -1,0 +1,36 @@
+// The aim line: where the cue ball, sent straight along the cue, first touches a ball or a
+// cushion, where that ball heads, and the call that follows from it.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/app/aim.h"
+#include "client/bot/ai/table_view.h"
+#include "physics/ball.h"
+#include "rules/game_state.h"
+
+namespace pool::app {
+
+/// The straight-line prediction of one aim (table plane, m).
+struct AimPrediction {
+  Eigen::Vector2d from = Eigen::Vector2d::Zero();     ///< cue ball centre
+  Eigen::Vector2d contact = Eigen::Vector2d::Zero();  ///< cue ball centre at its first contact
+  std::optional<int> ball;                            ///< the first ball touched; empty: a cushion
+  Eigen::Vector2d object_dir = Eigen::Vector2d::Zero();  ///< unit: that ball's heading
+  int pocket = -1;  ///< index into TableView::pockets the ball heads closest to; -1: none
+};
+
+/// Where the cue ball at `cue` (m) heading along `yaw` (rad) first touches another ball on the
+/// table in `balls` (centres 2R apart) or a cushion (its centre R inside the playing surface).
+AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
+                         const std::vector<physics::Ball>& balls, const bot::TableView& view);
+
+/// The call for `aim` in `state`: none on the break; the first ball touched and the pocket it
+/// heads for when that ball is the shooter's to call; otherwise a safety.
+ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
+                  const std::vector<physics::Ball>& balls, const bot::TableView& view);
+
+}  // namespace pool::app

@@ -1,0 +1,101 @@
+// Orbit cameras and pixel rays.
+#include "client/app/camera_rig.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pool::app {
+namespace {
+
+constexpr double kAimElevation = 0.22;  // rad: a player's eye a little above the cue
+constexpr double kAimDistance = 0.75;   // m behind the cue ball
+constexpr double kMargin = 0.25;        // m of floor shown beyond the table's ends
+
+double radians(double degrees) {
+  return degrees * std::numbers::pi / 180.0;
+}
+
+}  // namespace
+
+ViewPoint Orbit::view(double fov_y_deg) const {
+  const Eigen::Vector3d dir(std::cos(elevation) * std::cos(azimuth),
+                            std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+  return {target + distance * dir, target, fov_y_deg};
+}
+
+CameraRig::CameraRig(double table_length, double table_width, double aspect)
+    : table_length_(table_length), table_width_(table_width), aspect_(aspect) {
+  resetOverview();
+  aim_.elevation = kAimElevation;
+  aim_.distance = kAimDistance;
+}
+
+void CameraRig::resetOverview() {
+  // From the long side (-y), high enough that the whole length fits the horizontal field of view
+  // and the whole width the vertical one.
+  watch_.target = Eigen::Vector3d(0.0, 0.0, -0.05);
+  watch_.azimuth = -std::numbers::pi / 2;
+  watch_.elevation = std::atan2(1.0, 0.55);
+  const double half_fov_y = radians(fov_y_deg_) / 2;
+  const double half_fov_x = std::atan(std::tan(half_fov_y) * aspect_);
+  const double along = (table_length_ / 2 + kMargin) / std::tan(half_fov_x);
+  const double across = (table_width_ / 2 + kMargin) / std::tan(half_fov_y);
+  watch_.distance =
+      std::clamp(std::max(along, across) * 1.15, limits_.min_distance, limits_.max_distance);
+}
+
+void CameraRig::setAspect(double aspect) {
+  if (!(aspect > 0) || aspect == aspect_) return;
+  aspect_ = aspect;
+  resetOverview();
+}
+
+void CameraRig::followCue(const Eigen::Vector3d& cue_ball, double yaw) {
+  aim_.target = cue_ball;
+  aim_.azimuth = yaw + std::numbers::pi + aim_turn_;
+}
+
+void CameraRig::orbit(double d_azimuth) {
+  if (aiming_) {
+    aim_turn_ = std::remainder(aim_turn_ + d_azimuth, 2 * std::numbers::pi);
+    aim_.azimuth += d_azimuth;
+    return;
+  }
+  watch_.azimuth = std::remainder(watch_.azimuth + d_azimuth, 2 * std::numbers::pi);
+}
+
+void CameraRig::raise(double d_elevation) {
+  Orbit& o = active();
+  o.elevation = std::clamp(o.elevation + d_elevation, limits_.min_elevation, limits_.max_elevation);
+}
+
+void CameraRig::zoom(double factor) {
+  if (!(factor > 0)) return;
+  Orbit& o = active();
+  o.distance = std::clamp(o.distance * factor, limits_.min_distance, limits_.max_distance);
+}
+
+ViewPoint CameraRig::view() const {
+  return (aiming_ ? aim_ : watch_).view(fov_y_deg_);
+}
+
+std::optional<Eigen::Vector2d> pointUnderPixel(const ViewPoint& view, int width, int height,
+                                               double px, double py, double plane_z) {
+  if (width <= 0 || height <= 0) return std::nullopt;
+  const Eigen::Vector3d forward = (view.target - view.eye).normalized();
+  const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d up = right.cross(forward);
+  const double tan_y = std::tan(radians(view.fov_y_deg) / 2);
+  const double aspect = static_cast<double>(width) / height;
+  const double ndc_x = 2.0 * px / width - 1.0;
+  const double ndc_y = 1.0 - 2.0 * py / height;
+  const Eigen::Vector3d dir = forward + ndc_x * tan_y * aspect * right + ndc_y * tan_y * up;
+  if (std::abs(dir.z()) < 1e-12) return std::nullopt;
+  const double t = (plane_z - view.eye.z()) / dir.z();
+  if (t <= 0) return std::nullopt;
+  const Eigen::Vector3d hit = view.eye + t * dir;
+  return Eigen::Vector2d(hit.x(), hit.y());
+}
+
+}  // namespace pool::app

@@ -1,0 +1,82 @@
+// The camera as the player steers it: an orbit about the table (watching) or about the cue ball,
+// behind the cue (aiming); and the ray under a pixel, for dragging the cue ball.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
+
+namespace pool::app {
+
+/// Where the camera is and looks (table frame, m; +z up) and its vertical field of view.
+struct ViewPoint {
+  Eigen::Vector3d eye = Eigen::Vector3d::Zero();
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();
+  double fov_y_deg = 40.0;
+};
+
+/// A camera on a sphere about a target.
+struct Orbit {
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();
+  double azimuth = 0.0;    ///< rad: heading from the target to the eye in the table plane (0 = +x)
+  double elevation = 0.0;  ///< rad above the table plane
+  double distance = 1.0;   ///< m from the target
+
+  ViewPoint view(double fov_y_deg) const;
+};
+
+/// Limits and steps of the camera controls.
+struct CameraLimits {
+  double min_elevation = 0.03;  ///< rad
+  double max_elevation = 1.55;  ///< rad
+  double min_distance = 0.25;   ///< m
+  double max_distance = 9.0;    ///< m
+};
+
+/// The two cameras of the client and which one is in use.
+class CameraRig {
+ public:
+  /// The watching camera frames a table of `table_length` × `table_width` (m) in a viewport of
+  /// aspect `aspect` (w / h).
+  CameraRig(double table_length, double table_width, double aspect);
+
+  /// Aiming: the view sits behind the cue ball at `cue_ball`, looking along `yaw` (rad).
+  void setAiming(bool aiming) { aiming_ = aiming; }
+  bool aiming() const { return aiming_; }
+  void followCue(const Eigen::Vector3d& cue_ball, double yaw);
+
+  /// Turns the active camera about its target (rad; + = counter-clockwise seen from above).
+  void orbit(double d_azimuth);
+  /// Raises (+) or lowers the active camera (rad of elevation).
+  void raise(double d_elevation);
+  /// Multiplies the active camera's distance by `factor` (< 1 zooms in).
+  void zoom(double factor);
+  /// The watching camera back to the whole table.
+  void resetOverview();
+  void setAspect(double aspect);
+
+  ViewPoint view() const;
+  const Orbit& watching() const { return watch_; }
+  const Orbit& aimingOrbit() const { return aim_; }
+  double fovY() const { return fov_y_deg_; }
+
+ private:
+  Orbit& active() { return aiming_ ? aim_ : watch_; }
+
+  double table_length_;
+  double table_width_;
+  double aspect_;
+  double fov_y_deg_ = 40.0;
+  bool aiming_ = false;
+  CameraLimits limits_;
+  Orbit watch_;
+  Orbit aim_;
+  double aim_turn_ = 0.0;  ///< the aiming camera's azimuth off the line behind the cue, rad
+};
+
+/// The point of the horizontal plane z = `plane_z` under pixel (`px`, `py`) (from the top-left
+/// corner) of a `width` × `height` viewport seen from `view`; empty when the ray misses it.
+std::optional<Eigen::Vector2d> pointUnderPixel(const ViewPoint& view, int width, int height,
+                                               double px, double py, double plane_z);
+
+}  // namespace pool::app

@@ -1,0 +1,246 @@
+// Key and mouse handling of the controls model.
+#include "client/app/controls.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "rules/table_context.h"
+
+namespace pool::app {
+namespace {
+
+// How far behind the head string a cue ball in hand is put when it must be behind it, m.
+constexpr double kHeadStringSetback = 0.01;
+
+int axis(bool minus, bool plus) {
+  return (plus ? 1 : 0) - (minus ? 1 : 0);
+}
+
+}  // namespace
+
+Controls::Controls(net::CommandLimits limits, PlacementArea area, CameraRig camera,
+                   ControlRates rates)
+    : limits_(limits), area_(area), camera_(std::move(camera)), rates_(rates) {}
+
+void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_hand) {
+  mode_ = ControlMode::Aiming;
+  cue_ball_ = cue_ball;
+  in_hand_ = in_hand;
+  charging_ = false;
+  aim_.power = 0.0;
+  aim_.call = ShotCall{};
+  aim_.option = net::ShotOption::None;
+  aim_.cue_ball_at.reset();
+  if (in_hand != rules::BallInHand::None) placeCueBall(cue_ball.head<2>());
+  camera_.setAiming(true);
+  followCue();
+}
+
+void Controls::moveCueBall(const Eigen::Vector2d& at) {
+  if (mode_ != ControlMode::Aiming || in_hand_ == rules::BallInHand::None) return;
+  placeCueBall(at);
+  followCue();
+}
+
+void Controls::stopAiming() {
+  mode_ = ControlMode::Watching;
+  charging_ = false;
+  aim_.power = 0.0;
+  if (drag_ == Drag::Cue || drag_ == Drag::CueBall) drag_ = Drag::None;
+  camera_.setAiming(false);
+}
+
+Eigen::Vector3d Controls::cueBall() const {
+  if (!aim_.cue_ball_at) return cue_ball_;
+  return {aim_.cue_ball_at->x(), aim_.cue_ball_at->y(), area_.ball_radius};
+}
+
+void Controls::followCue() {
+  camera_.followCue(cueBall(), aim_.yaw);
+}
+
+void Controls::placeCueBall(const Eigen::Vector2d& at) {
+  const double r = area_.ball_radius;
+  double max_x = area_.half_length - r;
+  if (in_hand_ == rules::BallInHand::BehindHeadString) {
+    max_x = std::min(max_x, area_.head_string_x - kHeadStringSetback);
+  }
+  aim_.cue_ball_at =
+      Eigen::Vector2d(std::clamp(at.x(), -(area_.half_length - r), max_x),
+                      std::clamp(at.y(), -(area_.half_width - r), area_.half_width - r));
+}
+
+void Controls::keyDown(Key key, Mods mods) {
+  held_[key] = mods;
+  const bool aiming = mode_ == ControlMode::Aiming;
+  switch (key) {
+    case Key::Space:
+      if (aiming && !charging_) {
+        charging_ = true;
+        aim_.power = 0.0;
+      }
+      break;
+    case Key::Escape:
+      charging_ = false;
+      aim_.power = 0.0;
+      break;
+    case Key::C:
+      if (aiming) cyclePocket();
+      break;
+    case Key::K:
+      if (aiming) {
+        aim_.call.safety = !aim_.call.safety;
+        aim_.call.by_player = true;
+      }
+      break;
+    default:
+      toggle(key);
+  }
+}
+
+void Controls::keyUp(Key key) {
+  held_.erase(key);
+  if (key != Key::Space || !charging_) return;
+  charging_ = false;
+  if (mode_ != ControlMode::Aiming) return;
+  shot_ = requestOf(aim_, limits_);
+  stopAiming();
+}
+
+void Controls::toggle(Key key) {
+  switch (key) {
+    case Key::G:
+      toggles_.aim_line = !toggles_.aim_line;
+      break;
+    case Key::V:
+      toggles_.vectors = !toggles_.vectors;
+      break;
+    case Key::P:
+      toggles_.wireframe = !toggles_.wireframe;
+      break;
+    case Key::T:
+      toggles_.textures = !toggles_.textures;
+      break;
+    case Key::L:
+      toggles_.lighting = !toggles_.lighting;
+      break;
+    default:
+      break;
+  }
+}
+
+void Controls::cyclePocket() {
+  const auto& names = rules::pocketNames();
+  const auto it = std::find(names.begin(), names.end(), aim_.call.pocket);
+  const std::size_t next = it == names.end() ? 0 : (it - names.begin() + 1) % names.size();
+  aim_.call.pocket = std::string(names[next]);
+  aim_.call.safety = false;
+  aim_.call.by_player = true;
+}
+
+void Controls::suggestCall(const ShotCall& call) {
+  if (aim_.call.by_player) return;
+  aim_.call = call;
+  aim_.call.by_player = false;
+}
+
+void Controls::advance(double dt) {
+  if (!(dt > 0)) return;
+  const int side = axis(held(Key::Left), held(Key::Right));
+  const int updown = axis(held(Key::Down), held(Key::Up));
+  Mods mods;
+  for (Key k : {Key::Left, Key::Right, Key::Up, Key::Down}) {
+    if (const auto it = held_.find(k); it != held_.end()) mods = it->second;
+  }
+  if (mode_ == ControlMode::Aiming) {
+    advanceAim(dt, side, updown, mods);
+  } else {
+    advanceCamera(dt, side, updown);
+  }
+  const int zoom = axis(held(Key::S), held(Key::X));
+  if (zoom != 0) camera_.zoom(std::pow(rates_.zoom, zoom * dt));
+  if (mode_ == ControlMode::Aiming) followCue();
+}
+
+void Controls::advanceAim(double dt, int side, int updown, Mods mods) {
+  if (mods.ctrl) {
+    aim_.tip_side += side * rates_.tip * dt;
+    aim_.tip_height += updown * rates_.tip * dt;
+  } else if (mods.shift) {
+    advanceCamera(dt, side, updown);
+  } else {
+    // Right turns the cue clockwise seen from above, as it looks from behind the cue.
+    aim_.yaw -= side * rates_.yaw * dt;
+    camera_.raise(updown * rates_.raise * dt);
+  }
+  aim_.elevation += axis(held(Key::Z), held(Key::A)) * rates_.elevation * dt;
+  if (charging_) aim_.power += dt / rates_.charge_time;
+  clampAim(aim_, limits_);
+}
+
+void Controls::advanceCamera(double dt, int side, int updown) {
+  camera_.orbit(side * rates_.orbit * dt);
+  camera_.raise(updown * rates_.raise * dt);
+}
+
+void Controls::mouseButton(MouseButton button, bool down, double x, double y) {
+  mouse_ = {x, y};
+  if (!down) {
+    drag_ = Drag::None;
+    return;
+  }
+  if (button == MouseButton::Right || mode_ != ControlMode::Aiming) {
+    drag_ = Drag::View;
+    return;
+  }
+  // A press on the cue ball in hand picks it up; anywhere else it turns the cue.
+  drag_ = Drag::Cue;
+  if (in_hand_ == rules::BallInHand::None) return;
+  const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
+  if (hit && (*hit - cueBall().head<2>()).norm() < 2.5 * area_.ball_radius) drag_ = Drag::CueBall;
+}
+
+void Controls::mouseMove(double x, double y) {
+  const Eigen::Vector2d delta = Eigen::Vector2d(x, y) - mouse_;
+  mouse_ = {x, y};
+  switch (drag_) {
+    case Drag::None:
+      return;
+    case Drag::View:
+      camera_.orbit(-delta.x() * rates_.mouse_orbit);
+      camera_.raise(delta.y() * rates_.mouse_orbit);
+      break;
+    case Drag::Cue:
+      aim_.yaw -= delta.x() * rates_.mouse_yaw;
+      clampAim(aim_, limits_);
+      break;
+    case Drag::CueBall:
+      // The camera follows the ball: take the ray from the view the press was seen in.
+      if (const auto hit =
+              pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius)) {
+        placeCueBall(*hit);
+      }
+      break;
+  }
+  if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
+}
+
+void Controls::scroll(double steps) {
+  camera_.zoom(std::pow(rates_.scroll_zoom, steps));
+}
+
+void Controls::setViewport(int width, int height) {
+  if (width <= 0 || height <= 0) return;
+  width_ = width;
+  height_ = height;
+  camera_.setAspect(static_cast<double>(width) / height);
+}
+
+std::optional<net::ShotRequest> Controls::takeShot() {
+  auto shot = std::move(shot_);
+  shot_.reset();
+  return shot;
+}
+
+}  // namespace pool::app

@@ -1,0 +1,128 @@
+// The controls model: key and mouse events in; the camera, the aim and, on releasing Space, a shot
+// command out. Pure (no window, no clock): time passes only through advance(dt).
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <optional>
+
+#include "client/app/aim.h"
+#include "client/app/camera_rig.h"
+#include "client/app/input.h"
+#include "net/shot_command_check.h"
+#include "net/shot_request.h"
+#include "rules/game_state.h"
+
+namespace pool::app {
+
+/// How fast held keys and the mouse move things.
+struct ControlRates {
+  double yaw = 0.5;            ///< rad/s, left/right while aiming
+  double tip = 0.5;            ///< fractions of R per s, Ctrl+arrows
+  double elevation = 0.5;      ///< rad/s, A/Z
+  double charge_time = 1.5;    ///< s of Space from empty to full power
+  double orbit = 1.2;          ///< rad/s, arrows (watching) or Shift+arrows (aiming)
+  double raise = 0.8;          ///< rad/s
+  double zoom = 2.0;           ///< distance factor per s, S (÷) and X (×)
+  double mouse_yaw = 0.003;    ///< rad per pixel, dragging while aiming
+  double mouse_orbit = 0.006;  ///< rad per pixel, dragging the view
+  double scroll_zoom = 0.9;    ///< distance factor per scroll step
+};
+
+/// Where the cue ball may be put with ball in hand (table frame, m).
+struct PlacementArea {
+  double half_length = 1.27;      ///< playing surface half extent in x
+  double half_width = 0.635;      ///< playing surface half extent in y
+  double head_string_x = -0.635;  ///< behind the head string: x < this
+  double ball_radius = 0.028575;
+};
+
+/// Drawing and overlay switches the keys toggle.
+struct Toggles {
+  bool aim_line = true;
+  bool vectors = false;
+  bool wireframe = false;
+  bool textures = true;
+  bool lighting = true;
+};
+
+/// What the player may do now.
+enum class ControlMode : std::uint8_t {
+  Watching,  ///< balls moving, the other's turn, spectating
+  Aiming,    ///< our turn, balls at rest
+};
+
+class Controls {
+ public:
+  Controls(net::CommandLimits limits, PlacementArea area, CameraRig camera,
+           ControlRates rates = {});
+
+  /// Our turn starts: aiming from the cue ball at `cue_ball` (m), with the cue ball in hand as
+  /// the rules say (a placement starts where the ball lies, moved behind the head string if it
+  /// must be). The aim's heading, tip and elevation are kept from the last shot.
+  void startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_hand);
+  /// Moves the cue ball in hand to `at` (kept on the slate, behind the head string when it must
+  /// be); nothing without ball in hand.
+  void moveCueBall(const Eigen::Vector2d& at);
+  /// Back to watching (the shot was sent, or the turn went away).
+  void stopAiming();
+  ControlMode mode() const { return mode_; }
+
+  void keyDown(Key key, Mods mods);
+  void keyUp(Key key);
+  void mouseButton(MouseButton button, bool down, double x, double y);
+  void mouseMove(double x, double y);
+  void scroll(double steps);
+  void setViewport(int width, int height);
+
+  /// Applies the held keys for `dt` seconds (cue, tip, elevation, power, camera).
+  void advance(double dt);
+
+  /// The command of the shot released with Space since the last call, if any.
+  std::optional<net::ShotRequest> takeShot();
+
+  /// The automatic call for the current aim; ignored once the player chose one.
+  void suggestCall(const ShotCall& call);
+  /// The answer to the rules' pending choice that goes with the next shot.
+  void setOption(net::ShotOption option) { aim_.option = option; }
+
+  const AimState& aim() const { return aim_; }
+  bool charging() const { return charging_; }
+  bool draggingCueBall() const { return drag_ == Drag::CueBall; }
+  /// The cue ball's centre while aiming (its placement when in hand), m.
+  Eigen::Vector3d cueBall() const;
+  rules::BallInHand ballInHand() const { return in_hand_; }
+  const CameraRig& camera() const { return camera_; }
+  const Toggles& toggles() const { return toggles_; }
+  const net::CommandLimits& limits() const { return limits_; }
+
+ private:
+  enum class Drag : std::uint8_t { None, Cue, View, CueBall };
+
+  void advanceAim(double dt, int side, int updown, Mods mods);
+  void advanceCamera(double dt, int side, int updown);
+  void toggle(Key key);
+  void cyclePocket();
+  void placeCueBall(const Eigen::Vector2d& at);
+  bool held(Key key) const { return held_.count(key) != 0; }
+  void followCue();
+
+  net::CommandLimits limits_;
+  PlacementArea area_;
+  CameraRig camera_;
+  ControlRates rates_;
+  ControlMode mode_ = ControlMode::Watching;
+  AimState aim_;
+  Eigen::Vector3d cue_ball_ = Eigen::Vector3d::Zero();
+  rules::BallInHand in_hand_ = rules::BallInHand::None;
+  bool charging_ = false;
+  std::optional<net::ShotRequest> shot_;
+  std::map<Key, Mods> held_;  ///< keys held, with the modifiers they were pressed with
+  Toggles toggles_;
+  Drag drag_ = Drag::None;
+  Eigen::Vector2d mouse_ = Eigen::Vector2d::Zero();
+  int width_ = 1280;
+  int height_ = 720;
+};
+
+}  // namespace pool::app

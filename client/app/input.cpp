@@ -1,0 +1,41 @@
+// Key names for input scripts.
+#include "client/app/input.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string>
+#include <utility>
+
+namespace pool::app {
+
+std::optional<Key> keyFromName(std::string_view name) {
+  static constexpr std::array<std::pair<std::string_view, Key>, 17> kNames{{
+      {"LEFT", Key::Left},
+      {"RIGHT", Key::Right},
+      {"UP", Key::Up},
+      {"DOWN", Key::Down},
+      {"SPACE", Key::Space},
+      {"A", Key::A},
+      {"Z", Key::Z},
+      {"S", Key::S},
+      {"X", Key::X},
+      {"G", Key::G},
+      {"V", Key::V},
+      {"C", Key::C},
+      {"K", Key::K},
+      {"P", Key::P},
+      {"T", Key::T},
+      {"L", Key::L},
+      {"ESCAPE", Key::Escape},
+  }};
+  std::string upper(name);
+  std::transform(upper.begin(), upper.end(), upper.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  for (const auto& [text, key] : kNames) {
+    if (text == upper) return key;
+  }
+  return std::nullopt;
+}
+
+}  // namespace pool::app

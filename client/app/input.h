@@ -1,0 +1,42 @@
+// The client's input vocabulary, free of any windowing library: keys, modifiers, mouse buttons.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace pool::app {
+
+/// The keys the controls react to.
+enum class Key : std::uint8_t {
+  Left,
+  Right,
+  Up,
+  Down,
+  Space,
+  A,  ///< raise the cue
+  Z,  ///< lower the cue
+  S,  ///< zoom in
+  X,  ///< zoom out
+  G,  ///< aim line on/off
+  V,  ///< direction vectors on/off
+  C,  ///< next called pocket
+  K,  ///< declare a safety on/off
+  P,  ///< wireframe
+  T,  ///< textures
+  L,  ///< lighting
+  Escape,
+};
+
+/// Modifier keys held with a key.
+struct Mods {
+  bool shift = false;
+  bool ctrl = false;
+};
+
+enum class MouseButton : std::uint8_t { Left, Right };
+
+/// The key of a name as scripts spell it ("LEFT", "SPACE", "A", ...), case-insensitive.
+std::optional<Key> keyFromName(std::string_view name);
+
+}  // namespace pool::app

@@ -1,0 +1,118 @@
+// Script parsing and frame-by-frame playback.
+#include "client/app/input_script.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace pool::app {
+namespace {
+
+Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb) {
+  using R = Result<ScriptStep>;
+  ScriptStep step;
+  if (verb == "down" || verb == "up") {
+    std::string name;
+    words >> name;
+    const auto key = keyFromName(name);
+    if (!key) return R::fail("unknown key '" + name + "'");
+    step.kind = verb == "down" ? ScriptStep::Kind::Down : ScriptStep::Kind::Up;
+    step.key = *key;
+    for (std::string mod; words >> mod;) {
+      if (mod == "shift") {
+        step.mods.shift = true;
+      } else if (mod == "ctrl") {
+        step.mods.ctrl = true;
+      } else {
+        return R::fail("unknown modifier '" + mod + "'");
+      }
+    }
+    return R::ok(step);
+  }
+  if (verb == "frames") {
+    step.kind = ScriptStep::Kind::Frames;
+    if (!(words >> step.count) || step.count < 0) return R::fail("frames needs a count >= 0");
+    return R::ok(step);
+  }
+  if (verb == "wait") {
+    std::string what;
+    words >> what;
+    if (what == "aiming") {
+      step.kind = ScriptStep::Kind::WaitAiming;
+      return R::ok(step);
+    }
+    if (what == "shot" && (words >> step.count) && step.count >= 0) {
+      step.kind = ScriptStep::Kind::WaitShot;
+      return R::ok(step);
+    }
+    return R::fail("wait needs 'aiming' or 'shot N'");
+  }
+  if (verb == "quit") {
+    step.kind = ScriptStep::Kind::Quit;
+    return R::ok(step);
+  }
+  return R::fail("unknown step '" + verb + "'");
+}
+
+}  // namespace
+
+Result<std::vector<ScriptStep>> parseScript(const std::string& text) {
+  using R = Result<std::vector<ScriptStep>>;
+  std::vector<ScriptStep> steps;
+  std::istringstream lines(text);
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    std::string verb;
+    if (!(words >> verb)) continue;
+    auto step = parseLine(words, verb);
+    if (!step) return R::fail("line " + std::to_string(number) + ": " + step.error());
+    steps.push_back(*step);
+  }
+  return R::ok(std::move(steps));
+}
+
+Result<std::vector<ScriptStep>> loadScript(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return Result<std::vector<ScriptStep>>::fail("cannot read " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  auto steps = parseScript(text.str());
+  if (!steps) return Result<std::vector<ScriptStep>>::fail(path + ": " + steps.error());
+  return steps;
+}
+
+std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
+  std::vector<ScriptStep> due;
+  if (frames_left_ > 0) {
+    --frames_left_;
+    return due;
+  }
+  while (next_ < steps_.size()) {
+    const ScriptStep& step = steps_[next_];
+    const bool wait =
+        step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot;
+    // `now` was seen before this frame's steps: a wait after one is judged on the next frame.
+    if (wait && !due.empty()) return due;
+    const bool waiting = (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
+                         (step.kind == ScriptStep::Kind::WaitShot &&
+                          now.shot_number < static_cast<std::uint32_t>(step.count));
+    if (waiting) return due;
+    ++next_;
+    if (wait) continue;
+    if (step.kind == ScriptStep::Kind::Frames) {
+      frames_left_ = step.count;
+      if (frames_left_ > 0) {
+        --frames_left_;
+        return due;
+      }
+      continue;
+    }
+    due.push_back(step);
+    if (step.kind == ScriptStep::Kind::Quit) return due;
+  }
+  return due;
+}
+
+}  // namespace pool::app

@@ -1,0 +1,61 @@
+// Scripted input for tests and demos (pool-client --script FILE): timed key presses that drive
+// the same controls as the keyboard, frame by frame.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "client/app/input.h"
+#include "core/result.h"
+
+namespace pool::app {
+
+/// One line of a script.
+struct ScriptStep {
+  enum class Kind : std::uint8_t {
+    Down,        ///< press `key` with `mods`
+    Up,          ///< release `key`
+    Frames,      ///< let `count` frames pass
+    WaitAiming,  ///< wait until this screen may aim
+    WaitShot,    ///< wait until the match's shot number reaches `count`
+    Quit,        ///< close the client
+  };
+  Kind kind = Kind::Frames;
+  Key key = Key::Space;
+  Mods mods;
+  int count = 0;
+};
+
+/// Parses a script: one step a line, '#' starts a comment.
+///   down KEY [shift] [ctrl] | up KEY | frames N | wait aiming | wait shot N | quit
+/// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
+Result<std::vector<ScriptStep>> parseScript(const std::string& text);
+
+/// Reads and parses a script file.
+Result<std::vector<ScriptStep>> loadScript(const std::string& path);
+
+/// What the `wait` steps wait for, as the client sees it this frame.
+struct ScriptConditions {
+  bool can_aim = false;
+  std::uint32_t shot_number = 0;  ///< of the match followed
+};
+
+/// Plays a script: each frame, the steps due now.
+class ScriptPlayer {
+ public:
+  explicit ScriptPlayer(std::vector<ScriptStep> steps) : steps_(std::move(steps)) {}
+
+  /// The steps to apply this frame (key presses and releases, or a Quit), the waits judged on
+  /// `now` (as seen before this frame's steps: a wait that follows a step of this frame is
+  /// judged on the next one).
+  std::vector<ScriptStep> frame(const ScriptConditions& now);
+  bool done() const { return next_ >= steps_.size() && frames_left_ == 0; }
+
+ private:
+  std::vector<ScriptStep> steps_;
+  std::size_t next_ = 0;
+  int frames_left_ = 0;
+};
+
+}  // namespace pool::app

@@ -1,0 +1,249 @@
+// Joining, following and shooting in one match from this screen.
+#include "client/app/match_session.h"
+
+#include <algorithm>
+#include <variant>
+
+namespace pool::app {
+namespace {
+
+// How long a state counting a new shot waits for that shot's frames before the table is shown
+// at rest (a spectator who came late never gets them), s.
+constexpr double kFrameGrace = 1.0;
+// How long a join request waits for its answer before it is sent again, s.
+constexpr double kJoinRetry = 2.0;
+
+}  // namespace
+
+MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)) {
+  const int count = options_.hotseat ? 2 : 1;
+  for (int i = 0; i < count; ++i) {
+    const std::string name =
+        options_.hotseat ? options_.name + " " + std::to_string(i + 1) : options_.name;
+    clients_.push_back(
+        std::make_unique<client::GameClient>(client::ClientOptions{options_.domain, "", name}));
+  }
+  awaiting_.assign(clients_.size(), false);
+}
+
+MatchSession::~MatchSession() = default;
+
+const client::Lobby& MatchSession::lobby() const {
+  return clients_.front()->lobby();
+}
+
+void MatchSession::note(std::string text, bool problem) {
+  notes_.push_back({std::move(text), problem});
+}
+
+std::vector<SessionNote> MatchSession::takeNotes() {
+  auto out = std::move(notes_);
+  notes_.clear();
+  return out;
+}
+
+void MatchSession::play(const std::string& match) {
+  want_ = Want::Play;
+  wanted_match_ = match;
+  stage_ = SessionStage::Joining;
+  startPending();
+}
+
+void MatchSession::spectate(const std::string& match) {
+  want_ = Want::Spectate;
+  wanted_match_ = match == "any" ? std::string() : match;
+  stage_ = SessionStage::Joining;
+  startPending();
+}
+
+void MatchSession::leave() {
+  if (!match_.empty()) {
+    for (auto& c : clients_) c->requestLeave(match_);
+  }
+  match_.clear();
+  want_ = Want::None;
+  awaiting_.assign(clients_.size(), false);
+  stage_ = SessionStage::Lobby;
+  playback_.clear();
+  unanswered_.reset();
+  shots_seen_ = 0;
+  frames_due_until_ = 0.0;
+}
+
+void MatchSession::rematch() {
+  for (auto& c : clients_) {
+    if (c->seat()) c->requestRematch();
+  }
+}
+
+bool MatchSession::joining() const {
+  return std::find(awaiting_.begin(), awaiting_.end(), true) != awaiting_.end();
+}
+
+void MatchSession::sendJoin(std::size_t i) {
+  if (want_ == Want::Play) {
+    clients_[i]->requestSeat(wanted_match_);
+  } else {
+    clients_[i]->requestSpectate(wanted_match_);
+  }
+  awaiting_[i] = true;
+  join_sent_at_ = last_poll_;
+}
+
+void MatchSession::startPending() {
+  // Requests go out once the lobby names a match to send them to.
+  if (want_ == Want::None || joining() || !match_.empty()) return;
+  if (wanted_match_.empty()) {
+    const auto found = want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
+    if (!found) return;
+    wanted_match_ = *found;
+  }
+  const std::size_t count = want_ == Want::Play ? clients_.size() : 1;
+  for (std::size_t i = 0; i < count; ++i) sendJoin(i);
+}
+
+void MatchSession::retryJoins() {
+  // A request written before the server's reader matched ours is lost: ask again.
+  if (want_ == Want::None || last_poll_ - join_sent_at_ < kJoinRetry) return;
+  for (std::size_t i = 0; i < clients_.size(); ++i) {
+    if (awaiting_[i]) sendJoin(i);
+  }
+}
+
+void MatchSession::onAnswer(const client::JoinAnswer& answer, std::size_t from) {
+  if (answer.action == client::JoinAction::Leave || answer.action == client::JoinAction::Rematch) {
+    return;
+  }
+  // A repeated request's second answer changes nothing.
+  if (!awaiting_[from]) return;
+  awaiting_[from] = false;
+  if (!answer.accepted()) {
+    note("join " + answer.match + ": " + client::toString(answer.outcome) +
+             (answer.reason.empty() ? "" : " (" + answer.reason + ")"),
+         true);
+    if (!joining() && match_.empty()) {
+      stage_ = SessionStage::Lobby;
+      want_ = Want::None;
+    }
+    return;
+  }
+  if (want_ == Want::None) {
+    // Cancelled while the request was on its way: give the place back.
+    for (auto& c : clients_) c->requestLeave(answer.match);
+    return;
+  }
+  match_ = answer.match;
+  stage_ = want_ == Want::Play ? SessionStage::Playing : SessionStage::Spectating;
+  note(answer.action == client::JoinAction::Spectate
+           ? "watching " + answer.match
+           : "seat " + std::to_string(answer.seat + 1) + " in " + answer.match);
+}
+
+void MatchSession::onReport(const client::ShotReport& report) {
+  if (report.match != match_) return;
+  const auto seats = localSeats();
+  const bool ours = std::find(seats.begin(), seats.end(), report.seat) != seats.end();
+  if (!report.accepted) {
+    if (ours && unanswered_ == report.seq) {
+      unanswered_.reset();
+      note("shot refused: " + std::string(client::toString(report.reject_reason)) + " " +
+               report.reject_text,
+           true);
+    }
+    return;
+  }
+  if (report.final()) {
+    last_verdict_ = report.verdict_text;
+  } else if (ours) {
+    note("shot " + std::to_string(report.seq) + " of seat " + std::to_string(report.seat + 1) +
+         " accepted");
+  }
+}
+
+void MatchSession::handle(client::ClientEvent& event, std::size_t from, double now) {
+  if (auto* answer = std::get_if<client::JoinAnswer>(&event)) return onAnswer(*answer, from);
+  // Everything else reaches every client alike: the first one's copy is used.
+  if (from != 0) return;
+  if (auto* frame = std::get_if<client::TableFrame>(&event)) {
+    if (frame->match != match_) return;
+    if (frame->shot_number >= shots_seen_) frames_due_until_ = 0.0;
+    playback_.push(std::move(*frame), now);
+  } else if (auto* view = std::get_if<client::MatchView>(&event)) {
+    if (view->match != match_) return;
+    // A state that counts a new shot may overtake the shot's frames: wait a little for them.
+    const auto playing = playback_.shot();
+    if (view->shot_number > shots_seen_ && (!playing || *playing < view->shot_number)) {
+      frames_due_until_ = now + kFrameGrace;
+    }
+    shots_seen_ = std::max(shots_seen_, view->shot_number);
+    // Our shot is answered by the state that counts it (other states may come in between).
+    if (unanswered_ && view->shot_number >= awaited_shots_) unanswered_.reset();
+    if (!view->last_verdict.empty()) last_verdict_ = view->last_verdict;
+  } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
+    onReport(*report);
+  }
+}
+
+void MatchSession::poll(double now) {
+  last_poll_ = now;
+  for (std::size_t i = 0; i < clients_.size(); ++i) {
+    for (auto& event : clients_[i]->poll()) handle(event, i, now);
+  }
+  startPending();
+  retryJoins();
+}
+
+void MatchSession::wait(std::chrono::nanoseconds timeout) const {
+  clients_.front()->wait(timeout);
+}
+
+const client::MatchView* MatchSession::view() const {
+  return match_.empty() ? nullptr : clients_.front()->state(match_);
+}
+
+bool MatchSession::inMotion() const {
+  const client::MatchView* v = view();
+  return playback_.inMotion(v ? v->shot_number : 0) || last_poll_ < frames_due_until_;
+}
+
+std::optional<std::vector<physics::Ball>> MatchSession::balls(double now) {
+  if (playback_.shot()) {
+    auto moving = playback_.sample(now);
+    if (inMotion()) return moving;
+  }
+  if (const auto* v = view()) return v->balls;
+  return std::nullopt;
+}
+
+std::vector<int> MatchSession::localSeats() const {
+  std::vector<int> seats;
+  for (const auto& c : clients_) {
+    if (c->seat() && c->seat()->match == match_) seats.push_back(c->seat()->seat);
+  }
+  return seats;
+}
+
+int MatchSession::localShooter() const {
+  const auto* v = view();
+  if (!v || !client::inPlay(v->phase) || v->shooter < 0 || inMotion() || unanswered_) return -1;
+  const auto seats = localSeats();
+  return std::find(seats.begin(), seats.end(), v->shooter) != seats.end() ? v->shooter : -1;
+}
+
+Result<std::uint32_t> MatchSession::shoot(int seat, net::ShotRequest request) {
+  for (auto& c : clients_) {
+    if (!c->seat() || c->seat()->match != match_ || c->seat()->seat != seat) continue;
+    const client::MatchView* v = view();
+    const bool shoots = net::optionShoots(request.option);
+    auto sent = c->shoot(std::move(request));
+    if (sent) {
+      unanswered_ = *sent;
+      // A stroke is counted by the next state's shot number; a re-rack by any new state.
+      awaited_shots_ = v && shoots ? v->shot_number + 1 : 0;
+    }
+    return sent;
+  }
+  return Result<std::uint32_t>::fail("seat " + std::to_string(seat) + " is not held here");
+}
+
+}  // namespace pool::app

@@ -1,0 +1,112 @@
+// The windowed client's life on the network: one or two local seats (two on one screen) or a
+// spectator, the match followed, its frames played back smoothly, and whose turn it is locally.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/app/playback_clock.h"
+#include "client/net/game_client.h"
+#include "core/result.h"
+#include "net/shot_request.h"
+
+namespace pool::app {
+
+/// Who the client is and how many seats it takes.
+struct SessionOptions {
+  std::uint32_t domain = 0;
+  std::string name = "Player";
+  bool hotseat = false;  ///< take both seats of the match: two players on one screen
+};
+
+/// What the session is doing.
+enum class SessionStage : std::uint8_t {
+  Lobby,       ///< choosing a match
+  Joining,     ///< seat or spectator requests sent, answers pending
+  Playing,     ///< seated in a match
+  Spectating,  ///< watching a match
+};
+
+/// One line of what happened, for the HUD (and --json).
+struct SessionNote {
+  std::string text;
+  bool problem = false;
+};
+
+class MatchSession {
+ public:
+  /// Throws net::DdsError when DDS cannot start.
+  explicit MatchSession(SessionOptions options);
+  ~MatchSession();
+
+  /// Takes a seat (both with hotseat) in `match`, or in the lowest match with a free seat once the
+  /// lobby shows one when `match` is empty.
+  void play(const std::string& match = {});
+  /// Watches `match`, or the first match in play ("any" or empty) once the lobby shows one.
+  void spectate(const std::string& match = {});
+  /// Leaves the match (seats and watching) and goes back to the lobby.
+  void leave();
+
+  /// Takes everything received; `now` (s, the caller's steady clock) stamps frames.
+  void poll(double now);
+  /// Blocks until something arrives on the first client, or `timeout` passes.
+  void wait(std::chrono::nanoseconds timeout) const;
+
+  SessionStage stage() const { return stage_; }
+  const client::Lobby& lobby() const;
+  const std::string& match() const { return match_; }
+  /// The latest state of the match followed, if any.
+  const client::MatchView* view() const;
+  /// The balls to draw at `now`: the shot in motion, played back, or the layout at rest.
+  std::optional<std::vector<physics::Ball>> balls(double now);
+  /// True while a shot's motion is still being drawn.
+  bool inMotion() const;
+  /// The shot whose frames were played last, if any arrived.
+  std::optional<std::uint32_t> motionShot() const { return playback_.shot(); }
+
+  /// The seat whose player sits at this screen and may aim now (their turn, balls at rest, no shot
+  /// of theirs unanswered); -1: none.
+  int localShooter() const;
+  /// Seats held by this screen.
+  std::vector<int> localSeats() const;
+  /// Sends `request` for seat `seat` (one of localSeats). Returns the sequence number.
+  Result<std::uint32_t> shoot(int seat, net::ShotRequest request);
+  /// Asks the server for a rematch (every local seat) after a match is over.
+  void rematch();
+
+  /// Notes since the last call: join answers, rejections, verdicts.
+  std::vector<SessionNote> takeNotes();
+  const std::string& lastVerdict() const { return last_verdict_; }
+
+ private:
+  void handle(client::ClientEvent& event, std::size_t from, double now);
+  void onAnswer(const client::JoinAnswer& answer, std::size_t from);
+  bool joining() const;
+  void sendJoin(std::size_t client);
+  void retryJoins();
+  void onReport(const client::ShotReport& report);
+  void startPending();
+  void note(std::string text, bool problem = false);
+
+  SessionOptions options_;
+  std::vector<std::unique_ptr<client::GameClient>> clients_;  ///< [0] also spectates
+  SessionStage stage_ = SessionStage::Lobby;
+  enum class Want : std::uint8_t { None, Play, Spectate } want_ = Want::None;
+  std::string wanted_match_;
+  std::string match_;
+  std::vector<bool> awaiting_;  ///< per client: a join request not answered yet
+  double join_sent_at_ = 0.0;
+  PlaybackClock playback_;
+  std::optional<std::uint32_t> unanswered_;  ///< a shot sent, no state or rejection for it yet
+  std::uint32_t awaited_shots_ = 0;          ///< the shot number of the state that answers it
+  std::uint32_t shots_seen_ = 0;             ///< the highest shot number of a state
+  double frames_due_until_ = 0.0;            ///< a new shot's frames are awaited until then, s
+  double last_poll_ = 0.0;
+  std::string last_verdict_;
+  std::vector<SessionNote> notes_;
+};
+
+}  // namespace pool::app

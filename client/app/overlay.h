@@ -1,0 +1,33 @@
+// The lines drawn over the table: the aim line to the first contact, the object ball's heading,
+// the cue, and the optional direction vectors (velocity, spin) of moving balls.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "client/app/aim.h"
+#include "client/app/aim_line.h"
+#include "physics/ball.h"
+
+namespace pool::app {
+
+/// One coloured segment (table frame, m; colour in [0, 1]).
+struct OverlaySegment {
+  Eigen::Vector3d a;
+  Eigen::Vector3d b;
+  Eigen::Vector3d colour;
+};
+
+/// The aim line (cue ball to its first contact, then the object ball's heading) at ball-centre
+/// height `radius`, and the cue behind the ball (pulled back with the power).
+std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, const AimState& state,
+                                       double radius);
+
+/// For each ball on the table that moves: its velocity (0.25 s of travel) and its spin axis
+/// (length ∝ |ω|).
+std::vector<OverlaySegment> motionOverlay(const std::vector<physics::Ball>& balls);
+
+/// The cue's direction as an arrow from the cue ball (the vector overlay while aiming).
+std::vector<OverlaySegment> cueDirectionOverlay(const Eigen::Vector3d& cue_ball, double yaw);
+
+}  // namespace pool::app

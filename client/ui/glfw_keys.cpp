@@ -1,0 +1,54 @@
+// GLFW key mapping.
+#include "client/ui/glfw_keys.h"
+
+#include <GLFW/glfw3.h>
+
+namespace pool::ui {
+
+std::optional<app::Key> keyOf(int glfw_key) {
+  using app::Key;
+  switch (glfw_key) {
+    case GLFW_KEY_LEFT:
+      return Key::Left;
+    case GLFW_KEY_RIGHT:
+      return Key::Right;
+    case GLFW_KEY_UP:
+      return Key::Up;
+    case GLFW_KEY_DOWN:
+      return Key::Down;
+    case GLFW_KEY_SPACE:
+      return Key::Space;
+    case GLFW_KEY_A:
+      return Key::A;
+    case GLFW_KEY_Z:
+      return Key::Z;
+    case GLFW_KEY_S:
+      return Key::S;
+    case GLFW_KEY_X:
+      return Key::X;
+    case GLFW_KEY_G:
+      return Key::G;
+    case GLFW_KEY_V:
+      return Key::V;
+    case GLFW_KEY_C:
+      return Key::C;
+    case GLFW_KEY_K:
+      return Key::K;
+    case GLFW_KEY_P:
+      return Key::P;
+    case GLFW_KEY_T:
+      return Key::T;
+    case GLFW_KEY_L:
+      return Key::L;
+    case GLFW_KEY_ESCAPE:
+      return Key::Escape;
+    default:
+      return std::nullopt;
+  }
+}
+
+app::Mods modsOf(int glfw_mods) {
+  return {(glfw_mods & GLFW_MOD_SHIFT) != 0, (glfw_mods & GLFW_MOD_CONTROL) != 0};
+}
+
+}  // namespace pool::ui

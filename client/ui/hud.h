@@ -1,0 +1,45 @@
+// The heads-up display (Dear ImGui): players, turn, groups, balls left, fouls, ball in hand, the
+// shot's parameters with the power bar and the tip-offset ball, the call, the last verdict.
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/app/controls.h"
+#include "client/app/match_session.h"
+#include "client/net/match_types.h"
+#include "net/shot_request.h"
+
+namespace pool::ui {
+
+/// What the HUD shows.
+struct HudInput {
+  const client::MatchView* view = nullptr;
+  std::string match;
+  bool spectating = false;
+  std::vector<int> local_seats;
+  int local_shooter = -1;  ///< the seat aiming at this screen; -1: none
+  bool in_motion = false;
+  const app::Controls* controls = nullptr;
+  std::string placement_problem;  ///< why the cue ball cannot go where it is; empty: fine
+  std::string last_verdict;
+  const std::deque<app::SessionNote>* notes = nullptr;
+};
+
+/// What the player clicked.
+struct HudActions {
+  std::optional<net::ShotOption> option;  ///< an answer to the rules' pending choice
+  bool rematch = false;
+  bool leave = false;
+  bool visit_room = false;  ///< the winner goes to the Magic Eight Ball room
+};
+
+/// Draws the HUD windows for this frame (between ImGui::NewFrame and ImGui::Render).
+HudActions drawHud(const HudInput& input);
+
+/// The tip-offset widget: the cue ball seen from behind, the miscue circle and the tip.
+void drawTipWidget(double tip_side, double tip_height, double miscue_limit);
+
+}  // namespace pool::ui

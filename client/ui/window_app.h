@@ -1,0 +1,32 @@
+// The windowed client: a GLFW window with the table, the controls, the HUD and the lobby, playing
+// or watching a match on the network.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+
+namespace pool::ui {
+
+/// How the window starts.
+struct WindowOptions {
+  std::uint32_t domain = 0;
+  std::string name = "Player";
+  bool hotseat = false;  ///< two seats on this screen
+  bool play = false;     ///< take a seat at once (in `match`, or the first free table)
+  std::string spectate;  ///< watch this match at once ("any": the first in play)
+  std::string match;     ///< with `play`: this match
+  std::string script;    ///< input script file (see client/app/input_script.h)
+  bool json = false;     ///< print shots sent and messages as JSON lines on stdout
+  double timeout = 0.0;  ///< s; exit with code 3 after this long; 0: never
+  std::string capture;   ///< write the last frame drawn to this PNG when the window closes
+  std::string table = "wpa-9ft";
+  int width = 1280;
+  int height = 720;
+};
+
+/// Runs the window until it is closed, the script quits or `stop` is set. Returns the exit code:
+/// 0 closed, 1 no window or DDS, 2 bad options, 3 timed out.
+int runWindow(const WindowOptions& options, const std::atomic<bool>& stop);
+
+}  // namespace pool::ui

@@ -1,0 +1,242 @@
+// Each control produces the expected ShotCommand fields, inside the server's limits.
+#include "client/app/controls.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "app_fixture.h"
+
+namespace pool::app::test {
+namespace {
+
+const ControlRates kRates{};
+const net::CommandLimits kLimits{};
+
+class ControlsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    controls.startTurn(Eigen::Vector3d(-0.8, 0.1, kRadius), rules::BallInHand::None);
+  }
+  Controls controls = nineFootControls();
+};
+
+TEST_F(ControlsTest, ArrowsTurnTheCueAtTheirRateRightClockwise) {
+  hold(controls, Key::Right, 0.5);
+  EXPECT_NEAR(controls.aim().yaw, -0.5 * kRates.yaw, 1e-9);
+  hold(controls, Key::Left, 1.5);
+  const auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_NEAR(shot->cue.yaw, 1.0 * kRates.yaw, 1e-9);
+  EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(ControlsTest, YawWrapsIntoTheWireRange) {
+  hold(controls, Key::Left, 20.0);  // 10 rad: past pi more than once
+  const double expected = std::remainder(20.0 * kRates.yaw, 2 * std::numbers::pi);
+  const auto shot = shoot(controls, 0.1);
+  ASSERT_TRUE(shot);
+  EXPECT_NEAR(shot->cue.yaw, expected, 1e-9);
+  EXPECT_LE(std::abs(shot->cue.yaw), std::numbers::pi);
+  EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(ControlsTest, CtrlArrowsMoveTheTipOffset) {
+  hold(controls, Key::Up, 0.4, {.ctrl = true});
+  hold(controls, Key::Left, 0.2, {.ctrl = true});
+  const auto shot = shoot(controls, 0.1);
+  ASSERT_TRUE(shot);
+  EXPECT_NEAR(shot->cue.tip_height, 0.4 * kRates.tip, 1e-9);
+  EXPECT_NEAR(shot->cue.tip_side, -0.2 * kRates.tip, 1e-9);
+  EXPECT_DOUBLE_EQ(shot->cue.yaw, 0.0);  // the cue did not turn
+}
+
+TEST_F(ControlsTest, TipStaysInsideTheMiscueCircleAlongItsDirection) {
+  controls.keyDown(Key::Up, {.ctrl = true});
+  controls.keyDown(Key::Right, {.ctrl = true});
+  for (int i = 0; i < 600; ++i) controls.advance(1.0 / 60.0);
+  controls.keyUp(Key::Up);
+  controls.keyUp(Key::Right);
+  const auto shot = shoot(controls, 0.1);
+  ASSERT_TRUE(shot);
+  EXPECT_NEAR(std::hypot(shot->cue.tip_side, shot->cue.tip_height), kLimits.miscue_limit, 1e-6);
+  EXPECT_LE(std::hypot(shot->cue.tip_side, shot->cue.tip_height), kLimits.miscue_limit);
+  EXPECT_NEAR(shot->cue.tip_side, shot->cue.tip_height, 1e-9);
+  EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(ControlsTest, AAndZSetTheElevationWithinLimits) {
+  hold(controls, Key::A, 0.5);
+  EXPECT_NEAR(controls.aim().elevation, 0.5 * kRates.elevation, 1e-9);
+  hold(controls, Key::Z, 2.0);
+  EXPECT_EQ(controls.aim().elevation, 0.0);
+  hold(controls, Key::A, 10.0);
+  const auto shot = shoot(controls, 0.1);
+  ASSERT_TRUE(shot);
+  EXPECT_DOUBLE_EQ(shot->cue.elevation, kLimits.max_elevation);
+  EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(ControlsTest, SpaceChargesPowerAndReleaseShoots) {
+  const auto soft = shoot(controls, 0.5);
+  ASSERT_TRUE(soft);
+  EXPECT_NEAR(soft->cue.speed, cueSpeedOf(0.5 / kRates.charge_time, kLimits), 1e-9);
+  EXPECT_FALSE(soft->cue.speed_is_ball);
+  EXPECT_EQ(controls.mode(), ControlMode::Watching);  // one shot per turn
+
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.1, kRadius), rules::BallInHand::None);
+  const auto full = shoot(controls, 5.0);
+  ASSERT_TRUE(full);
+  EXPECT_DOUBLE_EQ(full->cue.speed, kLimits.max_speed);
+  EXPECT_TRUE(wireCheck(*full).ok());
+
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.1, kRadius), rules::BallInHand::None);
+  const auto tap = shoot(controls, 0.0);
+  ASSERT_TRUE(tap);
+  EXPECT_DOUBLE_EQ(tap->cue.speed, kMinCueSpeed);
+  EXPECT_TRUE(wireCheck(*tap).ok());
+}
+
+TEST_F(ControlsTest, EscapeCancelsTheCharge) {
+  controls.keyDown(Key::Space, {});
+  controls.advance(0.5);
+  controls.keyDown(Key::Escape, {});
+  controls.keyUp(Key::Space);
+  EXPECT_FALSE(controls.takeShot());
+  EXPECT_EQ(controls.mode(), ControlMode::Aiming);
+}
+
+TEST_F(ControlsTest, ShiftArrowsMoveTheViewNotTheCue) {
+  const Orbit before = controls.camera().aimingOrbit();
+  hold(controls, Key::Right, 0.5, {.shift = true});
+  hold(controls, Key::Up, 0.25, {.shift = true});
+  EXPECT_EQ(controls.aim().yaw, 0.0);
+  EXPECT_NEAR(controls.camera().aimingOrbit().azimuth - before.azimuth, 0.5 * kRates.orbit, 1e-9);
+  EXPECT_NEAR(controls.camera().aimingOrbit().elevation - before.elevation, 0.25 * kRates.raise,
+              1e-9);
+}
+
+TEST_F(ControlsTest, AimingViewSitsBehindTheCueBall) {
+  hold(controls, Key::Left, 1.0);
+  const ViewPoint view = controls.camera().view();
+  const Eigen::Vector2d back = (view.eye - view.target).head<2>().normalized();
+  const double yaw = controls.aim().yaw;
+  EXPECT_NEAR(back.dot(Eigen::Vector2d(std::cos(yaw), std::sin(yaw))), -1.0, 1e-9);
+  EXPECT_TRUE(view.target.isApprox(Eigen::Vector3d(-0.8, 0.1, kRadius)));
+}
+
+TEST_F(ControlsTest, WatchingArrowsOrbitAndSpaceDoesNothing) {
+  controls.stopAiming();
+  const Orbit before = controls.camera().watching();
+  hold(controls, Key::Left, 0.5);
+  hold(controls, Key::Down, 0.25);
+  hold(controls, Key::S, 0.5);
+  EXPECT_NEAR(controls.camera().watching().azimuth - before.azimuth, -0.5 * kRates.orbit, 1e-9);
+  EXPECT_NEAR(controls.camera().watching().elevation - before.elevation, -0.25 * kRates.raise,
+              1e-9);
+  EXPECT_NEAR(controls.camera().watching().distance / before.distance, std::pow(kRates.zoom, -0.5),
+              1e-9);
+  EXPECT_FALSE(shoot(controls, 0.5));
+  EXPECT_EQ(controls.aim().yaw, 0.0);
+}
+
+TEST_F(ControlsTest, DraggingTheMouseTurnsTheCue) {
+  controls.mouseButton(MouseButton::Left, true, 600, 400);
+  controls.mouseMove(700, 380);
+  controls.mouseButton(MouseButton::Left, false, 700, 380);
+  EXPECT_NEAR(controls.aim().yaw, -100 * kRates.mouse_yaw, 1e-12);
+}
+
+TEST_F(ControlsTest, TheCallCyclesPocketsAndASafetyDropsIt) {
+  controls.suggestCall({.ball = 3, .pocket = "foot_left_corner"});
+  EXPECT_EQ(controls.aim().call.pocket, "foot_left_corner");
+  controls.keyDown(Key::C, {});
+  const std::string chosen = controls.aim().call.pocket;
+  EXPECT_NE(chosen, "foot_left_corner");
+  controls.suggestCall({.ball = 5, .pocket = "side_left"});  // the player's choice stands
+  EXPECT_EQ(controls.aim().call.pocket, chosen);
+  auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_EQ(shot->called_ball, 3);
+  EXPECT_EQ(shot->called_pocket, chosen);
+  EXPECT_FALSE(shot->safety);
+
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.1, kRadius), rules::BallInHand::None);
+  controls.suggestCall({.ball = 3, .pocket = "foot_left_corner"});
+  controls.keyDown(Key::K, {});
+  shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_TRUE(shot->safety);
+  EXPECT_FALSE(shot->called_ball);
+  EXPECT_TRUE(shot->called_pocket.empty());
+  EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(ControlsTest, TheOptionGoesWithTheShot) {
+  controls.setOption(net::ShotOption::PlayOn);
+  const auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_EQ(shot->option, net::ShotOption::PlayOn);
+}
+
+class BallInHandTest : public ::testing::Test {
+ protected:
+  // The pixel where table point `at` (on the ball-centre plane) appears now.
+  Eigen::Vector2d pixelOf(const Eigen::Vector2d& at) const {
+    const glm::vec3 p = render::projectToPixels(
+        cameraOf(controls.camera().view()), 1280, 720,
+        glm::vec3(static_cast<float>(at.x()), static_cast<float>(at.y()), kRadius));
+    return {p.x, p.y};
+  }
+  void drag(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    const Eigen::Vector2d a = pixelOf(from), b = pixelOf(to);
+    controls.mouseButton(MouseButton::Left, true, a.x(), a.y());
+    EXPECT_TRUE(controls.draggingCueBall());
+    for (int i = 1; i <= 10; ++i) {
+      const Eigen::Vector2d p = a + (b - a) * (i / 10.0);
+      controls.mouseMove(p.x(), p.y());
+    }
+    controls.mouseButton(MouseButton::Left, false, b.x(), b.y());
+  }
+  Controls controls = nineFootControls();
+};
+
+TEST_F(BallInHandTest, TheBreakPlacementStartsBehindTheHeadString) {
+  controls.startTurn(Eigen::Vector3d(-0.635, 0.0, kRadius), rules::BallInHand::BehindHeadString);
+  ASSERT_TRUE(controls.aim().cue_ball_at);
+  EXPECT_LT(controls.aim().cue_ball_at->x(), PlacementArea{}.head_string_x);
+}
+
+TEST_F(BallInHandTest, DraggingTheCueBallPlacesItUnderTheMouse) {
+  controls.startTurn(Eigen::Vector3d(0.2, 0.0, kRadius), rules::BallInHand::Anywhere);
+  const Eigen::Vector2d target(0.5, 0.3);
+  drag(Eigen::Vector2d(0.2, 0.0), target);
+  const auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  ASSERT_TRUE(shot->cue_ball_at);
+  // A pixel is about a millimetre at this distance.
+  EXPECT_LT((*shot->cue_ball_at - target).norm(), 0.003);
+  EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::BehindHeadString);
+  drag(Eigen::Vector2d(-0.8, 0.0), Eigen::Vector2d(-0.5, 0.0));
+  ASSERT_TRUE(controls.aim().cue_ball_at);
+  EXPECT_LT(controls.aim().cue_ball_at->x(), PlacementArea{}.head_string_x);
+  EXPECT_GT(controls.aim().cue_ball_at->x(), PlacementArea{}.head_string_x - 0.02);
+}
+
+TEST_F(BallInHandTest, WithoutBallInHandAPressOnTheCueBallTurnsTheCue) {
+  controls.startTurn(Eigen::Vector3d(0.2, 0.0, kRadius), rules::BallInHand::None);
+  const Eigen::Vector2d a = pixelOf(Eigen::Vector2d(0.2, 0.0));
+  controls.mouseButton(MouseButton::Left, true, a.x(), a.y());
+  EXPECT_FALSE(controls.draggingCueBall());
+  const auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_FALSE(shot->cue_ball_at);
+}
+
+}  // namespace
+}  // namespace pool::app::test

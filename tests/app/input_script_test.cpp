@@ -1,0 +1,84 @@
+// Input scripts: parsing with line-numbered errors, and frame-exact playback of presses and waits.
+#include "client/app/input_script.h"
+
+#include <gtest/gtest.h>
+
+namespace pool::app::test {
+namespace {
+
+using Kind = ScriptStep::Kind;
+
+TEST(InputScriptTest, ParsesEveryStep) {
+  const auto steps = parseScript(
+      "# a comment\n"
+      "wait aiming\n"
+      "down left ctrl shift   # trailing comment\n"
+      "\n"
+      "frames 3\n"
+      "up LEFT\n"
+      "wait shot 4\n"
+      "quit\n");
+  ASSERT_TRUE(steps) << steps.error();
+  ASSERT_EQ(steps->size(), 6u);
+  EXPECT_EQ((*steps)[0].kind, Kind::WaitAiming);
+  EXPECT_EQ((*steps)[1].kind, Kind::Down);
+  EXPECT_EQ((*steps)[1].key, Key::Left);
+  EXPECT_TRUE((*steps)[1].mods.ctrl);
+  EXPECT_TRUE((*steps)[1].mods.shift);
+  EXPECT_EQ((*steps)[2].count, 3);
+  EXPECT_EQ((*steps)[3].kind, Kind::Up);
+  EXPECT_EQ((*steps)[4].kind, Kind::WaitShot);
+  EXPECT_EQ((*steps)[4].count, 4);
+  EXPECT_EQ((*steps)[5].kind, Kind::Quit);
+}
+
+TEST(InputScriptTest, ABadLineNamesItsNumber) {
+  EXPECT_EQ(parseScript("frames 2\ndown F1\n").error(), "line 2: unknown key 'F1'");
+  EXPECT_EQ(parseScript("down A alt\n").error(), "line 1: unknown modifier 'alt'");
+  EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
+  EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
+  EXPECT_EQ(parseScript("wait forever\n").error(), "line 1: wait needs 'aiming' or 'shot N'");
+  EXPECT_FALSE(loadScript("/nonexistent/script.txt"));
+}
+
+TEST(InputScriptTest, FramesHoldAKeyForExactlyThatManyFrames) {
+  ScriptPlayer player(*parseScript("down SPACE\nframes 3\nup SPACE\n"));
+  const ScriptConditions any;
+  auto first = player.frame(any);
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].kind, Kind::Down);
+  EXPECT_TRUE(player.frame(any).empty());
+  EXPECT_TRUE(player.frame(any).empty());
+  auto fourth = player.frame(any);
+  ASSERT_EQ(fourth.size(), 1u);
+  EXPECT_EQ(fourth[0].kind, Kind::Up);
+  EXPECT_TRUE(player.done());
+}
+
+TEST(InputScriptTest, WaitsHoldTheScriptUntilTheirConditionHolds) {
+  ScriptPlayer player(*parseScript("wait aiming\ndown A\nwait shot 2\nquit\n"));
+  EXPECT_TRUE(player.frame({false, 0}).empty());
+  EXPECT_TRUE(player.frame({false, 5}).empty());
+  auto pressed = player.frame({true, 0});
+  ASSERT_EQ(pressed.size(), 1u);
+  EXPECT_EQ(pressed[0].key, Key::A);
+  EXPECT_TRUE(player.frame({true, 1}).empty());
+  auto quit = player.frame({false, 2});
+  ASSERT_EQ(quit.size(), 1u);
+  EXPECT_EQ(quit[0].kind, Kind::Quit);
+}
+
+TEST(InputScriptTest, AWaitAfterAStepIsJudgedOnTheNextFrame) {
+  // Releasing Space shoots, which ends the aiming the frame's conditions still show.
+  ScriptPlayer player(*parseScript("up SPACE\nwait aiming\ndown UP\n"));
+  auto first = player.frame({true, 0});
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].kind, Kind::Up);
+  EXPECT_TRUE(player.frame({false, 0}).empty());
+  auto pressed = player.frame({true, 0});
+  ASSERT_EQ(pressed.size(), 1u);
+  EXPECT_EQ(pressed[0].key, Key::Up);
+}
+
+}  // namespace
+}  // namespace pool::app::test
