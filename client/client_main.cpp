@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
   app.add_option("--name", flags.window.name, "the player's name (window)");
   app.add_flag("--hotseat", flags.window.hotseat, "two players on this screen (window)");
+  app.add_flag("--mute", flags.window.mute, "no sound (window)");
   app.add_flag("--play", flags.window.play, "take a seat at once, skipping the lobby (window)");
   app.add_option("--match", flags.window.match, "with --play: the match to join");
   app.add_option("--script", flags.window.script, "play timed key presses from FILE (window)");

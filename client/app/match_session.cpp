@@ -154,6 +154,7 @@ void MatchSession::onReport(const client::ShotReport& report) {
   }
   if (report.final()) {
     last_verdict_ = report.verdict_text;
+    if (listener_) listener_->onShot(report);
   } else if (ours) {
     note("shot " + std::to_string(report.seq) + " of seat " + std::to_string(report.seat + 1) +
          " accepted");
@@ -167,6 +168,7 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
   if (auto* frame = std::get_if<client::TableFrame>(&event)) {
     if (frame->match != match_) return;
     if (frame->shot_number >= shots_seen_) frames_due_until_ = 0.0;
+    if (listener_) listener_->onFrame(*frame);
     playback_.push(std::move(*frame), now);
   } else if (auto* view = std::get_if<client::MatchView>(&event)) {
     if (view->match != match_) return;

@@ -36,6 +36,14 @@ struct SessionNote {
   bool problem = false;
 };
 
+/// Told of every frame and every shot's event log of the match followed (the window's sound).
+class ShotListener {
+ public:
+  virtual ~ShotListener() = default;
+  virtual void onFrame(const client::TableFrame& frame) = 0;
+  virtual void onShot(const client::ShotReport& report) = 0;
+};
+
 class MatchSession {
  public:
   /// Throws net::DdsError when DDS cannot start.
@@ -76,6 +84,10 @@ class MatchSession {
   Result<std::uint32_t> shoot(int seat, net::ShotRequest request);
   /// Asks the server for a rematch (every local seat) after a match is over.
   void rematch();
+  /// `listener` (or null) hears the frames and final shot reports of the match followed.
+  void setListener(ShotListener* listener) { listener_ = listener; }
+  /// The playback time of the shot being drawn (s since its strike).
+  double playTime() const { return playback_.playTime(); }
 
   /// Notes since the last call: join answers, rejections, verdicts.
   std::vector<SessionNote> takeNotes();
@@ -107,6 +119,7 @@ class MatchSession {
   double last_poll_ = 0.0;
   std::string last_verdict_;
   std::vector<SessionNote> notes_;
+  ShotListener* listener_ = nullptr;
 };
 
 }  // namespace pool::app

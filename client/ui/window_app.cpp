@@ -25,6 +25,7 @@
 #include "client/app/match_session.h"
 #include "client/app/overlay.h"
 #include "client/app/placement_search.h"
+#include "client/audio/sound_board.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
 #include "client/render/renderer.h"
@@ -95,6 +96,27 @@ class GlfwWindow {
   bool imgui_ = false;
 };
 
+/// The window's sound: the match's frames and shot logs into a SoundBoard.
+class SoundListener final : public app::ShotListener {
+ public:
+  explicit SoundListener(bool mute) : board_(options(mute)) {}
+  void onFrame(const client::TableFrame& frame) override {
+    board_.onFrame(frame.shot_number, frame.sim_time, frame.balls);
+  }
+  void onShot(const client::ShotReport& report) override {
+    board_.onShot(report.events, report.shot_number);
+  }
+  void update(double playback_time) { board_.update(playback_time); }
+
+ private:
+  static audio::SoundOptions options(bool mute) {
+    audio::SoundOptions o;
+    o.mute = mute;
+    return o;
+  }
+  audio::SoundBoard board_;
+};
+
 net::CommandLimits limitsOf(const bot::TableView& view) {
   net::CommandLimits limits;
   limits.half_length = view.halfLength();
@@ -116,7 +138,9 @@ class WindowApp {
         controls_(limitsOf(view_), areaOf(view_),
                   app::CameraRig(view_.spec.length, view_.spec.width,
                                  static_cast<double>(options.width) / options.height)),
-        session_({options.domain, options.name, options.hotseat}) {
+        session_({options.domain, options.name, options.hotseat}),
+        sound_(options.mute) {
+    session_.setListener(&sound_);
     installCallbacks();
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
@@ -444,6 +468,7 @@ class WindowApp {
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) send(std::move(*shot));
     drawScene(now);
+    sound_.update(session_.playTime());
     drawInterface();
   }
 
@@ -453,6 +478,7 @@ class WindowApp {
   render::Renderer renderer_;
   app::Controls controls_;
   app::MatchSession session_;
+  SoundListener sound_;
   std::optional<app::ScriptPlayer> script_;
   int aiming_seat_ = -1;
   std::deque<app::SessionNote> notes_;
