@@ -25,4 +25,20 @@ rules::GameState gameStateOf(const MatchView& view) {
   return state;
 }
 
+bool ShotReport::usesUpSequence() const {
+  if (accepted) return true;
+  switch (reject_reason) {
+    case RejectReason::MatchOver:
+    case RejectReason::NotYourTurn:
+    case RejectReason::BallsMoving:
+    case RejectReason::OptionRequired:
+    case RejectReason::OptionNotOffered:
+    case RejectReason::IllegalPlacement:
+    case RejectReason::BadCall:
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace pool::client

@@ -57,6 +57,7 @@ const char* toString(RejectReason reason) {
     case RejectReason::BadCall: return "bad_call";
     case RejectReason::MatchOver: return "match_over";
     case RejectReason::BadSignature: return "bad_signature";
+    case RejectReason::Unsigned: return "unsigned";
   }
   return "unknown";
 }

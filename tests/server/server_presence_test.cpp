@@ -45,6 +45,12 @@ TEST_F(ServerPresence, AKilledPlayerRejoinsWithTheTokenWithinTheGrace) {
   const auto bad = back.join(pool_JOIN_REJOIN, s.match, "", -1, s.token[1] + 1);
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->outcome, pool_JOIN_BAD_TOKEN);
+  const auto stranger = back.join(pool_JOIN_REJOIN, s.match, "", -1, s.token[1]);
+  ASSERT_TRUE(stranger);
+  EXPECT_EQ(stranger->outcome, pool_JOIN_BAD_TOKEN) << "the token alone took the seat back";
+  const auto kept = bob.key();
+  ASSERT_TRUE(kept) << kept.error();
+  back.useKey(*kept);  // the player's key, kept across its restart
   const auto rejoined = back.join(pool_JOIN_REJOIN, s.match, "", -1, s.token[1]);
   ASSERT_TRUE(rejoined);
   EXPECT_EQ(rejoined->outcome, pool_JOIN_ACCEPTED);
