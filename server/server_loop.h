@@ -9,6 +9,7 @@
 
 #include "match/match_registry.h"
 #include "net/shot_command_check.h"
+#include "rejection_tally.h"
 #include "server_bus.h"
 #include "server_config.h"
 
@@ -47,6 +48,7 @@ class ServerLoop {
   void readCommands(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
+  void refused(const std::string& match, const CommandAnswer& answer, double now);
   void publishChanges();
   void dispose(const std::string& match);
   std::chrono::nanoseconds waitTimeout(double now) const;
@@ -56,6 +58,7 @@ class ServerLoop {
   ServerBus& bus_;
   net::CommandLimits limits_;
   std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
+  RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   std::chrono::steady_clock::time_point epoch_;
 };
 

@@ -161,7 +161,9 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
   answer.shot_number = shot_number_;
   CheckedCommand checked = checkCommand(*this, command);
   // A command its seat's key signed uses up its number, accepted or not: it cannot be replayed.
-  if (checked.signature_valid) seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  if (checked.signature_valid) {
+    seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  }
   if (!checked.rejection.accepted()) {
     answer.rejection = std::move(checked.rejection);
     return answer;
