@@ -57,7 +57,7 @@ void BotPlayer::handle(const client::ClientEvent& event, double now) {
         if constexpr (std::is_same_v<E, client::JoinAnswer>) onAnswer(e, now);
         if constexpr (std::is_same_v<E, client::LobbyEntry>) onLobby(e, now);
         if constexpr (std::is_same_v<E, client::MatchGone>) onGone(e, now);
-        if constexpr (std::is_same_v<E, client::MatchView>) onState(e);
+        if constexpr (std::is_same_v<E, client::MatchView>) onState(e, now);
         if constexpr (std::is_same_v<E, client::ShotReport>) onReport(e, now);
       },
       event);
@@ -176,10 +176,20 @@ void BotPlayer::saveSeat() {
 
 // ---- Playing ------------------------------------------------------------------------------------
 
-void BotPlayer::onState(const client::MatchView& view) {
+void BotPlayer::onState(const client::MatchView& view, double now) {
   const auto& seat = client_.seat();
   if (!seat || view.match != seat->match || stage_ != BotStage::Playing) return;
-  if (view.phase == client::MatchPhase::Over) finish(view);
+  if (view.phase == client::MatchPhase::Over) {
+    finish(view);
+    return;
+  }
+  // The server lost sight of us (our liveliness lease ran out while this process was starved
+  // of CPU, say) and counts down the grace period: take the seat back before it forfeits.
+  const bool away = !view.seats[static_cast<std::size_t>(seat->seat)].connected;
+  if (away && (!away_revision_ || view.revision > *away_revision_)) {
+    away_revision_ = view.revision;
+    loseSeat(now, "the server has us away");
+  }
 }
 
 void BotPlayer::onReport(const client::ShotReport& report, double now) {

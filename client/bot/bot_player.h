@@ -60,7 +60,7 @@ class BotPlayer {
   void onAnswer(const client::JoinAnswer& answer, double now);
   void onLobby(const client::LobbyEntry& entry, double now);
   void onGone(const client::MatchGone& gone, double now);
-  void onState(const client::MatchView& view);
+  void onState(const client::MatchView& view, double now);
   void onReport(const client::ShotReport& report, double now);
 
   void act(double now);
@@ -92,6 +92,7 @@ class BotPlayer {
   std::optional<std::uint32_t> turn_revision_;  ///< the state our current turn was first seen in
   double turn_since_ = 0.0;
   int rejections_ = 0;
+  std::optional<std::uint32_t> away_revision_;  ///< the state that showed us away (we rejoined)
 
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;

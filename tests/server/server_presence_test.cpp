@@ -31,12 +31,14 @@ TEST_F(ServerPresence, AKilledPlayerRejoinsWithTheTokenWithinTheGrace) {
   s.token[1] = *bob_token;
   ASSERT_NE(a.waitState(s.match, [](auto& st) { return st.seats[1].connected; }), nullptr);
 
-  // Killed: nothing said on the wire; its JoinRequest writer's lease (2 s) runs out.
+  // Killed: nothing said on the wire; its JoinRequest writer's lease (5 s) runs out.
   const auto killed = std::chrono::steady_clock::now();
   bob.kill();
-  const auto* away = a.waitState(s.match, [](auto& st) { return !st.seats[1].connected; }, 8s);
+  const auto* away = a.waitState(s.match, [](auto& st) { return !st.seats[1].connected; }, 20s);
   ASSERT_NE(away, nullptr);
-  EXPECT_LT(std::chrono::steady_clock::now() - killed, 5s);
+  const auto noticed = std::chrono::steady_clock::now() - killed;
+  EXPECT_GT(noticed, net::qos::kPlayerLease / 2) << "away before the lease could run out";
+  EXPECT_LT(noticed, net::qos::kPlayerLease + 5s);
   EXPECT_EQ(away->phase, pool_PHASE_BREAK);
   EXPECT_STREQ(away->seats[1].name, "Bob");
 
