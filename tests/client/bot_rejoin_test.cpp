@@ -52,6 +52,18 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   ASSERT_TRUE(untilConnected(recorder, "alice", false, 20s)) << "the server never noticed";
   const std::uint32_t shots_when_killed = recorder.latest(recorder.firstMatch())->shot_number;
 
+  // Someone with a copy of the token file but not the key (which stays beside it) is refused.
+  std::filesystem::copy_file(file("alice.json"), file("mallory.json"));
+  ChildProcess& mallory = startBot("mallory", 11, {"--token-file", file("mallory.json")});
+  EXPECT_TRUE(recorder.pump(20s, [&] {
+    return mallory.err().find("refused: bad_token public_key") != std::string::npos;
+  })) << mallory.err();
+  mallory.kill(SIGKILL);
+  const MatchView* held = recorder.latest(recorder.firstMatch());
+  ASSERT_NE(held, nullptr);
+  EXPECT_EQ(seatOf(*held, "mallory"), -1);
+  EXPECT_FALSE(held->seats[static_cast<std::size_t>((*saved)->seat)].connected);
+
   // Started again with the same identity: it rejoins the same seat and shoots again.
   alice = &startBot("alice", 5, alice_args);
   ASSERT_TRUE(untilConnected(recorder, "alice", true, 10s)) << alice->err();
