@@ -26,19 +26,7 @@ rules::GameState gameStateOf(const MatchView& view) {
 }
 
 bool ShotReport::usesUpSequence() const {
-  if (accepted) return true;
-  switch (reject_reason) {
-    case RejectReason::MatchOver:
-    case RejectReason::NotYourTurn:
-    case RejectReason::BallsMoving:
-    case RejectReason::OptionRequired:
-    case RejectReason::OptionNotOffered:
-    case RejectReason::IllegalPlacement:
-    case RejectReason::BadCall:
-      return true;
-    default:
-      return false;
-  }
+  return accepted || net::refusedAfterSignature(reject_reason);
 }
 
 }  // namespace pool::client

@@ -62,4 +62,19 @@ const char* toString(RejectReason reason) {
   return "unknown";
 }
 
+bool refusedAfterSignature(RejectReason reason) {
+  switch (reason) {
+    case RejectReason::MatchOver:
+    case RejectReason::NotYourTurn:
+    case RejectReason::BallsMoving:
+    case RejectReason::OptionRequired:
+    case RejectReason::OptionNotOffered:
+    case RejectReason::IllegalPlacement:
+    case RejectReason::BadCall:
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace pool::net

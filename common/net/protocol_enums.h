@@ -43,6 +43,10 @@ enum class RejectReason : std::uint8_t {
   Unsigned,          ///< no signature at all
 };
 
+/// True for the refusals the server makes after a command's signature checked out (its sequence
+/// number is then used up, server/README.md); false for those before it, and for None.
+bool refusedAfterSignature(RejectReason reason);
+
 /// snake_case names, e.g. "stale_sequence"; "unknown" for a value outside the enum.
 const char* toString(MatchPhase phase);
 const char* toString(JoinAction action);

@@ -11,23 +11,6 @@ namespace {
 
 using namespace test;
 
-/// True for the refusals that come after the signature check: the command is the seat holder's
-/// own, and its number is used up.
-bool afterSignature(Reject reason) {
-  switch (reason) {
-    case Reject::MatchOver:
-    case Reject::NotYourTurn:
-    case Reject::BallsMoving:
-    case Reject::OptionRequired:
-    case Reject::OptionNotOffered:
-    case Reject::IllegalPlacement:
-    case Reject::BadCall:
-      return true;
-    default:
-      return false;
-  }
-}
-
 /// Sends `command` as it is and expects it refused with `reason`, the match unchanged but for
 /// the seat's used-up number after a signed refusal.
 void expectRefusedAsSent(Match& m, const net::ShotRequest& command, Reject reason) {
@@ -41,7 +24,7 @@ void expectRefusedAsSent(Match& m, const net::ShotRequest& command, Reject reaso
   EXPECT_FALSE(answer.in_motion);
   EXPECT_EQ(m.revision(), revision);
   for (int seat = 0; seat < 2; ++seat) {
-    const bool used = afterSignature(reason) && command.seat == seat;
+    const bool used = net::refusedAfterSignature(reason) && command.seat == seat;
     EXPECT_EQ(m.seats()[static_cast<std::size_t>(seat)].last_seq,
               used ? command.seq : last_seq[seat])
         << "seat " << seat;
