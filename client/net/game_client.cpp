@@ -35,8 +35,8 @@ void GameClient::problem(const std::string& what) {
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
                                    std::uint64_t token) {
-  JoinRequestFields fields{options_.client_id, next_request_++, match,   action, seat,
-                           options_.name,      token,           key().publicKey()};
+  JoinRequestFields fields{options_.client_id, next_request_++, match, action, seat,
+                           options_.name, token, key().publicKey()};
   pending_[fields.request] = action;
   if (auto status = endpoints_->join_requests.write(*toWire(fields)); !status) {
     last_problem_ = "join request: " + status.error;
