@@ -96,22 +96,27 @@ void ServerLoop::readCommands(double now) {
     ReadCommand read = readCommand(*sample, limits_);
     const std::string match(net::textOf(sample->match));
     if (!read.refusal.accepted()) {
-      spdlog::info("command {} seat {} seq {}: {} ({})", match, sample->seat, sample->seq,
-                   toString(read.refusal.rejection.reason), read.refusal.rejection.text);
-      publishResult(match, read.refusal);
+      refused(match, read.refusal, now);
       continue;
     }
     const CommandAnswer answer = registry_.shoot(read.request, now);
-    storeShot(answer, match);
-    if (answer.accepted()) {
-      spdlog::info("command {} seat {} seq {}: accepted, shot {}", match, answer.seat, answer.seq,
-                   answer.shot_number);
-    } else {
-      spdlog::info("command {} seat {} seq {}: {} ({})", match, answer.seat, answer.seq,
-                   toString(answer.rejection.reason), answer.rejection.text);
+    if (!answer.accepted()) {
+      refused(match, answer, now);
+      continue;
     }
+    storeShot(answer, match);
+    spdlog::info("command {} seat {} seq {}: accepted, shot {}", match, answer.seat, answer.seq,
+                 answer.shot_number);
     publishResult(match, answer);
   }
+  if (auto summary = rejections_.summary(now)) spdlog::info("{}", *summary);
+}
+
+void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, double now) {
+  spdlog::debug("command {} seat {} seq {}: {} ({})", match, answer.seat, answer.seq,
+                toString(answer.rejection.reason), answer.rejection.text);
+  rejections_.add(answer.rejection.reason, now);
+  publishResult(match, answer);
 }
 
 void ServerLoop::publishResult(const std::string& match, const CommandAnswer& answer) {

@@ -11,6 +11,7 @@
 #include "match/match_registry.h"
 #include "match/match_replay.h"
 #include "net/shot_command_check.h"
+#include "rejection_tally.h"
 #include "server_bus.h"
 #include "server_config.h"
 #include "store/match_store.h"
@@ -56,6 +57,7 @@ class ServerLoop {
   void readCommands(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
+  void refused(const std::string& match, const CommandAnswer& answer, double now);
   void publishChanges();
   void storeShot(const CommandAnswer& answer, const std::string& match);
   void stepReplay(double now);
@@ -72,6 +74,7 @@ class ServerLoop {
   bool replay_reported_ = false;
   std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
   std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
+  RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   std::chrono::steady_clock::time_point epoch_;
 };
 

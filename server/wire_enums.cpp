@@ -91,6 +91,7 @@ pool_RejectReason toWire(Reject reason) {
     case Reject::IllegalPlacement: return pool_REJECT_ILLEGAL_PLACEMENT;
     case Reject::BadCall: return pool_REJECT_BAD_CALL;
     case Reject::BadSignature: return pool_REJECT_BAD_SIGNATURE;
+    case Reject::Unsigned: return pool_REJECT_UNSIGNED;
   }
   return pool_REJECT_MALFORMED;
 }

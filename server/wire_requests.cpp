@@ -22,6 +22,8 @@ Result<JoinCommand> joinCommand(const pool_JoinRequest& r) {
   c.seat = r.seat;
   c.name = std::string(net::textOf(r.name));
   c.token = r.seat_token;
+  const auto key = net::elementsOf(r.public_key);
+  c.public_key.assign(key.begin(), key.end());
   return Result<JoinCommand>::ok(std::move(c));
 }
 

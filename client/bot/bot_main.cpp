@@ -35,7 +35,18 @@ int run(const Flags& flags) {
     if (!read) spdlog::warn("ignoring seat file: {}", read.error());
     if (read && *read) saved = **read;
   }
-  client::GameClient client({flags.domain, "", flags.name});
+  // The key its commands are signed with lives beside the seat file: a restarted bot rejoins
+  // its seat with the same key.
+  std::optional<net::KeyPair> key;
+  if (!flags.bot.seat_file.empty()) {
+    auto loaded = net::loadOrCreateKeyFile(bot::keyFileFor(flags.bot.seat_file));
+    if (!loaded) {
+      spdlog::error("key file: {}", loaded.error());
+      return 2;
+    }
+    key = *loaded;
+  }
+  client::GameClient client({flags.domain, "", flags.name}, key);
   bot::BotPlayer player(client, flags.bot, saved);
   const auto start = std::chrono::steady_clock::now();
   auto now = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -71,7 +82,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--seed", flags.bot.seed, "seed of the skill noise");
   app.add_option("--token-file", flags.bot.seat_file,
-                 "file keeping the seat token: read at start to rejoin, written when seated");
+                 "file keeping the seat token: read at start to rejoin, written when seated "
+                 "(the signing key is kept beside it, in FILE.key)");
   app.add_option("--think", flags.bot.think, "seconds to wait on each turn before shooting")
       ->check(CLI::Range(0.0, 60.0));
   app.add_option("--timeout", flags.timeout, "give up (exit 3) after this many seconds; 0: never");

@@ -183,10 +183,16 @@ void BotPlayer::onState(const client::MatchView& view, double now) {
     finish(view);
     return;
   }
+  // The server takes us for gone while we are here: our liveliness lease ran out while this
+  // process was starved of CPU, or the server restarted and resumed the match before its old
+  // self's lease ran out. Take the seat back with our token and key before the grace runs out
+  // (once per state that shows us away).
   const client::SeatView& mine = view.seats[static_cast<std::size_t>(seat->seat)];
-  if (mine.name == client_.name() && !mine.connected) {
-    // The server takes us for gone while we are here (it restarted and resumed the match, before
-    // its old self's lease ran out): take the seat back with our token.
+  if (mine.connected) {
+    away_revision_.reset();
+  } else if (mine.name == client_.name() &&
+             (!away_revision_ || view.revision != *away_revision_)) {
+    away_revision_ = view.revision;
     loseSeat(now, "the server shows us away");
     sendJoin(now);
   }

@@ -92,6 +92,7 @@ class BotPlayer {
   std::optional<std::uint32_t> turn_revision_;  ///< the state our current turn was first seen in
   double turn_since_ = 0.0;
   int rejections_ = 0;
+  std::optional<std::uint32_t> away_revision_;  ///< the state that showed us away (we rejoined)
 
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;

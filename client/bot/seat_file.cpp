@@ -30,6 +30,10 @@ Result<std::optional<SeatRecord>> readSeatFile(const std::filesystem::path& path
   }
 }
 
+std::filesystem::path keyFileFor(const std::filesystem::path& seat_file) {
+  return seat_file.string() + ".key";
+}
+
 std::string writeSeatFile(const std::filesystem::path& path, const SeatRecord& record) {
   const nlohmann::json json = {{"match", record.match},
                                {"seat", record.seat},

@@ -1,5 +1,6 @@
 // The bot's identity on disk: the seat it holds (match, seat, token) and the last sequence
-// number it used, so a restarted bot can rejoin with its token (pool-bot --token-file).
+// number it used, so a restarted bot can rejoin with its token (pool-bot --token-file); its
+// signing key is kept beside it (net/key_pair.h).
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,9 @@ struct SeatRecord {
 /// Reads a seat file (JSON: {"match", "seat", "token", "last_seq"}). Empty when the file does
 /// not exist; a failure when it exists but cannot be read.
 Result<std::optional<SeatRecord>> readSeatFile(const std::filesystem::path& path);
+
+/// Where the key pair that signs the seat's commands is kept: `<seat file>.key`.
+std::filesystem::path keyFileFor(const std::filesystem::path& seat_file);
 
 /// Writes it atomically (a temporary file renamed over it). Empty string on success, else why.
 std::string writeSeatFile(const std::filesystem::path& path, const SeatRecord& record);

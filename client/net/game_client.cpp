@@ -6,6 +6,7 @@
 
 #include "client/net/client_endpoints.h"
 #include "client/net/wire_read.h"
+#include "net/command_signature.h"
 #include "net/convert.h"
 #include "net/wire_fields.h"
 
@@ -19,7 +20,8 @@ std::string randomClientId() {
   return text;
 }
 
-GameClient::GameClient(ClientOptions options) : options_(std::move(options)) {
+GameClient::GameClient(ClientOptions options, std::optional<net::KeyPair> key)
+    : options_(std::move(options)), key_(key ? *key : net::generateKeyPair()) {
   if (options_.client_id.empty()) options_.client_id = randomClientId();
   endpoints_ = std::make_unique<ClientEndpoints>(options_.domain);
 }
@@ -34,9 +36,9 @@ void GameClient::problem(const std::string& what) {
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
                                    std::uint64_t token) {
   JoinRequestFields fields{options_.client_id, next_request_++, match, action, seat,
-                           options_.name, token};
+                           options_.name, token, key().publicKey()};
   pending_[fields.request] = action;
-  if (auto status = endpoints_->join_requests.write(toWire(fields)); !status) {
+  if (auto status = endpoints_->join_requests.write(*toWire(fields)); !status) {
     last_problem_ = "join request: " + status.error;
   }
   return fields.request;
@@ -70,6 +72,7 @@ Result<std::uint32_t> GameClient::shoot(net::ShotRequest request) {
   request.seat = seat_->seat;
   request.seat_token = seat_->token;
   request.seq = ++last_seq_;
+  net::signCommand(request, key());
   const auto sample = net::toWire(request);
   if (auto status = endpoints_->commands.write(*sample); !status) {
     return Result<std::uint32_t>::fail("shot command: " + status.error);
@@ -167,10 +170,14 @@ void GameClient::pollResults(std::vector<ClientEvent>& out) {
       problem(report.error());
       continue;
     }
-    auto& seen = seen_seq_[{report->match, report->seat}];
-    seen = std::max(seen, report->seq);
-    if (seat_ && report->match == seat_->match && report->seat == seat_->seat) {
-      noteSequence(report->seq);
+    // Only a number the seat's own key used up counts: anyone may send a command with any
+    // number, and its refusal must not move ours (up to a wrap-around, say).
+    if (report->usesUpSequence()) {
+      auto& seen = seen_seq_[{report->match, report->seat}];
+      seen = std::max(seen, report->seq);
+      if (seat_ && report->match == seat_->match && report->seat == seat_->seat) {
+        noteSequence(report->seq);
+      }
     }
     out.emplace_back(std::move(*report));
   }

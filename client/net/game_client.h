@@ -15,6 +15,7 @@
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
 #include "core/result.h"
+#include "net/key_pair.h"
 #include "net/shot_request.h"
 
 namespace pool::client {
@@ -43,13 +44,16 @@ struct ClientOptions {
 /// take a timeout). Throws net::DdsError from the constructor only.
 class GameClient {
  public:
-  explicit GameClient(ClientOptions options);
+  /// `key` signs the commands of its seats (its public half goes with seat and rejoin requests);
+  /// empty: a fresh pair for this session. Keep it to rejoin a seat from another process.
+  explicit GameClient(ClientOptions options, std::optional<net::KeyPair> key = std::nullopt);
   ~GameClient();
   GameClient(const GameClient&) = delete;
   GameClient& operator=(const GameClient&) = delete;
 
   const std::string& clientId() const { return options_.client_id; }
   const std::string& name() const { return options_.name; }
+  const net::KeyPair& key() const { return key_; }
 
   // ---- Join requests: each returns its request number, which the answer echoes -------------
   std::uint32_t requestSeat(const std::string& match, int seat = -1);
@@ -65,7 +69,8 @@ class GameClient {
 
   // ---- Shots ----------------------------------------------------------------------------------
   /// Sends `request` for the seat held, filling in match, seat, token and the next sequence
-  /// number. Returns the sequence number used, or why nothing was sent.
+  /// number, signed with the client's key. Returns the sequence number used, or why nothing was
+  /// sent.
   Result<std::uint32_t> shoot(net::ShotRequest request);
   /// Makes the next sequence number larger than `seq` (after a restart, from a saved number or
   /// from the server's last result for the seat).
@@ -99,6 +104,7 @@ class GameClient {
   void problem(const std::string& what);
 
   ClientOptions options_;
+  net::KeyPair key_;
   std::unique_ptr<ClientEndpoints> endpoints_;
   std::uint32_t next_request_ = 1;
   std::map<std::uint32_t, JoinAction> pending_;  ///< our requests not answered yet

@@ -25,4 +25,8 @@ rules::GameState gameStateOf(const MatchView& view) {
   return state;
 }
 
+bool ShotReport::usesUpSequence() const {
+  return accepted || net::refusedAfterSignature(reject_reason);
+}
+
 }  // namespace pool::client

@@ -113,6 +113,10 @@ struct ShotReport {
   /// True for the report that closes an accepted command (its verdict is known). The immediate
   /// acceptance of a stroke carries neither events nor a verdict text.
   bool final() const { return accepted && (!verdict_text.empty() || !events.empty()); }
+  /// True when the server used up the seat's sequence number with this command: accepted, or
+  /// refused by a check after the signature's (server/README.md). A refusal before it (token,
+  /// unsigned, bad signature, stale, malformed fields) may answer anyone's command.
+  bool usesUpSequence() const;
 };
 
 /// Every ball of one match at one instant of a shot (TableSnapshot).

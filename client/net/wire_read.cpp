@@ -15,6 +15,7 @@ static_assert(pool_PHASE_CLOSED == static_cast<int>(MatchPhase::Closed));
 static_assert(pool_JOIN_REMATCH == static_cast<int>(JoinAction::Rematch));
 static_assert(pool_JOIN_SERVER_FULL == static_cast<int>(JoinOutcome::ServerFull));
 static_assert(pool_REJECT_BAD_SIGNATURE == static_cast<int>(RejectReason::BadSignature));
+static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
 static_assert(pool_END_FORFEIT == static_cast<int>(rules::GameEnd::Forfeit));
 static_assert(pool_IN_HAND_BEHIND_HEAD_STRING == static_cast<int>(rules::BallInHand::BehindHeadString));
 static_assert(pool_GROUP_STRIPES == static_cast<int>(rules::Group::Stripes));
@@ -150,7 +151,7 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   report.seq = result.seq;
   report.shot_number = result.shot_number;
   report.accepted = result.accepted;
-  const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_BAD_SIGNATURE + 1);
+  const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_UNSIGNED + 1);
   const auto in_hand = enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
   const auto end = enumOf<rules::GameEnd>(result.end, pool_END_FORFEIT + 1);
   if (!reason || !in_hand || !end) return fail<ShotReport>(what, "unknown enum value");
@@ -188,8 +189,9 @@ Result<TableFrame> fromWire(const pool_TableSnapshot& snapshot) {
   return Result<TableFrame>::ok(std::move(frame));
 }
 
-pool_JoinRequest toWire(const JoinRequestFields& fields) {
-  pool_JoinRequest request{};
+net::Sample<pool_JoinRequest> toWire(const JoinRequestFields& fields) {
+  net::Sample<pool_JoinRequest> sample;
+  pool_JoinRequest& request = *sample;
   net::setText(request.client, fields.client);
   request.request = fields.request;
   request.protocol_version = net::kProtocolVersion;
@@ -198,7 +200,10 @@ pool_JoinRequest toWire(const JoinRequestFields& fields) {
   request.seat = static_cast<std::int16_t>(fields.seat);
   net::setText(request.name, fields.name);
   request.seat_token = fields.token;
-  return request;
+  const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(fields.public_key.size(), 32));
+  auto key = net::resizeSequence(request.public_key, n);
+  std::copy_n(fields.public_key.begin(), n, key.begin());
+  return sample;
 }
 
 }  // namespace pool::client

@@ -4,10 +4,12 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "client/net/match_types.h"
 #include "core/result.h"
 #include "net/messages.h"
+#include "net/sample.h"
 
 namespace pool::client {
 
@@ -26,9 +28,10 @@ struct JoinRequestFields {
   int seat = -1;
   std::string name;
   std::uint64_t token = 0;
+  std::vector<std::uint8_t> public_key;  ///< at most 32 bytes are sent
 };
 
 /// A JoinRequest sample (protocol version of this build; text cut to its bounds).
-pool_JoinRequest toWire(const JoinRequestFields& fields);
+net::Sample<pool_JoinRequest> toWire(const JoinRequestFields& fields);
 
 }  // namespace pool::client

@@ -57,8 +57,24 @@ const char* toString(RejectReason reason) {
     case RejectReason::BadCall: return "bad_call";
     case RejectReason::MatchOver: return "match_over";
     case RejectReason::BadSignature: return "bad_signature";
+    case RejectReason::Unsigned: return "unsigned";
   }
   return "unknown";
+}
+
+bool refusedAfterSignature(RejectReason reason) {
+  switch (reason) {
+    case RejectReason::MatchOver:
+    case RejectReason::NotYourTurn:
+    case RejectReason::BallsMoving:
+    case RejectReason::OptionRequired:
+    case RejectReason::OptionNotOffered:
+    case RejectReason::IllegalPlacement:
+    case RejectReason::BadCall:
+      return true;
+    default:
+      return false;
+  }
 }
 
 }  // namespace pool::net

@@ -24,7 +24,7 @@ enum class JoinOutcome : std::uint8_t {
   ServerFull,
 };
 
-/// Why the server refused a shot command (RejectReason of pool.idl), in the order it checks.
+/// Why the server refused a shot command (RejectReason of pool.idl, whose values these keep).
 enum class RejectReason : std::uint8_t {
   None,              ///< accepted
   Malformed,         ///< a field is non-finite, out of range or not a valid value
@@ -39,8 +39,13 @@ enum class RejectReason : std::uint8_t {
   OptionNotOffered,  ///< a choice the rules did not offer
   IllegalPlacement,  ///< the cue ball cannot be placed there (or must be placed)
   BadCall,           ///< the called ball or pocket is not allowed (or no call in standard play)
-  BadSignature,      ///< reserved for signed commands
+  BadSignature,      ///< not the seat key's signature of the command's fields
+  Unsigned,          ///< no signature at all
 };
+
+/// True for the refusals the server makes after a command's signature checked out (its sequence
+/// number is then used up, server/README.md); false for those before it, and for None.
+bool refusedAfterSignature(RejectReason reason);
 
 /// snake_case names, e.g. "stale_sequence"; "unknown" for a value outside the enum.
 const char* toString(MatchPhase phase);

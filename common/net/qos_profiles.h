@@ -31,7 +31,7 @@ struct QosProfile {
 namespace qos {
 
 /// Lease for player writers (JoinRequest, ShotCommand) unless the caller chooses another.
-inline constexpr std::chrono::milliseconds kPlayerLease{2000};
+inline constexpr std::chrono::milliseconds kPlayerLease{5000};
 
 /// MatchInfo: reliable, transient-local, keep-last 1 (a late joiner sees every open match).
 QosProfile lobby();

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "match/match.h"
+#include "net/command_signature.h"
 #include "rules/eight_ball.h"
 #include "rules/placement.h"
 
@@ -43,6 +44,19 @@ Check checkSeat(const Match& match, const net::ShotRequest& c) {
   return std::nullopt;
 }
 
+Check checkSigned(const net::ShotRequest& c) {
+  if (c.signature.empty()) return refuse(Reject::Unsigned, "signature: commands must be signed");
+  return std::nullopt;
+}
+
+Check checkSignature(const Match& match, const net::ShotRequest& c) {
+  const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
+  if (net::verifyCommand(c, seat.public_key) != net::SignatureCheck::Valid) {
+    return refuse(Reject::BadSignature, "signature: not " + seatName(c.seat) + "'s key");
+  }
+  return std::nullopt;
+}
+
 Check checkTurn(const Match& match, const net::ShotRequest& c) {
   const MatchPhase phase = match.phase();
   if (phase == MatchPhase::Over || phase == MatchPhase::Closed) {
@@ -65,7 +79,7 @@ Check checkSequence(const Match& match, const net::ShotRequest& c) {
   const std::uint32_t last = match.seats()[static_cast<std::size_t>(c.seat)].last_seq;
   if (c.seq <= last) {
     return refuse(Reject::StaleSequence, "seq " + std::to_string(c.seq) +
-                                             " is not above the last accepted " +
+                                             " is not above the last used " +
                                              std::to_string(last));
   }
   return std::nullopt;
@@ -154,8 +168,11 @@ CheckedCommand checkCommand(const Match& match, const net::ShotRequest& command)
   out.plan.before = match.balls();
   Check found = checkValues(match, command);
   if (!found) found = checkSeat(match, command);
-  if (!found) found = checkTurn(match, command);
+  if (!found) found = checkSigned(command);
   if (!found) found = checkSequence(match, command);
+  if (!found) found = checkSignature(match, command);
+  out.signature_valid = !found;
+  if (!found) found = checkTurn(match, command);
   if (!found) found = checkOption(match, command, out.plan);
   if (!found && out.plan.shoots) found = checkPlacement(match, command, out.plan);
   if (!found && out.plan.shoots) found = checkCall(match, command, out.plan);

@@ -28,6 +28,8 @@ struct ShotPlan {
 struct CheckedCommand {
   Rejection rejection;
   ShotPlan plan;  ///< meaningful only when accepted
+  /// The seat's key signed it: its sequence number is used up, whatever the later checks say.
+  bool signature_valid = false;
 };
 
 /// The rules' choice an option answers; empty for ShotOption::None.
@@ -37,15 +39,20 @@ std::optional<rules::Choice> choiceOf(net::ShotOption option);
 /// 1. malformed: shot values the table's physics refuses (net's validateShotCommand has already
 ///    checked the wire fields, and the registry the match id);
 /// 2. wrong seat (not 0/1, or free), then bad token;
-/// 3. match over (or closed);
-/// 4. not your turn (or the match has not started);
-/// 5. balls moving (a shot's frames are still being published);
-/// 6. stale sequence: seq must exceed the seat's last accepted one (a refused command does not
-///    use up its number, so it may be sent again corrected with the same seq);
-/// 7. option required / not offered (a pending choice is applied here, to copies);
-/// 8. illegal placement: a placement without ball in hand, a refused spot, or no placement
+/// 3. unsigned: no signature;
+/// 4. stale sequence: seq must exceed the seat's last used one (a replay of any command the
+///    seat's key signed ends here);
+/// 5. bad signature: not the seat key's Ed25519 signature of the command's fields (the one
+///    costly check, made only once the cheap ones passed). From here on the command is the
+///    seat holder's own and its number is used up whatever follows (signature_valid), so a
+///    refused command cannot be replayed later in a state where it would pass;
+/// 6. match over (or closed);
+/// 7. not your turn (or the match has not started);
+/// 8. balls moving (a shot's frames are still being published);
+/// 9. option required / not offered (a pending choice is applied here, to copies);
+/// 10. illegal placement: a placement without ball in hand, a refused spot, or no placement
 ///    while the cue ball in hand is off the table;
-/// 9. bad call: the rules' intent check (a legal group's ball and a pocket name, or a safety).
+/// 11. bad call: the rules' intent check (a legal group's ball and a pocket name, or a safety).
 /// Nothing is changed; the plan says what to run.
 CheckedCommand checkCommand(const Match& match, const net::ShotRequest& command);
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "net/protocol_enums.h"
 
@@ -24,6 +25,7 @@ struct JoinCommand {
   int seat = -1;                    ///< Seat: 0, 1 or -1 (any)
   std::string name;                 ///< the player's name (Seat)
   std::uint64_t token = 0;          ///< Rejoin, Leave, Rematch: the seat's token
+  std::vector<std::uint8_t> public_key;  ///< Seat, Rejoin: the Ed25519 key commands are signed with
 };
 
 /// The server's answer.

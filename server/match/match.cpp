@@ -68,10 +68,11 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
 // ---- Seats --------------------------------------------------------------------------------------
 
 JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::string& client,
-                           std::uint64_t token) {
+                           std::uint64_t token, const std::vector<std::uint8_t>& public_key) {
   for (int s = 0; s < 2; ++s) {
     const Seat& mine = seats_[static_cast<std::size_t>(s)];
-    if (mine.taken() && mine.client == client && (seat == s || seat == -1)) {
+    if (mine.taken() && mine.client == client && mine.public_key == public_key &&
+        (seat == s || seat == -1)) {
       return seated(id_, s, mine.token);  // a repeated request: same seat, same token
     }
   }
@@ -88,15 +89,22 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   s.player = player;
   s.client = client;
   s.token = token;
+  s.public_key = public_key;
   touch();
   if (seats_[0].taken() && seats_[1].taken() && !inPlay()) startRack(rack_ % 2 == 0 ? 0 : 1);
   return seated(id_, seat, token);
 }
 
-JoinAnswer Match::rejoin(std::uint64_t token, const std::string& client) {
+JoinAnswer Match::rejoin(std::uint64_t token, const std::string& client,
+                         const std::vector<std::uint8_t>& public_key) {
   const auto seat = seatOf(token);
   if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
   Seat& s = seats_[static_cast<std::size_t>(*seat)];
+  if (s.public_key != public_key) {
+    return JoinAnswer::refuse(JoinOutcome::BadToken,
+                              "public_key: not the key seat " + std::to_string(*seat) +
+                                  " was taken with");
+  }
   s.client = client;
   s.away_since.reset();
   touch();
@@ -175,6 +183,10 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
   answer.seq = command.seq;
   answer.shot_number = shot_number_;
   CheckedCommand checked = checkCommand(*this, command);
+  // A command its seat's key signed uses up its number, accepted or not: it cannot be replayed.
+  if (checked.signature_valid) {
+    seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  }
   if (!checked.rejection.accepted()) {
     answer.rejection = std::move(checked.rejection);
     return answer;
@@ -196,8 +208,7 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
   }
   answer.record = ShotRecord{command,     shot_number_ + 1, true,           plan.state, plan.before,
                              plan.intent, outcome->events,  outcome->balls, *verdict};
-  // Accepted: the seat's number is used up and the shot is in motion from now on.
-  seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
+  // Accepted: the shot is in motion from now on.
   ShotReport report{command.seat, command.seq, shot_number_ + 1, std::move(outcome->events),
                     std::move(*verdict)};
   auto after = tableAfter(report.verdict, outcome->balls);
@@ -211,7 +222,6 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
 
 CommandAnswer Match::applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
                                     std::vector<physics::Ball> balls) {
-  seats_[static_cast<std::size_t>(command.seat)].last_seq = command.seq;
   CommandAnswer answer;
   answer.record = ShotRecord{command, shot_number_, false, game_, balls, {}, {}, balls, verdict};
   auto after = tableAfter(verdict, std::move(balls));

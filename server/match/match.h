@@ -31,7 +31,7 @@ struct DueFrames {
 
 /// One 8-ball match. Pure logic: time comes in as `now` (s on the server's monotonic clock),
 /// shots are simulated at once and their frames handed out as `now` reaches them. Every refused
-/// command leaves it unchanged.
+/// command leaves it unchanged, except that one its seat's key signed uses up its sequence number.
 class Match {
  public:
   Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner,
@@ -44,12 +44,15 @@ class Match {
   // ---- Seats and spectators (the registry checks names, versions and ids first) -------------
 
   /// Seats `player` (client `client`) in `seat` (0, 1, or -1 for the first free one) with
-  /// `token` (non-zero). The client already in that seat gets it back unchanged (a repeated
-  /// request). Starts a rack when both seats are taken and no game is in play.
+  /// `token` (non-zero), binding `public_key` to it: the seat's commands must be signed with it.
+  /// The client already in that seat with that key gets it back unchanged (a repeated request).
+  /// Starts a rack when both seats are taken and no game is in play.
   JoinAnswer takeSeat(int seat, const std::string& player, const std::string& client,
-                      std::uint64_t token);
-  /// Gives the seat holding `token` back to `client`, present again.
-  JoinAnswer rejoin(std::uint64_t token, const std::string& client);
+                      std::uint64_t token, const std::vector<std::uint8_t>& public_key);
+  /// Gives the seat holding `token` back to `client`, present again, if `public_key` is the one
+  /// the seat was taken with.
+  JoinAnswer rejoin(std::uint64_t token, const std::string& client,
+                    const std::vector<std::uint8_t>& public_key);
   /// The seat holding `token` leaves; a game in play is forfeited to the other seat.
   JoinAnswer leave(std::uint64_t token);
   /// Asks for a new rack once the match is over; it starts when both seats asked.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "net/key_pair.h"
+
 namespace pool::server {
 
 namespace {
@@ -84,7 +86,8 @@ JoinAnswer MatchRegistry::join(const JoinCommand& c) {
   }
   switch (c.action) {
     case JoinAction::Spectate: return match->addSpectator(c.client);
-    case JoinAction::Rejoin: return about(match->rejoin(c.token, c.client), c.match);
+    case JoinAction::Rejoin:
+      return about(match->rejoin(c.token, c.client, c.public_key), c.match);
     case JoinAction::Leave: return about(leave(c), c.match);
     case JoinAction::Rematch: return about(match->rematch(c.token), c.match);
     case JoinAction::Seat: break;
@@ -99,6 +102,10 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
   if (c.seat < -1 || c.seat > 1) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "seat: must be 0, 1 or -1 (any)");
   }
+  if (c.public_key.size() != net::kPublicKeyBytes) {
+    return JoinAnswer::refuse(JoinOutcome::NotAllowed,
+                              "public_key: a seat needs the 32-byte Ed25519 key of its commands");
+  }
   Match* match = nullptr;
   if (c.match == kNewMatch) {
     match = open();
@@ -108,7 +115,7 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     match = find(c.match);
     if (!match) return JoinAnswer::refuse(JoinOutcome::NoSuchMatch, "no match " + c.match);
   }
-  return match->takeSeat(c.seat, c.name, c.client, random_.token());
+  return match->takeSeat(c.seat, c.name, c.client, random_.token(), c.public_key);
 }
 
 JoinAnswer MatchRegistry::leave(const JoinCommand& c) {

@@ -26,7 +26,7 @@ struct RegistryOptions {
   std::string table = "wpa-9ft";    ///< table spec of every match
   MatchOptions match;
   std::size_t max_matches = 256;    ///< "new" beyond this is refused (server full)
-  std::uint32_t protocol_version = 1;  ///< a join with another version is refused
+  std::uint32_t protocol_version = 2;  ///< a join with another version is refused
   std::uint64_t seed = 0;           ///< tokens and racks; 0: from the OS entropy source
 };
 

@@ -1,6 +1,8 @@
 // Replaying: seats, rematches between racks, the stored commands re-addressed to the replay match.
 #include "match/match_replay.h"
 
+#include "net/command_signature.h"
+
 #include "match/shot_runner.h"
 
 namespace pool::server {
@@ -31,12 +33,16 @@ bool sameEvents(const physics::EventLog& a, const physics::EventLog& b) {
 
 MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> commands,
                          Match& target, std::array<std::uint64_t, 2> tokens, double pause)
-    : commands_(std::move(commands)), target_(target), tokens_(tokens), pause_(pause) {
+    : commands_(std::move(commands)),
+      target_(target),
+      tokens_(tokens),
+      keys_{net::generateKeyPair(), net::generateKeyPair()},
+      pause_(pause) {
   for (int s = 0; s < 2; ++s) {
-    std::string player = stored.seats[static_cast<std::size_t>(s)].player;
+    const auto i = static_cast<std::size_t>(s);
+    std::string player = stored.seats[i].player;
     if (player.empty()) player = "seat " + std::to_string(s);
-    target_.takeSeat(s, player, "replay-" + std::to_string(s),
-                     tokens_[static_cast<std::size_t>(s)]);
+    target_.takeSeat(s, player, "replay-" + std::to_string(s), tokens_[i], keys_[i].publicKey());
   }
 }
 
@@ -56,6 +62,7 @@ std::optional<CommandAnswer> MatchReplay::step(double now) {
   net::ShotRequest command = stored.command;
   command.match = target_.id();
   command.seat_token = tokens_[static_cast<std::size_t>(command.seat)];
+  net::signCommand(command, keys_[static_cast<std::size_t>(command.seat)]);
   CommandAnswer answer = target_.handleShot(command, now);
   check(stored, answer);
   return answer;

@@ -9,6 +9,7 @@
 #include "match/match.h"
 #include "match/match_snapshot.h"
 #include "match/shot_record.h"
+#include "net/key_pair.h"
 
 namespace pool::server {
 
@@ -17,8 +18,9 @@ namespace pool::server {
 /// shot against the stored one: the table at the strike and the event log must be identical.
 class MatchReplay {
  public:
-  /// Seats the stored players in `target` with `tokens` (the replay's own; the stored ones stay
-  /// private to the stored match).
+  /// Seats the stored players in `target` with `tokens` and fresh key pairs (the replay's own; the
+  /// stored tokens stay private to the stored match): each stored command is signed again for
+  /// `target`, as its seat's client would sign it.
   MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> commands, Match& target,
               std::array<std::uint64_t, 2> tokens, double pause);
 
@@ -37,6 +39,7 @@ class MatchReplay {
   std::vector<ShotRecord> commands_;
   Match& target_;
   std::array<std::uint64_t, 2> tokens_;
+  std::array<net::KeyPair, 2> keys_;
   double pause_;
   std::size_t next_ = 0;
   std::optional<double> idle_since_;

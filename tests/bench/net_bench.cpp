@@ -21,7 +21,9 @@
 #include <vector>
 
 #include "client/net/wire_read.h"
+#include "net/command_signature.h"
 #include "net/convert.h"
+#include "net/key_pair.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
@@ -166,9 +168,10 @@ class Driver {
     int request = 0;
     for (auto& [id, t] : tables_) {
       for (int seat = 0; seat < 2; ++seat) {
-        requests_.write(client::toWire({clientOf(id, seat), static_cast<std::uint32_t>(++request),
-                                        id, client::JoinAction::Seat, seat, "p" + std::to_string(seat),
-                                        0}));
+        requests_.write(*client::toWire({clientOf(id, seat),
+                                         static_cast<std::uint32_t>(++request), id,
+                                         client::JoinAction::Seat, seat,
+                                         "p" + std::to_string(seat), 0, key_.publicKey()}));
       }
     }
     std::size_t seated = 0;
@@ -281,6 +284,7 @@ class Driver {
     t.arrivals.clear();
     t.done = false;
     t.shot = s.shot_number + 1;
+    net::signCommand(r, key_);
     commands_.write(*net::toWire(r));
   }
 
@@ -342,6 +346,7 @@ class Driver {
   net::Reader<pool_MatchState> states_;
   net::Writer<pool_JoinRequest> requests_;
   net::Writer<pool_ShotCommand> commands_;
+  net::KeyPair key_ = net::generateKeyPair();  ///< every seat's, for the driver plays them all
   net::WaitSet waitset_;
   std::map<std::string, Table> tables_;
   std::vector<double> latencies_, round_trips_, command_to_frame_;

@@ -1,6 +1,6 @@
-// A bot killed mid-match (SIGKILL) and started again with the same name and token file takes its
-// seat back within the grace period and plays on; one left dead past the grace period loses the
-// match by forfeit.
+// A bot killed mid-match (SIGKILL) and started again with the same name, token file and key takes
+// its seat back within the grace period and plays on; one left dead past the grace period loses
+// the match by forfeit; one starved past its liveliness lease notices it is away and rejoins.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -49,8 +49,20 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   auto saved = bot::readSeatFile(file("alice.json"));
   ASSERT_TRUE(saved && *saved) << "no seat file";
   alice->kill(SIGKILL);
-  ASSERT_TRUE(untilConnected(recorder, "alice", false, 10s)) << "the server never noticed";
+  ASSERT_TRUE(untilConnected(recorder, "alice", false, 20s)) << "the server never noticed";
   const std::uint32_t shots_when_killed = recorder.latest(recorder.firstMatch())->shot_number;
+
+  // Someone with a copy of the token file but not the key (which stays beside it) is refused.
+  std::filesystem::copy_file(file("alice.json"), file("mallory.json"));
+  ChildProcess& mallory = startBot("mallory", 11, {"--token-file", file("mallory.json")});
+  EXPECT_TRUE(recorder.pump(20s, [&] {
+    return mallory.err().find("refused: bad_token public_key") != std::string::npos;
+  })) << mallory.err();
+  mallory.kill(SIGKILL);
+  const MatchView* held = recorder.latest(recorder.firstMatch());
+  ASSERT_NE(held, nullptr);
+  EXPECT_EQ(seatOf(*held, "mallory"), -1);
+  EXPECT_FALSE(held->seats[static_cast<std::size_t>((*saved)->seat)].connected);
 
   // Started again with the same identity: it rejoins the same seat and shoots again.
   alice = &startBot("alice", 5, alice_args);
@@ -80,6 +92,47 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   EXPECT_FALSE(std::filesystem::exists(file("alice.json"))) << "the seat file outlived the match";
 }
 
+TEST_F(BotRejoinTest, ABotStalledPastItsLeaseTakesItsSeatBackAndPlaysOn) {
+  open(kStarved, "starved");
+  MatchRecorder recorder(kStarved);
+  startServer({"--fast", "--grace", "30"});
+  ChildProcess* alice = &startBot("alice", 9, {"--think", "0.2"});
+  ChildProcess& bob = startBot("bob", 10, {"--think", "0.2"});
+  ASSERT_TRUE(untilTurnOf(recorder, "alice", 1))
+      << (stalledOnLayout(recorder) ? "stalled: the physics refuses a layout it left"
+                                    : "no turn of alice to interrupt\n" + logs());
+
+  // Stopped (like a process starved of CPU) until the server gives up on its lease, then resumed:
+  // the same process, the same seat, but the server has it away and counts down the grace.
+  alice->kill(SIGSTOP);
+  const bool noticed = untilConnected(recorder, "alice", false, 20s);
+  alice->kill(SIGCONT);
+  ASSERT_TRUE(noticed) << "the server never noticed";
+  const std::uint32_t shots_when_stopped = recorder.latest(recorder.firstMatch())->shot_number;
+  ASSERT_TRUE(untilConnected(recorder, "alice", true, 20s)) << alice->err();
+  EXPECT_NE(alice->err().find("the server has us away"), std::string::npos) << alice->err();
+
+  // It plays on: its next shots are accepted (no bad_token), and the match ends for both.
+  ASSERT_TRUE(recorder.pump(30s, [&] {
+    const MatchView* v = recorder.latest(recorder.firstMatch());
+    return stalledOnLayout(recorder) || (v && v->shot_number > shots_when_stopped + 1);
+  })) << alice->err();
+  if (stalledOnLayout(recorder)) {
+    std::printf("note: the match stalled (physics refuses its own layout) after the rejoin\n");
+    return;
+  }
+  recorder.pump(90s, [&] {
+    return stalledOnLayout(recorder) || (!alice->running() && !bob.running());
+  });
+  if (stalledOnLayout(recorder)) return;
+  EXPECT_EQ(alice->err().find("bad_token"), std::string::npos) << alice->err();
+  EXPECT_EQ(alice->waitExit(1s), 0) << alice->err();
+  EXPECT_EQ(bob.waitExit(1s), 0) << bob.err();
+  EXPECT_EQ(alice->lastLine().rfind("result: ", 0), 0u) << alice->out();
+  EXPECT_EQ(recorder.latest(recorder.firstMatch())->end == rules::GameEnd::Forfeit, false)
+      << "forfeited although it came back";
+}
+
 TEST_F(BotRejoinTest, PastTheGracePeriodTheMatchIsForfeitedToTheOpponent) {
   open(kForfeit, "forfeit");
   MatchRecorder recorder(kForfeit);
@@ -96,9 +149,10 @@ TEST_F(BotRejoinTest, PastTheGracePeriodTheMatchIsForfeitedToTheOpponent) {
                                     : "no turn of alice to interrupt\n" + logs());
   alice.kill(SIGKILL);
 
-  // Lease (2 s) plus grace (2 s) later the match is over, won by bob, and bob says so.
+  // Lease (net::qos::kPlayerLease, 5 s) plus grace (2 s) later the match is over, won by bob,
+  // and bob says so.
   const auto killed = std::chrono::steady_clock::now();
-  ASSERT_TRUE(recorder.pump(20s, [&] { return !bob.running(); })) << bob.err();
+  ASSERT_TRUE(recorder.pump(30s, [&] { return !bob.running(); })) << bob.err();
   const double after = std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
   EXPECT_EQ(bob.waitExit(1s), 0);
   EXPECT_EQ(bob.lastLine().rfind("result: win", 0), 0u) << bob.out();
@@ -112,7 +166,7 @@ TEST_F(BotRejoinTest, PastTheGracePeriodTheMatchIsForfeitedToTheOpponent) {
   EXPECT_EQ(v->phase, MatchPhase::Over);
   EXPECT_EQ(v->end, rules::GameEnd::Forfeit);
   EXPECT_EQ(v->winner, seatOf(*v, "bob"));
-  EXPECT_GE(after, 2.0) << "forfeited before the grace period ran out";
+  EXPECT_GE(after, 2.0 + 0.9 * 5.0) << "forfeited before the lease and the grace period ran out";
   std::printf("forfeited %.1f s after the kill\n", after);
 }
 

@@ -24,6 +24,7 @@ enum Domain : std::uint32_t {
   kReplay = 121,
   kWindowShot = 210,
   kWindowSpectate = 211,
+  kStarved = 136,  ///< 135–149: the signing, flood and presence tests
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

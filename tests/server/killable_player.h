@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <thread>
@@ -18,11 +19,17 @@
 namespace pool::server::test {
 
 inline constexpr const char* kPlayerDomainEnv = "POOL_SERVER_TEST_PLAYER_DOMAIN";
+inline constexpr const char* kPlayerKeyEnv = "POOL_SERVER_TEST_PLAYER_KEY";
 
-/// In the re-executed test binary: take seat 1 of "t-1" as "Bob", write the token on stdout as
-/// one line, then wait to be killed. Returns an exit code on failure.
+/// In the re-executed test binary: take seat 1 of "t-1" as "Bob" with the key kept in the file
+/// $POOL_SERVER_TEST_PLAYER_KEY, write the token on stdout as one line, then wait to be killed.
+/// Returns an exit code on failure.
 inline int playUntilKilled(std::uint32_t domain) {
   TestClient bob(domain, "bob-process");
+  const char* key_file = std::getenv(kPlayerKeyEnv);
+  const auto key = key_file ? net::loadOrCreateKeyFile(key_file) : Result<net::KeyPair>::fail("");
+  if (!key) return 5;
+  bob.useKey(*key);
   if (!bob.waitForServer()) return 3;
   const auto reply = bob.join(pool_JOIN_SEAT, "t-1", "Bob", 1);
   if (!reply || reply->outcome != pool_JOIN_ACCEPTED) return 4;
@@ -35,7 +42,11 @@ inline int playUntilKilled(std::uint32_t domain) {
 /// playUntilKilled. Killed and reaped when it goes out of scope.
 class KillablePlayer {
  public:
-  explicit KillablePlayer(std::uint32_t domain) {
+  explicit KillablePlayer(std::uint32_t domain)
+      : key_file_(std::filesystem::temp_directory_path() /
+                  ("pool-player-" + std::to_string(::getpid()) + "-" + std::to_string(domain) +
+                   ".key")) {
+    std::filesystem::remove(key_file_);
     int fds[2];
     if (::pipe(fds) != 0) return;
     pid_ = ::fork();
@@ -44,6 +55,7 @@ class KillablePlayer {
       ::close(fds[0]);
       ::close(fds[1]);
       ::setenv(kPlayerDomainEnv, std::to_string(domain).c_str(), 1);
+      ::setenv(kPlayerKeyEnv, key_file_.c_str(), 1);
       ::execl("/proc/self/exe", "server_tests_player", static_cast<char*>(nullptr));
       ::_exit(127);
     }
@@ -53,6 +65,8 @@ class KillablePlayer {
   ~KillablePlayer() {
     kill();
     if (out_ >= 0) ::close(out_);
+    std::error_code ec;
+    std::filesystem::remove(key_file_, ec);
   }
   KillablePlayer(const KillablePlayer&) = delete;
   KillablePlayer& operator=(const KillablePlayer&) = delete;
@@ -73,6 +87,9 @@ class KillablePlayer {
     return std::stoull(line);
   }
 
+  /// The key pair the player kept in its key file (once it has taken its seat).
+  Result<net::KeyPair> key() const { return net::loadOrCreateKeyFile(key_file_); }
+
   /// SIGKILL: no goodbye on the wire, only the liveliness lease running out.
   void kill() {
     if (pid_ <= 0) return;
@@ -82,6 +99,7 @@ class KillablePlayer {
   }
 
  private:
+  std::filesystem::path key_file_;
   pid_t pid_ = -1;
   int out_ = -1;
 };

@@ -4,12 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <numbers>
+#include <string>
 
 #include "match/match.h"
 #include "match/match_registry.h"
 #include "match/table_kit.h"
+#include "net/command_signature.h"
+#include "net/key_pair.h"
 #include "net/shot_request.h"
 
 namespace pool::server::test {
@@ -38,15 +42,37 @@ inline MatchOptions pacedOptions() {
 constexpr std::uint64_t kToken0 = 0x1111;
 constexpr std::uint64_t kToken1 = 0x2222;
 
+/// The key pair of the test client `client` (made once per test program).
+inline const net::KeyPair& keyOf(const std::string& client) {
+  static std::map<std::string, net::KeyPair> keys;
+  auto it = keys.find(client);
+  if (it == keys.end()) it = keys.emplace(client, net::generateKeyPair()).first;
+  return it->second;
+}
+inline std::vector<std::uint8_t> publicKeyOf(const std::string& client) {
+  return keyOf(client).publicKey();
+}
+
+/// The client that seatedMatch seats in `seat`: "a" in 0, "b" in 1.
+inline std::string clientOf(int seat) { return seat == 1 ? "b" : "a"; }
+
+/// `r` signed by the player seatedMatch put in its seat (a command for another seat number is
+/// signed by seat 0's player).
+inline net::ShotRequest sealed(net::ShotRequest r) {
+  net::signCommand(r, keyOf(clientOf(r.seat)));
+  return r;
+}
+
 /// A match with "Ada" (client a, seat 0) and "Bob" (client b, seat 1) seated: the rack is up.
 inline std::unique_ptr<Match> seatedMatch(MatchOptions options = pacedOptions()) {
   auto m = std::make_unique<Match>("srv-1", "Table 1", runner(), options, 42);
-  EXPECT_TRUE(m->takeSeat(0, "Ada", "a", kToken0).accepted());
-  EXPECT_TRUE(m->takeSeat(1, "Bob", "b", kToken1).accepted());
+  EXPECT_TRUE(m->takeSeat(0, "Ada", "a", kToken0, publicKeyOf("a")).accepted());
+  EXPECT_TRUE(m->takeSeat(1, "Bob", "b", kToken1, publicKeyOf("b")).accepted());
   return m;
 }
 
-/// A firm break straight up the table from the cue ball's spot, by seat 0.
+/// A firm break straight up the table from the cue ball's spot, by seat 0, signed (a test that
+/// changes a field signs it again with sealed()).
 inline net::ShotRequest breakShot(std::uint32_t seq = 1) {
   net::ShotRequest r;
   r.match = "srv-1";
@@ -56,7 +82,7 @@ inline net::ShotRequest breakShot(std::uint32_t seq = 1) {
   r.cue.yaw = 0.0;
   r.cue.speed = 8.0;
   r.cue.tip_height = 0.1;
-  return r;
+  return sealed(r);
 }
 
 /// Runs the shot in motion to its end (taking every frame) and returns its report.

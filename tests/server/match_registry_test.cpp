@@ -21,11 +21,12 @@ RegistryOptions fixedOptions(std::string server_id = "srv") {
 JoinCommand seatRequest(std::string client, std::string match, std::string name, int seat = -1) {
   JoinCommand c;
   c.client = std::move(client);
-  c.protocol_version = 1;
+  c.protocol_version = RegistryOptions{}.protocol_version;
   c.match = std::move(match);
   c.action = JoinAction::Seat;
   c.seat = seat;
   c.name = std::move(name);
+  c.public_key = publicKeyOf(c.client);
   return c;
 }
 
@@ -133,7 +134,10 @@ TEST(MatchRegistry, AVanishedPlayerRejoinsWithTheTokenOrForfeitsAfterTheGrace) {
   r.clientGone("a", 100.0);
   EXPECT_FALSE(r.find("srv-1")->seats()[0].connected());
   EXPECT_FALSE(r.find("srv-2")->seats()[0].connected());
-  const JoinAnswer back = r.join(withToken("a-restarted", "srv-1", JoinAction::Rejoin, a1.token));
+  JoinCommand restarted = withToken("a-restarted", "srv-1", JoinAction::Rejoin, a1.token);
+  EXPECT_EQ(r.join(restarted).outcome, JoinOutcome::BadToken);  // a new key: not the player
+  restarted.public_key = publicKeyOf("a");  // the key kept by the player who left
+  const JoinAnswer back = r.join(restarted);
   ASSERT_TRUE(back.accepted());
   EXPECT_EQ(back.seat, 0);
   EXPECT_EQ(back.token, a1.token);
@@ -142,6 +146,22 @@ TEST(MatchRegistry, AVanishedPlayerRejoinsWithTheTokenOrForfeitsAfterTheGrace) {
   EXPECT_EQ(r.find("srv-2")->phase(), MatchPhase::Over);   // did not
   EXPECT_EQ(r.find("srv-2")->game().winner, 1);
   (void)a2;
+}
+
+TEST(MatchRegistry, ASeatNeedsAnEd25519PublicKey) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  JoinCommand keyless = seatRequest("a", "srv-1", "Ada");
+  keyless.public_key.clear();
+  const JoinAnswer refused = r.join(keyless);
+  EXPECT_EQ(refused.outcome, JoinOutcome::NotAllowed);
+  EXPECT_NE(refused.reason.find("public_key"), std::string::npos) << refused.reason;
+  keyless.public_key.assign(31, 7);
+  EXPECT_EQ(r.join(keyless).outcome, JoinOutcome::NotAllowed);
+  EXPECT_FALSE(r.find("srv-1")->seats()[0].taken());
+  const JoinAnswer seated = r.join(seatRequest("a", "srv-1", "Ada"));
+  ASSERT_TRUE(seated.accepted());
+  EXPECT_EQ(r.find("srv-1")->seats()[0].public_key, publicKeyOf("a"));
 }
 
 TEST(MatchRegistry, ShotsAreRoutedByMatchIdAndUnknownMatchesRefused) {
@@ -154,7 +174,7 @@ TEST(MatchRegistry, ShotsAreRoutedByMatchIdAndUnknownMatchesRefused) {
   shot.match = "srv-7";
   EXPECT_EQ(r.shoot(shot, 0.0).rejection.reason, Reject::NoSuchMatch);
   shot.match = "srv-1";
-  EXPECT_TRUE(r.shoot(shot, 0.0).accepted());
+  EXPECT_TRUE(r.shoot(sealed(shot), 0.0).accepted());
   EXPECT_EQ(r.nextFrameDue(), 0.0);
 }
 

@@ -12,12 +12,12 @@ using namespace test;
 TEST(MatchSeats, TwoPlayersStartARackWithTheCueBallBehindTheHeadString) {
   Match m("srv-1", "Table 1", runner(), {}, 7);
   EXPECT_EQ(m.phase(), MatchPhase::Lobby);
-  const JoinAnswer a = m.takeSeat(-1, "Ada", "a", kToken0);
+  const JoinAnswer a = m.takeSeat(-1, "Ada", "a", kToken0, publicKeyOf("a"));
   ASSERT_TRUE(a.accepted());
   EXPECT_EQ(a.seat, 0);
   EXPECT_EQ(a.token, kToken0);
   EXPECT_EQ(m.phase(), MatchPhase::Lobby);
-  const JoinAnswer b = m.takeSeat(-1, "Bob", "b", kToken1);
+  const JoinAnswer b = m.takeSeat(-1, "Bob", "b", kToken1, publicKeyOf("b"));
   ASSERT_TRUE(b.accepted());
   EXPECT_EQ(b.seat, 1);
   EXPECT_EQ(m.phase(), MatchPhase::Break);
@@ -29,14 +29,14 @@ TEST(MatchSeats, TwoPlayersStartARackWithTheCueBallBehindTheHeadString) {
 
 TEST(MatchSeats, TakenSeatsAndFullMatchesAreRefused) {
   auto m = seatedMatch();
-  EXPECT_EQ(m->takeSeat(0, "Cy", "c", 0x3333).outcome, JoinOutcome::SeatTaken);
-  EXPECT_EQ(m->takeSeat(-1, "Cy", "c", 0x3333).outcome, JoinOutcome::MatchFull);
+  EXPECT_EQ(m->takeSeat(0, "Cy", "c", 0x3333, publicKeyOf("c")).outcome, JoinOutcome::SeatTaken);
+  EXPECT_EQ(m->takeSeat(-1, "Cy", "c", 0x3333, publicKeyOf("c")).outcome, JoinOutcome::MatchFull);
 }
 
 TEST(MatchSeats, ARepeatedRequestGetsTheSameSeatAndToken) {
   auto m = seatedMatch();
   const std::uint64_t before = m->revision();
-  const JoinAnswer again = m->takeSeat(-1, "Ada", "a", 0x9999);
+  const JoinAnswer again = m->takeSeat(-1, "Ada", "a", 0x9999, publicKeyOf("a"));
   ASSERT_TRUE(again.accepted());
   EXPECT_EQ(again.seat, 0);
   EXPECT_EQ(again.token, kToken0);
@@ -144,7 +144,7 @@ TEST(MatchShot, AChoiceWithoutAShotIsDoneAtOnce) {
   r.seat_token = kToken1;
   r.option = net::ShotOption::ReBreak;
   r.cue.speed = 0.0;  // no shot: the cue values are not looked at
-  const CommandAnswer answer = m->handleShot(r, 1.0);
+  const CommandAnswer answer = m->handleShot(sealed(r), 1.0);
   ASSERT_TRUE(answer.accepted()) << answer.rejection.text;
   EXPECT_FALSE(answer.in_motion);
   ASSERT_TRUE(answer.done);
@@ -171,12 +171,26 @@ TEST(MatchPresence, AnAwayPlayerKeepsTheSeatForTheGracePeriodAndMayRejoin) {
   EXPECT_FALSE(m->seats()[1].connected());
   EXPECT_FALSE(m->expireAway(39.9, 30.0));
   EXPECT_EQ(m->phase(), MatchPhase::Break);
-  const JoinAnswer back = m->rejoin(kToken1, "b2");
+  const JoinAnswer back = m->rejoin(kToken1, "b2", publicKeyOf("b"));
   ASSERT_TRUE(back.accepted());
   EXPECT_EQ(back.seat, 1);
   EXPECT_TRUE(m->seats()[1].connected());
   EXPECT_FALSE(m->expireAway(100.0, 30.0));
-  EXPECT_EQ(m->rejoin(0x7777, "x").outcome, JoinOutcome::BadToken);
+  EXPECT_EQ(m->rejoin(0x7777, "x", publicKeyOf("x")).outcome, JoinOutcome::BadToken);
+}
+
+TEST(MatchPresence, ARejoinMustPresentTheKeyTheSeatWasTakenWith) {
+  auto m = seatedMatch();
+  m->clientGone("b", 10.0);
+  const std::uint64_t revision = m->revision();
+  const JoinAnswer thief = m->rejoin(kToken1, "eve", publicKeyOf("eve"));  // token read off the LAN
+  EXPECT_EQ(thief.outcome, JoinOutcome::BadToken);
+  EXPECT_NE(thief.reason.find("public_key"), std::string::npos) << thief.reason;
+  EXPECT_EQ(m->rejoin(kToken1, "b", {}).outcome, JoinOutcome::BadToken);
+  EXPECT_EQ(m->revision(), revision);
+  EXPECT_FALSE(m->seats()[1].connected());
+  EXPECT_EQ(m->seats()[1].client, "b");
+  EXPECT_TRUE(m->rejoin(kToken1, "b", publicKeyOf("b")).accepted());
 }
 
 TEST(MatchPresence, PastTheGracePeriodTheGameIsForfeited) {
@@ -207,7 +221,7 @@ TEST(MatchRematch, BothPlayersMustAskAndTheOtherSeatBreaks) {
   m->clientGone("b", 0.0);
   m->expireAway(30.0, 30.0);
   ASSERT_EQ(m->phase(), MatchPhase::Over);
-  ASSERT_TRUE(m->rejoin(kToken1, "b").accepted());
+  ASSERT_TRUE(m->rejoin(kToken1, "b", publicKeyOf("b")).accepted());
   ASSERT_TRUE(m->rematch(kToken0).accepted());
   EXPECT_EQ(m->phase(), MatchPhase::Over);
   ASSERT_TRUE(m->rematch(kToken1).accepted());

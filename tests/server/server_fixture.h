@@ -28,6 +28,9 @@ enum Domain : std::uint32_t {
   kSideBySide,
 };
 
+/// The flood tests' domain (135–149 are theirs).
+inline constexpr std::uint32_t kFlood = 135;
+
 /// Two players seated in one match.
 struct Seated {
   std::string match;
@@ -42,9 +45,10 @@ class ServerTest : public ::testing::Test {
     if (server_ && HasFailure()) std::cerr << "---- pool-server log ----\n" << server_->log();
   }
 
-  /// Starts the server on `domain` with server id "t" and `args`.
-  void start(std::uint32_t domain, std::vector<std::string> args) {
-    args.insert(args.end(), {"--server-id", "t", "--log-level", "debug"});
+  /// Starts the server on `domain` with server id "t", `args` and `log_level`.
+  void start(std::uint32_t domain, std::vector<std::string> args,
+             const std::string& log_level = "debug") {
+    args.insert(args.end(), {"--server-id", "t", "--log-level", log_level});
     server_ = std::make_unique<ServerProcess>(domain, args);
     ASSERT_GT(server_->pid(), 0);
   }

@@ -27,8 +27,9 @@ pool_RejectReason answerTo(TestClient& observer, TestClient& sender,
   return answer ? answer->reject_reason : pool_REJECT_NONE;
 }
 
-pool_RejectReason answerTo(TestClient& observer, TestClient& sender,
-                           const net::ShotRequest& request) {
+/// The same for `request` signed with the sender's key.
+pool_RejectReason answerTo(TestClient& observer, TestClient& sender, net::ShotRequest request) {
+  net::signCommand(request, sender.key());
   return answerTo(observer, sender, *net::toWire(request));
 }
 
@@ -65,18 +66,21 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   EXPECT_EQ(answerTo(a, a, no_seat), pool_REJECT_MALFORMED);
   net::ShotRequest ahead = breakShot(s, 0, 1);
   ahead.cue_ball_at = Eigen::Vector2d(0.2, 0.0);
-  EXPECT_EQ(answerTo(a, a, ahead), pool_REJECT_ILLEGAL_PLACEMENT);
-  EXPECT_EQ(answerTo(a, a, breakShot(s, 0, 0)), pool_REJECT_STALE_SEQUENCE);
+  EXPECT_EQ(answerTo(a, a, ahead), pool_REJECT_ILLEGAL_PLACEMENT);  // signed: 1 is used up
+  EXPECT_EQ(answerTo(a, a, breakShot(s, 0, 1)), pool_REJECT_STALE_SEQUENCE);
+  // Someone who read seat 0's token off the wire cannot shoot for it, signed or not.
+  EXPECT_EQ(answerTo(a, b, *net::toWire(breakShot(s, 0, 2))), pool_REJECT_UNSIGNED);
+  EXPECT_EQ(answerTo(a, b, breakShot(s, 0, 2)), pool_REJECT_BAD_SIGNATURE);
   a.waitUntil([] { return false; }, 200ms);  // time for any (wrong) state change to arrive
   EXPECT_EQ(a.states.size(), states_before) << "a refusal changed the match";
   EXPECT_EQ(a.latestState(s.match)->revision, revision);
 
-  // A legal shot still goes through (seq 1 was never used up), paced to the wall clock.
+  // A legal shot still goes through (the forgeries did not use 2 up), paced to the wall clock.
   const auto sent = std::chrono::steady_clock::now();
-  EXPECT_EQ(answerTo(a, a, softShot(s, 0, 1)), pool_REJECT_NONE);
-  EXPECT_EQ(answerTo(a, a, breakShot(s, 0, 2)), pool_REJECT_BALLS_MOVING);
-  EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 1)), pool_REJECT_NOT_YOUR_TURN);
-  const auto* done = a.waitFinal(s.match, 0, 1);
+  EXPECT_EQ(answerTo(a, a, softShot(s, 0, 2)), pool_REJECT_NONE);
+  EXPECT_EQ(answerTo(a, a, breakShot(s, 0, 3)), pool_REJECT_BALLS_MOVING);
+  EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 2)), pool_REJECT_NOT_YOUR_TURN);
+  const auto* done = a.waitFinal(s.match, 0, 2);
   ASSERT_NE(done, nullptr);
   const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - sent;
   const double motion = done->events._buffer[done->events._length - 1].t;
@@ -89,18 +93,21 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   ASSERT_NE(choose, nullptr);
   EXPECT_EQ(choose->shooter, 1);
   ASSERT_GT(choose->options._length, 0u);
-  EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 1)), pool_REJECT_OPTION_REQUIRED);
-  net::ShotRequest respot = breakShot(s, 1, 1);
+  EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 3)), pool_REJECT_OPTION_REQUIRED);
+  net::ShotRequest respot = breakShot(s, 1, 4);
   respot.option = net::ShotOption::RespotEight;
   EXPECT_EQ(answerTo(a, b, respot), pool_REJECT_OPTION_NOT_OFFERED);
-  net::ShotRequest rebreak = breakShot(s, 1, 1);
+  net::ShotRequest rebreak = breakShot(s, 1, 5);
   rebreak.option = net::ShotOption::ReBreak;
-  EXPECT_EQ(answerTo(a, b, rebreak), pool_REJECT_NONE);
+  net::signCommand(rebreak, b.key());
+  const auto rebreak_bytes = net::toWire(rebreak);
+  EXPECT_EQ(answerTo(a, b, *rebreak_bytes), pool_REJECT_NONE);
   ASSERT_NE(b.waitState(s.match, [](auto& st) {
     return st.phase == pool_PHASE_BREAK && st.shooter == 1;
   }), nullptr);
-  EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 1)), pool_REJECT_STALE_SEQUENCE);  // a replay
-  EXPECT_EQ(answerTo(a, b, softShot(s, 1, 2)), pool_REJECT_NONE);
+  // The same bytes again, by anyone: a replay.
+  EXPECT_EQ(answerTo(a, a, *rebreak_bytes), pool_REJECT_STALE_SEQUENCE);
+  EXPECT_EQ(answerTo(a, b, softShot(s, 1, 6)), pool_REJECT_NONE);
 }
 
 TEST_F(ServerRejections, CommandsForAnUnknownMatchAreRefused) {

@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "net/command_signature.h"
 #include "net/convert.h"
+#include "net/key_pair.h"
 #include "net/messages.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
@@ -56,6 +58,10 @@ class TestClient {
   }
 
   const std::string& id() const { return id_; }
+  /// The key pair whose public half this client's seat and rejoin requests carry.
+  const net::KeyPair& key() const { return key_; }
+  /// Uses `key` from now on (e.g. a restarted player's kept key).
+  void useKey(const net::KeyPair& key) { key_ = key; }
 
   /// Pumps the readers until `done()` holds or `timeout` passes; returns done().
   bool waitUntil(const std::function<bool()>& done, std::chrono::milliseconds timeout = 10s) {
@@ -81,7 +87,8 @@ class TestClient {
                                      const std::string& name = "", short seat = -1,
                                      std::uint64_t token = 0,
                                      std::uint32_t version = net::kProtocolVersion) {
-    pool_JoinRequest r{};
+    net::Sample<pool_JoinRequest> sample;
+    pool_JoinRequest& r = *sample;
     net::setText(r.client, id_);
     r.request = ++requests_;
     r.protocol_version = version;
@@ -90,6 +97,8 @@ class TestClient {
     r.seat = seat;
     net::setText(r.name, name);
     r.seat_token = token;
+    auto key = net::resizeSequence(r.public_key, net::kPublicKeyBytes);
+    std::copy(key_.public_key.begin(), key_.public_key.end(), key.begin());
     EXPECT_TRUE(join_writer_.write(r));
     const std::uint32_t wanted = r.request;
     std::optional<pool_JoinReply> reply;
@@ -104,7 +113,12 @@ class TestClient {
 
   /// Writes a shot command as given.
   void send(const pool_ShotCommand& command) { EXPECT_TRUE(command_writer_.write(command)); }
-  void send(const net::ShotRequest& request) { send(*net::toWire(request)); }
+  void sendAsIs(const net::ShotRequest& request) { send(*net::toWire(request)); }
+  /// Signs `request` with this client's key and writes it.
+  void send(net::ShotRequest request) {
+    net::signCommand(request, key_);
+    sendAsIs(request);
+  }
 
   /// How many results are recorded: pass it to waitResult to look only at later ones.
   std::size_t mark() const { return results.size(); }
@@ -209,6 +223,7 @@ class TestClient {
   }
 
   std::string id_;
+  net::KeyPair key_ = net::generateKeyPair();
   std::uint32_t requests_ = 0;
   net::ProtocolTopics bus_;  ///< the participant and the protocol's topics
   net::Writer<pool_JoinRequest> join_writer_;

@@ -25,6 +25,9 @@ TEST(ReadCommand, AGoodCommandBecomesAShotRequest) {
   EXPECT_EQ(read.request.match, "srv-1");
   EXPECT_EQ(read.request.seq, 3u);
   EXPECT_EQ(read.request.cue.speed, 8.0);
+  // The signature crosses unchanged and still verifies against the signer's key.
+  EXPECT_EQ(read.request.signature, breakShot(3).signature);
+  EXPECT_EQ(net::verifyCommand(read.request, publicKeyOf("a")), net::SignatureCheck::Valid);
 }
 
 TEST(ReadCommand, UnreadableFieldsAreMalformedWithTheSeatAndSeqEchoed) {
@@ -68,6 +71,23 @@ TEST(JoinCommandFromWire, UnknownActionsAreRefused) {
   const pool_JoinReply reply = unreadableJoinReply(r, "bad", "srv");
   EXPECT_EQ(reply.outcome, pool_JOIN_NOT_ALLOWED);
   EXPECT_EQ(net::textOf(reply.client), "c1");
+}
+
+TEST(JoinCommandFromWire, ThePublicKeyIsCarriedOver) {
+  net::Sample<pool_JoinRequest> sample;
+  pool_JoinRequest& r = *sample;
+  net::setText(r.client, "c1");
+  net::setText(r.match, "srv-1");
+  r.action = pool_JOIN_SEAT;
+  const auto none = joinCommand(r);
+  ASSERT_TRUE(none);
+  EXPECT_TRUE(none->public_key.empty());
+  const auto key = publicKeyOf("c1");
+  auto field = net::resizeSequence(r.public_key, static_cast<std::uint32_t>(key.size()));
+  std::copy(key.begin(), key.end(), field.begin());
+  const auto command = joinCommand(r);
+  ASSERT_TRUE(command);
+  EXPECT_EQ(command->public_key, key);
 }
 
 TEST(WireMessages, MatchStateShowsSeatsTurnAndLayout) {

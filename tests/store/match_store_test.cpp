@@ -119,7 +119,7 @@ TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
   }
   // Away since the resume: the grace period counts from then.
   EXPECT_FALSE(resumed->expireAway(5.0 + 29.0, 30.0));
-  EXPECT_TRUE(resumed->rejoin(kToken1, "b2").accepted());
+  EXPECT_TRUE(resumed->rejoin(kToken1, "b2", server::test::publicKeyOf("b")).accepted());
   EXPECT_TRUE(resumed->seats()[1].connected());
   // The next match opened takes a new number.
   registry.continueAfter(1);
@@ -134,10 +134,12 @@ TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
   next.cue_ball_at.reset();
   next.safety = true;
   if (shooter == 0) {
-    EXPECT_EQ(resumed->handleShot(next, 6.0).rejection.reason, server::Reject::StaleSequence);
+    EXPECT_EQ(resumed->handleShot(server::test::sealed(next), 6.0).rejection.reason,
+              server::Reject::StaleSequence);
   }
   next.seq = resumed->seats()[static_cast<std::size_t>(shooter)].last_seq + 1;
-  const auto answer = resumed->handleShot(next, 6.0);
+  // Signed with the key the stored seat keeps: the resumed match checks it.
+  const auto answer = resumed->handleShot(server::test::sealed(next), 6.0);
   EXPECT_NE(answer.rejection.reason, server::Reject::StaleSequence) << answer.rejection.text;
 }
 
