@@ -69,7 +69,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack)")
       ->check(CLI::IsMember({"rack"}));
+  app.add_flag("--wireframe", flags.screenshot.render.wireframe, "--screenshot: polygons as lines");
+  bool no_textures = false, no_lighting = false;
+  app.add_flag("--no-textures", no_textures, "--screenshot: flat colours, no numbers or grain");
+  app.add_flag("--no-lighting", no_lighting, "--screenshot: unlit colours");
   CLI11_PARSE(app, argc, argv);
+  flags.screenshot.render.textures = !no_textures;
+  flags.screenshot.render.lighting = !no_lighting;
 
   if (!flags.screenshot.path.empty()) return pool::render::runScreenshot(flags.screenshot);
 

@@ -6,6 +6,22 @@
 
 namespace pool::render {
 
+namespace {
+
+/// Turns a ball so its number (body +x) faces up toward the overview camera (from -y) and its
+/// band axis (body z) lies along the table.
+Eigen::Quaterniond numberFacingViewer() {
+  const Eigen::Vector3d toward = Eigen::Vector3d(0.0, -0.55, 1.0).normalized();
+  const Eigen::Vector3d along = Eigen::Vector3d::UnitX();
+  Eigen::Matrix3d r;
+  r.col(0) = toward;
+  r.col(1) = along.cross(toward);
+  r.col(2) = along;
+  return Eigen::Quaterniond(r);
+}
+
+}  // namespace
+
 Result<Scene> rackScene(const std::string& table) {
   using namespace pool::table;
   auto spec = loadTableSpec(table);
@@ -17,9 +33,10 @@ Result<Scene> rackScene(const std::string& table) {
   scene.ball_radius = spec->params.ball_radius;
   const double r = scene.ball_radius;
   const Eigen::Vector2d head = spotsFor(*spec).head_spot;
-  scene.balls.push_back({0, Eigen::Vector3d(head.x(), head.y(), r)});
+  const Eigen::Quaterniond facing = numberFacingViewer();
+  scene.balls.push_back({0, Eigen::Vector3d(head.x(), head.y(), r), facing});
   for (const BallPlacement& b : rackBalls(RackType::EightBall, *spec, r, 0)) {
-    scene.balls.push_back({b.id, Eigen::Vector3d(b.pos.x(), b.pos.y(), r)});
+    scene.balls.push_back({b.id, Eigen::Vector3d(b.pos.x(), b.pos.y(), r), facing});
   }
   return Result<Scene>::ok(std::move(scene));
 }

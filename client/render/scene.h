@@ -27,7 +27,8 @@ struct Scene {
   std::vector<SceneBall> balls;
 };
 
-/// A freshly racked 8-ball table (rack seed 0) with the cue ball on the head spot.
+/// A freshly racked 8-ball table (rack seed 0) with the cue ball on the head spot, every ball
+/// turned to show its number to the overview camera.
 Result<Scene> rackScene(const std::string& table = "wpa-9ft");
 
 }  // namespace pool::render

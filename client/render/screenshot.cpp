@@ -20,7 +20,8 @@ bool writePng(const std::string& path, int width, int height,
 
 int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
   OffscreenContext context(options.width, options.height);
-  const Renderer renderer(scene);
+  Renderer renderer(scene);
+  renderer.setOptions(options.render);
   const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
   const Camera camera = overviewCamera(scene.geometry, aspect);
   std::vector<std::uint8_t> pixels;

@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "client/render/renderer.h"
+
 namespace pool::render {
 
 /// What to render and where to write it.
@@ -10,6 +12,7 @@ struct ScreenshotOptions {
   std::string path;            ///< PNG file to write
   int frames = 3;              ///< frames to render; the last one is written
   std::string scene = "rack";  ///< only "rack" for now
+  RenderOptions render;        ///< wireframe, textures, lighting
   int width = 1280;
   int height = 720;
 };
