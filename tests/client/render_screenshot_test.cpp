@@ -1,5 +1,6 @@
-// pool-client --screenshot under Xvfb: the racked table (felt, cushions, rails, sixteen numbered
-// balls where the camera puts them) and the P/T/L switches (wireframe, textures, lighting).
+// pool-client --screenshot under Xvfb and through EGL without a display: the racked table (felt,
+// cushions, rails, sixteen numbered balls where the camera puts them) and the P/T/L switches
+// (wireframe, textures, lighting).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -147,6 +148,24 @@ TEST_F(RenderScreenshotTest, WithoutLightingTheFeltIsOneFlatColour) {
   EXPECT_GT(count(unlit, albedo), total * 30 / 100);
   // Lit: the spotlights brighten the felt under the lamps well above its far corners.
   EXPECT_LT(count(lit, albedo), total / 20);
+}
+
+TEST_F(RenderScreenshotTest, WithoutDisplayEglRendersTheSameRack) {
+  const Image xvfb = screenshot("--scene rack");
+  const std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + POOL_BIN_DIR +
+                          "/pool-client --screenshot " + png_ + " --scene rack";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const Image egl = loadPng(png_);
+  ASSERT_EQ(egl.width, kWidth);
+  ASSERT_EQ(xvfb.width, kWidth);
+  int same = 0;
+  for (std::size_t i = 0; i < egl.pixels.size(); ++i) {
+    const Rgb& a = egl.pixels[i];
+    const Rgb& b = xvfb.pixels[i];
+    if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) <= 6) ++same;
+  }
+  EXPECT_GT(same, kWidth * kHeight * 99 / 100);
+  EXPECT_GT(count(egl, kIsFelt), kWidth * kHeight * 35 / 100);
 }
 
 TEST_F(RenderScreenshotTest, FramesOptionStillWritesOnePng) {
