@@ -9,6 +9,7 @@
 
 #include "client/net/game_client.h"
 #include "client/render/screenshot.h"
+#include "client/spectate/spectate_screenshot.h"
 #include "client/spectate/spectator.h"
 #include "net/dds_error.h"
 
@@ -16,7 +17,9 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 
-void onSignal(int) { g_stop = true; }
+void onSignal(int) {
+  g_stop = true;
+}
 
 /// How the client runs. Only Spectate exists; a windowed mode comes with the renderer.
 enum class Mode { Spectate, Window };
@@ -65,10 +68,12 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
   app.add_option("--screenshot", flags.screenshot.path,
                  "render offscreen and write the last frame to this PNG");
+  app.add_option("--screenshot-info", flags.screenshot.info_path,
+                 "--screenshot: also write the camera and the balls drawn to this JSON file");
   app.add_option("--frames", flags.screenshot.frames, "frames to render with --screenshot")
       ->check(CLI::PositiveNumber);
-  app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack)")
-      ->check(CLI::IsMember({"rack"}));
+  app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack, eightball)")
+      ->check(CLI::IsMember({"rack", "eightball"}));
   app.add_flag("--wireframe", flags.screenshot.render.wireframe, "--screenshot: polygons as lines");
   bool no_textures = false, no_lighting = false;
   app.add_flag("--no-textures", no_textures, "--screenshot: flat colours, no numbers or grain");
@@ -77,6 +82,14 @@ int main(int argc, char** argv) {
   flags.screenshot.render.textures = !no_textures;
   flags.screenshot.render.lighting = !no_lighting;
 
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  if (!flags.screenshot.path.empty() && !flags.spectate.empty()) {
+    pool::client::SpectateScreenshotConfig config{
+        flags.domain, flags.spectate, flags.timeout, [] { return g_stop.load(); }, {}};
+    if (flags.json) config.emit = [](const std::string& line) { std::cout << line << '\n'; };
+    return pool::client::runSpectateScreenshot(config, flags.screenshot);
+  }
   if (!flags.screenshot.path.empty()) return pool::render::runScreenshot(flags.screenshot);
 
   const Mode mode = flags.spectate.empty() || !flags.no_window ? Mode::Window : Mode::Spectate;
@@ -84,8 +97,6 @@ int main(int argc, char** argv) {
     std::cerr << "only --spectate MATCH --no-window --json is available so far\n";
     return 2;
   }
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
   try {
     return runSpectator(flags);
   } catch (const pool::net::DdsError& e) {

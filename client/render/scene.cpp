@@ -22,15 +22,24 @@ Eigen::Quaterniond numberFacingViewer() {
 
 }  // namespace
 
-Result<Scene> rackScene(const std::string& table) {
-  using namespace pool::table;
-  auto spec = loadTableSpec(table);
+Result<Scene> tableScene(const std::string& table) {
+  auto spec = pool::table::loadTableSpec(table);
   if (!spec) return Result<Scene>::fail(spec.error());
-  auto geometry = loadTableGeometry(*spec);
+  auto geometry = pool::table::loadTableGeometry(*spec);
   if (!geometry) return Result<Scene>::fail(geometry.error());
   Scene scene;
   scene.geometry = std::move(*geometry);
   scene.ball_radius = spec->params.ball_radius;
+  return Result<Scene>::ok(std::move(scene));
+}
+
+Result<Scene> rackScene(const std::string& table) {
+  using namespace pool::table;
+  auto spec = loadTableSpec(table);
+  if (!spec) return Result<Scene>::fail(spec.error());
+  auto empty = tableScene(table);
+  if (!empty) return empty;
+  Scene scene = std::move(*empty);
   const double r = scene.ball_radius;
   const Eigen::Vector2d head = spotsFor(*spec).head_spot;
   const Eigen::Quaterniond facing = numberFacingViewer();

@@ -1,13 +1,14 @@
-// Offscreen rendering of a scene to a PNG file (stb_image_write).
+// Offscreen rendering of a scene to a PNG file (stb_image_write) and its JSON sidecar.
 #include "client/render/screenshot.h"
 
 #include <stb_image_write.h>
 
 #include <exception>
+#include <fstream>
 #include <iostream>
 
 #include "client/render/offscreen.h"
-#include "client/render/renderer.h"
+#include "client/render/screenshot_info.h"
 
 namespace pool::render {
 
@@ -18,7 +19,14 @@ bool writePng(const std::string& path, int width, int height,
   return stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3) != 0;
 }
 
-int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
+bool writeText(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+int renderToPng(const ScreenshotOptions& options, const Scene& scene,
+                const FrameHook& before_frame) {
   OffscreenContext context(options.width, options.height);
   Renderer renderer(scene);
   renderer.setOptions(options.render);
@@ -26,6 +34,7 @@ int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
   const Camera camera = overviewCamera(scene.geometry, aspect);
   std::vector<std::uint8_t> pixels;
   for (int frame = 0; frame < options.frames; ++frame) {
+    if (before_frame) before_frame(renderer, frame);
     context.bind();
     renderer.draw(camera, options.width, options.height);
     if (frame + 1 == options.frames) pixels = context.readRgb();
@@ -35,18 +44,34 @@ int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
     std::cerr << "could not write " << options.path << '\n';
     return 1;
   }
+  if (!options.info_path.empty() &&
+      !writeText(options.info_path, screenshotInfoJson(camera, options.width, options.height,
+                                                       scene.ball_radius, renderer.drawnBalls()))) {
+    std::cerr << "could not write " << options.info_path << '\n';
+    return 1;
+  }
   return 0;
 }
 
 }  // namespace
 
-int runScreenshot(const ScreenshotOptions& options) {
-  if (options.scene != "rack") {
-    std::cerr << "unknown scene '" << options.scene << "' (known: rack)\n";
-    return 2;
-  }
+int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
+                     const FrameHook& before_frame) {
   if (options.frames < 1) {
     std::cerr << "--frames must be at least 1\n";
+    return 2;
+  }
+  try {
+    return renderToPng(options, scene, before_frame);
+  } catch (const std::exception& e) {
+    std::cerr << "render: " << e.what() << '\n';
+    return 1;
+  }
+}
+
+int runScreenshot(const ScreenshotOptions& options) {
+  if (options.scene != "rack") {
+    std::cerr << "unknown scene '" << options.scene << "' (known: rack, eightball)\n";
     return 2;
   }
   auto scene = rackScene();
@@ -54,12 +79,7 @@ int runScreenshot(const ScreenshotOptions& options) {
     std::cerr << "scene: " << scene.error() << '\n';
     return 1;
   }
-  try {
-    return renderToPng(options, *scene);
-  } catch (const std::exception& e) {
-    std::cerr << "render: " << e.what() << '\n';
-    return 1;
-  }
+  return renderScreenshot(options, *scene);
 }
 
 }  // namespace pool::render

@@ -20,6 +20,7 @@ enum Domain : std::uint32_t {
   kSpectator = 201,
   kRejoin = 202,
   kForfeit = 203,
+  kSpectateScreenshot = 204,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
