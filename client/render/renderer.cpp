@@ -9,6 +9,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "client/render/lamps.h"
+#include "client/render/noise_texture.h"
 #include "client/render/number_atlas.h"
 #include "client/render/palette.h"
 #include "client/render/shaders.h"
@@ -19,6 +20,7 @@ namespace {
 
 constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
 constexpr int kNumbersUnit = 0;          // texture unit of the number atlas
+constexpr int kNoiseUnit = 1;            // texture unit of the felt and wood noise
 
 glm::vec3 toGlm(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -57,11 +59,15 @@ glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
       trough_(scene.geometry, scene.ball_radius),
-      program_(shaders::kSceneVertex, shaders::kSceneFragment),
-      sphere_(unitSphere(24, 32)),
+      sphere_(unitSphere(16, 24)),
       disc_(unitDisc(40)),
       shade_(lampShade()),
-      numbers_(loadNumberAtlas()) {
+      numbers_(loadNumberAtlas()),
+      noise_(valueNoise(256, 32, 7), GpuTexture::Edges::Repeat) {
+  for (int m = 0; m < shaders::kMaterials; ++m) {
+    programs_.push_back(
+        std::make_unique<ShaderProgram>(shaders::kSceneVertex, shaders::withMaterial(m)));
+  }
   for (const auto& part : scene_.geometry.parts) {
     if (part.triangles.empty()) continue;
     const PartLook look = partLook(part.name);
@@ -90,27 +96,31 @@ std::vector<SceneBall> Renderer::drawnBalls() const {
 }
 
 void Renderer::setFrameUniforms(const Camera& camera, float aspect) const {
-  program_.set("uViewProj", viewProjection(camera, aspect));
-  program_.set("uEye", camera.eye);
+  const glm::mat4 view_projection = viewProjection(camera, aspect);
   const auto lights = lampPositions(scene_.geometry);
-  program_.set("uLightPos[0]", lights[0]);
-  program_.set("uLightPos[1]", lights[1]);
-  program_.set("uCosInner", std::cos(glm::radians(kSpotInnerDeg)));
-  program_.set("uCosOuter", std::cos(glm::radians(kSpotOuterDeg)));
-  program_.set("uTextures", options_.textures ? 1 : 0);
-  program_.set("uLighting", options_.lighting ? 1 : 0);
-  program_.set("uNumbers", kNumbersUnit);
-  program_.set("uStriped", 0);
-  program_.set("uBallCell", 0);
+  for (const auto& p : programs_) {
+    p->use();
+    p->set("uViewProj", view_projection);
+    p->set("uEye", camera.eye);
+    p->set("uLightPos[0]", lights[0]);
+    p->set("uLightPos[1]", lights[1]);
+    p->set("uCosInner", std::cos(glm::radians(kSpotInnerDeg)));
+    p->set("uCosOuter", std::cos(glm::radians(kSpotOuterDeg)));
+    p->set("uTextures", options_.textures ? 1 : 0);
+    p->set("uLighting", options_.lighting ? 1 : 0);
+    p->set("uNumbers", kNumbersUnit);
+    p->set("uNoise", kNoiseUnit);
+  }
 }
 
 void Renderer::drawMesh(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
                         float specular) const {
-  program_.set("uModel", model);
-  program_.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
-  program_.set("uColour", colour);
-  program_.set("uMaterial", material);
-  program_.set("uSpecular", specular);
+  const ShaderProgram& p = program(material);
+  p.use();
+  p.set("uModel", model);
+  p.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
+  p.set("uColour", colour);
+  p.set("uSpecular", specular);
   mesh.draw();
 }
 
@@ -134,12 +144,11 @@ void Renderer::drawBalls() const {
     const glm::mat4 model = glm::translate(glm::mat4(1.0f), toGlm(ball.pos)) *
                             glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), glm::vec3(r));
     const BallLook look = ballLook(ball.id);
-    program_.set("uStriped", look.striped ? 1 : 0);
-    program_.set("uBallCell", ball.id);
+    program(shaders::kBall).use();
+    program(shaders::kBall).set("uStriped", look.striped ? 1 : 0);
+    program(shaders::kBall).set("uBallCell", ball.id);
     drawMesh(sphere_, model, look.colour, shaders::kBall, 0.5f);
   }
-  program_.set("uStriped", 0);
-  program_.set("uBallCell", 0);
 }
 
 void Renderer::drawLamps() const {
@@ -158,8 +167,8 @@ void Renderer::draw(const Camera& camera, int width, int height) const {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   glPolygonMode(GL_FRONT_AND_BACK, options_.wireframe ? GL_LINE : GL_FILL);
-  program_.use();
   numbers_.bind(kNumbersUnit);
+  noise_.bind(kNoiseUnit);
   setFrameUniforms(camera, aspect);
   for (const Part& part : parts_) {
     drawMesh(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);

@@ -61,6 +61,7 @@ class Renderer {
     glm::vec3 colour;
     int material;
   };
+  const ShaderProgram& program(int material) const { return *programs_[material]; }
   void setFrameUniforms(const Camera& camera, float aspect) const;
   void drawMesh(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
                 float specular) const;
@@ -71,12 +72,13 @@ class Renderer {
   Scene scene_;
   RenderOptions options_;
   BallTrough trough_;
-  ShaderProgram program_;
+  std::vector<std::unique_ptr<ShaderProgram>> programs_;  ///< one per shaders::Material
   std::vector<Part> parts_;
   GpuMesh sphere_;
   GpuMesh disc_;
   GpuMesh shade_;
   GpuTexture numbers_;
+  GpuTexture noise_;
   OverlayLines overlay_;
 };
 

@@ -2,10 +2,12 @@
 // felt and wood, numbered balls) and the unlit overlay-line shader.
 #pragma once
 
+#include <string>
+
 namespace pool::render::shaders {
 
 /// Material codes of the scene shader's uMaterial.
-enum Material : int { kPlain = 0, kFelt = 1, kWood = 2, kBall = 3, kEmissive = 4 };
+enum Material : int { kPlain = 0, kFelt = 1, kWood = 2, kBall = 3, kEmissive = 4, kMaterials = 5 };
 
 /// Vertex stage: world position and normal, plus the object-space normal (ball markings turn
 /// with the ball's orientation).
@@ -27,21 +29,23 @@ void main() {
 }
 )";
 
-/// Fragment stage. Balls: solid colour, or white with a band |z| < 0.5 (stripes); a white circle
-/// with the number (atlas cell uBallCell) on the body's +x and -x sides. Felt and wood modulate
-/// brightness only, so their hue stays that of uColour. uLighting 0: albedo unlit.
-inline constexpr const char* kSceneFragment = R"(#version 330 core
+/// Fragment stage, compiled once per material (withMaterial): llvmpipe runs every branch of a
+/// shader, so each material's program holds only its own work.
+/// Balls: solid colour, or white with a band |z| < 0.5 (stripes); a white circle with the number
+/// (atlas cell uBallCell) on the body's +x and -x sides. Felt and wood modulate brightness with a
+/// tiling noise texture, so their hue stays that of uColour. uLighting 0: albedo unlit.
+inline constexpr const char* kSceneFragment = R"(
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec3 vLocalNormal;
 uniform vec3 uColour;
-uniform int uMaterial;
 uniform int uStriped;
 uniform int uBallCell;
 uniform int uTextures;
 uniform int uLighting;
 uniform float uSpecular;
 uniform sampler2D uNumbers;
+uniform sampler2D uNoise;
 uniform vec3 uEye;
 uniform vec3 uLightPos[2];
 uniform float uCosInner;
@@ -49,13 +53,9 @@ uniform float uCosOuter;
 out vec4 fragColour;
 const vec3 kWhite = vec3(0.95, 0.95, 0.92);
 const float kCircleCos = 0.9;  // number circle: about 26 degrees around the axis
-float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
-float noise(vec2 p) {
-  vec2 i = floor(p), f = fract(p);
-  vec2 u = f * f * (3.0 - 2.0 * f);
-  return mix(mix(hash(i), hash(i + vec2(1, 0)), u.x), mix(hash(i + vec2(0, 1)), hash(i + vec2(1, 1)), u.x), u.y);
-}
-vec3 ballAlbedo(vec3 n) {
+vec3 albedo() {
+#if MATERIAL == 3
+  vec3 n = normalize(vLocalNormal);
   vec3 base = (uStriped == 1 && abs(n.z) > 0.5) ? kWhite : uColour;
   if (uTextures == 0 || uBallCell <= 0 || abs(n.x) < kCircleCos) return base;
   float side = n.x > 0.0 ? 1.0 : -1.0;
@@ -63,25 +63,27 @@ vec3 ballAlbedo(vec3 n) {
   vec2 cell = vec2(float(uBallCell % 4), float(uBallCell / 4));
   float ink = texture(uNumbers, (cell + vec2(0.5 + 0.5 * uv.x, 0.5 - 0.5 * uv.y)) / 4.0).r;
   return mix(kWhite, vec3(0.04), ink);
-}
-vec3 albedo() {
-  if (uMaterial == 3) return ballAlbedo(normalize(vLocalNormal));
+#elif MATERIAL == 1
   if (uTextures == 0) return uColour;
-  if (uMaterial == 1) {
-    float fibre = noise(vWorldPos.xy * 900.0) * 0.08 + noise(vWorldPos.xy * 7.0) * 0.06;
-    return uColour * (0.93 + fibre);
-  }
-  if (uMaterial == 2) {
-    float along = abs(vNormal.x) > abs(vNormal.y) ? vWorldPos.y : vWorldPos.x;
-    float across = vWorldPos.x + vWorldPos.y + vWorldPos.z;
-    float grain = sin(across * 140.0 + noise(vec2(along * 9.0, across * 30.0)) * 6.0);
-    return uColour * (0.88 + 0.12 * grain);
-  }
+  float fibre = texture(uNoise, vWorldPos.xy * 6.0).r * 0.08;
+  float broad = texture(uNoise, vWorldPos.xy * 0.35).r * 0.06;
+  return uColour * (0.93 + fibre + broad);
+#elif MATERIAL == 2
+  if (uTextures == 0) return uColour;
+  float along = abs(vNormal.x) > abs(vNormal.y) ? vWorldPos.y : vWorldPos.x;
+  float across = vWorldPos.x + vWorldPos.y + vWorldPos.z;
+  float grain = sin(across * 140.0 + texture(uNoise, vec2(along * 0.3, across * 1.2)).r * 6.0);
+  return uColour * (0.88 + 0.12 * grain);
+#else
   return uColour;
+#endif
 }
 void main() {
   vec3 base = albedo();
-  if (uLighting == 0 || uMaterial == 4) {
+#if MATERIAL == 4
+  fragColour = vec4(min(base, vec3(1.0)), 1.0);
+#else
+  if (uLighting == 0) {
     fragColour = vec4(min(base, vec3(1.0)), 1.0);
     return;
   }
@@ -91,15 +93,25 @@ void main() {
   vec3 colour = 0.22 * base;
   for (int i = 0; i < 2; ++i) {
     vec3 l = normalize(uLightPos[i] - vWorldPos);
-    float cone = smoothstep(uCosOuter, uCosInner, dot(-l, vec3(0.0, 0.0, -1.0)));
+    float cone = smoothstep(uCosOuter, uCosInner, l.z);  // the lamps point straight down
     float diffuse = max(dot(n, l), 0.0);
-    vec3 h = normalize(l + v);
-    float spec = diffuse > 0.0 ? pow(max(dot(n, h), 0.0), 64.0) : 0.0;
-    colour += cone * (0.62 * diffuse * base + uSpecular * spec * vec3(1.0));
+    colour += cone * 0.62 * diffuse * base;
+#if MATERIAL == 3
+    // Only the balls are glossy enough for a highlight worth its cost: (n.h)^64 by squaring.
+    float s = max(dot(n, normalize(l + v)), 0.0);
+    s *= s; s *= s; s *= s; s *= s; s *= s; s *= s;
+    colour += cone * uSpecular * (diffuse > 0.0 ? s : 0.0);
+#endif
   }
   fragColour = vec4(min(colour, vec3(1.0)), 1.0);
+#endif
 }
 )";
+
+/// The fragment source for one material: the version line, its MATERIAL define, the body.
+inline std::string withMaterial(int material) {
+  return "#version 330 core\n#define MATERIAL " + std::to_string(material) + "\n" + kSceneFragment;
+}
 
 /// Overlay lines: position and colour per vertex, no lighting.
 inline constexpr const char* kLineVertex = R"(#version 330 core

@@ -5,7 +5,7 @@
 
 namespace pool::render {
 
-GpuTexture::GpuTexture(const TextBitmap& bitmap) {
+GpuTexture::GpuTexture(const TextBitmap& bitmap, Edges edges) : edges_(edges) {
   glGenTextures(1, &id_);
   upload(bitmap);
 }
@@ -21,8 +21,9 @@ void GpuTexture::upload(const TextBitmap& bitmap) {
                bitmap.coverage.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const GLint wrap = edges_ == Edges::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
   glGenerateMipmap(GL_TEXTURE_2D);
 }
 

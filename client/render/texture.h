@@ -5,10 +5,12 @@
 
 namespace pool::render {
 
-/// An R8 texture with linear filtering and clamped edges; needs a current GL context.
+/// An R8 texture with mipmapped linear filtering; its edges clamp, or wrap for a tiling image.
+/// Needs a current GL context.
 class GpuTexture {
  public:
-  explicit GpuTexture(const TextBitmap& bitmap);
+  enum class Edges { Clamp, Repeat };
+  explicit GpuTexture(const TextBitmap& bitmap, Edges edges = Edges::Clamp);
   ~GpuTexture();
   GpuTexture(const GpuTexture&) = delete;
   GpuTexture& operator=(const GpuTexture&) = delete;
@@ -20,6 +22,7 @@ class GpuTexture {
 
  private:
   unsigned id_ = 0;
+  Edges edges_;
 };
 
 }  // namespace pool::render
