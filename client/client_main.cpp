@@ -74,6 +74,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack, eightball)")
       ->check(CLI::IsMember({"rack", "eightball"}));
+  app.add_option("--question", flags.screenshot.question,
+                 "--scene eightball: the question the Magic Eight Ball answers");
+  app.add_option("--seed", flags.screenshot.seed, "--scene eightball: the Magic Eight Ball's seed");
   app.add_flag("--wireframe", flags.screenshot.render.wireframe, "--screenshot: polygons as lines");
   bool no_textures = false, no_lighting = false;
   app.add_flag("--no-textures", no_textures, "--screenshot: flat colours, no numbers or grain");

@@ -9,8 +9,6 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "client/render/lamps.h"
-#include "client/render/noise_texture.h"
-#include "client/render/number_atlas.h"
 #include "client/render/palette.h"
 #include "client/render/shaders.h"
 
@@ -19,15 +17,9 @@ namespace pool::render {
 namespace {
 
 constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
-constexpr int kNumbersUnit = 0;          // texture unit of the number atlas
-constexpr int kNoiseUnit = 1;            // texture unit of the felt and wood noise
 
 glm::vec3 toGlm(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-}
-
-TextBitmap loadNumberAtlas() {
-  return numberAtlas(TextRasterizer());
 }
 
 }  // namespace
@@ -61,13 +53,7 @@ Renderer::Renderer(const Scene& scene)
       trough_(scene.geometry, scene.ball_radius),
       sphere_(unitSphere(16, 24)),
       disc_(unitDisc(40)),
-      shade_(lampShade()),
-      numbers_(loadNumberAtlas()),
-      noise_(valueNoise(256, 32, 7), GpuTexture::Edges::Repeat) {
-  for (int m = 0; m < shaders::kMaterials; ++m) {
-    programs_.push_back(
-        std::make_unique<ShaderProgram>(shaders::kSceneVertex, shaders::withMaterial(m)));
-  }
+      shade_(lampShade()) {
   for (const auto& part : scene_.geometry.parts) {
     if (part.triangles.empty()) continue;
     const PartLook look = partLook(part.name);
@@ -95,35 +81,6 @@ std::vector<SceneBall> Renderer::drawnBalls() const {
   return drawn;
 }
 
-void Renderer::setFrameUniforms(const Camera& camera, float aspect) const {
-  const glm::mat4 view_projection = viewProjection(camera, aspect);
-  const auto lights = lampPositions(scene_.geometry);
-  for (const auto& p : programs_) {
-    p->use();
-    p->set("uViewProj", view_projection);
-    p->set("uEye", camera.eye);
-    p->set("uLightPos[0]", lights[0]);
-    p->set("uLightPos[1]", lights[1]);
-    p->set("uCosInner", std::cos(glm::radians(kSpotInnerDeg)));
-    p->set("uCosOuter", std::cos(glm::radians(kSpotOuterDeg)));
-    p->set("uTextures", options_.textures ? 1 : 0);
-    p->set("uLighting", options_.lighting ? 1 : 0);
-    p->set("uNumbers", kNumbersUnit);
-    p->set("uNoise", kNoiseUnit);
-  }
-}
-
-void Renderer::drawMesh(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
-                        float specular) const {
-  const ShaderProgram& p = program(material);
-  p.use();
-  p.set("uModel", model);
-  p.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
-  p.set("uColour", colour);
-  p.set("uSpecular", specular);
-  mesh.draw();
-}
-
 void Renderer::drawHoles() const {
   for (const auto& hole : scene_.geometry.holes) {
     const glm::vec3 centre(static_cast<float>(hole.centre.x()), static_cast<float>(hole.centre.y()),
@@ -131,7 +88,7 @@ void Renderer::drawHoles() const {
     const auto r = static_cast<float>(hole.radius);
     const glm::mat4 model =
         glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(r, r, 1.0f));
-    drawMesh(disc_, model, holeColour(), shaders::kPlain, 0.0f);
+    shading_.draw(disc_, model, holeColour(), shaders::kPlain, 0.0f);
   }
 }
 
@@ -143,20 +100,16 @@ void Renderer::drawBalls() const {
                              static_cast<float>(q.y()), static_cast<float>(q.z()));
     const glm::mat4 model = glm::translate(glm::mat4(1.0f), toGlm(ball.pos)) *
                             glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), glm::vec3(r));
-    const BallLook look = ballLook(ball.id);
-    program(shaders::kBall).use();
-    program(shaders::kBall).set("uStriped", look.striped ? 1 : 0);
-    program(shaders::kBall).set("uBallCell", ball.id);
-    drawMesh(sphere_, model, look.colour, shaders::kBall, 0.5f);
+    shading_.drawBall(sphere_, model, ball.id);
   }
 }
 
 void Renderer::drawLamps() const {
   for (const glm::vec3& light : lampPositions(scene_.geometry)) {
     const glm::mat4 at = glm::translate(glm::mat4(1.0f), light);
-    drawMesh(shade_, at, shadeColour(), shaders::kEmissive, 0.0f);
+    shading_.draw(shade_, at, shadeColour(), shaders::kEmissive, 0.0f);
     const glm::mat4 bulb = glm::scale(at, glm::vec3(kBulbRadius, kBulbRadius, 1.0f));
-    drawMesh(disc_, bulb, bulbColour(), shaders::kEmissive, 0.0f);
+    shading_.draw(disc_, bulb, bulbColour(), shaders::kEmissive, 0.0f);
   }
 }
 
@@ -167,11 +120,10 @@ void Renderer::draw(const Camera& camera, int width, int height) const {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   glPolygonMode(GL_FRONT_AND_BACK, options_.wireframe ? GL_LINE : GL_FILL);
-  numbers_.bind(kNumbersUnit);
-  noise_.bind(kNoiseUnit);
-  setFrameUniforms(camera, aspect);
+  const auto lamps = lampPositions(scene_.geometry);
+  shading_.beginFrame(camera, aspect, {lamps, kSpotInnerDeg, kSpotOuterDeg}, options_);
   for (const Part& part : parts_) {
-    drawMesh(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
+    shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
   }
   drawHoles();
   drawBalls();

@@ -10,8 +10,7 @@
 #include "client/render/mesh.h"
 #include "client/render/overlay_lines.h"
 #include "client/render/scene.h"
-#include "client/render/shader.h"
-#include "client/render/texture.h"
+#include "client/render/scene_shading.h"
 
 namespace pool::render {
 
@@ -61,10 +60,6 @@ class Renderer {
     glm::vec3 colour;
     int material;
   };
-  const ShaderProgram& program(int material) const { return *programs_[material]; }
-  void setFrameUniforms(const Camera& camera, float aspect) const;
-  void drawMesh(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
-                float specular) const;
   void drawBalls() const;
   void drawHoles() const;
   void drawLamps() const;
@@ -72,13 +67,11 @@ class Renderer {
   Scene scene_;
   RenderOptions options_;
   BallTrough trough_;
-  std::vector<std::unique_ptr<ShaderProgram>> programs_;  ///< one per shaders::Material
+  SceneShading shading_;
   std::vector<Part> parts_;
   GpuMesh sphere_;
   GpuMesh disc_;
   GpuMesh shade_;
-  GpuTexture numbers_;
-  GpuTexture noise_;
   OverlayLines overlay_;
 };
 

@@ -2,6 +2,7 @@
 // optionally with a JSON sidecar of the camera and the balls as drawn.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -15,7 +16,9 @@ struct ScreenshotOptions {
   std::string info_path;       ///< JSON sidecar (camera, image size, balls drawn); empty: none
   int frames = 3;              ///< frames to render; the last one is written
   std::string scene = "rack";  ///< "rack" or "eightball" (ignored when spectating)
-  RenderOptions render;        ///< wireframe, textures, lighting
+  std::string question = "Will I win?";  ///< asked in the eightball scene
+  std::uint64_t seed = 0;                ///< the Magic Eight Ball's seed
+  RenderOptions render;                  ///< wireframe, textures, lighting
   int width = 1280;
   int height = 720;
 };
@@ -27,6 +30,9 @@ using FrameHook = std::function<void(Renderer& renderer, int frame)>;
 /// process exit code (0 on success); errors go to stderr as one line.
 int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
                      const FrameHook& before_frame = {});
+
+/// The Magic Eight Ball room answering `answer`, from its default camera.
+int renderEightBallScreenshot(const ScreenshotOptions& options, const std::string& answer);
 
 /// The --screenshot mode without a server: the scene named in the options.
 int runScreenshot(const ScreenshotOptions& options);

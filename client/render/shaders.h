@@ -113,6 +113,35 @@ inline std::string withMaterial(int material) {
   return "#version 330 core\n#define MATERIAL " + std::to_string(material) + "\n" + kSceneFragment;
 }
 
+/// Text on a flat face (the Magic Eight Ball's answer triangle): the face lies in its local xy
+/// plane; inside uTextBox (local x0, y0, x1, y1) the text texture's ink is drawn in near-white.
+inline constexpr const char* kDecalVertex = R"(#version 330 core
+layout(location = 0) in vec3 aPos;
+uniform mat4 uModel;
+uniform mat4 uViewProj;
+out vec2 vLocal;
+void main() {
+  vLocal = aPos.xy;
+  gl_Position = uViewProj * uModel * vec4(aPos, 1.0);
+}
+)";
+
+inline constexpr const char* kDecalFragment = R"(#version 330 core
+in vec2 vLocal;
+uniform vec3 uColour;
+uniform vec4 uTextBox;
+uniform sampler2D uText;
+out vec4 fragColour;
+void main() {
+  vec2 t = (vLocal - uTextBox.xy) / (uTextBox.zw - uTextBox.xy);
+  float ink = 0.0;
+  if (all(greaterThanEqual(t, vec2(0.0))) && all(lessThanEqual(t, vec2(1.0)))) {
+    ink = texture(uText, vec2(t.x, 1.0 - t.y)).r;
+  }
+  fragColour = vec4(mix(uColour, vec3(0.92, 0.94, 1.0), ink), 1.0);
+}
+)";
+
 /// Overlay lines: position and colour per vertex, no lighting.
 inline constexpr const char* kLineVertex = R"(#version 330 core
 layout(location = 0) in vec3 aPos;

@@ -2,7 +2,6 @@
 // cushions, rails, sixteen numbered balls where the camera puts them) and the P/T/L switches
 // (wireframe, textures, lighting).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -11,9 +10,12 @@
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
 #include "png_image.h"
+#include "screenshot_fixture.h"
 
 namespace pool::client::test {
 namespace {
+
+using RenderScreenshotTest = ScreenshotTest;
 
 constexpr Rgb kFelt{0.05, 0.42, 0.20};
 constexpr Rgb kWood{0.34, 0.17, 0.07};
@@ -44,26 +46,6 @@ std::vector<BallOnScreen> rackOnScreen() {
   }
   return out;
 }
-
-class RenderScreenshotTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
-      GTEST_SKIP() << "xvfb-run is not installed";
-    png_ = "/tmp/pool-render-test-" + std::to_string(::getpid()) + ".png";
-  }
-  void TearDown() override {
-    if (!png_.empty() && !std::getenv("POOL_KEEP_TEST_FILES")) std::remove(png_.c_str());
-  }
-  /// Renders with `extra` flags and decodes the result (empty image on failure).
-  Image screenshot(const std::string& extra) const {
-    const std::string cmd = std::string("xvfb-run -a -s \"-screen 0 1280x720x24\" ") +
-                            POOL_BIN_DIR + "/pool-client --screenshot " + png_ + " " + extra;
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    return loadPng(png_);
-  }
-  std::string png_;
-};
 
 const auto kIsFelt = [](const Rgb& p) { return shadeOf(p, kFelt); };
 
