@@ -1,8 +1,6 @@
 // The room's geometry (floor, stool, ball, window, triangle) and its drawing.
 #include "client/render/eight_ball_room.h"
 
-#include <glad/gl.h>
-
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -23,6 +21,7 @@ constexpr int kTextHeight = 192;
 /// The text's box on the triangle (local frame: the triangle's in-circle has radius 0.5).
 constexpr glm::vec4 kTextBox(-0.42f, -0.33f, 0.42f, 0.36f);
 
+const glm::vec3 kBackground(0.03f, 0.02f, 0.05f);
 const glm::vec3 kFloor(0.09f, 0.07f, 0.10f);
 const glm::vec3 kWindow(0.01f, 0.01f, 0.04f);
 const glm::vec3 kTriangle(0.10f, 0.22f, 0.85f);
@@ -118,15 +117,9 @@ void EightBallRoom::drawWindow(const Camera& camera, float aspect, const std::st
 }
 
 void EightBallRoom::draw(const Camera& camera, int width, int height, const std::string& answer) {
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glClearColor(0.03f, 0.02f, 0.05f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  glPolygonMode(GL_FRONT_AND_BACK, options_.wireframe ? GL_LINE : GL_FILL);
   const SpotLights lights{
       {glm::vec3(-0.7f, -0.9f, 3.0f), glm::vec3(0.8f, -0.4f, 3.2f)}, 35.0f, 70.0f};
-  shading_.beginFrame(camera, aspect, lights, options_);
+  shading_.beginFrame(camera, width, height, kBackground, lights, options_);
   shading_.draw(floor_, glm::mat4(1.0f), kFloor, shaders::kPlain, 0.0f);
   shading_.draw(stool_, glm::mat4(1.0f), woodColour(), shaders::kWood, 0.1f);
   // The 8 (body +x) faces up, tilted to the right; the window is drawn over the side facing us.
@@ -134,8 +127,8 @@ void EightBallRoom::draw(const Camera& camera, int width, int height, const std:
       glm::rotate(glm::translate(glm::mat4(1.0f), ballCentre()), -1.2f, glm::vec3(0, 1, 0)),
       glm::vec3(ballRadius()));
   shading_.drawBall(sphere_, ball, 8);
-  drawWindow(camera, aspect, answer);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  drawWindow(camera, static_cast<float>(width) / static_cast<float>(height), answer);
+  shading_.endFrame();
 }
 
 }  // namespace pool::render

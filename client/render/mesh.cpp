@@ -112,6 +112,19 @@ void append(MeshData& mesh, const MeshData& more) {
   mesh.normals.insert(mesh.normals.end(), more.normals.begin(), more.normals.end());
 }
 
+void createVec3PairArray(unsigned& vao, unsigned& vbo) {
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  const auto stride = static_cast<GLsizei>(6 * sizeof(float));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
+}
+
 GpuMesh::GpuMesh(const MeshData& data) : count_(static_cast<int>(data.positions.size())) {
   std::vector<float> interleaved;
   interleaved.reserve(data.positions.size() * 6);
@@ -120,18 +133,9 @@ GpuMesh::GpuMesh(const MeshData& data) : count_(static_cast<int>(data.positions.
     const glm::vec3& n = data.normals[i];
     interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
   }
-  glGenVertexArrays(1, &vao_);
-  glBindVertexArray(vao_);
-  glGenBuffers(1, &vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  createVec3PairArray(vao_, vbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
                interleaved.data(), GL_STATIC_DRAW);
-  const auto stride = static_cast<GLsizei>(6 * sizeof(float));
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                        reinterpret_cast<const void*>(3 * sizeof(float)));
   glBindVertexArray(0);
 }
 

@@ -28,6 +28,10 @@ MeshData openFrustum(float bottom, float top, float height, int slices);
 /// Appends `more` to `mesh`.
 void append(MeshData& mesh, const MeshData& more);
 
+/// Makes a vertex array over a new array buffer of interleaved vec3 pairs (attribute 0 the first
+/// of each pair, attribute 1 the second), leaving both bound; fill the buffer with glBufferData.
+void createVec3PairArray(unsigned& vao, unsigned& vbo);
+
 /// The mesh in a vertex array object (location 0: position, 1: normal).
 class GpuMesh {
  public:

@@ -3,21 +3,13 @@
 
 #include <glad/gl.h>
 
+#include "client/render/mesh.h"
 #include "client/render/shaders.h"
 
 namespace pool::render {
 
 OverlayLines::OverlayLines() : program_(shaders::kLineVertex, shaders::kLineFragment) {
-  glGenVertexArrays(1, &vao_);
-  glBindVertexArray(vao_);
-  glGenBuffers(1, &vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  const auto stride = static_cast<GLsizei>(6 * sizeof(float));
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                        reinterpret_cast<const void*>(3 * sizeof(float)));
+  createVec3PairArray(vao_, vbo_);
   glBindVertexArray(0);
 }
 

@@ -2,8 +2,6 @@
 // orientation, the lamps and the trough of pocketed balls, then the overlay lines on top.
 #include "client/render/renderer.h"
 
-#include <glad/gl.h>
-
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -17,6 +15,8 @@ namespace pool::render {
 namespace {
 
 constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
+constexpr glm::vec3 kBackground(0.10f, 0.10f, 0.12f);
+constexpr float kTroughLight = 0.75f;  // share of the albedo lit in the trough
 
 glm::vec3 toGlm(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -76,7 +76,11 @@ std::vector<SceneBall> Renderer::drawnBalls() const {
   std::vector<SceneBall> drawn = scene_.balls;
   for (SceneBall& ball : drawn) {
     if (!ball.pocketed) continue;
-    if (const auto slot = trough_.slotOf(ball.id)) ball.pos = trough_.slot(*slot);
+    // Laid out for display, like a rack: number toward the viewer.
+    if (const auto slot = trough_.slotOf(ball.id)) {
+      ball.pos = trough_.slot(*slot);
+      ball.orientation = numberTowardViewer();
+    }
   }
   return drawn;
 }
@@ -100,7 +104,10 @@ void Renderer::drawBalls() const {
                              static_cast<float>(q.y()), static_cast<float>(q.z()));
     const glm::mat4 model = glm::translate(glm::mat4(1.0f), toGlm(ball.pos)) *
                             glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), glm::vec3(r));
+    // The trough is lit by its own strip light under the rail, out of the lamps' cones.
+    if (ball.pocketed) shading_.setAmbient(kTroughLight);
     shading_.drawBall(sphere_, model, ball.id);
+    if (ball.pocketed) shading_.setAmbient(SceneShading::kAmbient);
   }
 }
 
@@ -114,22 +121,17 @@ void Renderer::drawLamps() const {
 }
 
 void Renderer::draw(const Camera& camera, int width, int height) const {
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  glPolygonMode(GL_FRONT_AND_BACK, options_.wireframe ? GL_LINE : GL_FILL);
   const auto lamps = lampPositions(scene_.geometry);
-  shading_.beginFrame(camera, aspect, {lamps, kSpotInnerDeg, kSpotOuterDeg}, options_);
+  shading_.beginFrame(camera, width, height, kBackground, {lamps, kSpotInnerDeg, kSpotOuterDeg},
+                      options_);
   for (const Part& part : parts_) {
     shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
   }
   drawHoles();
   drawBalls();
   drawLamps();
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  overlay_.draw(viewProjection(camera, aspect));
+  shading_.endFrame();
+  overlay_.draw(viewProjection(camera, static_cast<float>(width) / static_cast<float>(height)));
 }
 
 }  // namespace pool::render

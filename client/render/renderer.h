@@ -49,7 +49,7 @@ class Renderer {
   /// Replaces the overlay segments drawn after the scene.
   void setOverlay(std::vector<OverlayLine> lines);
 
-  /// The balls as drawn: pocketed ones moved to their place in the trough.
+  /// The balls as drawn: pocketed ones moved to their place in the trough, number to the viewer.
   std::vector<SceneBall> drawnBalls() const;
   /// Clears and draws the scene into the bound framebuffer of size width × height.
   void draw(const Camera& camera, int width, int height) const;

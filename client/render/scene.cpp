@@ -6,11 +6,7 @@
 
 namespace pool::render {
 
-namespace {
-
-/// Turns a ball so its number (body +x) faces up toward the overview camera (from -y) and its
-/// band axis (body z) lies along the table.
-Eigen::Quaterniond numberFacingViewer() {
+Eigen::Quaterniond numberTowardViewer() {
   const Eigen::Vector3d toward = Eigen::Vector3d(0.0, -0.55, 1.0).normalized();
   const Eigen::Vector3d along = Eigen::Vector3d::UnitX();
   Eigen::Matrix3d r;
@@ -19,8 +15,6 @@ Eigen::Quaterniond numberFacingViewer() {
   r.col(2) = along;
   return Eigen::Quaterniond(r);
 }
-
-}  // namespace
 
 Result<Scene> tableScene(const std::string& table) {
   auto spec = pool::table::loadTableSpec(table);
@@ -42,7 +36,7 @@ Result<Scene> rackScene(const std::string& table) {
   Scene scene = std::move(*empty);
   const double r = scene.ball_radius;
   const Eigen::Vector2d head = spotsFor(*spec).head_spot;
-  const Eigen::Quaterniond facing = numberFacingViewer();
+  const Eigen::Quaterniond facing = numberTowardViewer();
   scene.balls.push_back({0, Eigen::Vector3d(head.x(), head.y(), r), facing});
   for (const BallPlacement& b : rackBalls(RackType::EightBall, *spec, r, 0)) {
     scene.balls.push_back({b.id, Eigen::Vector3d(b.pos.x(), b.pos.y(), r), facing});

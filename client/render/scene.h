@@ -27,6 +27,10 @@ struct Scene {
   std::vector<SceneBall> balls;
 };
 
+/// An orientation that shows a ball's number (body +x) to the overview camera (up and toward
+/// -y), its band axis (body z) along the table.
+Eigen::Quaterniond numberTowardViewer();
+
 /// The table `table` (a spec name, e.g. "wpa-9ft") with no balls.
 Result<Scene> tableScene(const std::string& table);
 

@@ -32,8 +32,14 @@ SceneShading::SceneShading()
   }
 }
 
-void SceneShading::beginFrame(const Camera& camera, float aspect, const SpotLights& lights,
-                              const RenderOptions& options) const {
+void SceneShading::beginFrame(const Camera& camera, int width, int height, glm::vec3 background,
+                              const SpotLights& lights, const RenderOptions& options) const {
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glClearColor(background.r, background.g, background.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glPolygonMode(GL_FRONT_AND_BACK, options.wireframe ? GL_LINE : GL_FILL);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
   numbers_.bind(kNumbersUnit);
   noise_.bind(kNoiseUnit);
   const glm::mat4 view_projection = viewProjection(camera, aspect);
@@ -50,6 +56,18 @@ void SceneShading::beginFrame(const Camera& camera, float aspect, const SpotLigh
     p->set("uNumbers", kNumbersUnit);
     p->set("uNoise", kNoiseUnit);
   }
+  setAmbient(kAmbient);
+}
+
+void SceneShading::setAmbient(float ambient) const {
+  for (const auto& p : programs_) {
+    p->use();
+    p->set("uAmbient", ambient);
+  }
+}
+
+void SceneShading::endFrame() const {
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
 void SceneShading::draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,

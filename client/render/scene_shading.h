@@ -27,11 +27,20 @@ struct SpotLights {
 /// cannot be loaded.
 class SceneShading {
  public:
+  /// The ambient light's share of the albedo, set by beginFrame.
+  static constexpr float kAmbient = 0.22f;
+
   SceneShading();
 
-  /// Binds the textures and sets the per-frame uniforms of every program.
-  void beginFrame(const Camera& camera, float aspect, const SpotLights& lights,
-                  const RenderOptions& options) const;
+  /// Clears the bound width × height framebuffer to `background`, sets the depth test and the
+  /// polygon mode (wireframe), binds the textures and sets every program's per-frame uniforms.
+  void beginFrame(const Camera& camera, int width, int height, glm::vec3 background,
+                  const SpotLights& lights, const RenderOptions& options) const;
+  /// Changes the ambient light's share (kAmbient after beginFrame); the trough under the rail
+  /// has its own light, so its balls are drawn with more.
+  void setAmbient(float ambient) const;
+  /// Back to filled polygons (for whatever is drawn next: overlay, HUD).
+  void endFrame() const;
   /// Draws `mesh` with `model` (mesh → table frame) in a material (shaders::Material).
   void draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
             float specular) const;

@@ -44,6 +44,7 @@ uniform int uBallCell;
 uniform int uTextures;
 uniform int uLighting;
 uniform float uSpecular;
+uniform float uAmbient;
 uniform sampler2D uNumbers;
 uniform sampler2D uNoise;
 uniform vec3 uEye;
@@ -90,7 +91,7 @@ void main() {
   vec3 n = normalize(vNormal);
   vec3 v = normalize(uEye - vWorldPos);
   if (dot(n, v) < 0.0) n = -n;
-  vec3 colour = 0.22 * base;
+  vec3 colour = uAmbient * base;
   for (int i = 0; i < 2; ++i) {
     vec3 l = normalize(uLightPos[i] - vWorldPos);
     float cone = smoothstep(uCosOuter, uCosInner, l.z);  // the lamps point straight down
