@@ -38,6 +38,10 @@ struct FrameSource {
 int renderFrames(const ScreenshotOptions& options, const std::function<FrameSource()>& make) {
   OffscreenContext context(options.width, options.height);
   const FrameSource source = make();
+  if (!options.info_path.empty() && !source.info) {
+    std::cerr << "--screenshot-info: this scene has no balls to describe\n";
+    return 2;
+  }
   std::vector<std::uint8_t> pixels;
   for (int frame = 0; frame < options.frames; ++frame) {
     context.bind();

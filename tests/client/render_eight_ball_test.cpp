@@ -86,5 +86,15 @@ TEST_F(RenderEightBallTest, ABlankQuestionIsRefused) {
   EXPECT_EQ(loadPng(png_).width, 0) << "no picture written";
 }
 
+TEST_F(RenderEightBallTest, ASidecarIsRefusedForTheRoomWithoutWritingAnything) {
+  const std::string json = png_ + ".json";
+  const std::string cmd = std::string("env -u DISPLAY ") + POOL_BIN_DIR +
+                          "/pool-client --screenshot " + png_ +
+                          " --scene eightball --screenshot-info " + json + " 2>/dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()) >> 8, 2);
+  EXPECT_EQ(loadPng(png_).width, 0) << "no picture written";
+  EXPECT_NE(::access(json.c_str(), F_OK), 0) << "no sidecar written";
+}
+
 }  // namespace
 }  // namespace pool::client::test
