@@ -9,6 +9,7 @@
 
 #include "client/net/game_client.h"
 #include "client/render/screenshot.h"
+#include "client/spectate/spectate_screenshot.h"
 #include "client/spectate/spectator.h"
 #include "client/ui/window_app.h"
 #include "net/dds_error.h"
@@ -77,17 +78,34 @@ int main(int argc, char** argv) {
   app.add_option("--height", flags.window.height, "window height")->check(CLI::Range(240, 8192));
   app.add_option("--screenshot", flags.screenshot.path,
                  "render offscreen and write the last frame to this PNG");
+  app.add_option("--screenshot-info", flags.screenshot.info_path,
+                 "--screenshot: also write the camera and the balls drawn to this JSON file");
   app.add_option("--frames", flags.screenshot.frames, "frames to render with --screenshot")
       ->check(CLI::PositiveNumber);
-  app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack)")
-      ->check(CLI::IsMember({"rack"}));
+  app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack, eightball)")
+      ->check(CLI::IsMember({"rack", "eightball"}));
+  app.add_option("--question", flags.screenshot.question,
+                 "--scene eightball: the question the Magic Eight Ball answers");
+  app.add_option("--seed", flags.screenshot.seed, "--scene eightball: the Magic Eight Ball's seed");
+  app.add_flag("--wireframe", flags.screenshot.render.wireframe, "--screenshot: polygons as lines");
+  bool no_textures = false, no_lighting = false;
+  app.add_flag("--no-textures", no_textures, "--screenshot: flat colours, no numbers or grain");
+  app.add_flag("--no-lighting", no_lighting, "--screenshot: unlit colours");
   CLI11_PARSE(app, argc, argv);
+  flags.screenshot.render.textures = !no_textures;
+  flags.screenshot.render.lighting = !no_lighting;
 
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  if (!flags.screenshot.path.empty() && !flags.spectate.empty()) {
+    pool::client::SpectateScreenshotConfig config{
+        flags.domain, flags.spectate, flags.timeout, [] { return g_stop.load(); }, {}};
+    if (flags.json) config.emit = [](const std::string& line) { std::cout << line << '\n'; };
+    return pool::client::runSpectateScreenshot(config, flags.screenshot);
+  }
   if (!flags.screenshot.path.empty()) return pool::render::runScreenshot(flags.screenshot);
 
   const Mode mode = flags.spectate.empty() || !flags.no_window ? Mode::Window : Mode::Spectate;
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
   if (mode == Mode::Window) {
     if (flags.no_window) {
       std::cerr << "--no-window needs --spectate MATCH\n";

@@ -69,6 +69,62 @@ MeshData unitDisc(int slices) {
   return mesh;
 }
 
+MeshData box(glm::vec3 lo, glm::vec3 hi) {
+  MeshData mesh;
+  // Each face: its axis, its side, and two in-plane axes.
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (const float side : {-1.0f, 1.0f}) {
+      glm::vec3 n(0.0f);
+      n[axis] = side;
+      auto corner = [&](bool hu, bool hv) {
+        glm::vec3 p;
+        p[axis] = side > 0.0f ? hi[axis] : lo[axis];
+        p[u] = hu ? hi[u] : lo[u];
+        p[v] = hv ? hi[v] : lo[v];
+        return p;
+      };
+      addTriangle(mesh, corner(false, false), corner(true, false), corner(true, true), n, n, n);
+      addTriangle(mesh, corner(false, false), corner(true, true), corner(false, true), n, n, n);
+    }
+  }
+  return mesh;
+}
+
+MeshData openFrustum(float bottom, float top, float height, int slices) {
+  MeshData mesh;
+  const float slope = (bottom - top) / height;  // outward normal leans up as the side narrows
+  for (int j = 0; j < slices; ++j) {
+    const glm::vec3 a = spherePoint(1, j, 2, slices);
+    const glm::vec3 b = spherePoint(1, j + 1, 2, slices);
+    const glm::vec3 na = glm::normalize(glm::vec3(a.x, a.y, slope));
+    const glm::vec3 nb = glm::normalize(glm::vec3(b.x, b.y, slope));
+    const glm::vec3 a0 = a * bottom, b0 = b * bottom;
+    const glm::vec3 a1 = a * top + glm::vec3(0, 0, height), b1 = b * top + glm::vec3(0, 0, height);
+    addTriangle(mesh, a0, b0, b1, na, nb, nb);
+    addTriangle(mesh, a0, b1, a1, na, nb, na);
+  }
+  return mesh;
+}
+
+void append(MeshData& mesh, const MeshData& more) {
+  mesh.positions.insert(mesh.positions.end(), more.positions.begin(), more.positions.end());
+  mesh.normals.insert(mesh.normals.end(), more.normals.begin(), more.normals.end());
+}
+
+void createVec3PairArray(unsigned& vao, unsigned& vbo) {
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  const auto stride = static_cast<GLsizei>(6 * sizeof(float));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
+}
+
 GpuMesh::GpuMesh(const MeshData& data) : count_(static_cast<int>(data.positions.size())) {
   std::vector<float> interleaved;
   interleaved.reserve(data.positions.size() * 6);
@@ -77,18 +133,9 @@ GpuMesh::GpuMesh(const MeshData& data) : count_(static_cast<int>(data.positions.
     const glm::vec3& n = data.normals[i];
     interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
   }
-  glGenVertexArrays(1, &vao_);
-  glBindVertexArray(vao_);
-  glGenBuffers(1, &vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  createVec3PairArray(vao_, vbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
                interleaved.data(), GL_STATIC_DRAW);
-  const auto stride = static_cast<GLsizei>(6 * sizeof(float));
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                        reinterpret_cast<const void*>(3 * sizeof(float)));
   glBindVertexArray(0);
 }
 

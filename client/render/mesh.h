@@ -20,6 +20,17 @@ MeshData meshFromPart(const pool::table::MeshPart& part);
 MeshData unitSphere(int stacks, int slices);
 /// A horizontal disc of radius 1 at z = 0, facing +z.
 MeshData unitDisc(int slices);
+/// An axis-aligned box between corners `lo` and `hi`, flat normals pointing out.
+MeshData box(glm::vec3 lo, glm::vec3 hi);
+/// An open frustum around the z axis from z = 0 (radius `bottom`) to z = `height` (radius `top`),
+/// normals pointing out.
+MeshData openFrustum(float bottom, float top, float height, int slices);
+/// Appends `more` to `mesh`.
+void append(MeshData& mesh, const MeshData& more);
+
+/// Makes a vertex array over a new array buffer of interleaved vec3 pairs (attribute 0 the first
+/// of each pair, attribute 1 the second), leaving both bound; fill the buffer with glBufferData.
+void createVec3PairArray(unsigned& vao, unsigned& vbo);
 
 /// The mesh in a vertex array object (location 0: position, 1: normal).
 class GpuMesh {

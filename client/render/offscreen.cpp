@@ -1,10 +1,8 @@
-// Hidden GLFW window plus FBO; pixels are read back from the FBO before the buffers are swapped.
+// The offscreen FBO on whichever context host is available; pixels are read back from the FBO
+// before the frame ends.
 #include "client/render/offscreen.h"
 
-// clang-format off
 #include <glad/gl.h>
-#include <GLFW/glfw3.h>
-// clang-format on
 
 #include <cstring>
 #include <stdexcept>
@@ -12,33 +10,8 @@
 
 namespace pool::render {
 
-namespace {
-
-GLFWwindow* openHiddenWindow(int width, int height) {
-  if (glfwInit() != GLFW_TRUE) throw std::runtime_error("glfwInit failed (is DISPLAY set?)");
-  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(width, height, "pool-client", nullptr, nullptr);
-  if (!window) {
-    glfwTerminate();
-    throw std::runtime_error("no OpenGL 3.3 core context");
-  }
-  glfwMakeContextCurrent(window);
-  if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    throw std::runtime_error("glad could not load OpenGL 3.3");
-  }
-  return window;
-}
-
-}  // namespace
-
 OffscreenContext::OffscreenContext(int width, int height)
-    : width_(width), height_(height), window_(openHiddenWindow(width, height)) {
+    : width_(width), height_(height), host_(openGlHost(width, height)) {
   createFramebuffer();
 }
 
@@ -46,8 +19,6 @@ OffscreenContext::~OffscreenContext() {
   glDeleteFramebuffers(1, &fbo_);
   glDeleteRenderbuffers(1, &colour_);
   glDeleteRenderbuffers(1, &depth_);
-  glfwDestroyWindow(window_);
-  glfwTerminate();
 }
 
 void OffscreenContext::createFramebuffer() {
@@ -87,8 +58,7 @@ std::vector<std::uint8_t> OffscreenContext::readRgb() const {
 }
 
 void OffscreenContext::endFrame() const {
-  glfwSwapBuffers(window_);
-  glfwPollEvents();
+  host_->endFrame();
 }
 
 }  // namespace pool::render

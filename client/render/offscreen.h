@@ -1,15 +1,18 @@
-// An offscreen OpenGL 3.3 core context: a hidden GLFW window and a colour+depth framebuffer object.
+// An offscreen OpenGL 3.3 core context (GLFW hidden window or EGL surfaceless) and a colour+depth
+// framebuffer object.
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
-struct GLFWwindow;
+#include "client/render/gl_host.h"
 
 namespace pool::render {
 
-/// Owns a hidden GLFW window (for the context) and an FBO of the given size. Throws
-/// std::runtime_error when GLFW, the context, the loader or the framebuffer fail.
+/// Owns a context (see openGlHost: GLFW with a display, EGL surfaceless without) and an FBO of the
+/// given size. Throws std::runtime_error when the context, the loader or the framebuffer fail.
 class OffscreenContext {
  public:
   OffscreenContext(int width, int height);
@@ -21,8 +24,10 @@ class OffscreenContext {
   void bind() const;
   /// RGB bytes of the FBO, top row first (read before `endFrame`).
   std::vector<std::uint8_t> readRgb() const;
-  /// Swaps the window's buffers and polls events.
+  /// Ends the frame (swaps the hidden window's buffers, if there is one).
   void endFrame() const;
+  /// Where the context came from: "glfw" or "egl-surfaceless".
+  std::string backend() const { return host_->name(); }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -32,7 +37,7 @@ class OffscreenContext {
 
   int width_;
   int height_;
-  GLFWwindow* window_ = nullptr;
+  std::unique_ptr<GlHost> host_;
   unsigned fbo_ = 0;
   unsigned colour_ = 0;
   unsigned depth_ = 0;

@@ -3,6 +3,8 @@
 
 #include <array>
 
+#include "client/render/shaders.h"
+
 namespace pool::render {
 
 namespace {
@@ -37,11 +39,25 @@ BallLook ballLook(int id) {
   return {kSolids[static_cast<std::size_t>(id - 9)], true};
 }
 
-glm::vec3 partColour(const std::string& part_name) {
-  if (part_name == "slate") return kFelt;
-  if (startsWith(part_name, "cushion_") || startsWith(part_name, "jaw_")) return kCushion;
-  if (startsWith(part_name, "rail_")) return kWood;
-  return kDark;
+PartLook partLook(const std::string& part_name) {
+  if (part_name == "slate") return {kFelt, shaders::kFelt};
+  if (startsWith(part_name, "cushion_") || startsWith(part_name, "jaw_")) {
+    return {kCushion, shaders::kFelt};
+  }
+  if (startsWith(part_name, "rail_") || part_name == "trough") return {kWood, shaders::kWood};
+  return {kDark, shaders::kPlain};
+}
+
+glm::vec3 woodColour() {
+  return kWood;
+}
+
+glm::vec3 shadeColour() {
+  return {0.06f, 0.30f, 0.14f};
+}
+
+glm::vec3 bulbColour() {
+  return {1.0f, 0.96f, 0.85f};
 }
 
 glm::vec3 holeColour() {

@@ -15,8 +15,21 @@ struct BallLook {
 /// The look of ball `id` (0: the cue ball, 1–15 the object balls).
 BallLook ballLook(int id);
 
-/// Colour of a table mesh part by its name (slate, cushion_*, jaw_*, rail_*, pocket_*, trough).
-glm::vec3 partColour(const std::string& part_name);
+/// How a table mesh part looks: its colour and the scene shader's material (shaders::Material).
+struct PartLook {
+  glm::vec3 colour;
+  int material = 0;
+};
+
+/// The look of a table mesh part by its name (slate, cushion_*, jaw_*, rail_*, pocket_*, trough:
+/// the cabinet under the slate, wooden).
+PartLook partLook(const std::string& part_name);
+
+/// The wood of the rails and cabinet.
+glm::vec3 woodColour();
+/// Lamp shades (enamel, seen lit from inside) and bulbs.
+glm::vec3 shadeColour();
+glm::vec3 bulbColour();
 
 /// The colour drawn in the pocket holes.
 glm::vec3 holeColour();

@@ -1,11 +1,12 @@
-// Scene drawing: table parts flat-shaded, pocket holes as dark discs, balls as lit spheres.
+// Scene drawing: felt and wooden table parts, pocket holes, numbered balls turned by their
+// orientation, the lamps and the trough of pocketed balls, then the overlay lines on top.
 #include "client/render/renderer.h"
-
-#include <glad/gl.h>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 
+#include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/render/shaders.h"
 
@@ -13,8 +14,13 @@ namespace pool::render {
 
 namespace {
 
-constexpr float kLightHeight = 1.6f;     // m above the slate
 constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
+constexpr glm::vec3 kBackground(0.10f, 0.10f, 0.12f);
+constexpr float kTroughLight = 0.75f;  // share of the albedo lit in the trough
+
+glm::vec3 toGlm(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
 
 }  // namespace
 
@@ -25,17 +31,6 @@ Camera overviewCamera(const pool::table::TableGeometry& geometry, float aspect) 
   const float distance = half_length / std::tan(half_fov_x) * 1.3f;
   const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, -0.55f, 1.0f));
   return {glm::vec3(0.0f, 0.0f, 0.0f) + direction * distance, glm::vec3(0.0f, 0.0f, -0.05f), fov};
-}
-
-Renderer::Renderer(const Scene& scene)
-    : scene_(scene),
-      program_(shaders::kSceneVertex, shaders::kSceneFragment),
-      sphere_(unitSphere(24, 32)),
-      disc_(unitDisc(40)) {
-  for (const auto& part : scene_.geometry.parts) {
-    if (part.triangles.empty()) continue;
-    parts_.push_back({std::make_unique<GpuMesh>(meshFromPart(part)), partColour(part.name)});
-  }
 }
 
 glm::mat4 viewProjection(const Camera& camera, float aspect) {
@@ -53,24 +48,41 @@ glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3
           (0.5f - ndc.y * 0.5f) * static_cast<float>(height), ndc.z * 0.5f + 0.5f};
 }
 
-void Renderer::setFrameUniforms(const Camera& camera, float aspect) const {
-  program_.set("uViewProj", viewProjection(camera, aspect));
-  program_.set("uEye", camera.eye);
-  const float x = static_cast<float>(scene_.geometry.length) * 0.25f;
-  program_.set("uLightPos[0]", glm::vec3(-x, 0.0f, kLightHeight));
-  program_.set("uLightPos[1]", glm::vec3(x, 0.0f, kLightHeight));
-  program_.set("uCosInner", std::cos(glm::radians(35.0f)));
-  program_.set("uCosOuter", std::cos(glm::radians(65.0f)));
+Renderer::Renderer(const Scene& scene)
+    : scene_(scene),
+      trough_(scene.geometry, scene.ball_radius),
+      sphere_(unitSphere(16, 24)),
+      disc_(unitDisc(40)),
+      shade_(lampShade()) {
+  for (const auto& part : scene_.geometry.parts) {
+    if (part.triangles.empty()) continue;
+    const PartLook look = partLook(part.name);
+    parts_.push_back({std::make_unique<GpuMesh>(meshFromPart(part)), look.colour, look.material});
+  }
+  parts_.push_back({std::make_unique<GpuMesh>(trough_.mesh()), woodColour(), shaders::kWood});
+  trough_.update(scene_.balls);
 }
 
-void Renderer::drawMesh(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, bool striped,
-                        float specular) const {
-  program_.set("uModel", model);
-  program_.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
-  program_.set("uColour", colour);
-  program_.set("uStriped", striped ? 1 : 0);
-  program_.set("uSpecular", specular);
-  mesh.draw();
+void Renderer::setBalls(std::vector<SceneBall> balls) {
+  scene_.balls = std::move(balls);
+  trough_.update(scene_.balls);
+}
+
+void Renderer::setOverlay(std::vector<OverlayLine> lines) {
+  overlay_.set(lines);
+}
+
+std::vector<SceneBall> Renderer::drawnBalls() const {
+  std::vector<SceneBall> drawn = scene_.balls;
+  for (SceneBall& ball : drawn) {
+    if (!ball.pocketed) continue;
+    // Laid out for display, like a rack: number toward the viewer.
+    if (const auto slot = trough_.slotOf(ball.id)) {
+      ball.pos = trough_.slot(*slot);
+      ball.orientation = numberTowardViewer();
+    }
+  }
+  return drawn;
 }
 
 void Renderer::drawHoles() const {
@@ -80,31 +92,46 @@ void Renderer::drawHoles() const {
     const auto r = static_cast<float>(hole.radius);
     const glm::mat4 model =
         glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(r, r, 1.0f));
-    drawMesh(disc_, model, holeColour(), false, 0.0f);
+    shading_.draw(disc_, model, holeColour(), shaders::kPlain, 0.0f);
   }
 }
 
 void Renderer::drawBalls() const {
   const auto r = static_cast<float>(scene_.ball_radius);
-  for (const SceneBall& ball : scene_.balls) {
-    const glm::vec3 centre(static_cast<float>(ball.pos.x()), static_cast<float>(ball.pos.y()),
-                           static_cast<float>(ball.pos.z()));
-    const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(r));
-    const BallLook look = ballLook(ball.id);
-    drawMesh(sphere_, model, look.colour, look.striped, 0.5f);
+  for (const SceneBall& ball : drawnBalls()) {
+    const Eigen::Quaterniond& q = ball.orientation;
+    const glm::quat rotation(static_cast<float>(q.w()), static_cast<float>(q.x()),
+                             static_cast<float>(q.y()), static_cast<float>(q.z()));
+    const glm::mat4 model = glm::translate(glm::mat4(1.0f), toGlm(ball.pos)) *
+                            glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), glm::vec3(r));
+    // The trough is lit by its own strip light under the rail, out of the lamps' cones.
+    if (ball.pocketed) shading_.setAmbient(kTroughLight);
+    shading_.drawBall(sphere_, model, ball.id);
+    if (ball.pocketed) shading_.setAmbient(SceneShading::kAmbient);
+  }
+}
+
+void Renderer::drawLamps() const {
+  for (const glm::vec3& light : lampPositions(scene_.geometry)) {
+    const glm::mat4 at = glm::translate(glm::mat4(1.0f), light);
+    shading_.draw(shade_, at, shadeColour(), shaders::kEmissive, 0.0f);
+    const glm::mat4 bulb = glm::scale(at, glm::vec3(kBulbRadius, kBulbRadius, 1.0f));
+    shading_.draw(disc_, bulb, bulbColour(), shaders::kEmissive, 0.0f);
   }
 }
 
 void Renderer::draw(const Camera& camera, int width, int height) const {
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  program_.use();
-  setFrameUniforms(camera, static_cast<float>(width) / static_cast<float>(height));
-  for (const Part& part : parts_) drawMesh(*part.mesh, glm::mat4(1.0f), part.colour, false, 0.05f);
+  const auto lamps = lampPositions(scene_.geometry);
+  shading_.beginFrame(camera, width, height, kBackground, {lamps, kSpotInnerDeg, kSpotOuterDeg},
+                      options_);
+  for (const Part& part : parts_) {
+    shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
+  }
   drawHoles();
   drawBalls();
+  drawLamps();
+  shading_.endFrame();
+  overlay_.draw(viewProjection(camera, static_cast<float>(width) / static_cast<float>(height)));
 }
 
 }  // namespace pool::render

@@ -1,13 +1,16 @@
-// Draws a Scene (table parts, pocket holes, balls) with two spotlights and Blinn-Phong shading.
+// Draws a Scene (table, pockets, numbered balls, lamps, the pocketed-ball trough) with two
+// spotlights and Blinn-Phong shading, then the overlay lines.
 #pragma once
 
 #include <glm/glm.hpp>
 #include <memory>
 #include <vector>
 
+#include "client/render/ball_trough.h"
 #include "client/render/mesh.h"
+#include "client/render/overlay_lines.h"
 #include "client/render/scene.h"
-#include "client/render/shader.h"
+#include "client/render/scene_shading.h"
 
 namespace pool::render {
 
@@ -28,29 +31,26 @@ glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3
 
 /// Switches of the drawing (the client's P, T and L keys).
 struct RenderOptions {
-  bool wireframe = false;
-  bool textures = true;
-  bool lighting = true;
+  bool wireframe = false;  ///< polygons as lines
+  bool textures = true;    ///< ball numbers, felt and wood grain (off: flat colours)
+  bool lighting = true;    ///< spotlights (off: unlit colours)
 };
 
-/// A coloured segment drawn over the scene, unlit (aim line, cue, direction vectors).
-struct OverlayLine {
-  glm::vec3 a;
-  glm::vec3 b;
-  glm::vec3 colour;
-};
-
-/// GPU resources of one scene; needs a current OpenGL 3.3 core context.
+/// GPU resources of one scene; needs a current OpenGL 3.3 core context. Throws
+/// std::runtime_error when a shader or the font cannot be loaded.
 class Renderer {
  public:
   explicit Renderer(const Scene& scene);
-  /// Replaces the balls (positions and orientations from the latest snapshot).
-  void setBalls(std::vector<SceneBall> balls) { scene_.balls = std::move(balls); }
+  /// Replaces the balls (positions and orientations from the latest snapshot). Pocketed balls
+  /// are drawn in the trough in the order they were pocketed.
+  void setBalls(std::vector<SceneBall> balls);
   void setOptions(const RenderOptions& options) { options_ = options; }
   const RenderOptions& options() const { return options_; }
   /// Replaces the overlay segments drawn after the scene.
-  void setOverlay(std::vector<OverlayLine> lines) { overlay_ = std::move(lines); }
+  void setOverlay(std::vector<OverlayLine> lines);
 
+  /// The balls as drawn: pocketed ones moved to their place in the trough, number to the viewer.
+  std::vector<SceneBall> drawnBalls() const;
   /// Clears and draws the scene into the bound framebuffer of size width × height.
   void draw(const Camera& camera, int width, int height) const;
 
@@ -58,20 +58,21 @@ class Renderer {
   struct Part {
     std::unique_ptr<GpuMesh> mesh;
     glm::vec3 colour;
+    int material;
   };
-  void setFrameUniforms(const Camera& camera, float aspect) const;
-  void drawMesh(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, bool striped,
-                float specular) const;
   void drawBalls() const;
   void drawHoles() const;
+  void drawLamps() const;
 
   Scene scene_;
   RenderOptions options_;
-  std::vector<OverlayLine> overlay_;
-  ShaderProgram program_;
+  BallTrough trough_;
+  SceneShading shading_;
   std::vector<Part> parts_;
   GpuMesh sphere_;
   GpuMesh disc_;
+  GpuMesh shade_;
+  OverlayLines overlay_;
 };
 
 }  // namespace pool::render

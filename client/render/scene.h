@@ -27,7 +27,15 @@ struct Scene {
   std::vector<SceneBall> balls;
 };
 
-/// A freshly racked 8-ball table (rack seed 0) with the cue ball on the head spot.
+/// An orientation that shows a ball's number (body +x) to the overview camera (up and toward
+/// -y), its band axis (body z) along the table.
+Eigen::Quaterniond numberTowardViewer();
+
+/// The table `table` (a spec name, e.g. "wpa-9ft") with no balls.
+Result<Scene> tableScene(const std::string& table);
+
+/// A freshly racked 8-ball table (rack seed 0) with the cue ball on the head spot, every ball
+/// turned to show its number to the overview camera.
 Result<Scene> rackScene(const std::string& table = "wpa-9ft");
 
 }  // namespace pool::render

@@ -1,13 +1,18 @@
-// Offscreen rendering of a scene to a PNG file (stb_image_write).
+// Offscreen rendering of a scene to a PNG file (stb_image_write) and its JSON sidecar.
 #include "client/render/screenshot.h"
 
 #include <stb_image_write.h>
 
 #include <exception>
+#include <fstream>
+#include <functional>
 #include <iostream>
+#include <memory>
 
+#include "client/render/eight_ball_room.h"
 #include "client/render/offscreen.h"
-#include "client/render/renderer.h"
+#include "client/render/screenshot_info.h"
+#include "client/room/magic_eight_ball.h"
 
 namespace pool::render {
 
@@ -18,15 +23,29 @@ bool writePng(const std::string& path, int width, int height,
   return stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3) != 0;
 }
 
-int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
+bool writeText(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+/// What one screenshot draws, made once its context is current.
+struct FrameSource {
+  std::function<void(int frame)> draw;
+  std::function<std::string()> info;  ///< the sidecar's text; may be empty
+};
+
+int renderFrames(const ScreenshotOptions& options, const std::function<FrameSource()>& make) {
   OffscreenContext context(options.width, options.height);
-  const Renderer renderer(scene);
-  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-  const Camera camera = overviewCamera(scene.geometry, aspect);
+  const FrameSource source = make();
+  if (!options.info_path.empty() && !source.info) {
+    std::cerr << "--screenshot-info: this scene has no balls to describe\n";
+    return 2;
+  }
   std::vector<std::uint8_t> pixels;
   for (int frame = 0; frame < options.frames; ++frame) {
     context.bind();
-    renderer.draw(camera, options.width, options.height);
+    source.draw(frame);
     if (frame + 1 == options.frames) pixels = context.readRgb();
     context.endFrame();
   }
@@ -34,18 +53,69 @@ int renderToPng(const ScreenshotOptions& options, const Scene& scene) {
     std::cerr << "could not write " << options.path << '\n';
     return 1;
   }
+  if (!options.info_path.empty() && source.info && !writeText(options.info_path, source.info())) {
+    std::cerr << "could not write " << options.info_path << '\n';
+    return 1;
+  }
   return 0;
+}
+
+/// Checks the options, then renders with the error handling every screenshot shares.
+int guarded(const ScreenshotOptions& options, const std::function<FrameSource()>& make) {
+  if (options.frames < 1) {
+    std::cerr << "--frames must be at least 1\n";
+    return 2;
+  }
+  try {
+    return renderFrames(options, make);
+  } catch (const std::exception& e) {
+    std::cerr << "render: " << e.what() << '\n';
+    return 1;
+  }
 }
 
 }  // namespace
 
+int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
+                     const FrameHook& before_frame) {
+  std::shared_ptr<Renderer> renderer;
+  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  const Camera camera = overviewCamera(scene.geometry, aspect);
+  return guarded(options, [&] {
+    renderer = std::make_shared<Renderer>(scene);
+    renderer->setOptions(options.render);
+    return FrameSource{[&](int frame) {
+                         if (before_frame) before_frame(*renderer, frame);
+                         renderer->draw(camera, options.width, options.height);
+                       },
+                       [&] {
+                         return screenshotInfoJson(camera, options.width, options.height,
+                                                   scene.ball_radius, renderer->drawnBalls());
+                       }};
+  });
+}
+
+int renderEightBallScreenshot(const ScreenshotOptions& options, const std::string& answer) {
+  std::shared_ptr<EightBallRoom> room;
+  const Camera camera = EightBallRoom::defaultCamera();
+  return guarded(options, [&] {
+    room = std::make_shared<EightBallRoom>();
+    room->setOptions(options.render);
+    return FrameSource{[&](int) { room->draw(camera, options.width, options.height, answer); }, {}};
+  });
+}
+
 int runScreenshot(const ScreenshotOptions& options) {
-  if (options.scene != "rack") {
-    std::cerr << "unknown scene '" << options.scene << "' (known: rack)\n";
-    return 2;
+  if (options.scene == "eightball") {
+    const auto reply = pool::room::answer(options.question, options.seed);
+    if (!reply) {
+      std::cerr << reply.error() << '\n';
+      return 2;
+    }
+    return renderEightBallScreenshot(options, *reply);
   }
-  if (options.frames < 1) {
-    std::cerr << "--frames must be at least 1\n";
+  if (options.scene != "rack") {
+    std::cerr << "unknown scene '" << options.scene << "' (known: rack, eightball)\n";
     return 2;
   }
   auto scene = rackScene();
@@ -53,12 +123,7 @@ int runScreenshot(const ScreenshotOptions& options) {
     std::cerr << "scene: " << scene.error() << '\n';
     return 1;
   }
-  try {
-    return renderToPng(options, *scene);
-  } catch (const std::exception& e) {
-    std::cerr << "render: " << e.what() << '\n';
-    return 1;
-  }
+  return renderScreenshot(options, *scene);
 }
 
 }  // namespace pool::render

@@ -69,6 +69,10 @@ void ShaderProgram::set(const char* name, const glm::vec3& value) const {
   glUniform3fv(location(name), 1, glm::value_ptr(value));
 }
 
+void ShaderProgram::set(const char* name, const glm::vec4& value) const {
+  glUniform4fv(location(name), 1, glm::value_ptr(value));
+}
+
 void ShaderProgram::set(const char* name, float value) const {
   glUniform1f(location(name), value);
 }

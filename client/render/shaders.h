@@ -1,9 +1,16 @@
-// GLSL 3.30 sources of the scene shader: world-space Blinn-Phong lighting from two spotlights.
+// GLSL 3.30 sources: the scene shader (world-space Blinn-Phong from two spotlights, procedural
+// felt and wood, numbered balls) and the unlit overlay-line shader.
 #pragma once
+
+#include <string>
 
 namespace pool::render::shaders {
 
-/// Vertex stage: world position and normal, plus the object-space normal (for ball stripes).
+/// Material codes of the scene shader's uMaterial.
+enum Material : int { kPlain = 0, kFelt = 1, kWood = 2, kBall = 3, kEmissive = 4, kMaterials = 5 };
+
+/// Vertex stage: world position and normal, plus the object-space normal (ball markings turn
+/// with the ball's orientation).
 inline constexpr const char* kSceneVertex = R"(#version 330 core
 layout(location = 0) in vec3 aPos;
 layout(location = 1) in vec3 aNormal;
@@ -22,40 +29,136 @@ void main() {
 }
 )";
 
-/// Fragment stage: two downward spotlights with a soft cone, ambient, diffuse and specular terms.
-/// Striped balls are white except for a band around their local y axis.
-inline constexpr const char* kSceneFragment = R"(#version 330 core
+/// Fragment stage, compiled once per material (withMaterial): llvmpipe runs every branch of a
+/// shader, so each material's program holds only its own work.
+/// Balls: solid colour, or white with a band |z| < 0.5 (stripes); a white circle with the number
+/// (atlas cell uBallCell) on the body's +x and -x sides. Felt and wood modulate brightness with a
+/// tiling noise texture, so their hue stays that of uColour. uLighting 0: albedo unlit.
+inline constexpr const char* kSceneFragment = R"(
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec3 vLocalNormal;
 uniform vec3 uColour;
 uniform int uStriped;
+uniform int uBallCell;
+uniform int uTextures;
+uniform int uLighting;
 uniform float uSpecular;
+uniform float uAmbient;
+uniform sampler2D uNumbers;
+uniform sampler2D uNoise;
 uniform vec3 uEye;
 uniform vec3 uLightPos[2];
 uniform float uCosInner;
 uniform float uCosOuter;
 out vec4 fragColour;
+const vec3 kWhite = vec3(0.95, 0.95, 0.92);
+const float kCircleCos = 0.9;  // number circle: about 26 degrees around the axis
 vec3 albedo() {
-  if (uStriped == 1 && abs(vLocalNormal.y) > 0.5) return vec3(0.95, 0.95, 0.92);
+#if MATERIAL == 3
+  vec3 n = normalize(vLocalNormal);
+  vec3 base = (uStriped == 1 && abs(n.z) > 0.5) ? kWhite : uColour;
+  if (uTextures == 0 || uBallCell <= 0 || abs(n.x) < kCircleCos) return base;
+  float side = n.x > 0.0 ? 1.0 : -1.0;
+  vec2 uv = vec2(side * n.y, n.z) / sqrt(1.0 - kCircleCos * kCircleCos);
+  vec2 cell = vec2(float(uBallCell % 4), float(uBallCell / 4));
+  float ink = texture(uNumbers, (cell + vec2(0.5 + 0.5 * uv.x, 0.5 - 0.5 * uv.y)) / 4.0).r;
+  return mix(kWhite, vec3(0.04), ink);
+#elif MATERIAL == 1
+  if (uTextures == 0) return uColour;
+  float fibre = texture(uNoise, vWorldPos.xy * 6.0).r * 0.08;
+  float broad = texture(uNoise, vWorldPos.xy * 0.35).r * 0.06;
+  return uColour * (0.93 + fibre + broad);
+#elif MATERIAL == 2
+  if (uTextures == 0) return uColour;
+  float along = abs(vNormal.x) > abs(vNormal.y) ? vWorldPos.y : vWorldPos.x;
+  float across = vWorldPos.x + vWorldPos.y + vWorldPos.z;
+  float grain = sin(across * 140.0 + texture(uNoise, vec2(along * 0.3, across * 1.2)).r * 6.0);
+  return uColour * (0.88 + 0.12 * grain);
+#else
   return uColour;
+#endif
 }
 void main() {
+  vec3 base = albedo();
+#if MATERIAL == 4
+  fragColour = vec4(min(base, vec3(1.0)), 1.0);
+#else
+  if (uLighting == 0) {
+    fragColour = vec4(min(base, vec3(1.0)), 1.0);
+    return;
+  }
   vec3 n = normalize(vNormal);
   vec3 v = normalize(uEye - vWorldPos);
   if (dot(n, v) < 0.0) n = -n;
-  vec3 base = albedo();
-  vec3 colour = 0.22 * base;
+  vec3 colour = uAmbient * base;
   for (int i = 0; i < 2; ++i) {
     vec3 l = normalize(uLightPos[i] - vWorldPos);
-    float cone = smoothstep(uCosOuter, uCosInner, dot(-l, vec3(0.0, 0.0, -1.0)));
+    float cone = smoothstep(uCosOuter, uCosInner, l.z);  // the lamps point straight down
     float diffuse = max(dot(n, l), 0.0);
-    vec3 h = normalize(l + v);
-    float spec = diffuse > 0.0 ? pow(max(dot(n, h), 0.0), 64.0) : 0.0;
-    colour += cone * (0.62 * diffuse * base + uSpecular * spec * vec3(1.0));
+    colour += cone * 0.62 * diffuse * base;
+#if MATERIAL == 3
+    // Only the balls are glossy enough for a highlight worth its cost: (n.h)^64 by squaring.
+    float s = max(dot(n, normalize(l + v)), 0.0);
+    s *= s; s *= s; s *= s; s *= s; s *= s; s *= s;
+    colour += cone * uSpecular * (diffuse > 0.0 ? s : 0.0);
+#endif
   }
   fragColour = vec4(min(colour, vec3(1.0)), 1.0);
+#endif
 }
+)";
+
+/// The fragment source for one material: the version line, its MATERIAL define, the body.
+inline std::string withMaterial(int material) {
+  return "#version 330 core\n#define MATERIAL " + std::to_string(material) + "\n" + kSceneFragment;
+}
+
+/// Text on a flat face (the Magic Eight Ball's answer triangle): the face lies in its local xy
+/// plane; inside uTextBox (local x0, y0, x1, y1) the text texture's ink is drawn in near-white.
+inline constexpr const char* kDecalVertex = R"(#version 330 core
+layout(location = 0) in vec3 aPos;
+uniform mat4 uModel;
+uniform mat4 uViewProj;
+out vec2 vLocal;
+void main() {
+  vLocal = aPos.xy;
+  gl_Position = uViewProj * uModel * vec4(aPos, 1.0);
+}
+)";
+
+inline constexpr const char* kDecalFragment = R"(#version 330 core
+in vec2 vLocal;
+uniform vec3 uColour;
+uniform vec4 uTextBox;
+uniform sampler2D uText;
+out vec4 fragColour;
+void main() {
+  vec2 t = (vLocal - uTextBox.xy) / (uTextBox.zw - uTextBox.xy);
+  float ink = 0.0;
+  if (all(greaterThanEqual(t, vec2(0.0))) && all(lessThanEqual(t, vec2(1.0)))) {
+    ink = texture(uText, vec2(t.x, 1.0 - t.y)).r;
+  }
+  fragColour = vec4(mix(uColour, vec3(0.92, 0.94, 1.0), ink), 1.0);
+}
+)";
+
+/// Overlay lines: position and colour per vertex, no lighting.
+inline constexpr const char* kLineVertex = R"(#version 330 core
+layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aColour;
+uniform mat4 uViewProj;
+out vec3 vColour;
+void main() {
+  vColour = aColour;
+  gl_Position = uViewProj * vec4(aPos, 1.0);
+}
+)";
+
+inline constexpr const char* kLineFragment = R"(#version 330 core
+in vec3 vColour;
+out vec4 fragColour;
+void main() { fragColour = vec4(vColour, 1.0); }
 )";
 
 }  // namespace pool::render::shaders

@@ -58,7 +58,9 @@ void Spectator::handle(const ClientEvent& event) {
     const bool seen_start = joined_at_shot_ && report->shot_number > *joined_at_shot_;
     if (report->final() && seen_start) shots_done_.push_back(report->shot_number);
   } else if (const auto* frame = std::get_if<TableFrame>(&event)) {
-    if (frame->match == target_) countFrame(*frame);
+    if (frame->match != target_) return;
+    countFrame(*frame);
+    latest_balls_ = frame->balls;
   } else if (const auto* gone = std::get_if<MatchGone>(&event)) {
     if (gone->match == target_ && config_.exit_when_over) done_ = true;
   }
@@ -67,6 +69,7 @@ void Spectator::handle(const ClientEvent& event) {
 void Spectator::emitState(const MatchView& view) {
   if (printed_revision_ && view.revision <= *printed_revision_) return;
   printed_revision_ = view.revision;
+  latest_balls_ = view.balls;
   if (!joined_at_shot_) joined_at_shot_ = view.shot_number;
   emit_(matchStateLine(view));
   if (config_.exit_when_over &&

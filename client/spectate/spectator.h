@@ -33,6 +33,11 @@ class Spectator {
   bool done() const { return done_; }
   /// The match being watched (empty until chosen).
   const std::string& match() const { return target_; }
+  /// The watched table as last seen: the latest frame of a shot in motion, or the layout of the
+  /// latest state, whichever came last. Null before either arrived.
+  const std::vector<physics::Ball>* latestBalls() const {
+    return latest_balls_ ? &*latest_balls_ : nullptr;
+  }
 
  private:
   struct Frames {
@@ -61,6 +66,7 @@ class Spectator {
   std::optional<MatchView> ending_;      ///< the state that ended the match
   std::optional<double> ending_since_;   ///< when it was seen (s)
   std::uint32_t last_result_ = 0;        ///< the highest shot with a final result printed
+  std::optional<std::vector<physics::Ball>> latest_balls_;
   bool done_ = false;
 };
 

@@ -3,17 +3,9 @@
 
 #include <imgui.h>
 
-#include <array>
-#include <functional>
+#include "client/room/magic_eight_ball.h"
 
 namespace pool::ui {
-
-std::string roomAnswer(const std::string& question, std::uint64_t seed) {
-  // MERGE: stand-in for room::answer (client/room/magic_eight_ball.h), which holds the twenty.
-  static constexpr std::array<const char*, 3> kStandIn{"Yes.", "No.", "Ask again later."};
-  const std::size_t pick = (std::hash<std::string>{}(question) ^ seed) % kStandIn.size();
-  return kStandIn[pick];
-}
 
 bool drawEightBallRoom(EightBallRoomState& state) {
   bool stay = true;
@@ -28,8 +20,9 @@ bool drawEightBallRoom(EightBallRoomState& state) {
       ImGui::InputText("##question", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
   state.question = buffer;
   ImGui::SameLine();
-  if ((ImGui::Button("Ask") || entered) && !state.question.empty()) {
-    state.answer = roomAnswer(state.question, ++state.asked);
+  if (ImGui::Button("Ask") || entered) {
+    // A blank question is refused by the ball itself: nothing changes.
+    if (auto said = room::answer(state.question, ++state.asked)) state.answer = *said;
   }
   if (!state.answer.empty()) ImGui::Text("The eight ball says: %s", state.answer.c_str());
   if (ImGui::Button("Back to the table")) stay = false;

@@ -28,6 +28,7 @@
 #include "client/audio/sound_board.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
+#include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
 #include "client/ui/eight_ball_room_ui.h"
@@ -381,7 +382,12 @@ class WindowApp {
     renderer_.setOptions({t.wireframe, t.textures, t.lighting});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
-    // MERGE: in the room, draw render::EightBallRoom here instead of the table.
+    if (in_room_) {
+      if (!room_scene_) room_scene_ = std::make_unique<render::EightBallRoom>();
+      room_scene_->setOptions({t.wireframe, t.textures, t.lighting});
+      room_scene_->draw(render::EightBallRoom::defaultCamera(), width, height, room_.answer);
+      return;
+    }
     renderer_.draw(cameraOf(controls_.camera().view()), width, height);
   }
 
@@ -485,6 +491,7 @@ class WindowApp {
   std::string placement_problem_;
   bool in_room_ = false;
   EightBallRoomState room_;
+  std::unique_ptr<render::EightBallRoom> room_scene_;  ///< made on the first visit
   bool quit_ = false;
   std::optional<std::uint32_t> last_revision_;
   std::optional<std::uint32_t> last_motion_;

@@ -26,9 +26,8 @@ TEST_F(BotMatchTest, TwoBotsPlayAFullMatchToAWinner) {
 
   // Both bots end on their own, well within the bound; the recorder watches meanwhile.
   const auto start = std::chrono::steady_clock::now();
-  const bool ended = recorder.pump(100s, [&] {
-    return stalledOnLayout(recorder) || (!alice.running() && !bob.running());
-  });
+  const bool ended = recorder.pump(
+      100s, [&] { return stalledOnLayout(recorder) || (!alice.running() && !bob.running()); });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_FALSE(stalledOnLayout(recorder))

@@ -67,7 +67,8 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   // Started again with the same identity: it rejoins the same seat and shoots again.
   alice = &startBot("alice", 5, alice_args);
   ASSERT_TRUE(untilConnected(recorder, "alice", true, 10s)) << alice->err();
-  const std::string rejoined = "rejoin " + (*saved)->match + " seat " + std::to_string((*saved)->seat);
+  const std::string rejoined =
+      "rejoin " + (*saved)->match + " seat " + std::to_string((*saved)->seat);
   EXPECT_TRUE(recorder.pump(5s, [&] { return alice->err().find(rejoined) != std::string::npos; }))
       << alice->err();
   ASSERT_TRUE(recorder.pump(20s, [&] {
@@ -82,9 +83,8 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   EXPECT_EQ(seatOf(*v, "alice"), (*saved)->seat);
 
   // The match then ends normally for both (or stalls on the physics bug, reported elsewhere).
-  recorder.pump(60s, [&] {
-    return stalledOnLayout(recorder) || (!alice->running() && !bob.running());
-  });
+  recorder.pump(60s,
+                [&] { return stalledOnLayout(recorder) || (!alice->running() && !bob.running()); });
   if (stalledOnLayout(recorder)) return;
   EXPECT_EQ(alice->waitExit(1s), 0) << alice->err();
   EXPECT_EQ(bob.waitExit(1s), 0) << bob.err();
@@ -153,7 +153,8 @@ TEST_F(BotRejoinTest, PastTheGracePeriodTheMatchIsForfeitedToTheOpponent) {
   // and bob says so.
   const auto killed = std::chrono::steady_clock::now();
   ASSERT_TRUE(recorder.pump(30s, [&] { return !bob.running(); })) << bob.err();
-  const double after = std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
+  const double after =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
   EXPECT_EQ(bob.waitExit(1s), 0);
   EXPECT_EQ(bob.lastLine().rfind("result: win", 0), 0u) << bob.out();
   EXPECT_NE(bob.lastLine().find("forfeit"), std::string::npos) << bob.lastLine();

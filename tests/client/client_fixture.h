@@ -25,6 +25,7 @@ enum Domain : std::uint32_t {
   kWindowShot = 210,
   kWindowSpectate = 211,
   kStarved = 136,  ///< 135–149: the signing, flood and presence tests
+  kSpectateScreenshot = 204,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

@@ -17,8 +17,8 @@ std::vector<physics::Ball> scattered() {
 void expectLegal(const PlannedShot& shot, rules::BallInHand in_hand,
                  const std::vector<physics::Ball>& balls) {
   ASSERT_TRUE(shot.cue_ball_at) << describe(shot);
-  const auto check = rules::checkCueBallPlacement(in_hand, *shot.cue_ball_at,
-                                                  withoutCueBall(balls), nineFoot().context);
+  const auto check = rules::checkCueBallPlacement(in_hand, *shot.cue_ball_at, withoutCueBall(balls),
+                                                  nineFoot().context);
   EXPECT_TRUE(check.ok()) << check.reason() << " for " << describe(shot);
 }
 

@@ -1,135 +1,167 @@
-// pool-client --screenshot --scene rack under Xvfb: felt, wooden rails and all sixteen balls.
+// pool-client --screenshot under Xvfb and through EGL without a display: the racked table (felt,
+// cushions, rails, sixteen numbered balls where the camera puts them) and the P/T/L switches
+// (wireframe, textures, lighting).
 #include <gtest/gtest.h>
-#include <stb_image.h>
-#include <unistd.h>
 
-#include <array>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <vector>
 
+#include "client/render/renderer.h"
+#include "client/render/scene.h"
+#include "png_image.h"
+#include "screenshot_fixture.h"
+
+namespace pool::client::test {
 namespace {
 
-/// An RGB image decoded from a PNG (empty when the file could not be read).
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<std::array<double, 3>> pixels;  ///< row-major, top row first, 0..255
+using RenderScreenshotTest = ScreenshotTest;
+
+constexpr Rgb kFelt{0.05, 0.42, 0.20};
+constexpr Rgb kWood{0.34, 0.17, 0.07};
+constexpr int kWidth = 1280;
+constexpr int kHeight = 720;
+
+/// A ball's centre and radius in the screenshot, from the scene and the default camera.
+struct BallOnScreen {
+  int id = 0;
+  double x = 0, y = 0, radius = 0;
 };
 
-Image loadPng(const std::string& path) {
-  Image image;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
-  if (!data) return image;
-  const auto n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
-  for (std::size_t i = 0; i < n; ++i)
-    image.pixels.push_back({double(data[3 * i]), double(data[3 * i + 1]), double(data[3 * i + 2])});
-  stbi_image_free(data);
-  return image;
+std::vector<BallOnScreen> rackOnScreen() {
+  auto scene = render::rackScene();
+  EXPECT_TRUE(static_cast<bool>(scene));
+  if (!scene) return {};
+  const auto camera = render::overviewCamera(scene->geometry, float(kWidth) / float(kHeight));
+  // A point one radius to the side (across the view) gives the ball's radius on screen.
+  const glm::vec3 side =
+      glm::normalize(glm::cross(camera.target - camera.eye, glm::vec3(0, 0, 1))) *
+      float(scene->ball_radius);
+  std::vector<BallOnScreen> out;
+  for (const auto& b : scene->balls) {
+    const glm::vec3 c(b.pos.x(), b.pos.y(), b.pos.z());
+    const glm::vec3 centre = render::projectToPixels(camera, kWidth, kHeight, c);
+    const glm::vec3 edge = render::projectToPixels(camera, kWidth, kHeight, c + side);
+    out.push_back({b.id, centre.x, centre.y, glm::length(glm::vec2(edge) - glm::vec2(centre))});
+  }
+  return out;
 }
 
-/// True when `p` is a lit shade of `colour`: same hue and saturation (direction in RGB), bright
-/// enough.
-bool shadeOf(const std::array<double, 3>& p, const std::array<double, 3>& colour) {
-  double dot = 0, pp = 0, cc = 0;
-  for (int i = 0; i < 3; ++i) {
-    dot += p[i] * colour[i];
-    pp += p[i] * p[i];
-    cc += colour[i] * colour[i];
-  }
-  const double brightest = std::max({p[0], p[1], p[2]});
-  return brightest >= 40.0 && dot / std::sqrt(pp * cc) > 0.997;
-}
+const auto kIsFelt = [](const Rgb& p) { return shadeOf(p, kFelt); };
 
-bool isWhite(const std::array<double, 3>& p) {
-  return std::min({p[0], p[1], p[2]}) > 190.0 &&
-         std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) < 30.0;
-}
-
-bool isBlack(const std::array<double, 3>& p) {
-  return std::max({p[0], p[1], p[2]}) < 20.0;
-}
-
-/// Pixels of `image` (optionally within columns [x0, x1)) satisfying `pred`.
-template <class Pred>
-int count(const Image& image, Pred pred, int x0 = 0, int x1 = -1) {
-  if (x1 < 0) x1 = image.width;
-  int n = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      if (pred(image.pixels[static_cast<std::size_t>(y * image.width + x)])) ++n;
-    }
-  }
-  return n;
-}
-
-constexpr std::array<double, 3> kFelt{0.05, 0.42, 0.20};
-constexpr std::array<double, 3> kWood{0.34, 0.17, 0.07};
-
-struct NamedColour {
-  const char* name;
-  std::array<double, 3> rgb;
-};
-
-/// Ball colours 1–7 (each also the band of the stripe n + 8).
-constexpr std::array<NamedColour, 7> kBallColours{{
-    {"yellow", {0.98, 0.80, 0.05}},
-    {"blue", {0.05, 0.15, 0.80}},
-    {"red", {0.85, 0.05, 0.05}},
-    {"purple", {0.40, 0.10, 0.60}},
-    {"orange", {1.00, 0.45, 0.02}},
-    {"green", {0.02, 0.55, 0.08}},
-    {"maroon", {0.45, 0.04, 0.10}},
-}};
-
-class RenderScreenshotTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
-      GTEST_SKIP() << "xvfb-run is not installed";
-    png_ = "/tmp/pool-render-test-" + std::to_string(::getpid()) + ".png";
-  }
-  void TearDown() override {
-    if (!png_.empty() && !std::getenv("POOL_KEEP_TEST_FILES")) std::remove(png_.c_str());
-  }
-  int screenshot(const std::string& extra) const {
-    const std::string cmd = std::string("xvfb-run -a -s \"-screen 0 1280x720x24\" ") +
-                            POOL_BIN_DIR + "/pool-client --screenshot " + png_ + " " + extra;
-    return std::system(cmd.c_str());
-  }
-  std::string png_;
-};
-
-TEST_F(RenderScreenshotTest, RackSceneShowsFeltRailsAndSixteenBalls) {
-  ASSERT_EQ(screenshot("--scene rack"), 0);
-  const Image image = loadPng(png_);
-  ASSERT_EQ(image.width, 1280);
-  ASSERT_EQ(image.height, 720);
+TEST_F(RenderScreenshotTest, RackSceneShowsFeltCushionsRailsAndSixteenBalls) {
+  const Image image = screenshot("--scene rack");
+  ASSERT_EQ(image.width, kWidth);
+  ASSERT_EQ(image.height, kHeight);
   const int total = image.width * image.height;
+  EXPECT_GT(count(image, kIsFelt), total * 35 / 100) << "felt green should fill much of the frame";
 
-  const auto felt = [](const auto& p) { return shadeOf(p, kFelt); };
-  EXPECT_GT(count(image, felt), total * 35 / 100) << "felt green should fill much of the frame";
-
-  const auto wood = [](const auto& p) { return shadeOf(p, kWood); };
+  const auto wood = [](const Rgb& p) { return shadeOf(p, kWood); };
   EXPECT_GT(count(image, wood, 0, image.width / 4), 2000) << "wooden rail on the left";
   EXPECT_GT(count(image, wood, image.width * 3 / 4), 2000) << "wooden rail on the right";
 
-  for (const NamedColour& c : kBallColours) {
-    EXPECT_GE(count(image, [&](const auto& p) { return shadeOf(p, c.rgb); }), 40)
-        << c.name << " balls";
+  // Each cushion's top, just behind its nose, is cloth-covered (green), not wood or background.
+  auto scene = render::rackScene();
+  ASSERT_TRUE(static_cast<bool>(scene));
+  const auto camera = render::overviewCamera(scene->geometry, float(kWidth) / float(kHeight));
+  int cushions = 0;
+  for (const auto& nose : scene->geometry.noses) {
+    if (nose.name.rfind("jaw", 0) == 0) continue;
+    const Eigen::Vector2d behind = (nose.a + nose.b) / 2.0 - nose.normal * 0.02;
+    const glm::vec3 px = render::projectToPixels(
+        camera, kWidth, kHeight,
+        glm::vec3(behind.x(), behind.y(), scene->geometry.nose_height + 0.004));
+    ++cushions;
+    EXPECT_GE(countInDisc(image, px.x, px.y, 3.0, kIsFelt), 20) << "cushion " << nose.name;
   }
-  EXPECT_GE(count(image, isWhite), 60) << "cue ball and stripes";
-  EXPECT_GE(count(image, isBlack), 40) << "8 ball (and pockets)";
+  EXPECT_EQ(cushions, 6);
+
+  // Sixteen balls, each showing its own colour where the camera projects it.
+  const auto balls = rackOnScreen();
+  ASSERT_EQ(balls.size(), 16u);
+  for (const BallOnScreen& b : balls) {
+    ASSERT_GT(b.radius, 4.0);
+    const int own = countInDisc(image, b.x, b.y, b.radius * 0.85,
+                                [&](const Rgb& p) { return ballColour(b.id, p); });
+    EXPECT_GE(own, 8) << "ball " << b.id << " at (" << b.x << ", " << b.y << ")";
+  }
+}
+
+TEST_F(RenderScreenshotTest, NumbersShowAsWhiteCirclesOnColouredBallsUnlessTexturesAreOff) {
+  const Image textured = screenshot("--scene rack");
+  const Image plain = screenshot("--scene rack --no-textures");
+  ASSERT_EQ(textured.width, kWidth);
+  ASSERT_EQ(plain.width, kWidth);
+  for (const BallOnScreen& b : rackOnScreen()) {
+    if (b.id < 1 || b.id > 7) continue;  // solids: white can only be the number circle
+    const int with = countInDisc(textured, b.x, b.y, b.radius * 0.5, isWhite);
+    const int without = countInDisc(plain, b.x, b.y, b.radius * 0.5, isWhite);
+    EXPECT_GE(with, 4) << "number circle on ball " << b.id;
+    EXPECT_GE(with, without + 4) << "ball " << b.id << " without textures";
+  }
+}
+
+TEST_F(RenderScreenshotTest, WireframeShowsTheBackgroundThroughTheTable) {
+  const Image solid = screenshot("--scene rack");
+  const Image wire = screenshot("--scene rack --wireframe");
+  ASSERT_EQ(wire.width, kWidth);
+  const int solid_felt = count(solid, kIsFelt);
+  const int wire_felt = count(wire, kIsFelt);
+  EXPECT_LT(wire_felt, solid_felt / 4) << "only the felt's edges are drawn";
+  const auto background = [](const Rgb& p) {
+    return std::abs(p[0] - 25.5) < 3 && std::abs(p[1] - 25.5) < 3 && std::abs(p[2] - 30.6) < 3;
+  };
+  // The middle of the table: felt when solid, mostly background when wireframe.
+  const int middle = countInDisc(wire, kWidth / 2.0, kHeight / 2.0, 60.0, background);
+  EXPECT_GT(middle, 60 * 60 * 3 / 2) << "background shows through the felt";
+  EXPECT_EQ(countInDisc(solid, kWidth / 2.0, kHeight / 2.0, 60.0, background), 0);
+}
+
+TEST_F(RenderScreenshotTest, WithoutLightingTheFeltIsOneFlatColour) {
+  const Image lit = screenshot("--scene rack --no-textures");
+  const Image unlit = screenshot("--scene rack --no-textures --no-lighting");
+  ASSERT_EQ(unlit.width, kWidth);
+  // Unlit: the felt albedo itself, everywhere on the playing surface.
+  const auto albedo = [](const Rgb& p) {
+    return std::abs(p[0] - kFelt[0] * 255) < 2.5 && std::abs(p[1] - kFelt[1] * 255) < 2.5 &&
+           std::abs(p[2] - kFelt[2] * 255) < 2.5;
+  };
+  const int total = kWidth * kHeight;
+  EXPECT_GT(count(unlit, albedo), total * 30 / 100);
+  // Lit: the spotlights brighten the felt under the lamps well above its far corners.
+  EXPECT_LT(count(lit, albedo), total / 20);
+}
+
+TEST_F(RenderScreenshotTest, WithoutDisplayEglRendersTheSameRack) {
+  const Image xvfb = screenshot("--scene rack");
+  const std::string cmd = std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + POOL_BIN_DIR +
+                          "/pool-client --screenshot " + png_ + " --scene rack";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const Image egl = loadPng(png_);
+  ASSERT_EQ(egl.width, kWidth);
+  ASSERT_EQ(xvfb.width, kWidth);
+  int same = 0;
+  for (std::size_t i = 0; i < egl.pixels.size(); ++i) {
+    const Rgb& a = egl.pixels[i];
+    const Rgb& b = xvfb.pixels[i];
+    if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) <= 6) ++same;
+  }
+  EXPECT_GT(same, kWidth * kHeight * 99 / 100);
+  EXPECT_GT(count(egl, kIsFelt), kWidth * kHeight * 35 / 100);
 }
 
 TEST_F(RenderScreenshotTest, FramesOptionStillWritesOnePng) {
-  ASSERT_EQ(screenshot("--frames 1"), 0);
-  const Image image = loadPng(png_);
-  EXPECT_EQ(image.width, 1280);
-  EXPECT_EQ(image.height, 720);
+  const Image image = screenshot("--frames 1");
+  EXPECT_EQ(image.width, kWidth);
+  EXPECT_EQ(image.height, kHeight);
+}
+
+TEST_F(RenderScreenshotTest, UnknownSceneIsRefusedWithoutWritingAFile) {
+  const std::string cmd = std::string("xvfb-run -a ") + POOL_BIN_DIR +
+                          "/pool-client --screenshot " + png_ + " --scene nowhere 2>/dev/null";
+  EXPECT_NE(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(loadPng(png_).width, 0);
 }
 
 }  // namespace
+}  // namespace pool::client::test

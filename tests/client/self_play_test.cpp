@@ -15,7 +15,8 @@ namespace {
 std::vector<physics::Ball> freshRack(std::uint64_t seed) {
   const auto& view = nineFoot();
   std::vector<physics::Ball> balls{resting(0, view.context.spots.head_spot.x() - 0.01, 0.0)};
-  for (const auto& p : table::rackBalls(table::RackType::EightBall, view.spec, view.radius(), seed)) {
+  for (const auto& p :
+       table::rackBalls(table::RackType::EightBall, view.spec, view.radius(), seed)) {
     balls.push_back(resting(p.id, p.pos.x(), p.pos.y()));
   }
   std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
@@ -61,7 +62,8 @@ RackOutcome playRack(double skill, std::uint64_t seed) {
       auto verdict = rules::applyChoice(state, *shot.choice, balls, view.context);
       EXPECT_TRUE(verdict) << verdict.error();
       if (!verdict) break;
-      if (verdict->rerack) balls = freshRack(seed + 1000 + static_cast<std::uint64_t>(outcome.shots));
+      if (verdict->rerack)
+        balls = freshRack(seed + 1000 + static_cast<std::uint64_t>(outcome.shots));
       state = verdict->next;
       continue;
     }

@@ -36,9 +36,9 @@ TEST(ShotPlannerTest, ABlockedBallIsNotCalled) {
   const Vec2 object = onPocketLine("foot_left_corner", Vec2::Zero(), 0.5);
   const Vec2 cue = onPocketLine("foot_left_corner", Vec2::Zero(), 1.3);
   const Vec2 blocker = onPocketLine("foot_left_corner", Vec2::Zero(), 0.9);
-  const auto balls =
-      layout({resting(0, cue.x(), cue.y()), resting(3, object.x(), object.y()),
-              resting(10, blocker.x(), blocker.y()), resting(5, -0.6, -0.4), resting(8, 1.0, -0.1)});
+  const auto balls = layout({resting(0, cue.x(), cue.y()), resting(3, object.x(), object.y()),
+                             resting(10, blocker.x(), blocker.y()), resting(5, -0.6, -0.4),
+                             resting(8, 1.0, -0.1)});
   EXPECT_FALSE(pathClear(cue, object, balls, nineFoot().radius(), 0, 3));
   ShotPlanner planner(nineFoot());
   const PlannedShot shot = planner.plan(balls, solidsToShoot());
@@ -85,8 +85,8 @@ TEST(ShotPlannerTest, NothingOnGivesADeclaredSafety) {
 
 TEST(ShotPlannerTest, BreakIsFromBehindTheHeadStringAndHard) {
   std::vector<physics::Ball> balls{resting(0, 0.0, 0.0)};
-  for (const auto& p : table::rackBalls(table::RackType::EightBall, nineFoot().spec,
-                                        nineFoot().radius(), 7)) {
+  for (const auto& p :
+       table::rackBalls(table::RackType::EightBall, nineFoot().spec, nineFoot().radius(), 7)) {
     balls.push_back(resting(p.id, p.pos.x(), p.pos.y()));
   }
   ShotPlanner planner(nineFoot());

@@ -61,9 +61,8 @@ TEST_F(SpectatorTest, ALateSpectatorGetsTheStateAtOnceThenEveryLaterShot) {
 
   // It follows the match to its end and exits by itself. (When the server stalls on a layout
   // the physics refuses, which the full-match test reports, the shots up to there are checked.)
-  const bool ended = recorder.pump(80s, [&] {
-    return !spectator.running() || stalledOnLayout(recorder);
-  });
+  const bool ended =
+      recorder.pump(80s, [&] { return !spectator.running() || stalledOnLayout(recorder); });
   ASSERT_TRUE(ended) << logs();
   const bool stalled = spectator.running();
   if (stalled) {

@@ -1,0 +1,93 @@
+// Per-material programs and their frame uniforms.
+#include "client/render/scene_shading.h"
+
+#include <glad/gl.h>
+
+#include <cmath>
+
+#include "client/render/noise_texture.h"
+#include "client/render/number_atlas.h"
+#include "client/render/palette.h"
+#include "client/render/renderer.h"
+#include "client/render/shaders.h"
+
+namespace pool::render {
+
+namespace {
+
+constexpr int kNumbersUnit = 0;  // texture unit of the number atlas
+constexpr int kNoiseUnit = 1;    // texture unit of the felt and wood noise
+
+TextBitmap loadNumberAtlas() {
+  return numberAtlas(TextRasterizer());
+}
+
+}  // namespace
+
+SceneShading::SceneShading()
+    : numbers_(loadNumberAtlas()), noise_(valueNoise(256, 32, 7), GpuTexture::Edges::Repeat) {
+  for (int m = 0; m < shaders::kMaterials; ++m) {
+    programs_.push_back(
+        std::make_unique<ShaderProgram>(shaders::kSceneVertex, shaders::withMaterial(m)));
+  }
+}
+
+void SceneShading::beginFrame(const Camera& camera, int width, int height, glm::vec3 background,
+                              const SpotLights& lights, const RenderOptions& options) const {
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glClearColor(background.r, background.g, background.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glPolygonMode(GL_FRONT_AND_BACK, options.wireframe ? GL_LINE : GL_FILL);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  numbers_.bind(kNumbersUnit);
+  noise_.bind(kNoiseUnit);
+  const glm::mat4 view_projection = viewProjection(camera, aspect);
+  for (const auto& p : programs_) {
+    p->use();
+    p->set("uViewProj", view_projection);
+    p->set("uEye", camera.eye);
+    p->set("uLightPos[0]", lights.positions[0]);
+    p->set("uLightPos[1]", lights.positions[1]);
+    p->set("uCosInner", std::cos(glm::radians(lights.inner_deg)));
+    p->set("uCosOuter", std::cos(glm::radians(lights.outer_deg)));
+    p->set("uTextures", options.textures ? 1 : 0);
+    p->set("uLighting", options.lighting ? 1 : 0);
+    p->set("uNumbers", kNumbersUnit);
+    p->set("uNoise", kNoiseUnit);
+  }
+  setAmbient(kAmbient);
+}
+
+void SceneShading::setAmbient(float ambient) const {
+  for (const auto& p : programs_) {
+    p->use();
+    p->set("uAmbient", ambient);
+  }
+}
+
+void SceneShading::endFrame() const {
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+void SceneShading::draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
+                        float specular) const {
+  const ShaderProgram& p = *programs_[static_cast<std::size_t>(material)];
+  p.use();
+  p.set("uModel", model);
+  p.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
+  p.set("uColour", colour);
+  p.set("uSpecular", specular);
+  mesh.draw();
+}
+
+void SceneShading::drawBall(const GpuMesh& sphere, const glm::mat4& model, int id) const {
+  const BallLook look = ballLook(id);
+  const ShaderProgram& p = *programs_[shaders::kBall];
+  p.use();
+  p.set("uStriped", look.striped ? 1 : 0);
+  p.set("uBallCell", id);
+  draw(sphere, model, look.colour, shaders::kBall, 0.5f);
+}
+
+}  // namespace pool::render

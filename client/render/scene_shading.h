@@ -1,0 +1,56 @@
+// The scene's shading, shared by the table scene and the Magic Eight Ball room: one program per
+// material, the number atlas and the noise texture, two spotlights, the P/T/L switches.
+#pragma once
+
+#include <array>
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "client/render/mesh.h"
+#include "client/render/shader.h"
+#include "client/render/texture.h"
+
+namespace pool::render {
+
+struct Camera;
+struct RenderOptions;
+
+/// Two spotlights pointing straight down (table frame, m).
+struct SpotLights {
+  std::array<glm::vec3, 2> positions;
+  float inner_deg = 30.0f;  ///< full light inside this half-angle
+  float outer_deg = 62.0f;  ///< none beyond this one
+};
+
+/// Needs a current OpenGL 3.3 core context; throws std::runtime_error when a shader or the font
+/// cannot be loaded.
+class SceneShading {
+ public:
+  /// The ambient light's share of the albedo, set by beginFrame.
+  static constexpr float kAmbient = 0.22f;
+
+  SceneShading();
+
+  /// Clears the bound width × height framebuffer to `background`, sets the depth test and the
+  /// polygon mode (wireframe), binds the textures and sets every program's per-frame uniforms.
+  void beginFrame(const Camera& camera, int width, int height, glm::vec3 background,
+                  const SpotLights& lights, const RenderOptions& options) const;
+  /// Changes the ambient light's share (kAmbient after beginFrame); the trough under the rail
+  /// has its own light, so its balls are drawn with more.
+  void setAmbient(float ambient) const;
+  /// Back to filled polygons (for whatever is drawn next: overlay, HUD).
+  void endFrame() const;
+  /// Draws `mesh` with `model` (mesh → table frame) in a material (shaders::Material).
+  void draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
+            float specular) const;
+  /// Draws a ball: `model` includes its orientation and radius; `id` picks colour and number.
+  void drawBall(const GpuMesh& sphere, const glm::mat4& model, int id) const;
+
+ private:
+  std::vector<std::unique_ptr<ShaderProgram>> programs_;  ///< one per shaders::Material
+  GpuTexture numbers_;
+  GpuTexture noise_;
+};
+
+}  // namespace pool::render

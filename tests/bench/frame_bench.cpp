@@ -1,0 +1,201 @@
+// Frame time of the client's 3-D scene at 1280×720 on the offscreen context (Mesa llvmpipe under
+// Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (sixteen
+// balls rolling and turning, two pocketed, overlay lines). Prints median and p99 per frame and
+// the ratio to the baseline; wall time, since llvmpipe renders on its own threads, and the CPU
+// time of the whole process (all threads) per frame, which a busy machine does not inflate.
+#include <benchmark/benchmark.h>
+#include <glad/gl.h>
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/render/offscreen.h"
+#include "client/render/renderer.h"
+#include "client/render/scene.h"
+
+namespace {
+
+constexpr int kWidth = 1280;
+constexpr int kHeight = 720;
+
+/// The context and scene, made once for all benchmarks.
+struct Bench {
+  pool::render::OffscreenContext context{kWidth, kHeight};
+  pool::render::Scene scene = *pool::render::rackScene();
+  pool::render::Camera camera =
+      pool::render::overviewCamera(scene.geometry, float(kWidth) / float(kHeight));
+};
+
+std::optional<Bench>& bench() {
+  static std::optional<Bench> b;
+  return b;
+}
+
+/// Costs of one frame, ms.
+struct FrameCost {
+  std::vector<double> wall;
+  std::vector<double> cpu;  ///< all threads of the process
+};
+
+/// Frame costs per benchmark name, every iteration of every run.
+std::map<std::string, FrameCost>& samples() {
+  static std::map<std::string, FrameCost> s;
+  return s;
+}
+
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+/// The windowed client's HUD (Dear ImGui) is drawn here, after the scene, in its own frame; its
+/// setup lives with the window code, so this benchmark does not draw it.
+void drawHud() {}
+
+/// Times `frame` once per iteration, to the end of the GPU work.
+template <class Frame>
+void timeFrames(benchmark::State& state, const std::string& name, Frame frame) {
+  if (!bench()) {
+    state.SkipWithError("no OpenGL context");
+    return;
+  }
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = processCpuMs();
+    bench()->context.bind();
+    frame();
+    glFinish();
+    const double cpu = processCpuMs() - cpu_start;
+    const auto end = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(end - start).count();
+    samples()[name].wall.push_back(ms);
+    samples()[name].cpu.push_back(cpu);
+    state.SetIterationTime(ms / 1000.0);
+    bench()->context.endFrame();
+  }
+}
+
+/// Sixteen balls moving on circles around the table's middle, rolling (orientation turning
+/// about the horizontal axis across their motion), two of them in the trough.
+std::vector<pool::render::SceneBall> movingBalls(const pool::render::Scene& scene, double t) {
+  std::vector<pool::render::SceneBall> balls = scene.balls;
+  for (auto& b : balls) {
+    const double phase = 0.4 * b.id + 1.5 * t;
+    const double radius = 0.15 + 0.02 * b.id;
+    b.pos = Eigen::Vector3d(radius * std::cos(phase) * 2.0, radius * std::sin(phase),
+                            scene.ball_radius);
+    const Eigen::Vector3d axis(std::cos(phase), std::sin(phase), 0.0);
+    b.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(8.0 * t + b.id, axis));
+    b.pocketed = b.id == 3 || b.id == 12;
+  }
+  return balls;
+}
+
+void BM_BaselineClearOnly(benchmark::State& state) {
+  timeFrames(state, "clear only (baseline)", [] {
+    glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  });
+}
+
+void BM_TableOnly(benchmark::State& state) {
+  if (!bench()) return state.SkipWithError("no OpenGL context");
+  pool::render::Scene empty = bench()->scene;
+  empty.balls.clear();
+  const pool::render::Renderer renderer(empty);
+  timeFrames(state, "table only", [&] { renderer.draw(bench()->camera, kWidth, kHeight); });
+}
+
+/// The full scene with the given switches (the client's P, T, L keys).
+void fullScene(benchmark::State& state, const std::string& name,
+               const pool::render::RenderOptions& options) {
+  if (!bench()) return state.SkipWithError("no OpenGL context");
+  pool::render::Renderer renderer(bench()->scene);
+  renderer.setOptions(options);
+  int frame = 0;
+  timeFrames(state, name, [&] {
+    const double t = frame++ / 60.0;
+    renderer.setBalls(movingBalls(bench()->scene, t));
+    const auto& cue = bench()->scene.balls.front().pos;
+    const glm::vec3 c(cue.x(), cue.y(), cue.z());
+    renderer.setOverlay({{c, c + glm::vec3(1.2f, 0.1f, 0.0f), {1.0f, 1.0f, 1.0f}},
+                         {c - glm::vec3(0.9f, 0.05f, -0.05f), c, {0.8f, 0.6f, 0.3f}},
+                         {c, c + glm::vec3(0.0f, 0.3f, 0.0f), {1.0f, 0.2f, 0.2f}}});
+    renderer.draw(bench()->camera, kWidth, kHeight);
+    drawHud();
+  });
+}
+
+void BM_FullScene(benchmark::State& state) {
+  fullScene(state, "full scene (16 balls moving, overlay)", {});
+}
+
+void BM_FullSceneNoTextures(benchmark::State& state) {
+  fullScene(state, "full scene, textures off", {false, false, true});
+}
+
+void BM_FullSceneNoLighting(benchmark::State& state) {
+  fullScene(state, "full scene, lighting off", {false, true, false});
+}
+
+BENCHMARK(BM_BaselineClearOnly)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TableOnly)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullScene)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneNoTextures)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneNoLighting)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+std::string loadAverage() {
+  double load[3] = {0, 0, 0};
+  if (getloadavg(load, 3) != 3) return "unknown";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f %.1f %.1f", load[0], load[1], load[2]);
+  return text;
+}
+
+double percentile(std::vector<double> v, double p) {
+  std::sort(v.begin(), v.end());
+  const auto i = static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size()))) - 1;
+  return v[std::min(i, v.size() - 1)];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  try {
+    bench().emplace();
+  } catch (const std::exception& e) {
+    std::printf("frame_bench: no OpenGL context (%s); nothing measured\n", e.what());
+    return 0;
+  }
+  std::printf("frame_bench: %dx%d through %s, renderer: %s\n", kWidth, kHeight,
+              bench()->context.backend().c_str(),
+              reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  benchmark::RunSpecifiedBenchmarks();
+  const auto& all = samples();
+  const auto base = all.find("clear only (baseline)");
+  const double base_median = base == all.end() ? 0.0 : percentile(base->second.wall, 0.5);
+  std::printf("\nper frame (draw to glFinish): wall median and p99, process CPU median\n");
+  for (const auto& [name, cost] : all) {
+    const double median = percentile(cost.wall, 0.5);
+    std::printf("  %-40s frames %6zu   wall median %8.3f ms  p99 %8.3f ms   cpu %8.3f ms",
+                name.c_str(), cost.wall.size(), median, percentile(cost.wall, 0.99),
+                percentile(cost.cpu, 0.5));
+    if (base_median > 0) std::printf("   x%.0f the baseline", median / base_median);
+    std::printf("\n");
+  }
+  std::printf("(load average now %s)\n", loadAverage().c_str());
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,120 @@
+// The renderer in-process on an offscreen context: overlay lines on top, pocketed balls in the
+// trough where drawnBalls says, and a ball's markings turning with its orientation.
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <optional>
+
+#include "client/render/offscreen.h"
+#include "client/render/renderer.h"
+#include "client/render/scene.h"
+#include "png_image.h"
+
+namespace pool::client::test {
+namespace {
+
+constexpr int kW = 640;
+constexpr int kH = 360;
+
+class RendererTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto s = render::rackScene();
+    ASSERT_TRUE(static_cast<bool>(s)) << s.error();
+    scene_ = std::move(*s);
+    try {
+      context_.emplace(kW, kH);
+    } catch (const std::runtime_error& e) {
+      GTEST_SKIP() << "no OpenGL context: " << e.what();
+    }
+    renderer_ = std::make_unique<render::Renderer>(scene_);
+    camera_ = render::overviewCamera(scene_.geometry, float(kW) / float(kH));
+  }
+  Image frame(const render::Camera& camera) {
+    context_->bind();
+    renderer_->draw(camera, kW, kH);
+    const auto rgb = context_->readRgb();
+    context_->endFrame();
+    Image image{kW, kH, {}};
+    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
+      image.pixels.push_back({double(rgb[i]), double(rgb[i + 1]), double(rgb[i + 2])});
+    }
+    return image;
+  }
+  glm::vec3 toPixels(const render::Camera& camera, const Eigen::Vector3d& p) const {
+    return render::projectToPixels(camera, kW, kH, glm::vec3(p.x(), p.y(), p.z()));
+  }
+  render::Scene scene_;
+  std::optional<render::OffscreenContext> context_;
+  std::unique_ptr<render::Renderer> renderer_;
+  render::Camera camera_;
+};
+
+TEST_F(RendererTest, OverlayLinesAreDrawnUnlitOnTopOfTheBalls) {
+  const Eigen::Vector3d apex = scene_.balls[1].pos;  // a rack ball: the line must cross over it
+  const glm::vec3 magenta(1.0f, 0.0f, 1.0f);
+  renderer_->setOverlay({{glm::vec3(-1.0f, float(apex.y()), float(apex.z())),
+                          glm::vec3(1.2f, float(apex.y()), float(apex.z())), magenta}});
+  const Image with = frame(camera_);
+  const glm::vec3 px = toPixels(camera_, apex);
+  const auto isMagenta = [](const Rgb& p) { return p[0] > 250 && p[1] < 5 && p[2] > 250; };
+  EXPECT_GT(countInDisc(with, px.x, px.y, 2.5, isMagenta), 0) << "line over the ball";
+  const glm::vec3 mid = toPixels(camera_, Eigen::Vector3d(0.0, apex.y(), apex.z()));
+  EXPECT_GT(countInDisc(with, mid.x, mid.y, 2.5, isMagenta), 0) << "line over the felt";
+  renderer_->setOverlay({});
+  EXPECT_EQ(count(frame(camera_), isMagenta), 0);
+}
+
+TEST_F(RendererTest, PocketedBallsAreDrawnInTheTrough) {
+  std::vector<render::SceneBall> balls = scene_.balls;
+  for (auto& b : balls) b.pocketed = b.id == 2 || b.id == 6;
+  renderer_->setBalls(balls);
+  const Image image = frame(camera_);
+  int seen = 0;
+  for (const auto& b : renderer_->drawnBalls()) {
+    if (!b.pocketed) continue;
+    ++seen;
+    EXPECT_LT(b.pos.z(), 0.0) << "under the slate";
+    const glm::vec3 px = toPixels(camera_, b.pos);
+    EXPECT_GE(
+        countInDisc(image, px.x, px.y, 3.0, [&](const Rgb& p) { return ballColour(b.id, p); }), 3)
+        << "ball " << b.id << " at " << px.x << ", " << px.y;
+  }
+  EXPECT_EQ(seen, 2);
+}
+
+TEST_F(RendererTest, ABallsMarkingsTurnWithItsOrientation) {
+  // Close over the 7 (maroon, a number on each side), looking straight down.
+  render::SceneBall ball;
+  for (const auto& b : scene_.balls) {
+    if (b.id == 7) ball = b;
+  }
+  const Eigen::Vector3d p = ball.pos;
+  const render::Camera close{glm::vec3(p.x(), p.y() - 0.001, p.z() + 0.25),
+                             glm::vec3(p.x(), p.y(), p.z()), 30.0f};
+  const auto look = [&](const Eigen::Quaterniond& q) {
+    std::vector<render::SceneBall> balls = scene_.balls;
+    for (auto& b : balls) {
+      if (b.id == 7) b.orientation = q;
+    }
+    renderer_->setBalls(balls);
+    return frame(close);
+  };
+  const Image up = look(Eigen::Quaterniond(
+      Eigen::AngleAxisd(-std::numbers::pi / 2, Eigen::Vector3d::UnitY())));  // number on top
+  const Image side = look(Eigen::Quaterniond::Identity());                   // number faces along x
+  const glm::vec3 c = toPixels(close, p);
+  EXPECT_GT(countInDisc(up, c.x, c.y, 20.0, isWhite), 200) << "number circle seen from above";
+  const auto ink = [](const Rgb& px) { return std::max({px[0], px[1], px[2]}) < 60.0; };
+  EXPECT_GT(countInDisc(up, c.x, c.y, 12.0, ink), 10) << "the number's ink inside the circle";
+  EXPECT_LT(countInDisc(side, c.x, c.y, 20.0, isWhite),
+            countInDisc(up, c.x, c.y, 20.0, isWhite) / 3)
+      << "turned away, the top shows maroon";
+  // The ball is about 75 px across at this distance: most of it is maroon either way.
+  const auto maroon = [](const Rgb& px) { return ballColour(7, px); };
+  EXPECT_GT(countInDisc(side, c.x, c.y, 60.0, maroon), 3000);
+  EXPECT_GT(countInDisc(side, c.x, c.y, 60.0, maroon), countInDisc(up, c.x, c.y, 60.0, maroon));
+}
+
+}  // namespace
+}  // namespace pool::client::test
