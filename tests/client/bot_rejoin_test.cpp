@@ -110,7 +110,7 @@ TEST_F(BotRejoinTest, ABotStalledPastItsLeaseTakesItsSeatBackAndPlaysOn) {
   ASSERT_TRUE(noticed) << "the server never noticed";
   const std::uint32_t shots_when_stopped = recorder.latest(recorder.firstMatch())->shot_number;
   ASSERT_TRUE(untilConnected(recorder, "alice", true, 20s)) << alice->err();
-  EXPECT_NE(alice->err().find("the server has us away"), std::string::npos) << alice->err();
+  EXPECT_NE(alice->err().find("the server shows us away"), std::string::npos) << alice->err();
 
   // It plays on: its next shots are accepted (no bad_token), and the match ends for both.
   ASSERT_TRUE(recorder.pump(30s, [&] {
