@@ -1,10 +1,12 @@
 // Frame time of the client's 3-D scene at 1280×720 on the offscreen context (Mesa llvmpipe under
 // Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (sixteen
-// balls rolling and turning, two pocketed, overlay lines). Prints median and p99 per frame and
+// balls rolling and turning, two pocketed, overlay lines, the window's Dear ImGui HUD). Prints median and p99 per frame and
 // the ratio to the baseline; wall time, since llvmpipe renders on its own threads, and the CPU
 // time of the whole process (all threads) per frame, which a busy machine does not inflate.
+#include <backends/imgui_impl_opengl3.h>
 #include <benchmark/benchmark.h>
 #include <glad/gl.h>
+#include <imgui.h>
 #include <time.h>
 
 #include <algorithm>
@@ -12,15 +14,19 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "client/app/controls.h"
+#include "client/app/match_session.h"
 #include "client/render/offscreen.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
+#include "client/ui/hud.h"
 
 namespace {
 
@@ -58,9 +64,65 @@ double processCpuMs() {
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
-/// The windowed client's HUD (Dear ImGui) is drawn here, after the scene, in its own frame; its
-/// setup lives with the window code, so this benchmark does not draw it.
-void drawHud() {}
+/// The window's HUD as a player aiming mid-rack sees it: Dear ImGui on its OpenGL 3 backend (the
+/// window's GLFW input backend is not needed to draw), the match panel with both seats, the shot
+/// panel with the power bar and the tip widget, a verdict and notes.
+class Hud {
+ public:
+  Hud()
+      : controls_(pool::net::CommandLimits{}, pool::app::PlacementArea{},
+                  pool::app::CameraRig(2.54, 1.27, double(kWidth) / kHeight)) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(float(kWidth), float(kHeight));
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    view_.match = "bench-1";
+    view_.phase = pool::client::MatchPhase::Assigned;
+    view_.shooter = 0;
+    view_.shot_number = 7;
+    view_.rack = 1;
+    view_.last_verdict = "Ada pocketed the 3 in the foot left corner; Ada shoots again";
+    view_.seats[0].name = "Ada";
+    view_.seats[1].name = "Bob";
+    view_.seats[0].connected = view_.seats[1].connected = true;
+    view_.seats[0].balls_left = 5;
+    view_.seats[1].balls_left = 6;
+    notes_.push_back({"shot 7 of seat 1 accepted", false});
+    controls_.startTurn(Eigen::Vector3d(-0.6, 0.1, 0.028575), pool::rules::BallInHand::None);
+    controls_.keyDown(pool::app::Key::Space, {});
+    controls_.advance(0.4);  // power charging: the bar is drawn part full
+  }
+  ~Hud() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext();
+  }
+  Hud(const Hud&) = delete;
+  Hud& operator=(const Hud&) = delete;
+
+  void draw() {
+    ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    pool::ui::HudInput in;
+    in.view = &view_;
+    in.match = view_.match;
+    in.local_seats = {0};
+    in.local_shooter = 0;
+    in.controls = &controls_;
+    in.last_verdict = view_.last_verdict;
+    in.notes = &notes_;
+    (void)pool::ui::drawHud(in);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+
+ private:
+  pool::app::Controls controls_;
+  pool::client::MatchView view_;
+  std::deque<pool::app::SessionNote> notes_;
+};
 
 /// Times `frame` once per iteration, to the end of the GPU work.
 template <class Frame>
@@ -122,6 +184,7 @@ void fullScene(benchmark::State& state, const std::string& name,
   if (!bench()) return state.SkipWithError("no OpenGL context");
   pool::render::Renderer renderer(bench()->scene);
   renderer.setOptions(options);
+  Hud hud;
   int frame = 0;
   timeFrames(state, name, [&] {
     const double t = frame++ / 60.0;
@@ -132,12 +195,12 @@ void fullScene(benchmark::State& state, const std::string& name,
                          {c - glm::vec3(0.9f, 0.05f, -0.05f), c, {0.8f, 0.6f, 0.3f}},
                          {c, c + glm::vec3(0.0f, 0.3f, 0.0f), {1.0f, 0.2f, 0.2f}}});
     renderer.draw(bench()->camera, kWidth, kHeight);
-    drawHud();
+    hud.draw();
   });
 }
 
 void BM_FullScene(benchmark::State& state) {
-  fullScene(state, "full scene (16 balls moving, overlay)", {});
+  fullScene(state, "full scene + HUD (16 balls moving, overlay)", {});
 }
 
 void BM_FullSceneNoTextures(benchmark::State& state) {
