@@ -61,7 +61,7 @@ for target in "${targets[@]}"; do
   if ((status != 0)); then
     failed=1
     failed_count=$((failed_count + 1))
-    grep -E 'ERROR|SUMMARY|runtime error|verdict broken|refusal|accepted|Test unit written' "$log" | head -20 >&2 || true
+    grep -E 'ERROR|SUMMARY|runtime error|broken promise|Test unit written' "$log" | head -20 >&2 || true
     summary+=("$target: FAILED (exit $status) after ${runs:-?} executions; log: $log")
   else
     summary+=("$target: ${runs:-?} executions in ${seconds} s, no crash ($(ls "$corpus" | wc -l) inputs in the corpus)")

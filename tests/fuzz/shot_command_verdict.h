@@ -3,20 +3,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
+#include <string>
 
+#include "broken_promise.h"
 #include "net/shot_command_check.h"
 #include "net/wire_fields.h"
 
 namespace pool::fuzz {
 
-/// Stops the fuzzer with a reason (libFuzzer keeps the input that got here).
 [[noreturn]] inline void violated(const char* what, const net::CommandCheck& check) {
-  std::fprintf(stderr, "verdict broken: %s (problem %s, text '%s')\n", what,
-               net::toString(check.problem), check.text.c_str());
-  std::abort();
+  brokenPromise(std::string(what) + " (problem " + net::toString(check.problem) + ", text '" +
+                check.text + "')");
 }
 
 /// Checks the verdict against the header's promises: a reason iff a problem, a known problem, and
