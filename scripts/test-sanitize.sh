@@ -17,4 +17,9 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/sanitize/lsan.supp:print_suppressions=0}
 cd "$build"
-ctest --output-on-failure -j "$(nproc)"
+ctest --output-on-failure -j "$(nproc)" -E '^RenderScreenshotTest\.'
+# pool-client's screenshot renders with Mesa, whose driver is dlclose'd at exit: its leaks show no
+# frame but an unknown module, so no library-named suppression can match them. These tests run
+# with ASan and UBSan but without LeakSanitizer.
+ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -R '^RenderScreenshotTest\.'
+
