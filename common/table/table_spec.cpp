@@ -197,20 +197,25 @@ Result<TableSpec> loadFile(const fs::path& path, const std::string& default_name
   if (!in) return Result<TableSpec>::fail(path.string() + ": cannot open the spec file");
   std::ostringstream text;
   text << in.rdbuf();
-  TableSpec spec;
-  spec.name = default_name;
-  try {
-    const json root = json::parse(text.str());
-    if (!root.is_object()) return Result<TableSpec>::fail(path.string() + ": the spec must be a JSON object");
-    const std::string reason = readSpec(root, fs::absolute(path).parent_path(), spec);
-    if (!reason.empty()) return Result<TableSpec>::fail(reason);
-  } catch (const std::exception& e) {
-    return Result<TableSpec>::fail(path.string() + ": invalid JSON: " + shortWhat(e));
-  }
-  return Result<TableSpec>::ok(std::move(spec));
+  return parseTableSpec(text.str(), path.string(), fs::absolute(path).parent_path(), default_name);
 }
 
 }  // namespace
+
+Result<TableSpec> parseTableSpec(const std::string& json_text, const std::string& source,
+                                 const fs::path& spec_dir, const std::string& default_name) {
+  TableSpec spec;
+  spec.name = default_name;
+  try {
+    const json root = json::parse(json_text);
+    if (!root.is_object()) return Result<TableSpec>::fail(source + ": the spec must be a JSON object");
+    const std::string reason = readSpec(root, spec_dir, spec);
+    if (!reason.empty()) return Result<TableSpec>::fail(reason);
+  } catch (const std::exception& e) {
+    return Result<TableSpec>::fail(source + ": invalid JSON: " + shortWhat(e));
+  }
+  return Result<TableSpec>::ok(std::move(spec));
+}
 
 Result<TableSpec> loadTableSpec(const std::string& nameOrPath) {
   if (nameOrPath.empty()) return Result<TableSpec>::fail("empty table name");

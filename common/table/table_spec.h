@@ -36,4 +36,10 @@ struct TableSpec {
 /// to a JSON file. Failure gives a one-line reason naming the field.
 Result<TableSpec> loadTableSpec(const std::string& nameOrPath);
 
+/// Parses a spec's JSON text. `source` names the text in messages (its file's path), mesh paths
+/// are relative to `spec_dir`, and `default_name` is the spec's name when the text gives none.
+Result<TableSpec> parseTableSpec(const std::string& json_text, const std::string& source,
+                                 const std::filesystem::path& spec_dir,
+                                 const std::string& default_name);
+
 }  // namespace pool::table

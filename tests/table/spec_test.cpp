@@ -133,6 +133,21 @@ TEST(TableSpec, NameDefaultsToTheFileStem) {
   EXPECT_EQ(spec->name, "garage");
 }
 
+TEST(TableSpec, ParsesTextWithoutAFile) {
+  json j = shippedJson("wpa-7ft");
+  j.erase("name");
+  j["collision_mesh"] = "meshes/t.obj";
+  const auto spec = parseTableSpec(j.dump(), "inline", "/tables", "given");
+  ASSERT_TRUE(spec) << spec.error();
+  EXPECT_EQ(spec->name, "given");
+  EXPECT_DOUBLE_EQ(spec->length, j["length"].get<double>());
+  EXPECT_EQ(spec->collision_mesh, fs::path("/tables/meshes/t.obj"));
+
+  const auto broken = parseTableSpec("{\"length\":", "inline", "/tables", "given");
+  ASSERT_FALSE(broken);
+  EXPECT_EQ(broken.error().rfind("inline: invalid JSON", 0), 0u) << broken.error();
+}
+
 TEST(TableSpec, BadFieldsGiveOneLineReasonsNamingTheField) {
   TempDir dir;
   struct Case {

@@ -1,0 +1,61 @@
+// What must hold of validateShotCommand's verdict on any command, checked by the fuzz targets.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "broken_promise.h"
+#include "net/shot_command_check.h"
+#include "net/wire_fields.h"
+
+namespace pool::fuzz {
+
+[[noreturn]] inline void violated(const char* what, const net::CommandCheck& check) {
+  brokenPromise(std::string(what) + " (problem " + net::toString(check.problem) + ", text '" +
+                check.text + "')");
+}
+
+/// Checks the verdict against the header's promises: a reason iff a problem, a known problem, and
+/// an accepted command whose every field is representable and within the default limits.
+inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& check) {
+  if (check.ok() != check.text.empty()) violated("a reason without a problem or back", check);
+  if (std::strcmp(net::toString(check.problem), "unknown") == 0) violated("unknown problem", check);
+  if (!check.ok()) return;
+  const net::CommandLimits limits;
+  const auto match = net::textOf(c.match);
+  const bool printable =
+      std::all_of(match.begin(), match.end(), [](char ch) { return ch > ' ' && ch < 127; });
+  if (!net::terminated(c.match) || match.empty() || !printable)
+    violated("accepted a bad match id", check);
+  if (c.seat != 0 && c.seat != 1) violated("accepted a bad seat", check);
+  for (const double v :
+       {c.yaw, c.tip_side, c.tip_height, c.elevation, c.speed, c.cue_ball_x, c.cue_ball_y}) {
+    if (!std::isfinite(v)) violated("accepted a non-finite number", check);
+  }
+  const std::int32_t option = net::rawValue(c.option);
+  if (option < pool_OPTION_NONE || option > pool_OPTION_OPPONENT_REBREAKS) {
+    violated("accepted an unknown option", check);
+  }
+  const bool shoots = option != pool_OPTION_REBREAK && option != pool_OPTION_OPPONENT_REBREAKS;
+  if (shoots && (c.speed <= 0.0 || c.speed > limits.max_speed || c.elevation < 0.0 ||
+                 c.elevation > limits.max_elevation || std::abs(c.yaw) > limits.max_abs_yaw ||
+                 std::hypot(c.tip_side, c.tip_height) > limits.miscue_limit)) {
+    violated("accepted a shot out of range", check);
+  }
+  const bool has_ball = c.called_ball != -1;
+  if (has_ball && (c.called_ball < 1 || c.called_ball > 15)) violated("accepted a bad ball", check);
+  if (!net::terminated(c.called_pocket) || has_ball == net::textOf(c.called_pocket).empty()) {
+    violated("accepted a bad call", check);
+  }
+  if (c.has_cue_ball_placement &&
+      (std::abs(c.cue_ball_x) > limits.half_length || std::abs(c.cue_ball_y) > limits.half_width)) {
+    violated("accepted a placement off the table", check);
+  }
+  if (c.signature._length > 64 || (c.signature._length > 0 && c.signature._buffer == nullptr)) {
+    violated("accepted a bad signature", check);
+  }
+}
+
+}  // namespace pool::fuzz
