@@ -87,6 +87,9 @@ void ServerLoop::readJoins(double now) {
     const JoinAnswer answer = registry_.join(*command);
     spdlog::info("join {} {} by {} ({}): {} {}", toString(command->action), command->match,
                  command->client, command->name, toString(answer.outcome), answer.reason);
+    // A seat (and its token) is stored before the player hears of it: a crash right after the
+    // reply cannot take the seat away again.
+    storeChanges({});
     publish(bus_.join_replies, joinReply(*command, answer, registry_.serverId()), "join reply");
   }
 }
