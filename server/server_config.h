@@ -10,12 +10,12 @@ namespace pool::server {
 
 /// Everything pool-server can be told.
 struct ServerConfig {
-  std::uint32_t domain = 0;      ///< DDS domain id, 0–232
-  int tables = 0;                ///< empty matches opened at start
-  double snapshot_hz = 60.0;     ///< frames per simulated second, (0, 1000]
-  bool fast = false;             ///< publish frames unpaced
-  std::string server_id;         ///< prefix of match ids; empty: random hex
-  double grace = 30.0;           ///< s a vanished player's seat is kept
+  std::uint32_t domain = 0;          ///< DDS domain id, 0–232
+  int tables = 0;                    ///< empty matches opened at start
+  double snapshot_hz = 60.0;         ///< frames per simulated second, (0, 1000]
+  bool fast = false;                 ///< publish frames unpaced
+  std::string server_id;             ///< prefix of match ids; empty: random hex
+  double grace = 30.0;               ///< s a vanished player's seat is kept
   std::string name = "pool-server";  ///< this server's name in logs
   std::string table = "wpa-9ft";     ///< table spec of every match
   std::string log_level = "info";    ///< spdlog level name

@@ -17,7 +17,9 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 
-void onSignal(int) { g_stop = true; }
+void onSignal(int) {
+  g_stop = true;
+}
 
 struct Flags {
   std::uint32_t domain = 0;
@@ -49,7 +51,9 @@ int run(const Flags& flags) {
   client::GameClient client({flags.domain, "", flags.name}, key);
   bot::BotPlayer player(client, flags.bot, saved);
   const auto start = std::chrono::steady_clock::now();
-  auto now = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  auto now = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   spdlog::info("{} on domain {} as client {}{}", flags.name, flags.domain, client.clientId(),
                saved ? " (rejoining " + saved->match + ")" : std::string());
   while (!player.done() && !g_stop) {

@@ -18,12 +18,18 @@ constexpr double kMaxRetryDelay = 1.0;  // s between retries after rejections
 
 const char* toString(BotStage stage) {
   switch (stage) {
-    case BotStage::FindingMatch: return "finding_match";
-    case BotStage::Joining: return "joining";
-    case BotStage::Playing: return "playing";
-    case BotStage::SeatLost: return "seat_lost";
-    case BotStage::Finished: return "finished";
-    case BotStage::Failed: return "failed";
+    case BotStage::FindingMatch:
+      return "finding_match";
+    case BotStage::Joining:
+      return "joining";
+    case BotStage::Playing:
+      return "playing";
+    case BotStage::SeatLost:
+      return "seat_lost";
+    case BotStage::Finished:
+      return "finished";
+    case BotStage::Failed:
+      return "failed";
   }
   return "unknown";
 }
@@ -130,7 +136,9 @@ void BotPlayer::loseSeat(double now, const std::string& why) {
 
 void BotPlayer::act(double now) {
   switch (stage_) {
-    case BotStage::FindingMatch: findMatch(now); break;
+    case BotStage::FindingMatch:
+      findMatch(now);
+      break;
     case BotStage::Joining:
       if (now - join_sent_at_ >= config_.join_retry) sendJoin(now);
       break;
@@ -143,8 +151,11 @@ void BotPlayer::act(double now) {
         stage_ = BotStage::FindingMatch;
       }
       break;
-    case BotStage::Playing: maybeShoot(now); break;
-    default: break;
+    case BotStage::Playing:
+      maybeShoot(now);
+      break;
+    default:
+      break;
   }
 }
 
@@ -190,8 +201,7 @@ void BotPlayer::onState(const client::MatchView& view, double now) {
   const client::SeatView& mine = view.seats[static_cast<std::size_t>(seat->seat)];
   if (mine.connected) {
     away_revision_.reset();
-  } else if (mine.name == client_.name() &&
-             (!away_revision_ || view.revision != *away_revision_)) {
+  } else if (mine.name == client_.name() && (!away_revision_ || view.revision != *away_revision_)) {
     away_revision_ = view.revision;
     loseSeat(now, "the server shows us away");
     sendJoin(now);

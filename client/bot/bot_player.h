@@ -19,14 +19,14 @@ namespace pool::bot {
 
 /// What the bot was told on the command line.
 struct BotConfig {
-  std::string match;              ///< a match id; empty: the lowest-numbered with a free seat
-  double skill = 1.0;             ///< 0..1; 1 = no aim or speed error
-  std::uint64_t seed = 1;         ///< seeds the skill noise
+  std::string match;                ///< a match id; empty: the lowest-numbered with a free seat
+  double skill = 1.0;               ///< 0..1; 1 = no aim or speed error
+  std::uint64_t seed = 1;           ///< seeds the skill noise
   std::filesystem::path seat_file;  ///< where the seat and its token are kept; empty: nowhere
-  double join_retry = 1.0;        ///< s between join attempts while unanswered
-  double lost_seat_wait = 5.0;    ///< s to wait for a lost match to reappear before seating anew
-  double answer_timeout = 10.0;   ///< s without an answer to a shot before sending it again
-  double think = 0.0;             ///< s to wait on each turn before shooting (pace for watchers)
+  double join_retry = 1.0;          ///< s between join attempts while unanswered
+  double lost_seat_wait = 5.0;      ///< s to wait for a lost match to reappear before seating anew
+  double answer_timeout = 10.0;     ///< s without an answer to a shot before sending it again
+  double think = 0.0;               ///< s to wait on each turn before shooting (pace for watchers)
 };
 
 /// Where the bot is in its life.
@@ -77,7 +77,7 @@ class BotPlayer {
   BotConfig config_;
   std::optional<SeatRecord> saved_;  ///< the seat to take back (from a file or a lost server)
   BotStage stage_ = BotStage::FindingMatch;
-  std::string target_;               ///< the match being joined or played
+  std::string target_;  ///< the match being joined or played
   std::optional<std::uint32_t> join_request_;
   double join_sent_at_ = -1e9;
   double lost_at_ = 0.0;

@@ -5,11 +5,16 @@ namespace pool::bot {
 
 net::ShotOption optionOf(rules::Choice choice) {
   switch (choice) {
-    case rules::Choice::PlayOn: return net::ShotOption::PlayOn;
-    case rules::Choice::BallInHand: return net::ShotOption::BallInHand;
-    case rules::Choice::RespotEight: return net::ShotOption::RespotEight;
-    case rules::Choice::ReBreak: return net::ShotOption::ReBreak;
-    case rules::Choice::OpponentReBreaks: return net::ShotOption::OpponentReBreaks;
+    case rules::Choice::PlayOn:
+      return net::ShotOption::PlayOn;
+    case rules::Choice::BallInHand:
+      return net::ShotOption::BallInHand;
+    case rules::Choice::RespotEight:
+      return net::ShotOption::RespotEight;
+    case rules::Choice::ReBreak:
+      return net::ShotOption::ReBreak;
+    case rules::Choice::OpponentReBreaks:
+      return net::ShotOption::OpponentReBreaks;
   }
   return net::ShotOption::None;
 }

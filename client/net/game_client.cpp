@@ -35,8 +35,9 @@ void GameClient::problem(const std::string& what) {
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
                                    std::uint64_t token) {
-  JoinRequestFields fields{options_.client_id, next_request_++, match, action, seat,
-                           options_.name, token, key().publicKey()};
+  JoinRequestFields fields{
+      options_.client_id, next_request_++, match, action, seat, options_.name, token,
+      key().publicKey()};
   pending_[fields.request] = action;
   if (auto status = endpoints_->join_requests.write(*toWire(fields)); !status) {
     last_problem_ = "join request: " + status.error;
@@ -80,9 +81,13 @@ Result<std::uint32_t> GameClient::shoot(net::ShotRequest request) {
   return Result<std::uint32_t>::ok(request.seq);
 }
 
-void GameClient::noteSequence(std::uint32_t seq) { last_seq_ = std::max(last_seq_, seq); }
+void GameClient::noteSequence(std::uint32_t seq) {
+  last_seq_ = std::max(last_seq_, seq);
+}
 
-void GameClient::wait(std::chrono::nanoseconds timeout) const { endpoints_->wait(timeout); }
+void GameClient::wait(std::chrono::nanoseconds timeout) const {
+  endpoints_->wait(timeout);
+}
 
 std::vector<ClientEvent> GameClient::poll() {
   std::vector<ClientEvent> out;

@@ -27,7 +27,9 @@ void Lobby::update(LobbyEntry entry) {
   entries_[key] = std::move(entry);
 }
 
-void Lobby::remove(const std::string& match) { entries_.erase(match); }
+void Lobby::remove(const std::string& match) {
+  entries_.erase(match);
+}
 
 const LobbyEntry* Lobby::find(const std::string& match) const {
   const auto it = entries_.find(match);
@@ -37,8 +39,9 @@ const LobbyEntry* Lobby::find(const std::string& match) const {
 std::vector<const LobbyEntry*> Lobby::entries() const {
   std::vector<const LobbyEntry*> out;
   for (const auto& [id, entry] : entries_) out.push_back(&entry);
-  std::sort(out.begin(), out.end(),
-            [](const LobbyEntry* a, const LobbyEntry* b) { return matchOrder(a->match, b->match); });
+  std::sort(out.begin(), out.end(), [](const LobbyEntry* a, const LobbyEntry* b) {
+    return matchOrder(a->match, b->match);
+  });
   return out;
 }
 

@@ -10,10 +10,18 @@ bool inPlay(MatchPhase phase) {
 rules::GameState gameStateOf(const MatchView& view) {
   rules::GameState state;
   switch (view.phase) {
-    case MatchPhase::Break: state.phase = rules::Phase::Break; break;
-    case MatchPhase::Open: state.phase = rules::Phase::Open; break;
-    case MatchPhase::Assigned: state.phase = rules::Phase::Assigned; break;
-    default: state.phase = rules::Phase::Over; break;
+    case MatchPhase::Break:
+      state.phase = rules::Phase::Break;
+      break;
+    case MatchPhase::Open:
+      state.phase = rules::Phase::Open;
+      break;
+    case MatchPhase::Assigned:
+      state.phase = rules::Phase::Assigned;
+      break;
+    default:
+      state.phase = rules::Phase::Over;
+      break;
   }
   state.shooter = view.shooter == 1 ? 1 : 0;
   state.breaker = view.breaker == 1 ? 1 : 0;

@@ -24,16 +24,15 @@ using net::MatchPhase;
 using net::RejectReason;
 using net::toString;
 
-
 /// True while a rack is being played (break, open or assigned).
 bool inPlay(MatchPhase phase);
 
 /// One match of the lobby (MatchInfo).
 struct LobbyEntry {
-  std::string match;   ///< "<server id>-<local number>"
+  std::string match;  ///< "<server id>-<local number>"
   std::string server;
   std::string name;
-  std::string table;   ///< table spec name, e.g. "wpa-9ft"
+  std::string table;  ///< table spec name, e.g. "wpa-9ft"
   MatchPhase phase = MatchPhase::Lobby;
   std::array<std::string, 2> players;  ///< empty: seat free
   int seats_taken = 0;
@@ -45,12 +44,12 @@ struct LobbyEntry {
 struct JoinAnswer {
   std::uint32_t request = 0;  ///< the request answered
   std::string server;
-  std::string match;          ///< the match joined
+  std::string match;  ///< the match joined
   JoinAction action = JoinAction::Seat;
   JoinOutcome outcome = JoinOutcome::Accepted;
-  std::string reason;         ///< empty when accepted
-  int seat = -1;              ///< the seat taken; -1 for spectators and refusals
-  std::uint64_t token = 0;    ///< the seat's token; 0 for spectators and refusals
+  std::string reason;       ///< empty when accepted
+  int seat = -1;            ///< the seat taken; -1 for spectators and refusals
+  std::uint64_t token = 0;  ///< the seat's token; 0 for spectators and refusals
 
   bool accepted() const { return outcome == JoinOutcome::Accepted; }
 };
@@ -81,7 +80,7 @@ struct MatchView {
   int winner = -1;
   rules::GameEnd end = rules::GameEnd::None;
   std::string last_verdict;
-  std::vector<physics::Ball> balls;    ///< the layout at rest, pocketed balls included
+  std::vector<physics::Ball> balls;  ///< the layout at rest, pocketed balls included
 };
 
 /// The rules' state of a match view in play (phase, shooter, breaker, groups, ball in hand,
@@ -122,8 +121,8 @@ struct ShotReport {
 /// Every ball of one match at one instant of a shot (TableSnapshot).
 struct TableFrame {
   std::string match;
-  std::uint32_t frame = 0;         ///< from 0 at the strike
-  double sim_time = 0.0;           ///< s since the strike
+  std::uint32_t frame = 0;  ///< from 0 at the strike
+  double sim_time = 0.0;    ///< s since the strike
   std::uint32_t shot_number = 0;
   std::vector<physics::Ball> balls;
 };

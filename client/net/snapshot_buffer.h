@@ -23,7 +23,8 @@ class SnapshotBuffer {
 
   /// The balls at simulated time `sim_time` (s since the strike of the buffered shot): linear
   /// interpolation of positions and velocities, spherical of orientations, between the frames
-  /// around it (motion state from the earlier one), the first or last frame outside their range. Empty when the buffer is empty.
+  /// around it (motion state from the earlier one), the first or last frame outside their range.
+  /// Empty when the buffer is empty.
   std::optional<std::vector<physics::Ball>> sample(double sim_time) const;
 
   std::size_t size() const { return frames_.size(); }

@@ -17,9 +17,11 @@ static_assert(pool_JOIN_SERVER_FULL == static_cast<int>(JoinOutcome::ServerFull)
 static_assert(pool_REJECT_BAD_SIGNATURE == static_cast<int>(RejectReason::BadSignature));
 static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
 static_assert(pool_END_FORFEIT == static_cast<int>(rules::GameEnd::Forfeit));
-static_assert(pool_IN_HAND_BEHIND_HEAD_STRING == static_cast<int>(rules::BallInHand::BehindHeadString));
+static_assert(pool_IN_HAND_BEHIND_HEAD_STRING ==
+              static_cast<int>(rules::BallInHand::BehindHeadString));
 static_assert(pool_GROUP_STRIPES == static_cast<int>(rules::Group::Stripes));
-static_assert(pool_FOUL_BEHIND_HEAD_STRING_DIRECT == static_cast<int>(rules::Foul::BehindHeadStringDirect));
+static_assert(pool_FOUL_BEHIND_HEAD_STRING_DIRECT ==
+              static_cast<int>(rules::Foul::BehindHeadStringDirect));
 static_assert(pool_OPTION_OPPONENT_REBREAKS - pool_OPTION_PLAY_ON ==
               static_cast<int>(rules::Choice::OpponentReBreaks));
 
@@ -74,7 +76,9 @@ std::optional<SeatView> seatOf(const pool_SeatState& seat) {
   return view;
 }
 
-int seatNumber(std::int16_t seat) { return seat == 0 || seat == 1 ? seat : -1; }
+int seatNumber(std::int16_t seat) {
+  return seat == 0 || seat == 1 ? seat : -1;
+}
 
 }  // namespace
 
@@ -116,7 +120,8 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
   const std::string what = "match state " + view.match;
   view.revision = state.revision;
   const auto phase = enumOf<MatchPhase>(state.phase, pool_PHASE_CLOSED + 1);
-  const auto in_hand = enumOf<rules::BallInHand>(state.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
+  const auto in_hand =
+      enumOf<rules::BallInHand>(state.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
   const auto end = enumOf<rules::GameEnd>(state.end, pool_END_FORFEIT + 1);
   if (!phase || !in_hand || !end) return fail<MatchView>(what, "unknown enum value");
   view.phase = *phase;
@@ -152,7 +157,8 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   report.shot_number = result.shot_number;
   report.accepted = result.accepted;
   const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_UNSIGNED + 1);
-  const auto in_hand = enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
+  const auto in_hand =
+      enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
   const auto end = enumOf<rules::GameEnd>(result.end, pool_END_FORFEIT + 1);
   if (!reason || !in_hand || !end) return fail<ShotReport>(what, "unknown enum value");
   report.reject_reason = *reason;

@@ -9,9 +9,12 @@ namespace {
 using nlohmann::json;
 
 json seatJson(const SeatView& seat) {
-  return {{"name", seat.name},         {"connected", seat.connected},
-          {"group", rules::toString(seat.group)}, {"balls_left", seat.balls_left},
-          {"fouls", seat.fouls},       {"racks_won", seat.racks_won}};
+  return {{"name", seat.name},
+          {"connected", seat.connected},
+          {"group", rules::toString(seat.group)},
+          {"balls_left", seat.balls_left},
+          {"fouls", seat.fouls},
+          {"racks_won", seat.racks_won}};
 }
 
 json choicesJson(const std::vector<rules::Choice>& choices) {
@@ -84,10 +87,9 @@ std::string shotResultLine(const ShotReport& report) {
       .dump();
 }
 
-std::string snapshotsLine(const std::string& match, std::uint32_t shot_number,
-                          std::uint32_t count, std::uint32_t first_frame,
-                          std::uint32_t last_frame) {
-  return json{{"type", "snapshots"},       {"match", match},
+std::string snapshotsLine(const std::string& match, std::uint32_t shot_number, std::uint32_t count,
+                          std::uint32_t first_frame, std::uint32_t last_frame) {
+  return json{{"type", "snapshots"},        {"match", match},
               {"shot_number", shot_number}, {"count", count},
               {"first_frame", first_frame}, {"last_frame", last_frame}}
       .dump();

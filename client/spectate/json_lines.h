@@ -17,8 +17,7 @@ std::string matchStateLine(const MatchView& view);
 std::string shotResultLine(const ShotReport& report);
 /// {"type":"snapshots","match":...,"shot_number":...,"count":...,"first_frame":...,
 /// "last_frame":...}
-std::string snapshotsLine(const std::string& match, std::uint32_t shot_number,
-                          std::uint32_t count, std::uint32_t first_frame,
-                          std::uint32_t last_frame);
+std::string snapshotsLine(const std::string& match, std::uint32_t shot_number, std::uint32_t count,
+                          std::uint32_t first_frame, std::uint32_t last_frame);
 
 }  // namespace pool::client

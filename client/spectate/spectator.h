@@ -61,11 +61,11 @@ class Spectator {
   double sent_at_ = -1e9;
   std::optional<std::uint32_t> printed_revision_;
   std::optional<std::uint32_t> joined_at_shot_;  ///< shots played when the first state came
-  std::map<std::uint32_t, Frames> frames_;   ///< by shot number
-  std::vector<std::uint32_t> shots_done_;    ///< shots whose final result came this step
-  std::optional<MatchView> ending_;      ///< the state that ended the match
-  std::optional<double> ending_since_;   ///< when it was seen (s)
-  std::uint32_t last_result_ = 0;        ///< the highest shot with a final result printed
+  std::map<std::uint32_t, Frames> frames_;       ///< by shot number
+  std::vector<std::uint32_t> shots_done_;        ///< shots whose final result came this step
+  std::optional<MatchView> ending_;              ///< the state that ended the match
+  std::optional<double> ending_since_;           ///< when it was seen (s)
+  std::uint32_t last_result_ = 0;                ///< the highest shot with a final result printed
   std::optional<std::vector<physics::Ball>> latest_balls_;
   bool done_ = false;
 };

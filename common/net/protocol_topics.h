@@ -1,4 +1,5 @@
-// One participant and every topic of pool.idl: what the server and each client open before their readers and writers.
+// One participant and every topic of pool.idl: what the server and each client open before their
+// readers and writers.
 #pragma once
 
 #include <cstdint>

@@ -35,7 +35,9 @@ const char* toString(MotionState state);
 std::optional<MotionState> motionStateFromString(std::string_view name);
 
 /// True while a ball is still on the table (not pocketed, not off the table).
-inline bool onTable(MotionState s) { return s != MotionState::Pocketed && s != MotionState::OffTable; }
+inline bool onTable(MotionState s) {
+  return s != MotionState::Pocketed && s != MotionState::OffTable;
+}
 
 /// One ball. Table frame (origin at the centre of the slate surface, +x toward the foot spot,
 /// +z up), SI units; a ball at rest on the slate has pos.z() == R.
@@ -46,7 +48,7 @@ struct Ball {
   Vec3 vel = Vec3::Zero();      ///< m/s
   Vec3 ang_vel = Vec3::Zero();  ///< rad/s
   MotionState state = MotionState::Stationary;
-  std::string pocket;           ///< the pocket's name once pocketed
+  std::string pocket;  ///< the pocket's name once pocketed
 };
 
 /// A ball at rest on the slate with its centre above `at` (table plane, m).

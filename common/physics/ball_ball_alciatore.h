@@ -1,4 +1,5 @@
-// Ball–ball collision: restitution and friction (throw, spin transfer) with Alciatore's speed-dependent friction (TP A-14).
+// Ball–ball collision: restitution and friction (throw, spin transfer) with Alciatore's
+// speed-dependent friction (TP A-14).
 #pragma once
 
 #include <optional>

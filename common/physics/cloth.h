@@ -1,4 +1,5 @@
-// Ball–cloth models behind one interface: the constant accelerations of a ball until its next state change.
+// Ball–cloth models behind one interface: the constant accelerations of a ball until its next state
+// change.
 #pragma once
 
 #include <memory>
@@ -10,11 +11,11 @@ namespace pool::physics {
 
 /// What ends a piece of motion.
 enum class Transition : std::uint8_t {
-  None,        ///< nothing: the ball stays as it is (at rest, or pocketed)
-  SlideToRoll, ///< the contact point stops slipping
-  RollToRest,  ///< a rolling ball stops
-  SpinEnds,    ///< spin about the vertical reaches zero
-  Landing,     ///< an airborne ball reaches the slate
+  None,         ///< nothing: the ball stays as it is (at rest, or pocketed)
+  SlideToRoll,  ///< the contact point stops slipping
+  RollToRest,   ///< a rolling ball stops
+  SpinEnds,     ///< spin about the vertical reaches zero
+  Landing,      ///< an airborne ball reaches the slate
 };
 
 /// A piece of motion with constant linear and angular acceleration, valid for `duration`

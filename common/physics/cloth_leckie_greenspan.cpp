@@ -20,11 +20,16 @@ class ClothLeckieGreenspan final : public ClothModel {
 
   ClothMotion motion(const Ball& b) const override {
     switch (b.state) {
-      case MotionState::Sliding: return sliding(b);
-      case MotionState::Rolling: return rolling(b);
-      case MotionState::Spinning: return spinning(b);
-      case MotionState::Airborne: return airborne(b);
-      default: return ClothMotion{Vec3::Zero(), Vec3::Zero(), kInf, Transition::None};
+      case MotionState::Sliding:
+        return sliding(b);
+      case MotionState::Rolling:
+        return rolling(b);
+      case MotionState::Spinning:
+        return spinning(b);
+      case MotionState::Airborne:
+        return airborne(b);
+      default:
+        return ClothMotion{Vec3::Zero(), Vec3::Zero(), kInf, Transition::None};
     }
   }
 
@@ -39,15 +44,16 @@ class ClothLeckieGreenspan final : public ClothModel {
         b.vel.setZero();
         b.ang_vel.x() = 0.0;
         b.ang_vel.y() = 0.0;
-        b.state = std::abs(b.ang_vel.z()) > kSpinEps ? MotionState::Spinning
-                                                     : MotionState::Stationary;
+        b.state =
+            std::abs(b.ang_vel.z()) > kSpinEps ? MotionState::Spinning : MotionState::Stationary;
         if (b.state == MotionState::Stationary) b.ang_vel.z() = 0.0;
         break;
       case Transition::SpinEnds:
         b.ang_vel.z() = 0.0;
         b.state = classify(b);
         break;
-      default: break;
+      default:
+        break;
     }
   }
 

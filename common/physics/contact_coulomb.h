@@ -1,4 +1,5 @@
-// A ball against a fixed surface (cushion nose, jaw point, slate): restitution and Coulomb friction as one impulse.
+// A ball against a fixed surface (cushion nose, jaw point, slate): restitution and Coulomb friction
+// as one impulse.
 #pragma once
 
 #include "physics/ball.h"

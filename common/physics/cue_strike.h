@@ -1,4 +1,5 @@
-// The cue strike: yaw, tip offset, elevation and speed become the cue ball's velocity and spin (Alciatore TP ).
+// The cue strike: yaw, tip offset, elevation and speed become the cue ball's velocity and spin
+// (Alciatore TP ).
 #pragma once
 
 #include <string>
@@ -11,18 +12,19 @@ namespace pool::physics {
 
 /// A shot as the player makes it. Angles in radians.
 struct CueShot {
-  double yaw = 0.0;         ///< heading of the cue in the table plane, 0 = +x, pi/2 = +y
-  double tip_side = 0.0;    ///< a: cue line offset right of centre, fraction of R, seen from behind
-  double tip_height = 0.0;  ///< b: cue line offset above centre, fraction of R, perpendicular to the cue
-  double elevation = 0.0;   ///< cue angle above horizontal, [0, 89°]
-  double speed = 0.0;       ///< m/s: the cue's speed, or the ball's if speed_is_ball
+  double yaw = 0.0;       ///< heading of the cue in the table plane, 0 = +x, pi/2 = +y
+  double tip_side = 0.0;  ///< a: cue line offset right of centre, fraction of R, seen from behind
+  double tip_height =
+      0.0;  ///< b: cue line offset above centre, fraction of R, perpendicular to the cue
+  double elevation = 0.0;  ///< cue angle above horizontal, [0, 89°]
+  double speed = 0.0;      ///< m/s: the cue's speed, or the ball's if speed_is_ball
   bool speed_is_ball = false;
 };
 
 /// The cue ball's motion just after the strike.
 struct StrikeOutcome {
-  Vec3 vel;      ///< m/s (points down into the slate when the cue is elevated)
-  Vec3 ang_vel;  ///< rad/s
+  Vec3 vel;             ///< m/s (points down into the slate when the cue is elevated)
+  Vec3 ang_vel;         ///< rad/s
   double squirt = 0.0;  ///< angle of the ball's heading off the cue line, rad (+ = to the left)
 };
 

@@ -29,7 +29,9 @@ void ensureOde() {
 
 namespace {
 
-Vec3 toVec(const dReal* v) { return Vec3(v[0], v[1], v[2]); }
+Vec3 toVec(const dReal* v) {
+  return Vec3(v[0], v[1], v[2]);
+}
 
 }  // namespace
 

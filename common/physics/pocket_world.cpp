@@ -13,7 +13,7 @@ namespace pool::physics {
 
 namespace {
 
-constexpr double kStep = 2e-3;  // s: a falling ball moves a few mm per step
+constexpr double kStep = 2e-3;        // s: a falling ball moves a few mm per step
 constexpr double kMaxFallTime = 0.3;  // s after the drop; a normal drop takes about 0.15 s
 constexpr int kMaxContacts = 4;
 
@@ -183,7 +183,8 @@ struct PocketWorld::Impl {
     for (const auto& other : balls) {
       if (!other.frozen || other.body == d.body) continue;
       const dReal* o = dBodyGetPosition(other.body);
-      if (std::abs(o[0] - x) < 2.0 * p.ball_radius && std::abs(o[1] - pos[1]) < 2.0 * p.ball_radius) {
+      if (std::abs(o[0] - x) < 2.0 * p.ball_radius &&
+          std::abs(o[1] - pos[1]) < 2.0 * p.ball_radius) {
         x = o[0] - 2.0 * p.ball_radius * (pos[0] > 0 ? 1.0 : -1.0);
       }
     }
@@ -265,6 +266,8 @@ bool PocketWorld::read(int id, Ball& ball) const {
   return false;
 }
 
-std::uint64_t PocketWorld::steps() const { return impl_->steps; }
+std::uint64_t PocketWorld::steps() const {
+  return impl_->steps;
+}
 
 }  // namespace pool::physics

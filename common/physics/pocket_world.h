@@ -1,4 +1,5 @@
-// Balls that dropped into a pocket: a second ODE world with the table's triangle mesh, where they fall through the hole into the trough.
+// Balls that dropped into a pocket: a second ODE world with the table's triangle mesh, where they
+// fall through the hole into the trough.
 #pragma once
 
 #include <memory>

@@ -87,7 +87,9 @@ int rootsIn(const Coeffs& c, int deg, double lo, double hi, double* out) {
 
 }  // namespace
 
-double evaluate(const Quartic& p, double t) { return evalDeg(p, 4, t); }
+double evaluate(const Quartic& p, double t) {
+  return evalDeg(p, 4, t);
+}
 
 double earliestClosing(const Quartic& p, double t_max) {
   if (!(t_max > 0.0)) return kNever;

@@ -134,9 +134,9 @@ TableHit nextTableHit(const Kinematics& k, bool airborne, const TableFeatures& f
   for (size_t i = 0; i < f.holes.size(); ++i) {
     const Vec2 d = p2 - f.holes[i].c;
     if (d.norm() - f.holes[i].radius > r) continue;
-    const double t = earliestClosing(
-        gapSquared(d, Vec2(k.v.head<2>()), Vec2(k.a.head<2>()), f.holes[i].radius),
-        std::min(horizon, best.t));
+    const double t =
+        earliestClosing(gapSquared(d, Vec2(k.v.head<2>()), Vec2(k.a.head<2>()), f.holes[i].radius),
+                        std::min(horizon, best.t));
     consider(t, FeatureKind::Hole, i);
   }
   return best;

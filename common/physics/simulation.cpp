@@ -1,4 +1,5 @@
-// The event loop: predict the next event, let ODE step every ball exactly to it, resolve it, repeat.
+// The event loop: predict the next event, let ODE step every ball exactly to it, resolve it,
+// repeat.
 #include "physics/simulation.h"
 
 #include <algorithm>
@@ -21,7 +22,7 @@ namespace {
 // (a hop under 1 mm); faster, the ball becomes airborne.
 constexpr double kLiftOffSpeed = 0.15;  // m/s
 // A landing slower than this ends the bouncing: the ball stays on the slate.
-constexpr double kSettleSpeed = 0.05;   // m/s
+constexpr double kSettleSpeed = 0.05;  // m/s
 // A shot with more loop turns than this is cut short (a guard, never reached by real shots).
 constexpr std::uint64_t kMaxIterations = 200000;
 // Contacts slower than this are pushes, not impacts (a ball driven into another, or into a
@@ -39,7 +40,9 @@ bool translates(MotionState s) {
   return s == MotionState::Sliding || s == MotionState::Rolling || s == MotionState::Airborne;
 }
 
-bool active(MotionState s) { return translates(s) || s == MotionState::Spinning; }
+bool active(MotionState s) {
+  return translates(s) || s == MotionState::Spinning;
+}
 
 }  // namespace
 
@@ -69,7 +72,10 @@ struct Simulation::Impl {
   std::uint64_t next_sample = 0;
 
   Impl(const table::TableSpec& s, const table::TableGeometry& g)
-      : spec(s), geometry(g), p(s.params), features(TableFeatures::from(g)),
+      : spec(s),
+        geometry(g),
+        p(s.params),
+        features(TableFeatures::from(g)),
         cloth(makeClothLeckieGreenspan(s.params)) {}
 
   size_t n() const { return balls.size(); }
@@ -103,7 +109,8 @@ struct Simulation::Impl {
     // Up to the first change of either ball's motion: its own transition or table contact (both
     // re-predict every pair of that ball), which keeps the reach test tight.
     const double horizon = std::min({tracks[i].t_end, tracks[j].t_end, tracks[i].hit.t,
-                                     tracks[j].hit.t, options.max_time}) - now;
+                                     tracks[j].hit.t, options.max_time}) -
+                           now;
     const double t = pairContactTime(kinematics(i), kinematics(j), R(), horizon);
     if (t < kNever) slot = now + t;
   }
@@ -233,7 +240,8 @@ struct Simulation::Impl {
     cloth->apply(t, b);
     if (t == Transition::SlideToRoll) emit(EventType::SlideToRoll, i);
     if (t == Transition::RollToRest) emit(EventType::RollToRest, i);
-    if (t == Transition::SpinEnds && before == MotionState::Spinning) emit(EventType::SpinToRest, i);
+    if (t == Transition::SpinEnds && before == MotionState::Spinning)
+      emit(EventType::SpinToRest, i);
     refresh(i);
   }
 
@@ -295,10 +303,11 @@ struct Simulation::Impl {
     Ball& a = balls[i];
     Ball& b = balls[j];
     const Vec3 n = (b.pos - a.pos).normalized();
-    const double approach = (a.vel + a.ang_vel.cross(R() * n) - b.vel - b.ang_vel.cross(-R() * n)).dot(n);
+    const double approach =
+        (a.vel + a.ang_vel.cross(R() * n) - b.vel - b.ang_vel.cross(-R() * n)).dot(n);
     const double e = approach < kPushSpeed ? 0.0 : p.e_b;
-    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e,
-                                         p.u_b, R(), p.ball_mass);
+    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e, p.u_b,
+                                         R(), p.ball_mass);
     if (approach < kPushSpeed) {
       // A push or a graze: part them so the next contact is predicted afresh.
       a.pos -= 0.5 * kPushGap * n;
@@ -364,10 +373,17 @@ struct Simulation::Impl {
       advanceTo(std::max(t, now));
       ++out.stats.events;
       switch (next) {
-        case Next::Transition: transition(i); break;
-        case Next::Table: tableContact(i); break;
-        case Next::Pair: ballBall(i, j); break;
-        case Next::None: break;
+        case Next::Transition:
+          transition(i);
+          break;
+        case Next::Table:
+          tableContact(i);
+          break;
+        case Next::Pair:
+          ballBall(i, j);
+          break;
+        case Next::None:
+          break;
       }
       for (const auto& fix : checkBalls(balls, features, p)) {
         applyFix(fix);
@@ -399,7 +415,8 @@ struct Simulation::Impl {
     for (size_t i = 0; i < n(); ++i) {
       Ball& b = balls[i];
       if (!onTable(b.state) || b.state == MotionState::Airborne) continue;
-      const char* reason = onSlate(b.pos.head<2>(), features, p) ? nullptr : "came to rest off the slate";
+      const char* reason =
+          onSlate(b.pos.head<2>(), features, p) ? nullptr : "came to rest off the slate";
       for (size_t k = 0; k < i && !reason; ++k) {
         if (onTable(balls[k].state) && (balls[k].pos - b.pos).norm() < min_dist) {
           reason = "came to rest inside another ball";
@@ -497,7 +514,8 @@ Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
   }
   Impl& s = *impl_;
   s.balls = balls;
-  std::sort(s.balls.begin(), s.balls.end(), [](const Ball& a, const Ball& b) { return a.id < b.id; });
+  std::sort(s.balls.begin(), s.balls.end(),
+            [](const Ball& a, const Ball& b) { return a.id < b.id; });
   s.world = std::make_unique<OdeWorld>(s.p.ball_mass, s.R());
   for (Ball& b : s.balls) {
     if (onTable(b.state) && b.state != MotionState::Airborne) {
@@ -517,7 +535,8 @@ Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
 
 Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& options) {
   Impl& s = *impl_;
-  auto cue = std::find_if(s.balls.begin(), s.balls.end(), [](const Ball& b) { return b.id == kCueBall; });
+  auto cue =
+      std::find_if(s.balls.begin(), s.balls.end(), [](const Ball& b) { return b.id == kCueBall; });
   if (cue == s.balls.end() || !onTable(cue->state)) {
     return Result<ShotOutcome>::fail("no cue ball on the table");
   }
@@ -551,6 +570,8 @@ ShotOutcome Simulation::run(const SimOptions& options) {
   return s.finish();
 }
 
-const std::vector<Ball>& Simulation::balls() const { return impl_->balls; }
+const std::vector<Ball>& Simulation::balls() const {
+  return impl_->balls;
+}
 
 }  // namespace pool::physics

@@ -18,8 +18,8 @@ namespace pool::physics {
 
 /// How far to run and what to record.
 struct SimOptions {
-  double max_time = 60.0;   ///< bound on simulated time, s
-  double sample_hz = 0.0;   ///< > 0: record every ball at exactly t = k / sample_hz
+  double max_time = 60.0;  ///< bound on simulated time, s
+  double sample_hz = 0.0;  ///< > 0: record every ball at exactly t = k / sample_hz
 };
 
 /// Every ball at one instant.
@@ -30,18 +30,18 @@ struct Sample {
 
 /// Counters for benchmarks and diagnostics (not part of any output contract).
 struct SimStats {
-  std::uint64_t steps = 0;      ///< ODE world steps taken (table)
+  std::uint64_t steps = 0;         ///< ODE world steps taken (table)
   std::uint64_t pocket_steps = 0;  ///< ODE steps of balls falling in the pockets and trough
   std::uint64_t events = 0;
 };
 
 /// What a shot did.
 struct ShotOutcome {
-  EventLog events;                ///< in time order
-  std::vector<Ball> balls;        ///< every ball, pocketed ones too, at the end
-  std::optional<double> t_rest;   ///< when the last ball on the table stopped; empty if truncated
-  bool truncated = false;         ///< max_time came first
-  std::vector<Sample> trajectory; ///< when sample_hz > 0
+  EventLog events;                 ///< in time order
+  std::vector<Ball> balls;         ///< every ball, pocketed ones too, at the end
+  std::optional<double> t_rest;    ///< when the last ball on the table stopped; empty if truncated
+  bool truncated = false;          ///< max_time came first
+  std::vector<Sample> trajectory;  ///< when sample_hz > 0
   SimStats stats;
 };
 

@@ -1,4 +1,5 @@
-// Watchdog checks: non-finite balls, deep overlaps, balls outside the table, each fixed with an event.
+// Watchdog checks: non-finite balls, deep overlaps, balls outside the table, each fixed with an
+// event.
 #include "physics/watchdog.h"
 
 #include <cmath>
@@ -7,8 +8,8 @@ namespace pool::physics {
 
 namespace {
 
-constexpr double kOverlapLimit = 1e-3;  // m: contacts resolve at micrometres; 1 mm is a fault
-constexpr double kOutlineMargin = 0.05; // m beyond the noses before a ball counts as gone
+constexpr double kOverlapLimit = 1e-3;   // m: contacts resolve at micrometres; 1 mm is a fault
+constexpr double kOutlineMargin = 0.05;  // m beyond the noses before a ball counts as gone
 
 double noseReach(const table::PhysicsParams& p) {
   const double lift = p.cushion_height - p.ball_radius;

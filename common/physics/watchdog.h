@@ -12,10 +12,10 @@ namespace pool::physics {
 
 /// What to do with one ball in an impossible state.
 struct WatchdogFix {
-  size_t index = 0;   ///< into the balls checked
+  size_t index = 0;     ///< into the balls checked
   bool remove = false;  ///< true: take it off the table; false: re-spot it at `spot`
   Vec2 spot = Vec2::Zero();
-  std::string reason;   ///< "non-finite state", "inside another ball", "left the slate"
+  std::string reason;  ///< "non-finite state", "inside another ball", "left the slate"
 };
 
 /// True if a ball's centre at p may rest on the slate: not inside a cushion or jaw (at least the

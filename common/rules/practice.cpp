@@ -49,7 +49,8 @@ Result<Verdict> judgePractice(const Shot& shot, const TableContext& table) {
 
 std::vector<physics::Ball> practiceRack(const TableContext& table, std::uint64_t seed) {
   std::vector<physics::Ball> balls;
-  balls.push_back(physics::restingBall(physics::kCueBall, table.spots.head_spot, table.ball_radius));
+  balls.push_back(
+      physics::restingBall(physics::kCueBall, table.spots.head_spot, table.ball_radius));
   for (const auto& p :
        table::rackBalls(table::RackType::EightBall, table.spec, table.ball_radius, seed)) {
     balls.push_back(physics::restingBall(p.id, p.pos, table.ball_radius));

@@ -1,4 +1,5 @@
-// Scenario files of the physics lab (SIM-CONTRACT.md): parsing with one-line errors, and the shot's result as JSON.
+// Scenario files of the physics lab (SIM-CONTRACT.md): parsing with one-line errors, and the shot's
+// result as JSON.
 #pragma once
 
 #include <cstdint>

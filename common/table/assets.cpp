@@ -20,7 +20,8 @@ std::optional<fs::path> besideExecutable() {
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec || exe.empty()) return std::nullopt;
   const fs::path dir = exe.parent_path();
-  for (const fs::path& candidate : {dir / ".." / ".." / "assets", dir / ".." / "share" / "pool" / "assets"}) {
+  for (const fs::path& candidate :
+       {dir / ".." / ".." / "assets", dir / ".." / "share" / "pool" / "assets"}) {
     if (looksLikeAssets(candidate)) return candidate.lexically_normal();
   }
   return std::nullopt;

@@ -30,8 +30,12 @@ struct ParamInfo {
   Range range;
 };
 
-constexpr Range kOpenTo(double hi) { return Range{0.0, hi, true, false}; }
-constexpr Range kClosed(double lo, double hi) { return Range{lo, hi, false, false}; }
+constexpr Range kOpenTo(double hi) {
+  return Range{0.0, hi, true, false};
+}
+constexpr Range kClosed(double lo, double hi) {
+  return Range{lo, hi, false, false};
+}
 
 const std::array<ParamInfo, 14>& paramTable() {
   static const std::array<ParamInfo, 14> table{{
@@ -97,12 +101,14 @@ std::string setParam(PhysicsParams& params, std::string_view name, double value)
 
 std::string validate(const PhysicsParams& params) {
   for (const ParamInfo& info : paramTable()) {
-    std::optional<double> value = info.member ? std::optional<double>(params.*(info.member)) : params.u_b;
+    std::optional<double> value =
+        info.member ? std::optional<double>(params.*(info.member)) : params.u_b;
     if (value && !info.range.contains(*value)) {
       return std::string(info.name) + ": " + rangeReason(info.range);
     }
   }
-  if (!(params.cushion_height > params.ball_radius && params.cushion_height < 2.0 * params.ball_radius)) {
+  if (!(params.cushion_height > params.ball_radius &&
+        params.cushion_height < 2.0 * params.ball_radius)) {
     return "cushion_height: must be above ball_radius and below 2 * ball_radius";
   }
   if (params.cue_end_mass > params.cue_mass) return "cue_end_mass: must not exceed cue_mass";

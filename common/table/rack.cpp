@@ -45,7 +45,8 @@ void shuffle(std::vector<int>& v, SplitMix64& rng) {
 
 /// Rack positions row by row from the apex on the foot spot; row k holds sizes[k] balls, listed
 /// from −y (right) to +y (left).
-std::vector<Vec2> rackSlots(const TableSpec& spec, double ball_radius, double gap, const std::vector<int>& sizes) {
+std::vector<Vec2> rackSlots(const TableSpec& spec, double ball_radius, double gap,
+                            const std::vector<int>& sizes) {
   const double pitch = 2.0 * ball_radius + gap;
   const double row_step = pitch * std::sqrt(3.0) / 2.0;
   const Vec2 apex = spotsFor(spec).foot_spot;
@@ -61,17 +62,20 @@ std::vector<Vec2> rackSlots(const TableSpec& spec, double ball_radius, double ga
 }
 
 /// Fills every slot not yet taken with `rest`, in slot order.
-std::vector<BallPlacement> place(const std::vector<Vec2>& slots, std::vector<int> ids_by_slot, const std::vector<int>& rest) {
+std::vector<BallPlacement> place(const std::vector<Vec2>& slots, std::vector<int> ids_by_slot,
+                                 const std::vector<int>& rest) {
   std::size_t next = 0;
   for (int& id : ids_by_slot) {
     if (id == 0) id = rest[next++];
   }
   std::vector<BallPlacement> out;
-  for (std::size_t i = 0; i < slots.size(); ++i) out.push_back(BallPlacement{ids_by_slot[i], slots[i]});
+  for (std::size_t i = 0; i < slots.size(); ++i)
+    out.push_back(BallPlacement{ids_by_slot[i], slots[i]});
   return out;
 }
 
-std::vector<BallPlacement> eightBall(const TableSpec& spec, double ball_radius, std::uint64_t seed, double gap) {
+std::vector<BallPlacement> eightBall(const TableSpec& spec, double ball_radius, std::uint64_t seed,
+                                     double gap) {
   const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 4, 5});
   constexpr std::size_t kCentre = 4, kBackRight = 10, kBackLeft = 14;
   SplitMix64 rng(seed);
@@ -90,7 +94,8 @@ std::vector<BallPlacement> eightBall(const TableSpec& spec, double ball_radius, 
   return place(slots, ids, rest);
 }
 
-std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, std::uint64_t seed, double gap) {
+std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, std::uint64_t seed,
+                                    double gap) {
   const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 2, 1});
   constexpr std::size_t kApex = 0, kCentre = 4;
   SplitMix64 rng(seed);
@@ -103,11 +108,14 @@ std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, s
 }
 
 bool isFree(const Vec2& p, double ball_radius, const std::vector<Vec2>& occupied) {
-  return std::all_of(occupied.begin(), occupied.end(), [&](const Vec2& c) { return (c - p).norm() >= 2.0 * ball_radius; });
+  return std::all_of(occupied.begin(), occupied.end(),
+                     [&](const Vec2& c) { return (c - p).norm() >= 2.0 * ball_radius; });
 }
 
-/// Points on the long string (y = 0) just clear of each ball that blocks it: behind (+x) or in front.
-std::vector<double> clearPoints(double ball_radius, const std::vector<Vec2>& occupied, bool behind) {
+/// Points on the long string (y = 0) just clear of each ball that blocks it: behind (+x) or in
+/// front.
+std::vector<double> clearPoints(double ball_radius, const std::vector<Vec2>& occupied,
+                                bool behind) {
   constexpr double kClearance = 5e-5;  // m: a re-spotted ball sits just clear of its neighbour
   const double d = 2.0 * ball_radius + kClearance;
   std::vector<double> xs;
@@ -136,9 +144,10 @@ std::optional<RackType> rackTypeFromString(std::string_view name) {
   return std::nullopt;
 }
 
-std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius, std::uint64_t seed,
-                                     double gap) {
-  return type == RackType::EightBall ? eightBall(spec, ball_radius, seed, gap) : nineBall(spec, ball_radius, seed, gap);
+std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
+                                     std::uint64_t seed, double gap) {
+  return type == RackType::EightBall ? eightBall(spec, ball_radius, seed, gap)
+                                     : nineBall(spec, ball_radius, seed, gap);
 }
 
 Vec2 respotPosition(const TableSpec& spec, double ball_radius, const std::vector<Vec2>& occupied) {
@@ -147,12 +156,16 @@ Vec2 respotPosition(const TableSpec& spec, double ball_radius, const std::vector
   std::vector<double> behind = clearPoints(ball_radius, occupied, true);
   std::sort(behind.begin(), behind.end());
   for (double x : behind) {
-    if (x >= foot.x() && x <= spec.length / 2.0 - ball_radius && isFree({x, 0.0}, ball_radius, occupied)) return {x, 0.0};
+    if (x >= foot.x() && x <= spec.length / 2.0 - ball_radius &&
+        isFree({x, 0.0}, ball_radius, occupied))
+      return {x, 0.0};
   }
   std::vector<double> ahead = clearPoints(ball_radius, occupied, false);
   std::sort(ahead.begin(), ahead.end(), std::greater<>());
   for (double x : ahead) {
-    if (x <= foot.x() && x >= -spec.length / 2.0 + ball_radius && isFree({x, 0.0}, ball_radius, occupied)) return {x, 0.0};
+    if (x <= foot.x() && x >= -spec.length / 2.0 + ball_radius &&
+        isFree({x, 0.0}, ball_radius, occupied))
+      return {x, 0.0};
   }
   return foot;  // the whole long string is taken: nothing better exists
 }

@@ -1,4 +1,5 @@
-// Spots, strings and racks of a table (8-ball and 9-ball), shared by the physics lab, the rules and the server.
+// Spots, strings and racks of a table (8-ball and 9-ball), shared by the physics lab, the rules and
+// the server.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,7 +17,8 @@ struct Spots {
   Eigen::Vector2d head_spot;    ///< a quarter of the length from the head cushion
   Eigen::Vector2d foot_spot;    ///< a quarter of the length from the foot cushion
   Eigen::Vector2d centre_spot;  ///< the centre of the table
-  double head_string_x = 0.0;   ///< x of the head string (ball in hand after a break foul is at x < this)
+  double head_string_x =
+      0.0;  ///< x of the head string (ball in hand after a break foul is at x < this)
 };
 
 Spots spotsFor(const TableSpec& spec);

@@ -1,4 +1,5 @@
-// Collision geometry of a table: cushion nose lines, pocket holes and the triangle mesh, loaded through assimp.
+// Collision geometry of a table: cushion nose lines, pocket holes and the triangle mesh, loaded
+// through assimp.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,32 +16,33 @@ namespace pool::table {
 /// A straight piece of cushion nose (the line where a ball touches a cushion), at the nose height
 /// above the slate. Table frame, metres.
 struct NoseSegment {
-  std::string name;       ///< rail (head, foot, head_left, ...) or jaw (jaw_foot_left_corner, ...)
-  Eigen::Vector2d a, b;   ///< end points in the table plane
-  Eigen::Vector2d normal; ///< unit, horizontal, pointing to the side a ball may be on
+  std::string name;        ///< rail (head, foot, head_left, ...) or jaw (jaw_foot_left_corner, ...)
+  Eigen::Vector2d a, b;    ///< end points in the table plane
+  Eigen::Vector2d normal;  ///< unit, horizontal, pointing to the side a ball may be on
 };
 
 /// The hole in the slate under a pocket: a ball whose centre passes over it loses support.
 struct PocketHole {
-  std::string name;         ///< head_left_corner, left_side, foot_left_corner, head_right_corner, ...
-  Eigen::Vector2d centre;   ///< table plane, m
-  double radius = 0.0;      ///< m
+  std::string name;  ///< head_left_corner, left_side, foot_left_corner, head_right_corner, ...
+  Eigen::Vector2d centre;  ///< table plane, m
+  double radius = 0.0;     ///< m
 };
 
 /// Triangles of one named part of the table (slate, cushion_*, jaw_*, pocket_*, trough, rail, ...).
 struct MeshPart {
   std::string name;
-  std::vector<Eigen::Vector3d> vertices;            ///< table frame, m
-  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into vertices, counter-clockwise seen from outside
+  std::vector<Eigen::Vector3d> vertices;  ///< table frame, m
+  std::vector<std::array<std::uint32_t, 3>>
+      triangles;  ///< indices into vertices, counter-clockwise seen from outside
 };
 
 /// What the physics collides with. Built from the spec by `buildTableGeometry`, written to an OBJ
 /// by the table generator, and read back through assimp by `loadTableGeometry`.
 struct TableGeometry {
-  std::string name;     ///< the spec's name (written in the OBJ header)
-  double length = 0.0;  ///< playing surface along x, m
-  double width = 0.0;   ///< playing surface along y, m
-  double nose_height = 0.0;  ///< cushion nose above the slate (the spec's cushion_height), m
+  std::string name;                ///< the spec's name (written in the OBJ header)
+  double length = 0.0;             ///< playing surface along x, m
+  double width = 0.0;              ///< playing surface along y, m
+  double nose_height = 0.0;        ///< cushion nose above the slate (the spec's cushion_height), m
   std::vector<NoseSegment> noses;  ///< 6 rails + 2 jaws per pocket
   std::vector<PocketHole> holes;   ///< 6
   std::vector<MeshPart> parts;     ///< triangle mesh, for ODE trimesh collisions and rendering

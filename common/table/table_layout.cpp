@@ -12,7 +12,9 @@ using Vec2 = Eigen::Vector2d;
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 /// Distance from a corner's meeting point to each jaw point, along the rail.
-double cornerSetback(const TableSpec& spec) { return spec.corner.mouth / std::numbers::sqrt2; }
+double cornerSetback(const TableSpec& spec) {
+  return spec.corner.mouth / std::numbers::sqrt2;
+}
 
 PocketLayout cornerPocket(const TableSpec& spec, const char* name, double sx, double sy) {
   PocketLayout p;
@@ -67,9 +69,12 @@ JawLayout jawAt(const TableSpec& spec, const RailLayout& r, int rail_index, bool
 }  // namespace
 
 std::vector<PocketLayout> pocketLayouts(const TableSpec& spec) {
-  return {cornerPocket(spec, "head_left_corner", -1.0, 1.0), sidePocket(spec, "left_side", 1.0),
-          cornerPocket(spec, "foot_left_corner", 1.0, 1.0), cornerPocket(spec, "head_right_corner", -1.0, -1.0),
-          sidePocket(spec, "right_side", -1.0), cornerPocket(spec, "foot_right_corner", 1.0, -1.0)};
+  return {cornerPocket(spec, "head_left_corner", -1.0, 1.0),
+          sidePocket(spec, "left_side", 1.0),
+          cornerPocket(spec, "foot_left_corner", 1.0, 1.0),
+          cornerPocket(spec, "head_right_corner", -1.0, -1.0),
+          sidePocket(spec, "right_side", -1.0),
+          cornerPocket(spec, "foot_right_corner", 1.0, -1.0)};
 }
 
 std::vector<RailLayout> railLayouts(const TableSpec& spec) {
@@ -92,8 +97,10 @@ std::vector<JawLayout> jawLayouts(const TableSpec& spec) {
   for (int p = 0; p < static_cast<int>(pockets.size()); ++p) {
     for (int i = 0; i < static_cast<int>(rails.size()); ++i) {
       const RailLayout& r = rails[static_cast<std::size_t>(i)];
-      if (r.pocket_a == p) jaws.push_back(jawAt(spec, r, i, true, pockets[static_cast<std::size_t>(p)]));
-      if (r.pocket_b == p) jaws.push_back(jawAt(spec, r, i, false, pockets[static_cast<std::size_t>(p)]));
+      if (r.pocket_a == p)
+        jaws.push_back(jawAt(spec, r, i, true, pockets[static_cast<std::size_t>(p)]));
+      if (r.pocket_b == p)
+        jaws.push_back(jawAt(spec, r, i, false, pockets[static_cast<std::size_t>(p)]));
     }
   }
   return jaws;

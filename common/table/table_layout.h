@@ -1,4 +1,5 @@
-// Internal to pool_table: where rails, jaw facings and pocket holes lie for a spec, plus mesh constants.
+// Internal to pool_table: where rails, jaw facings and pocket holes lie for a spec, plus mesh
+// constants.
 #pragma once
 
 #include <Eigen/Core>
@@ -9,12 +10,14 @@
 
 namespace pool::table::detail {
 
-inline constexpr int kHoleSegments = 48;           ///< segments of each hole's polygonal circle
-inline constexpr double kTileMargin = 0.02;        ///< slate ring around a hole, beyond its radius, m
-inline constexpr double kEdgeMargin = 0.002;       ///< least slate between a hole and the slate's outer edge, m
-inline constexpr double kTroughHeadZ = -0.15;      ///< trough floor at the head end, m
-inline constexpr double kTroughSlope = 0.02;       ///< trough floor drop per metre toward the foot
-inline constexpr double kLinerBelowSlate = 0.05;   ///< pocket liner reaches this far under the slate, m
+inline constexpr int kHoleSegments = 48;     ///< segments of each hole's polygonal circle
+inline constexpr double kTileMargin = 0.02;  ///< slate ring around a hole, beyond its radius, m
+inline constexpr double kEdgeMargin =
+    0.002;  ///< least slate between a hole and the slate's outer edge, m
+inline constexpr double kTroughHeadZ = -0.15;  ///< trough floor at the head end, m
+inline constexpr double kTroughSlope = 0.02;   ///< trough floor drop per metre toward the foot
+inline constexpr double kLinerBelowSlate =
+    0.05;  ///< pocket liner reaches this far under the slate, m
 inline constexpr double kCushionTopAboveNose = 0.005;  ///< cushion top above the nose line, m
 
 /// One pocket: its reference point on the nose lines, the outward direction and its hole.
@@ -47,11 +50,13 @@ struct JawLayout {
   Eigen::Vector2d outward;  ///< unit, away from the table (minus the rail normal)
   Eigen::Vector2d facing;   ///< unit, P → E
   Eigen::Vector2d normal;   ///< unit, into the pocket opening
-  double turn = 0.0;        ///< 180° − jaw angle, rad: the facing's turn from `along` toward `outward`
+  double turn = 0.0;  ///< 180° − jaw angle, rad: the facing's turn from `along` toward `outward`
 };
 
 /// Left perpendicular (rotated +90° about +z).
-inline Eigen::Vector2d leftPerp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+inline Eigen::Vector2d leftPerp(const Eigen::Vector2d& v) {
+  return {-v.y(), v.x()};
+}
 
 std::vector<PocketLayout> pocketLayouts(const TableSpec& spec);
 std::vector<RailLayout> railLayouts(const TableSpec& spec);

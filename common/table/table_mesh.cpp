@@ -19,8 +19,12 @@ using Vec3 = Eigen::Vector3d;
 
 constexpr double kMinDoubleArea = 1e-14;  ///< |cross| below this: a degenerate triangle, skipped
 
-Vec3 lift(const Vec2& p, double z) { return {p.x(), p.y(), z}; }
-Vec3 horizontal(const Vec2& v) { return {v.x(), v.y(), 0.0}; }
+Vec3 lift(const Vec2& p, double z) {
+  return {p.x(), p.y(), z};
+}
+Vec3 horizontal(const Vec2& v) {
+  return {v.x(), v.y(), 0.0};
+}
 
 /// Collects one part's triangles, sharing exactly equal vertices and orienting each triangle.
 class PartBuilder {
@@ -40,7 +44,8 @@ class PartBuilder {
 
   /// Adds a convex planar polygon (vertices in order around it) as a fan.
   void polygon(const std::vector<Vec3>& ring, const Vec3& outward) {
-    for (std::size_t i = 1; i + 1 < ring.size(); ++i) triangle(ring[0], ring[i], ring[i + 1], outward);
+    for (std::size_t i = 1; i + 1 < ring.size(); ++i)
+      triangle(ring[0], ring[i], ring[i + 1], outward);
   }
 
   void quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& outward) {
@@ -52,7 +57,8 @@ class PartBuilder {
  private:
   std::uint32_t index(const Vec3& p) {
     const std::array<double, 3> key{p.x(), p.y(), p.z()};
-    const auto [it, inserted] = index_.try_emplace(key, static_cast<std::uint32_t>(part_.vertices.size()));
+    const auto [it, inserted] =
+        index_.try_emplace(key, static_cast<std::uint32_t>(part_.vertices.size()));
     if (inserted) part_.vertices.push_back(p);
     return it->second;
   }
@@ -110,7 +116,8 @@ std::vector<Vec3> facingEndSection(const JawLayout& jaw, const std::vector<Profi
   return out;
 }
 
-/// Side faces of the sweep between two sections; `back` is the horizontal direction behind the nose.
+/// Side faces of the sweep between two sections; `back` is the horizontal direction behind the
+/// nose.
 void sweepFaces(PartBuilder& part, const std::vector<Vec3>& s0, const std::vector<Vec3>& s1,
                 const std::vector<ProfilePoint>& profile, const Vec2& back) {
   for (std::size_t i = 0; i < profile.size(); ++i) {
@@ -128,15 +135,17 @@ const JawLayout& jawOf(const std::vector<JawLayout>& jaws, int rail, const Vec2&
   return jaws.front();  // unreachable: every rail end has a jaw
 }
 
-MeshPart cushionPart(const TableSpec& spec, const RailLayout& rail, int index, const std::vector<JawLayout>& jaws) {
+MeshPart cushionPart(const TableSpec& spec, const RailLayout& rail, int index,
+                     const std::vector<JawLayout>& jaws) {
   const auto profile = cushionProfile(spec);
   PartBuilder part("cushion_" + rail.name);
-  sweepFaces(part, mitreSection(jawOf(jaws, index, rail.a), profile), mitreSection(jawOf(jaws, index, rail.b), profile),
-             profile, -rail.normal);
+  sweepFaces(part, mitreSection(jawOf(jaws, index, rail.a), profile),
+             mitreSection(jawOf(jaws, index, rail.b), profile), profile, -rail.normal);
   return part.take();
 }
 
-MeshPart jawPart(const TableSpec& spec, const PocketLayout& pocket, int index, const std::vector<JawLayout>& jaws) {
+MeshPart jawPart(const TableSpec& spec, const PocketLayout& pocket, int index,
+                 const std::vector<JawLayout>& jaws) {
   const auto profile = cushionProfile(spec);
   PartBuilder part("jaw_" + pocket.name);
   for (const JawLayout& j : jaws) {
@@ -177,8 +186,9 @@ Vec2 rayToTileEdge(const Tile& tile, const Vec2& from, const Vec2& dir) {
 /// The ring between the hole's circle and its tile: one convex fan per circle segment.
 void holeRing(PartBuilder& part, const Tile& tile, const PocketLayout& pocket) {
   const auto circle = holeCircle(pocket);
-  const std::array<Vec2, 4> corners{Vec2(tile.min.x(), tile.min.y()), Vec2(tile.max.x(), tile.min.y()),
-                                    Vec2(tile.max.x(), tile.max.y()), Vec2(tile.min.x(), tile.max.y())};
+  const std::array<Vec2, 4> corners{
+      Vec2(tile.min.x(), tile.min.y()), Vec2(tile.max.x(), tile.min.y()),
+      Vec2(tile.max.x(), tile.max.y()), Vec2(tile.min.x(), tile.max.y())};
   const Vec3 up(0.0, 0.0, 1.0);
   constexpr double kAngleEps = 1e-12;
   for (int i = 0; i < kHoleSegments; ++i) {
@@ -187,12 +197,15 @@ void holeRing(PartBuilder& part, const Tile& tile, const PocketLayout& pocket) {
     const double a1 = 2.0 * std::numbers::pi * (i + 1) / kHoleSegments;
     const Vec2& p0 = circle[static_cast<std::size_t>(i)];
     const Vec2& p1 = circle[static_cast<std::size_t>(k)];
-    std::vector<Vec3> ring{lift(p0, 0.0), lift(rayToTileEdge(tile, pocket.hole_centre, (p0 - pocket.hole_centre).normalized()), 0.0)};
+    std::vector<Vec3> ring{
+        lift(p0, 0.0),
+        lift(rayToTileEdge(tile, pocket.hole_centre, (p0 - pocket.hole_centre).normalized()), 0.0)};
     for (const Vec2& c : corners) {
       const double a = angleOf(c - pocket.hole_centre);
       if (a > a0 + kAngleEps && a < a1 - kAngleEps) ring.push_back(lift(c, 0.0));
     }
-    ring.push_back(lift(rayToTileEdge(tile, pocket.hole_centre, (p1 - pocket.hole_centre).normalized()), 0.0));
+    ring.push_back(
+        lift(rayToTileEdge(tile, pocket.hole_centre, (p1 - pocket.hole_centre).normalized()), 0.0));
     ring.push_back(lift(p1, 0.0));
     part.polygon(ring, up);
   }
@@ -218,11 +231,12 @@ void slateGrid(PartBuilder& part, const TableSpec& spec, const std::vector<Tile>
     for (std::size_t k = 0; k + 1 < ys.size(); ++k) {
       const Vec2 mid((xs[i] + xs[i + 1]) / 2.0, (ys[k] + ys[k + 1]) / 2.0);
       const bool in_tile = std::any_of(tiles.begin(), tiles.end(), [&](const Tile& t) {
-        return mid.x() > t.min.x() && mid.x() < t.max.x() && mid.y() > t.min.y() && mid.y() < t.max.y();
+        return mid.x() > t.min.x() && mid.x() < t.max.x() && mid.y() > t.min.y() &&
+               mid.y() < t.max.y();
       });
       if (in_tile) continue;
-      part.quad({xs[i], ys[k], 0.0}, {xs[i + 1], ys[k], 0.0}, {xs[i + 1], ys[k + 1], 0.0}, {xs[i], ys[k + 1], 0.0},
-                {0.0, 0.0, 1.0});
+      part.quad({xs[i], ys[k], 0.0}, {xs[i + 1], ys[k], 0.0}, {xs[i + 1], ys[k + 1], 0.0},
+                {xs[i], ys[k + 1], 0.0}, {0.0, 0.0, 1.0});
     }
   }
 }
@@ -256,17 +270,20 @@ MeshPart pocketPart(const TableSpec& spec, const PocketLayout& pocket) {
 void convexBox(PartBuilder& part, const std::array<Vec3, 8>& c) {
   Vec3 centre = Vec3::Zero();
   for (const Vec3& p : c) centre += p / 8.0;
-  const std::array<std::array<int, 4>, 6> faces{{{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5},
-                                                  {2, 3, 7, 6}, {3, 0, 4, 7}}};
+  const std::array<std::array<int, 4>, 6> faces{
+      {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
   for (const auto& f : faces) {
-    const auto at = [&](int k) { return c[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])]; };
+    const auto at = [&](int k) {
+      return c[static_cast<std::size_t>(f[static_cast<std::size_t>(k)])];
+    };
     const Vec3 mid = (at(0) + at(1) + at(2) + at(3)) / 4.0;
     part.quad(at(0), at(1), at(2), at(3), mid - centre);
   }
 }
 
 /// The wooden rail behind a cushion, between the cushion's back mitre points.
-MeshPart railPart(const TableSpec& spec, const RailLayout& rail, int index, const std::vector<JawLayout>& jaws) {
+MeshPart railPart(const TableSpec& spec, const RailLayout& rail, int index,
+                  const std::vector<JawLayout>& jaws) {
   const auto profile = cushionProfile(spec);
   const double top = spec.params.cushion_height + kCushionTopAboveNose;
   const Vec2 out = -rail.normal * spec.rail_width;
@@ -274,8 +291,8 @@ MeshPart railPart(const TableSpec& spec, const RailLayout& rail, int index, cons
   const Vec3 b3 = mitreSection(jawOf(jaws, index, rail.b), profile)[3];
   const Vec2 a(a3.x(), a3.y()), b(b3.x(), b3.y());
   PartBuilder part("rail_" + rail.name);
-  convexBox(part, {lift(a, 0.0), lift(b, 0.0), lift(b + out, 0.0), lift(a + out, 0.0), lift(a, top), lift(b, top),
-                   lift(b + out, top), lift(a + out, top)});
+  convexBox(part, {lift(a, 0.0), lift(b, 0.0), lift(b + out, 0.0), lift(a + out, 0.0), lift(a, top),
+                   lift(b, top), lift(b + out, top), lift(a + out, top)});
   return part.take();
 }
 
@@ -285,7 +302,8 @@ MeshPart troughPart(const TableSpec& spec) {
   const double head_z = troughHeadZ();
   const double foot_z = head_z - kTroughSlope * 2.0 * e.x();
   const double top = -spec.slate_thickness;
-  const Vec3 h0(-e.x(), -e.y(), head_z), h1(-e.x(), e.y(), head_z), f0(e.x(), -e.y(), foot_z), f1(e.x(), e.y(), foot_z);
+  const Vec3 h0(-e.x(), -e.y(), head_z), h1(-e.x(), e.y(), head_z), f0(e.x(), -e.y(), foot_z),
+      f1(e.x(), e.y(), foot_z);
   const auto up = [top](const Vec3& p) { return Vec3(p.x(), p.y(), top); };
   PartBuilder part("trough");
   part.quad(h0, f0, f1, h1, {kTroughSlope, 0.0, 1.0});
@@ -298,7 +316,9 @@ MeshPart troughPart(const TableSpec& spec) {
 
 }  // namespace
 
-double troughHeadZ() { return kTroughHeadZ; }
+double troughHeadZ() {
+  return kTroughHeadZ;
+}
 
 std::vector<MeshPart> buildMeshParts(const TableSpec& spec) {
   const auto pockets = pocketLayouts(spec);

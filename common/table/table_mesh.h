@@ -1,4 +1,5 @@
-// Internal to pool_table: the triangle mesh parts of a table (slate, cushions, jaws, pockets, rails, trough).
+// Internal to pool_table: the triangle mesh parts of a table (slate, cushions, jaws, pockets,
+// rails, trough).
 #pragma once
 
 #include <vector>

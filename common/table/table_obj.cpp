@@ -7,9 +7,9 @@
 // the vertices of its polygonal circle at z = 0. Assimp's OBJ importer keeps `l` lines as line
 // primitives (one two-index face per segment, in order), so no other encoding is needed. The two
 // facings of a pocket share one object name; assimp merges them into one object with two segments.
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -91,14 +91,18 @@ void writeHole(ObjWriter& w, const PocketHole& hole) {
 
 // ---- reading back ----------------------------------------------------------------------------
 
-Vec3 toVec(const aiVector3D& v) { return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)}; }
+Vec3 toVec(const aiVector3D& v) {
+  return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
 
 /// Line faces (two indices) of a mesh, in order.
 std::vector<std::pair<Vec3, Vec3>> lineSegments(const aiMesh& mesh) {
   std::vector<std::pair<Vec3, Vec3>> out;
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     const aiFace& face = mesh.mFaces[f];
-    if (face.mNumIndices == 2) out.emplace_back(toVec(mesh.mVertices[face.mIndices[0]]), toVec(mesh.mVertices[face.mIndices[1]]));
+    if (face.mNumIndices == 2)
+      out.emplace_back(toVec(mesh.mVertices[face.mIndices[0]]),
+                       toVec(mesh.mVertices[face.mIndices[1]]));
   }
   return out;
 }
@@ -136,9 +140,11 @@ void readHole(Loaded& out, const std::string& name, const aiMesh& mesh) {
     return;
   }
   Vec2 centre = Vec2::Zero();
-  for (const auto& seg : segments) centre += seg.first.head<2>() / static_cast<double>(segments.size());
+  for (const auto& seg : segments)
+    centre += seg.first.head<2>() / static_cast<double>(segments.size());
   double radius = 0.0;
-  for (const auto& seg : segments) radius += (seg.first.head<2>() - centre).norm() / static_cast<double>(segments.size());
+  for (const auto& seg : segments)
+    radius += (seg.first.head<2>() - centre).norm() / static_cast<double>(segments.size());
   out.geometry.holes.push_back(PocketHole{name, centre, radius});
 }
 
@@ -154,7 +160,8 @@ void readPart(Loaded& out, const std::string& name, const aiMesh& mesh) {
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     const aiFace& face = mesh.mFaces[f];
     if (face.mNumIndices != 3) continue;
-    it->triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+    it->triangles.push_back(
+        {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
   }
 }
 
@@ -170,21 +177,27 @@ void readNode(Loaded& out, const aiScene& scene, const aiNode& node) {
       readPart(out, name, mesh);
     }
   }
-  for (unsigned i = 0; i < node.mNumChildren && out.error.empty(); ++i) readNode(out, scene, *node.mChildren[i]);
+  for (unsigned i = 0; i < node.mNumChildren && out.error.empty(); ++i)
+    readNode(out, scene, *node.mChildren[i]);
 }
 
 Result<TableGeometry> importMesh(const TableSpec& spec) {
   const std::string path = spec.collision_mesh.string();
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (scene == nullptr || scene->mRootNode == nullptr) {
-    return Result<TableGeometry>::fail("collision_mesh: " + path + ": " + importer.GetErrorString());
+    return Result<TableGeometry>::fail("collision_mesh: " + path + ": " +
+                                       importer.GetErrorString());
   }
   Loaded loaded;
   readNode(loaded, *scene, *scene->mRootNode);
-  if (!loaded.error.empty()) return Result<TableGeometry>::fail("collision_mesh: " + path + ": " + loaded.error);
-  if (loaded.geometry.noses.empty() || loaded.geometry.holes.empty() || loaded.geometry.parts.empty()) {
-    return Result<TableGeometry>::fail("collision_mesh: " + path + ": needs nose_*, hole_* and mesh objects");
+  if (!loaded.error.empty())
+    return Result<TableGeometry>::fail("collision_mesh: " + path + ": " + loaded.error);
+  if (loaded.geometry.noses.empty() || loaded.geometry.holes.empty() ||
+      loaded.geometry.parts.empty()) {
+    return Result<TableGeometry>::fail("collision_mesh: " + path +
+                                       ": needs nose_*, hole_* and mesh objects");
   }
   TableGeometry& g = loaded.geometry;
   g.name = spec.name;
@@ -200,8 +213,10 @@ Result<TableGeometry> importMesh(const TableSpec& spec) {
 
 std::string toObj(const TableGeometry& geometry) {
   ObjWriter w;
-  w.comment("table " + geometry.name + ": collision mesh written by pool-tablegen (metres, table frame, z up)");
-  w.comment("nose_*: l a b with the ball's side to the left of a->b; hole_*: closed loops at z = 0");
+  w.comment("table " + geometry.name +
+            ": collision mesh written by pool-tablegen (metres, table frame, z up)");
+  w.comment(
+      "nose_*: l a b with the ball's side to the left of a->b; hole_*: closed loops at z = 0");
   for (const MeshPart& part : geometry.parts) writePart(w, part);
   for (const NoseSegment& nose : geometry.noses) writeNose(w, nose, geometry.nose_height);
   for (const PocketHole& hole : geometry.holes) writeHole(w, hole);
@@ -209,11 +224,13 @@ std::string toObj(const TableGeometry& geometry) {
 }
 
 Result<TableGeometry> loadTableGeometry(const TableSpec& spec) {
-  if (spec.collision_mesh.empty()) return Result<TableGeometry>::fail("collision_mesh: not set in the spec");
+  if (spec.collision_mesh.empty())
+    return Result<TableGeometry>::fail("collision_mesh: not set in the spec");
   try {
     return importMesh(spec);
   } catch (const std::exception& e) {
-    return Result<TableGeometry>::fail("collision_mesh: " + spec.collision_mesh.string() + ": " + e.what());
+    return Result<TableGeometry>::fail("collision_mesh: " + spec.collision_mesh.string() + ": " +
+                                       e.what());
   }
 }
 

@@ -1,4 +1,5 @@
-// Reads table specs from JSON (by shipped name or path), with one-line reasons naming the bad field.
+// Reads table specs from JSON (by shipped name or path), with one-line reasons naming the bad
+// field.
 //
 // Mesh paths in a spec ("collision_mesh", "render_mesh") are relative to the spec file's folder
 // (absolute paths are kept); both are optional, render_mesh defaults to collision_mesh.
@@ -27,8 +28,10 @@ struct NumberRule {
 
 const NumberRule kPositive{[](double v) { return v > 0.0; }, "must be a finite number > 0"};
 const NumberRule kAnyFinite{[](double) { return true; }, "must be a finite number"};
-const NumberRule kSlate{[](double v) { return v > 0.0 && v <= 0.05; }, "must be a finite number in (0, 0.05]"};
-const NumberRule kJawAngle{[](double v) { return v > 90.0 && v < 180.0; }, "must be a finite number in (90, 180)"};
+const NumberRule kSlate{[](double v) { return v > 0.0 && v <= 0.05; },
+                        "must be a finite number in (0, 0.05]"};
+const NumberRule kJawAngle{[](double v) { return v > 90.0 && v < 180.0; },
+                           "must be a finite number in (90, 180)"};
 
 struct NumberField {
   const char* key;
@@ -36,9 +39,10 @@ struct NumberField {
   const NumberRule* rule;
 };
 
-/// Reads the listed numbers from `obj`, then rejects keys that are neither listed nor in `other_known`.
-/// Returns "" or a reason.
-std::string readFields(const json& obj, const std::string& prefix, std::initializer_list<NumberField> fields,
+/// Reads the listed numbers from `obj`, then rejects keys that are neither listed nor in
+/// `other_known`. Returns "" or a reason.
+std::string readFields(const json& obj, const std::string& prefix,
+                       std::initializer_list<NumberField> fields,
                        std::initializer_list<const char*> other_known) {
   for (const NumberField& f : fields) {
     const auto it = obj.find(f.key);
@@ -104,8 +108,10 @@ fs::path resolveMesh(const std::string& text, const fs::path& spec_dir) {
   return (p.is_absolute() ? p : spec_dir / p).lexically_normal();
 }
 
-/// Checks that one pocket kind fits a ball and its hole neither reaches the jaws nor leaves the slate.
-std::string checkPocket(const TableSpec& spec, const char* key, const PocketSpec& pocket, bool corner) {
+/// Checks that one pocket kind fits a ball and its hole neither reaches the jaws nor leaves the
+/// slate.
+std::string checkPocket(const TableSpec& spec, const char* key, const PocketSpec& pocket,
+                        bool corner) {
   const double r = spec.params.ball_radius;
   const std::string where = std::string(key) + ".";
   if (pocket.mouth <= 2.0 * r) return where + "mouth: must be wider than a ball (2 * ball_radius)";
@@ -132,7 +138,8 @@ std::string checkPocket(const TableSpec& spec, const char* key, const PocketSpec
 /// Checks that rails have positive length and the pockets' slate tiles do not overlap.
 std::string checkLayout(const TableSpec& spec) {
   const double s = spec.corner.mouth / std::sqrt(2.0);
-  if (spec.length / 2.0 - s - spec.side.mouth / 2.0 <= 0.0) return "length: too short for its pockets";
+  if (spec.length / 2.0 - s - spec.side.mouth / 2.0 <= 0.0)
+    return "length: too short for its pockets";
   if (spec.width / 2.0 - s <= 0.0) return "width: too narrow for its pockets";
   const auto pockets = detail::pocketLayouts(spec);
   for (std::size_t i = 0; i < pockets.size(); ++i) {
@@ -158,17 +165,19 @@ std::string checkSpec(const TableSpec& spec) {
 
 /// Fills `spec` from the parsed root object; "" or a reason.
 std::string readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
-  std::string r = readFields(root, "",
-                             {{"length", &spec.length, &kPositive},
-                              {"width", &spec.width, &kPositive},
-                              {"cushion_width", &spec.cushion_width, &kPositive},
-                              {"rail_width", &spec.rail_width, &kPositive},
-                              {"slate_thickness", &spec.slate_thickness, &kSlate}},
-                             {"name", "description", "corner", "side", "params", "collision_mesh", "render_mesh"});
+  std::string r = readFields(
+      root, "",
+      {{"length", &spec.length, &kPositive},
+       {"width", &spec.width, &kPositive},
+       {"cushion_width", &spec.cushion_width, &kPositive},
+       {"rail_width", &spec.rail_width, &kPositive},
+       {"slate_thickness", &spec.slate_thickness, &kSlate}},
+      {"name", "description", "corner", "side", "params", "collision_mesh", "render_mesh"});
   if (!r.empty()) return r;
   std::string description, collision, render;
-  for (const auto& [key, target] : {std::pair{"name", &spec.name}, std::pair{"description", &description},
-                                    std::pair{"collision_mesh", &collision}, std::pair{"render_mesh", &render}}) {
+  for (const auto& [key, target] :
+       {std::pair{"name", &spec.name}, std::pair{"description", &description},
+        std::pair{"collision_mesh", &collision}, std::pair{"render_mesh", &render}}) {
     if (r = readString(root, key, *target); !r.empty()) return r;
   }
   if (r = readPocket(root, "corner", spec.corner); !r.empty()) return r;
@@ -208,7 +217,8 @@ Result<TableSpec> parseTableSpec(const std::string& json_text, const std::string
   spec.name = default_name;
   try {
     const json root = json::parse(json_text);
-    if (!root.is_object()) return Result<TableSpec>::fail(source + ": the spec must be a JSON object");
+    if (!root.is_object())
+      return Result<TableSpec>::fail(source + ": the spec must be a JSON object");
     const std::string reason = readSpec(root, spec_dir, spec);
     if (!reason.empty()) return Result<TableSpec>::fail(reason);
   } catch (const std::exception& e) {
@@ -219,11 +229,13 @@ Result<TableSpec> parseTableSpec(const std::string& json_text, const std::string
 
 Result<TableSpec> loadTableSpec(const std::string& nameOrPath) {
   if (nameOrPath.empty()) return Result<TableSpec>::fail("empty table name");
-  if (looksLikePath(nameOrPath)) return loadFile(fs::path(nameOrPath), fs::path(nameOrPath).stem().string());
+  if (looksLikePath(nameOrPath))
+    return loadFile(fs::path(nameOrPath), fs::path(nameOrPath).stem().string());
   const auto found = findAsset("tables/" + nameOrPath + ".json");
   if (!found) {
-    return Result<TableSpec>::fail("unknown table '" + nameOrPath +
-                                   "' (expected wpa-9ft, wpa-8ft, wpa-7ft or a path to a spec file)");
+    return Result<TableSpec>::fail(
+        "unknown table '" + nameOrPath +
+        "' (expected wpa-9ft, wpa-8ft, wpa-7ft or a path to a spec file)");
   }
   return loadFile(*found, nameOrPath);
 }

@@ -11,25 +11,28 @@ namespace pool::table {
 
 /// One kind of pocket (all four corners share one, both sides another).
 struct PocketSpec {
-  double mouth = 0.0;          ///< distance between the two jaw points (nose-line ends), m
-  double jaw_angle_deg = 0.0;  ///< angle between the rail's nose line and the jaw facing (142 corner, 104 side)
-  double hole_radius = 0.0;    ///< radius of the hole in the slate, m
-  double hole_offset = 0.0;    ///< hole centre behind the pocket's reference point, m (see table_geometry.h)
+  double mouth = 0.0;  ///< distance between the two jaw points (nose-line ends), m
+  double jaw_angle_deg =
+      0.0;  ///< angle between the rail's nose line and the jaw facing (142 corner, 104 side)
+  double hole_radius = 0.0;  ///< radius of the hole in the slate, m
+  double hole_offset =
+      0.0;  ///< hole centre behind the pocket's reference point, m (see table_geometry.h)
 };
 
 /// A whole table. The playing surface is the rectangle between the cushion noses.
 struct TableSpec {
-  std::string name;             ///< e.g. "wpa-9ft"
-  double length = 2.54;         ///< playing surface along x, m
-  double width = 1.27;          ///< playing surface along y, m
-  double cushion_width = 0.05;  ///< nose to the back of the cushion rubber, m
-  double rail_width = 0.10;     ///< wooden rail beyond the cushion, m
+  std::string name;                ///< e.g. "wpa-9ft"
+  double length = 2.54;            ///< playing surface along x, m
+  double width = 1.27;             ///< playing surface along y, m
+  double cushion_width = 0.05;     ///< nose to the back of the cushion rubber, m
+  double rail_width = 0.10;        ///< wooden rail beyond the cushion, m
   double slate_thickness = 0.025;  ///< m
   PocketSpec corner;
   PocketSpec side;
   PhysicsParams params;
   std::filesystem::path collision_mesh;  ///< absolute path of the collision mesh (OBJ)
-  std::filesystem::path render_mesh;     ///< absolute path of the render mesh; may equal collision_mesh
+  std::filesystem::path
+      render_mesh;  ///< absolute path of the render mesh; may equal collision_mesh
 };
 
 /// Loads a spec by name ("wpa-9ft", "wpa-8ft", "wpa-7ft": assets/tables/<name>.json) or by path

@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   Args args;
-  if (const std::string error = parseArgs(argc, argv, args); !error.empty()) return fail(error + " (" + kUsage + ")");
+  if (const std::string error = parseArgs(argc, argv, args); !error.empty())
+    return fail(error + " (" + kUsage + ")");
   const auto spec = pool::table::loadTableSpec(args.spec);
   if (!spec) return fail(spec.error());
   const std::string obj = pool::table::toObj(pool::table::buildTableGeometry(*spec));

@@ -69,8 +69,8 @@ Check checkTurn(const Match& match, const net::ShotRequest& c) {
     return refuse(Reject::NotYourTurn, seatName(match.game().shooter) + " is to shoot");
   }
   if (match.inMotion()) {
-    return refuse(Reject::BallsMoving, "shot " + std::to_string(match.shotInMotion()) +
-                                           " is still moving");
+    return refuse(Reject::BallsMoving,
+                  "shot " + std::to_string(match.shotInMotion()) + " is still moving");
   }
   return std::nullopt;
 }
@@ -79,8 +79,7 @@ Check checkSequence(const Match& match, const net::ShotRequest& c) {
   const std::uint32_t last = match.seats()[static_cast<std::size_t>(c.seat)].last_seq;
   if (c.seq <= last) {
     return refuse(Reject::StaleSequence, "seq " + std::to_string(c.seq) +
-                                             " is not above the last used " +
-                                             std::to_string(last));
+                                             " is not above the last used " + std::to_string(last));
   }
   return std::nullopt;
 }
@@ -152,12 +151,18 @@ Check checkCall(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
 
 std::optional<rules::Choice> choiceOf(net::ShotOption option) {
   switch (option) {
-    case net::ShotOption::None: return std::nullopt;
-    case net::ShotOption::PlayOn: return rules::Choice::PlayOn;
-    case net::ShotOption::BallInHand: return rules::Choice::BallInHand;
-    case net::ShotOption::RespotEight: return rules::Choice::RespotEight;
-    case net::ShotOption::ReBreak: return rules::Choice::ReBreak;
-    case net::ShotOption::OpponentReBreaks: return rules::Choice::OpponentReBreaks;
+    case net::ShotOption::None:
+      return std::nullopt;
+    case net::ShotOption::PlayOn:
+      return rules::Choice::PlayOn;
+    case net::ShotOption::BallInHand:
+      return rules::Choice::BallInHand;
+    case net::ShotOption::RespotEight:
+      return rules::Choice::RespotEight;
+    case net::ShotOption::ReBreak:
+      return rules::Choice::ReBreak;
+    case net::ShotOption::OpponentReBreaks:
+      return rules::Choice::OpponentReBreaks;
   }
   return std::nullopt;
 }

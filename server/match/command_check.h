@@ -17,9 +17,9 @@ class Match;
 
 /// A command that passed every check, ready to run.
 struct ShotPlan {
-  rules::GameState state;             ///< the state the shot is judged in (any choice applied)
-  std::vector<physics::Ball> before;  ///< the table at the strike (respots, placement applied)
-  rules::Intent intent;               ///< the call or safety
+  rules::GameState state;                ///< the state the shot is judged in (any choice applied)
+  std::vector<physics::Ball> before;     ///< the table at the strike (respots, placement applied)
+  rules::Intent intent;                  ///< the call or safety
   std::optional<rules::Verdict> choice;  ///< the answer to a pending choice, applied
   bool shoots = true;                    ///< false: a choice that re-racks, without a shot
 };

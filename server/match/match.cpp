@@ -101,9 +101,8 @@ JoinAnswer Match::rejoin(std::uint64_t token, const std::string& client,
   if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
   Seat& s = seats_[static_cast<std::size_t>(*seat)];
   if (s.public_key != public_key) {
-    return JoinAnswer::refuse(JoinOutcome::BadToken,
-                              "public_key: not the key seat " + std::to_string(*seat) +
-                                  " was taken with");
+    return JoinAnswer::refuse(JoinOutcome::BadToken, "public_key: not the key seat " +
+                                                         std::to_string(*seat) + " was taken with");
   }
   s.client = client;
   s.away_since.reset();
@@ -194,8 +193,8 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
   ShotPlan& plan = checked.plan;
   if (!plan.shoots) return applyChoiceNow(command, *plan.choice, balls_);
 
-  auto outcome = runner_->run(plan.before, command.cue, options_.snapshot_hz,
-                              options_.max_shot_time);
+  auto outcome =
+      runner_->run(plan.before, command.cue, options_.snapshot_hz, options_.max_shot_time);
   if (!outcome) {
     answer.rejection = {Reject::Malformed, "the physics refused the shot: " + outcome.error()};
     return answer;
@@ -275,10 +274,14 @@ MatchPhase Match::phase() const {
   if (closed_) return MatchPhase::Closed;
   if (!started_) return MatchPhase::Lobby;
   switch (game_.phase) {
-    case rules::Phase::Break: return MatchPhase::Break;
-    case rules::Phase::Open: return MatchPhase::Open;
-    case rules::Phase::Assigned: return MatchPhase::Assigned;
-    case rules::Phase::Over: return MatchPhase::Over;
+    case rules::Phase::Break:
+      return MatchPhase::Break;
+    case rules::Phase::Open:
+      return MatchPhase::Open;
+    case rules::Phase::Assigned:
+      return MatchPhase::Assigned;
+    case rules::Phase::Over:
+      return MatchPhase::Over;
   }
   return MatchPhase::Lobby;
 }

@@ -34,8 +34,8 @@ struct DueFrames {
 /// command leaves it unchanged, except that one its seat's key signed uses up its sequence number.
 class Match {
  public:
-  Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner,
-        MatchOptions options, std::uint64_t rack_seed);
+  Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner, MatchOptions options,
+        std::uint64_t rack_seed);
   /// A match resumed from `snapshot` (a restarted server): its seated players are away since
   /// `now`, so the grace period starts at the resume.
   Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner, MatchOptions options,

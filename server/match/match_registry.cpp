@@ -74,10 +74,10 @@ std::vector<Match*> MatchRegistry::matches() {
 
 JoinAnswer MatchRegistry::join(const JoinCommand& c) {
   if (c.protocol_version != options_.protocol_version) {
-    return about(JoinAnswer::refuse(JoinOutcome::VersionMismatch,
-                                    "server speaks protocol " +
-                                        std::to_string(options_.protocol_version)),
-                 c.match);
+    return about(
+        JoinAnswer::refuse(JoinOutcome::VersionMismatch,
+                           "server speaks protocol " + std::to_string(options_.protocol_version)),
+        c.match);
   }
   if (c.action == JoinAction::Seat) return about(seat(c), c.match);
   Match* match = find(c.match);
@@ -85,12 +85,16 @@ JoinAnswer MatchRegistry::join(const JoinCommand& c) {
     return about(JoinAnswer::refuse(JoinOutcome::NoSuchMatch, "no match " + c.match), c.match);
   }
   switch (c.action) {
-    case JoinAction::Spectate: return match->addSpectator(c.client);
+    case JoinAction::Spectate:
+      return match->addSpectator(c.client);
     case JoinAction::Rejoin:
       return about(match->rejoin(c.token, c.client, c.public_key), c.match);
-    case JoinAction::Leave: return about(leave(c), c.match);
-    case JoinAction::Rematch: return about(match->rematch(c.token), c.match);
-    case JoinAction::Seat: break;
+    case JoinAction::Leave:
+      return about(leave(c), c.match);
+    case JoinAction::Rematch:
+      return about(match->rematch(c.token), c.match);
+    case JoinAction::Seat:
+      break;
   }
   return about(JoinAnswer::refuse(JoinOutcome::NotAllowed, "unknown action"), c.match);
 }

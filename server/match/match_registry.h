@@ -22,12 +22,12 @@ namespace pool::server {
 
 /// How a registry runs its matches.
 struct RegistryOptions {
-  std::string server_id;            ///< prefix of every match id; empty: 8 random hex digits
-  std::string table = "wpa-9ft";    ///< table spec of every match
+  std::string server_id;          ///< prefix of every match id; empty: 8 random hex digits
+  std::string table = "wpa-9ft";  ///< table spec of every match
   MatchOptions match;
-  std::size_t max_matches = 256;    ///< "new" beyond this is refused (server full)
+  std::size_t max_matches = 256;       ///< "new" beyond this is refused (server full)
   std::uint32_t protocol_version = 2;  ///< a join with another version is refused
-  std::uint64_t seed = 0;           ///< tokens and racks; 0: from the OS entropy source
+  std::uint64_t seed = 0;              ///< tokens and racks; 0: from the OS entropy source
 };
 
 /// Owns the matches of one server. Match ids are "<server id>-<n>", n counting from 1 and never

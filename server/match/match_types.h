@@ -16,7 +16,6 @@ namespace pool::server {
 
 using net::MatchPhase;  ///< where a match stands (shared with the clients)
 
-
 /// How a match is played and published.
 struct MatchOptions {
   double snapshot_hz = 60.0;    ///< frames per simulated second (> 0)
@@ -37,12 +36,12 @@ struct ShotReport {
 
 /// The immediate answer to a shot command.
 struct CommandAnswer {
-  Rejection rejection;            ///< reason None: accepted
-  int seat = 0;                   ///< as the command gave it
-  std::uint32_t seq = 0;          ///< as the command gave it
-  std::uint32_t shot_number = 0;  ///< accepted: the shot's number; rejected: shots so far
-  bool in_motion = false;         ///< accepted shot: frames follow, then Match::finishShot
-  std::optional<ShotReport> done; ///< accepted choice without a shot: done already
+  Rejection rejection;               ///< reason None: accepted
+  int seat = 0;                      ///< as the command gave it
+  std::uint32_t seq = 0;             ///< as the command gave it
+  std::uint32_t shot_number = 0;     ///< accepted: the shot's number; rejected: shots so far
+  bool in_motion = false;            ///< accepted shot: frames follow, then Match::finishShot
+  std::optional<ShotReport> done;    ///< accepted choice without a shot: done already
   std::optional<ShotRecord> record;  ///< accepted: what to store before answering
 
   bool accepted() const { return rejection.accepted(); }

@@ -22,8 +22,7 @@ class ShotRunner {
   /// `balls` and in every trajectory sample, which list every ball of `balls` in id order.
   /// Fails on a layout the physics refuses or a strike it cannot make.
   Result<physics::ShotOutcome> run(const std::vector<physics::Ball>& balls,
-                                   const physics::CueShot& cue, double sample_hz,
-                                   double max_time);
+                                   const physics::CueShot& cue, double sample_hz, double max_time);
 
   const TableKit& kit() const { return *kit_; }
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "physics/ode_world.h"
-#include "ratio_reporter.h"
 #include "physics/simulation.h"
+#include "ratio_reporter.h"
 #include "scenario/scenario.h"
 
 namespace {
@@ -43,10 +43,13 @@ void BM_BreakToRest(benchmark::State& state) {
   state.counters["sim_s"] = simulated;
   state.counters["steps"] = static_cast<double>(steps);
   state.counters["events"] = static_cast<double>(events);
-  state.counters["sim_s_per_wall_s"] =
-      benchmark::Counter(simulated * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["sim_s_per_wall_s"] = benchmark::Counter(
+      simulated * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_BreakToRest)->Unit(benchmark::kMillisecond)->Repetitions(25)->ReportAggregatesOnly(true);
+BENCHMARK(BM_BreakToRest)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(25)
+    ->ReportAggregatesOnly(true);
 
 /// The same break with 60 Hz frames recorded, as the server publishes them.
 void BM_BreakToRestWithFrames(benchmark::State& state) {
@@ -60,7 +63,10 @@ void BM_BreakToRestWithFrames(benchmark::State& state) {
     benchmark::DoNotOptimize(out->trajectory.data());
   }
 }
-BENCHMARK(BM_BreakToRestWithFrames)->Unit(benchmark::kMillisecond)->Repetitions(25)->ReportAggregatesOnly(true);
+BENCHMARK(BM_BreakToRestWithFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(25)
+    ->ReportAggregatesOnly(true);
 
 /// Baseline: sixteen free ODE bodies stepped at a fixed 1 ms for the break's simulated time,
 /// with no collision detection at all (the floor of the fixed-step approach).
@@ -82,7 +88,10 @@ void BM_BaselineFixedStepOde1ms(benchmark::State& state) {
     benchmark::DoNotOptimize(balls.data());
   }
 }
-BENCHMARK(BM_BaselineFixedStepOde1ms)->Unit(benchmark::kMillisecond)->Repetitions(25)->ReportAggregatesOnly(true);
+BENCHMARK(BM_BaselineFixedStepOde1ms)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(25)
+    ->ReportAggregatesOnly(true);
 
 }  // namespace
 

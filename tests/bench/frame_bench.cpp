@@ -1,8 +1,9 @@
 // Frame time of the client's 3-D scene at 1280×720 on the offscreen context (Mesa llvmpipe under
 // Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (sixteen
-// balls rolling and turning, two pocketed, overlay lines, the window's Dear ImGui HUD). Prints median and p99 per frame and
-// the ratio to the baseline; wall time, since llvmpipe renders on its own threads, and the CPU
-// time of the whole process (all threads) per frame, which a busy machine does not inflate.
+// balls rolling and turning, two pocketed, overlay lines, the window's Dear ImGui HUD). Prints
+// median and p99 per frame and the ratio to the baseline; wall time, since llvmpipe renders on its
+// own threads, and the CPU time of the whole process (all threads) per frame, which a busy machine
+// does not inflate.
 #include <backends/imgui_impl_opengl3.h>
 #include <benchmark/benchmark.h>
 #include <glad/gl.h>

@@ -59,10 +59,17 @@ double percentile(std::vector<double> v, double p) {
 class PinnedServer {
  public:
   PinnedServer(std::uint32_t domain, int tables, int cpu) {
-    std::vector<std::string> argv{std::string(POOL_BIN_DIR) + "/pool-server", "--domain",
-                                  std::to_string(domain), "--tables", std::to_string(tables),
-                                  "--server-id", "bench", "--log-level", "warn",
-                                  "--db", db_};
+    std::vector<std::string> argv{std::string(POOL_BIN_DIR) + "/pool-server",
+                                  "--domain",
+                                  std::to_string(domain),
+                                  "--tables",
+                                  std::to_string(tables),
+                                  "--server-id",
+                                  "bench",
+                                  "--log-level",
+                                  "warn",
+                                  "--db",
+                                  db_};
     std::vector<char*> raw;
     for (auto& a : argv) raw.push_back(a.data());
     raw.push_back(nullptr);
@@ -123,14 +130,14 @@ struct Table {
 /// structs; 8-byte values aligned to 4), the payload each subscriber receives per frame.
 std::size_t snapshotBytes(const pool_TableSnapshot& s) {
   auto align = [](std::size_t n, std::size_t a) { return (n + a - 1) / a * a; };
-  std::size_t n = 4;                                      // DHEADER
-  n += 4 + net::textOf(s.match).size() + 1;               // match
-  n = align(n, 4) + 4 + 8 + 4;                            // frame, sim_time, shot_number
-  n += 4 + 4;                                             // DHEADER and length of balls
+  std::size_t n = 4;                         // DHEADER
+  n += 4 + net::textOf(s.match).size() + 1;  // match
+  n = align(n, 4) + 4 + 8 + 4;               // frame, sim_time, shot_number
+  n += 4 + 4;                                // DHEADER and length of balls
   for (const auto& b : net::elementsOf(s.balls)) {
-    n = align(n, 4) + 1;                                  // id
-    n = align(n, 4) + 4 + 13 * 8;                         // state, pos, orient, vel, ang_vel
-    n += 4 + net::textOf(b.pocket).size() + 1;            // pocket
+    n = align(n, 4) + 1;                        // id
+    n = align(n, 4) + 4 + 13 * 8;               // state, pos, orient, vel, ang_vel
+    n += 4 + net::textOf(b.pocket).size() + 1;  // pocket
   }
   return n;
 }
@@ -168,9 +175,8 @@ class Driver {
     int request = 0;
     for (auto& [id, t] : tables_) {
       for (int seat = 0; seat < 2; ++seat) {
-        requests_.write(*client::toWire({clientOf(id, seat),
-                                         static_cast<std::uint32_t>(++request), id,
-                                         client::JoinAction::Seat, seat,
+        requests_.write(*client::toWire({clientOf(id, seat), static_cast<std::uint32_t>(++request),
+                                         id, client::JoinAction::Seat, seat,
                                          "p" + std::to_string(seat), 0, key_.publicKey()}));
       }
     }
@@ -262,7 +268,7 @@ class Driver {
     if (!s.options.empty()) {
       const auto& o = s.options;
       auto offered = [&](rules::Choice c) { return std::find(o.begin(), o.end(), c) != o.end(); };
-      r.option = offered(rules::Choice::PlayOn) ? net::ShotOption::PlayOn
+      r.option = offered(rules::Choice::PlayOn)       ? net::ShotOption::PlayOn
                  : offered(rules::Choice::BallInHand) ? net::ShotOption::BallInHand
                                                       : net::ShotOption::ReBreak;
       if (r.option == net::ShotOption::BallInHand) in_hand = rules::BallInHand::BehindHeadString;
@@ -318,24 +324,26 @@ class Driver {
   }
 
   void pollFrames() {
-    snapshots_.takeEach([&](const pool_TableSnapshot& s, const net::SampleMeta&) {
-      const double at = now();
-      const double wall = wallNow();
-      const std::string id(net::textOf(s.match));
-      auto it = tables_.find(id);
-      if (it == tables_.end() || s.shot_number != it->second.shot) return;
-      Table& t = it->second;
-      ++t.frames;
-      t.bytes += static_cast<double>(snapshotBytes(s));
-      t.last_frame = at;
-      t.arrivals.emplace_back(at, s.sim_time);
-      if (t.first_frame < 0) {
-        t.first_frame = at;
-        // From the server's acceptance (its timestamp) to our receipt, on one host's clock.
-        if (t.accepted_at_server > 0) latencies_.push_back(wall - t.accepted_at_server);
-        if (t.sent >= 0) command_to_frame_.push_back(at - t.sent);
-      }
-    }, 4096);
+    snapshots_.takeEach(
+        [&](const pool_TableSnapshot& s, const net::SampleMeta&) {
+          const double at = now();
+          const double wall = wallNow();
+          const std::string id(net::textOf(s.match));
+          auto it = tables_.find(id);
+          if (it == tables_.end() || s.shot_number != it->second.shot) return;
+          Table& t = it->second;
+          ++t.frames;
+          t.bytes += static_cast<double>(snapshotBytes(s));
+          t.last_frame = at;
+          t.arrivals.emplace_back(at, s.sim_time);
+          if (t.first_frame < 0) {
+            t.first_frame = at;
+            // From the server's acceptance (its timestamp) to our receipt, on one host's clock.
+            if (t.accepted_at_server > 0) latencies_.push_back(wall - t.accepted_at_server);
+            if (t.sent >= 0) command_to_frame_.push_back(at - t.sent);
+          }
+        },
+        4096);
   }
 
   net::ProtocolTopics bus_;  ///< the participant and the protocol's topics
@@ -383,7 +391,8 @@ void BM_ShotToFirstSnapshot(benchmark::State& state) {
       driver.pumpShots(20s);
       for (auto& [id, t] : driver.tables()) {
         bytes += t.bytes;
-        if (t.first_frame >= 0 && t.last_frame > t.first_frame) moving += t.last_frame - t.first_frame;
+        if (t.first_frame >= 0 && t.last_frame > t.first_frame)
+          moving += t.last_frame - t.first_frame;
         t.bytes = 0;
         t.frames = 0;
       }
@@ -396,10 +405,11 @@ void BM_ShotToFirstSnapshot(benchmark::State& state) {
     state.counters["command_to_first_snapshot_p50_ms"] =
         1e3 * percentile(driver.commandToFrame(), 0.5);
     state.counters["snapshot_bytes_per_s_per_match"] = moving > 0 ? bytes / moving : 0;
-    std::printf("accepted -> first snapshot: p50 %.3f ms, p99 %.3f ms over %zu shots; "
-                "snapshots %.0f B/s per subscriber per moving match\n",
-                1e3 * percentile(lat, 0.5), 1e3 * percentile(lat, 0.99), lat.size(),
-                moving > 0 ? bytes / moving : 0.0);
+    std::printf(
+        "accepted -> first snapshot: p50 %.3f ms, p99 %.3f ms over %zu shots; "
+        "snapshots %.0f B/s per subscriber per moving match\n",
+        1e3 * percentile(lat, 0.5), 1e3 * percentile(lat, 0.99), lat.size(),
+        moving > 0 ? bytes / moving : 0.0);
   }
 }
 BENCHMARK(BM_ShotToFirstSnapshot)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
@@ -451,10 +461,11 @@ void BM_SixtyHzCapacity(benchmark::State& state) {
     state.counters["keeps_60hz"] = lag99 < 1.0 / 60 && rate > 0.95 * 60 ? 1 : 0;
     state.counters["server_core_pct"] = 100.0 * cpu_share;
     state.counters["matches_per_core_at_60hz"] = cpu_share > 0 ? tables / cpu_share : 0;
-    std::printf("%d tables on one core: frame lateness p50 %.2f ms p99 %.2f ms, %.1f frames/s "
-                "per match received, server uses %.0f%% of its core (%.0f matches per core)\n",
-                tables, 1e3 * percentile(lags, 0.5), 1e3 * lag99, rate, 100.0 * cpu_share,
-                cpu_share > 0 ? tables / cpu_share : 0.0);
+    std::printf(
+        "%d tables on one core: frame lateness p50 %.2f ms p99 %.2f ms, %.1f frames/s "
+        "per match received, server uses %.0f%% of its core (%.0f matches per core)\n",
+        tables, 1e3 * percentile(lags, 0.5), 1e3 * lag99, rate, 100.0 * cpu_share,
+        cpu_share > 0 ? tables / cpu_share : 0.0);
   }
 }
 
@@ -465,7 +476,11 @@ void capacityArgs(benchmark::internal::Benchmark* b) {
   std::string item;
   while (std::getline(list, item, ',')) b->Arg(std::stol(item));
 }
-BENCHMARK(BM_SixtyHzCapacity)->Apply(capacityArgs)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK(BM_SixtyHzCapacity)
+    ->Apply(capacityArgs)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 

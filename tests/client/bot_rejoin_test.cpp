@@ -121,9 +121,8 @@ TEST_F(BotRejoinTest, ABotStalledPastItsLeaseTakesItsSeatBackAndPlaysOn) {
     std::printf("note: the match stalled (physics refuses its own layout) after the rejoin\n");
     return;
   }
-  recorder.pump(90s, [&] {
-    return stalledOnLayout(recorder) || (!alice->running() && !bob.running());
-  });
+  recorder.pump(90s,
+                [&] { return stalledOnLayout(recorder) || (!alice->running() && !bob.running()); });
   if (stalledOnLayout(recorder)) return;
   EXPECT_EQ(alice->err().find("bad_token"), std::string::npos) << alice->err();
   EXPECT_EQ(alice->waitExit(1s), 0) << alice->err();

@@ -41,8 +41,8 @@ class ClientIntegrationTest : public ::testing::Test {
   }
 
   ChildProcess& startServer(const std::vector<std::string>& extra) {
-    std::vector<std::string> args{"--domain", std::to_string(domain_), "--tables", "1",
-                                  "--server-id", "srv"};
+    std::vector<std::string> args{"--domain", std::to_string(domain_), "--tables",
+                                  "1",        "--server-id",           "srv"};
     args.insert(args.end(), extra.begin(), extra.end());
     return start("pool-server", args, "server");
   }
@@ -50,8 +50,9 @@ class ClientIntegrationTest : public ::testing::Test {
   /// A bot named `name` with skill 0.8 and `extra` flags; it gives up after 90 s.
   ChildProcess& startBot(const std::string& name, std::uint64_t seed,
                          const std::vector<std::string>& extra = {}) {
-    std::vector<std::string> args{"--domain", std::to_string(domain_), "--name", name, "--skill",
-                                  "0.8", "--seed", std::to_string(seed), "--timeout", "90"};
+    std::vector<std::string> args{
+        "--domain", std::to_string(domain_), "--name",    name, "--skill", "0.8",
+        "--seed",   std::to_string(seed),    "--timeout", "90"};
     args.insert(args.end(), extra.begin(), extra.end());
     return start("pool-bot", args, name + "-" + std::to_string(++runs_));
   }
@@ -65,8 +66,8 @@ class ClientIntegrationTest : public ::testing::Test {
 
   ChildProcess& start(const std::string& program, const std::vector<std::string>& args,
                       const std::string& tag) {
-    processes_.push_back(std::make_unique<ChildProcess>(
-        program, args, scratch_->file(tag + ".out"), scratch_->file(tag + ".err")));
+    processes_.push_back(std::make_unique<ChildProcess>(program, args, scratch_->file(tag + ".out"),
+                                                        scratch_->file(tag + ".err")));
     return *processes_.back();
   }
 

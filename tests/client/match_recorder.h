@@ -32,9 +32,9 @@ class MatchRecorder {
         all_states_(participant_, state_topic_, keepAll(net::qos::state())) {}
 
   /// Polls until `until()` holds or `timeout` passes; true when it held.
-  bool pump(std::chrono::milliseconds timeout, const std::function<bool()>& until = [] {
-    return false;
-  }) {
+  bool pump(
+      std::chrono::milliseconds timeout,
+      const std::function<bool()>& until = [] { return false; }) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     while (true) {
       drain();

@@ -53,7 +53,8 @@ inline std::vector<physics::Ball> afterOf(std::vector<physics::Ball> balls,
 
 inline rules::Intent intentOf(const net::ShotRequest& command) {
   rules::Intent intent;
-  if (command.called_ball) intent = rules::Intent::call(*command.called_ball, command.called_pocket);
+  if (command.called_ball)
+    intent = rules::Intent::call(*command.called_ball, command.called_pocket);
   intent.safety = command.safety;
   if (command.option == net::ShotOption::PlayOn) intent.choice = rules::Choice::PlayOn;
   if (command.option == net::ShotOption::BallInHand) intent.choice = rules::Choice::BallInHand;
@@ -65,7 +66,8 @@ inline std::string compare(const rules::Verdict& v, const ShotReport& r) {
   if (v.fouls != r.fouls) why << " fouls differ;";
   if (v.pocketed != r.pocketed) why << " pocketed differ;";
   if (v.turn_continues != r.turn_continues) why << " turn_continues differs;";
-  if (v.next_shooter != r.next_shooter) why << " next shooter " << v.next_shooter << " vs " << r.next_shooter << ";";
+  if (v.next_shooter != r.next_shooter)
+    why << " next shooter " << v.next_shooter << " vs " << r.next_shooter << ";";
   if (v.game_over != r.game_over || v.winner != r.winner) why << " game over/winner differ;";
   return why.str();
 }

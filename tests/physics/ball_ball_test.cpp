@@ -1,4 +1,5 @@
-// Ball–ball collisions against Alciatore's technical proofs: the 30° and 90° rules, stun stop, throw.
+// Ball–ball collisions against Alciatore's technical proofs: the 30° and 90° rules, stun stop,
+// throw.
 #include <gtest/gtest.h>
 
 #include "fixtures.h"
@@ -54,7 +55,7 @@ TEST(BallBall, ThirtyDegreeRuleWithIdealBalls) {
   for (double phi = 10; phi <= 60; phi += 5) {
     const double v = 1.0;
     const auto out = cut(spec, phi, v, Vec3(0, v / R, 0));  // rolling
-    const double theta = -cueBallFinalHeading(out);        // deflects to the right
+    const double theta = -cueBallFinalHeading(out);         // deflects to the right
     EXPECT_NEAR(theta, thirtyDegreeRule(phi), 0.05) << "phi = " << phi;
   }
 }
@@ -166,8 +167,8 @@ TEST(BallBall, PushingBallNeverSinksIntoTheOther) {
     SimOptions opt;
     opt.sample_hz = 2000;
     Simulation sim(spec, openGeometry(spec));
-    ASSERT_TRUE(sim.setBalls({movingBall(0, 0, 0, Vec3(0.05, 0, 0), Vec3(0, 100, 0)),
-                              ballAt(1, 2 * R + 1e-9, 0)}));
+    ASSERT_TRUE(sim.setBalls(
+        {movingBall(0, 0, 0, Vec3(0.05, 0, 0), Vec3(0, 100, 0)), ballAt(1, 2 * R + 1e-9, 0)}));
     const auto out = sim.run(opt);
     EXPECT_FALSE(out.truncated);
     ASSERT_TRUE(out.t_rest.has_value());

@@ -1,4 +1,5 @@
-// The 8-ball break on the real table: rest, no overlaps, nothing in a cushion, energy never rises, determinism.
+// The 8-ball break on the real table: rest, no overlaps, nothing in a cushion, energy never rises,
+// determinism.
 #include <gtest/gtest.h>
 
 #include <cstdint>

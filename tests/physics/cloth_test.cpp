@@ -1,4 +1,5 @@
-// Closed-form checks of the cloth model on an open slate (PHYSICS.md: Leckie & Greenspan, Alciatore).
+// Closed-form checks of the cloth model on an open slate (PHYSICS.md: Leckie & Greenspan,
+// Alciatore).
 #include <gtest/gtest.h>
 
 #include "fixtures.h"
@@ -62,9 +63,9 @@ TEST(Cloth, RollSpeedAfterSlidingIsFiveSeventhsOfStrikeSpeed) {
   }
 }
 
-// Follow and draw (PHYSICS.md): cue 2 m/s, b = ±0.5 → v0 = 2.07793, |ω| = 90.898 rad/s; follow rolls
-// at 2.22635 m/s after 0.075649 s, draw at 0.74212 m/s after 0.680841 s. Tolerance 1e-5 relative
-// (the published figures have six significant digits).
+// Follow and draw (PHYSICS.md): cue 2 m/s, b = ±0.5 → v0 = 2.07793, |ω| = 90.898 rad/s; follow
+// rolls at 2.22635 m/s after 0.075649 s, draw at 0.74212 m/s after 0.680841 s. Tolerance 1e-5
+// relative (the published figures have six significant digits).
 TEST(Cloth, FollowAndDrawRollSpeedsAndTimes) {
   const auto spec = openSpec();
   struct Case {

@@ -48,7 +48,7 @@ Rebound bank(double side) {
 
 TEST(Cushion, RunningEnglishWidensAndReverseNarrowsTheRebound) {
   const Rebound none = bank(0.0);
-  const Rebound running = bank(0.4);   // right English on a ball going left along the rail
+  const Rebound running = bank(0.4);  // right English on a ball going left along the rail
   const Rebound reverse = bank(-0.4);
   ASSERT_GT(none.speed, 0.0);
   EXPECT_GT(running.angle_from_normal, none.angle_from_normal + 2.0);

@@ -1,4 +1,5 @@
-// Shared fixtures of the physics tests: an open cloth without cushions, and helpers to run one ball.
+// Shared fixtures of the physics tests: an open cloth without cushions, and helpers to run one
+// ball.
 #pragma once
 
 #include <cmath>

@@ -1,4 +1,5 @@
-// Pockets are geometry: a ball sent straight in drops; a slow ball at a steep angle rattles on a jaw and stays out.
+// Pockets are geometry: a ball sent straight in drops; a slow ball at a steep angle rattles on a
+// jaw and stays out.
 #include <gtest/gtest.h>
 
 #include "fixtures.h"

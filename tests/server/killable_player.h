@@ -43,9 +43,9 @@ inline int playUntilKilled(std::uint32_t domain) {
 class KillablePlayer {
  public:
   explicit KillablePlayer(std::uint32_t domain)
-      : key_file_(std::filesystem::temp_directory_path() /
-                  ("pool-player-" + std::to_string(::getpid()) + "-" + std::to_string(domain) +
-                   ".key")) {
+      : key_file_(
+            std::filesystem::temp_directory_path() /
+            ("pool-player-" + std::to_string(::getpid()) + "-" + std::to_string(domain) + ".key")) {
     std::filesystem::remove(key_file_);
     int fds[2];
     if (::pipe(fds) != 0) return;

@@ -54,7 +54,9 @@ inline std::vector<std::uint8_t> publicKeyOf(const std::string& client) {
 }
 
 /// The client that seatedMatch seats in `seat`: "a" in 0, "b" in 1.
-inline std::string clientOf(int seat) { return seat == 1 ? "b" : "a"; }
+inline std::string clientOf(int seat) {
+  return seat == 1 ? "b" : "a";
+}
 
 /// `r` signed by the player seatedMatch put in its seat (a command for another seat number is
 /// signed by seat 0's player).

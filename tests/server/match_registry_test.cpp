@@ -80,10 +80,8 @@ TEST(MatchRegistry, RefusalsCarryTheirOutcome) {
   JoinCommand old = seatRequest("a", "srv-1", "Ada");
   old.protocol_version = 0;
   EXPECT_EQ(r.join(old).outcome, JoinOutcome::VersionMismatch);
-  EXPECT_EQ(r.join(withToken("a", "srv-1", JoinAction::Rejoin, 5)).outcome,
-            JoinOutcome::BadToken);
-  EXPECT_EQ(r.join(withToken("a", "srv-1", JoinAction::Leave, 0)).outcome,
-            JoinOutcome::NotAllowed);
+  EXPECT_EQ(r.join(withToken("a", "srv-1", JoinAction::Rejoin, 5)).outcome, JoinOutcome::BadToken);
+  EXPECT_EQ(r.join(withToken("a", "srv-1", JoinAction::Leave, 0)).outcome, JoinOutcome::NotAllowed);
 }
 
 TEST(MatchRegistry, NewMatchesAreCreatedOnDemandUntilTheServerIsFull) {
@@ -105,7 +103,7 @@ TEST(MatchRegistry, CreatedMatchesCloseWhenEveryoneLeft) {
   ASSERT_TRUE(r.join(withToken("a", a.match, JoinAction::Leave, a.token)).accepted());
   EXPECT_EQ(r.sweepEmpty(), std::vector<std::string>{a.match});
   EXPECT_EQ(r.find(a.match), nullptr);
-  EXPECT_NE(r.find("srv-1"), nullptr);  // opened by the server: stays
+  EXPECT_NE(r.find("srv-1"), nullptr);                               // opened by the server: stays
   EXPECT_EQ(r.join(seatRequest("b", "new", "Bob")).match, "srv-3");  // ids are never reused
 }
 

@@ -100,8 +100,8 @@ inline net::ShotRequest anyLegalShot(const pool_MatchState& state, const Seated&
     const auto option = net::fromWire(state.options._buffer[i]);
     if (option && net::optionShoots(*option)) r.option = *option;
   }
-  const bool in_hand = state.ball_in_hand != pool_IN_HAND_NONE ||
-                       r.option == net::ShotOption::BallInHand;
+  const bool in_hand =
+      state.ball_in_hand != pool_IN_HAND_NONE || r.option == net::ShotOption::BallInHand;
   if (in_hand) r.cue_ball_at = Eigen::Vector2d(-0.9, 0.3);
   return r;
 }

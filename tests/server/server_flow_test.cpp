@@ -66,7 +66,8 @@ TEST_F(ServerFlow, ASpectatorJoiningMidMatchGetsTheStateAtOnceAndLaterShots) {
 
   // A late joiner: the latest state (transient-local) arrives without asking.
   TestClient watcher(kSpectator, "w");
-  const auto* seen = watcher.waitState(s.match, [](auto& st) { return st.shot_number == 1; }, 5s);
+  const auto* seen = watcher.waitState(
+      s.match, [](auto& st) { return st.shot_number == 1; }, 5s);
   ASSERT_NE(seen, nullptr);
   EXPECT_EQ(watcher.states.size(), 1u) << "only the latest state, not the history";
   ASSERT_EQ(seen->balls._length, played->balls._length);
@@ -79,9 +80,8 @@ TEST_F(ServerFlow, ASpectatorJoiningMidMatchGetsTheStateAtOnceAndLaterShots) {
   ASSERT_TRUE(joined);
   EXPECT_EQ(joined->outcome, pool_JOIN_ACCEPTED);
   EXPECT_EQ(joined->seat_token, 0u);
-  EXPECT_TRUE(watcher.waitUntil([&] {
-    return !watcher.infos.empty() && watcher.infos.back()->spectators == 1;
-  }));
+  EXPECT_TRUE(watcher.waitUntil(
+      [&] { return !watcher.infos.empty() && watcher.infos.back()->spectators == 1; }));
 
   // The next shot reaches the spectator too.
   const int shooter = played->shooter;

@@ -34,7 +34,8 @@ TEST_F(ServerPresence, AKilledPlayerRejoinsWithTheTokenWithinTheGrace) {
   // Killed: nothing said on the wire; its JoinRequest writer's lease (5 s) runs out.
   const auto killed = std::chrono::steady_clock::now();
   bob.kill();
-  const auto* away = a.waitState(s.match, [](auto& st) { return !st.seats[1].connected; }, 20s);
+  const auto* away = a.waitState(
+      s.match, [](auto& st) { return !st.seats[1].connected; }, 20s);
   ASSERT_NE(away, nullptr);
   const auto noticed = std::chrono::steady_clock::now() - killed;
   EXPECT_GT(noticed, net::qos::kPlayerLease / 2) << "away before the lease could run out";
@@ -76,7 +77,8 @@ TEST_F(ServerPresence, PastTheGraceTheMatchIsForfeitedToTheOpponent) {
   ASSERT_NE(a.waitState(s.match, [](auto& st) { return st.phase == pool_PHASE_BREAK; }), nullptr);
   const auto gone = std::chrono::steady_clock::now();
   b.reset();
-  const auto* over = a.waitState(s.match, [](auto& st) { return st.phase == pool_PHASE_OVER; }, 8s);
+  const auto* over = a.waitState(
+      s.match, [](auto& st) { return st.phase == pool_PHASE_OVER; }, 8s);
   ASSERT_NE(over, nullptr);
   EXPECT_GE(std::chrono::steady_clock::now() - gone, 900ms);
   EXPECT_EQ(over->winner, 0);

@@ -18,8 +18,8 @@ pool_RejectReason answerTo(TestClient& observer, TestClient& sender,
                            const pool_ShotCommand& command) {
   const std::size_t from = observer.mark();
   sender.send(command);
-  const auto* answer = observer.waitAnswer(std::string(net::textOf(command.match)), command.seat,
-                                         command.seq, from);
+  const auto* answer =
+      observer.waitAnswer(std::string(net::textOf(command.match)), command.seat, command.seq, from);
   EXPECT_NE(answer, nullptr) << "no answer to seq " << command.seq;
   if (answer && !answer->accepted) {
     EXPECT_NE(answer->reject_text[0], '\0');
@@ -102,9 +102,9 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   net::signCommand(rebreak, b.key());
   const auto rebreak_bytes = net::toWire(rebreak);
   EXPECT_EQ(answerTo(a, b, *rebreak_bytes), pool_REJECT_NONE);
-  ASSERT_NE(b.waitState(s.match, [](auto& st) {
-    return st.phase == pool_PHASE_BREAK && st.shooter == 1;
-  }), nullptr);
+  ASSERT_NE(b.waitState(s.match,
+                        [](auto& st) { return st.phase == pool_PHASE_BREAK && st.shooter == 1; }),
+            nullptr);
   // The same bytes again, by anyone: a replay.
   EXPECT_EQ(answerTo(a, a, *rebreak_bytes), pool_REJECT_STALE_SEQUENCE);
   EXPECT_EQ(answerTo(a, b, softShot(s, 1, 6)), pool_REJECT_NONE);

@@ -127,34 +127,37 @@ class TestClient {
   /// satisfies `also`, waiting for it; null on timeout.
   const pool_ShotResult* waitResult(const std::string& match, int seat, std::uint32_t seq,
                                     const std::function<bool(const pool_ShotResult&)>& also,
-                                    std::size_t from = 0,
-                                    std::chrono::milliseconds timeout = 10s) {
+                                    std::size_t from = 0, std::chrono::milliseconds timeout = 10s) {
     const pool_ShotResult* found = nullptr;
-    waitUntil([&] {
-      for (std::size_t i = from; i < results.size(); ++i) {
-        const pool_ShotResult& r = *results[i];
-        if (net::textOf(r.match) == match && r.seat == seat && r.seq == seq && also(r)) {
-          found = &r;
-          return true;
-        }
-      }
-      return false;
-    }, timeout);
+    waitUntil(
+        [&] {
+          for (std::size_t i = from; i < results.size(); ++i) {
+            const pool_ShotResult& r = *results[i];
+            if (net::textOf(r.match) == match && r.seat == seat && r.seq == seq && also(r)) {
+              found = &r;
+              return true;
+            }
+          }
+          return false;
+        },
+        timeout);
     return found;
   }
 
   /// The first answer (accepted or not) to a command recorded from index `from` on.
   const pool_ShotResult* waitAnswer(const std::string& match, int seat, std::uint32_t seq,
                                     std::size_t from = 0) {
-    return waitResult(match, seat, seq, [](const pool_ShotResult&) { return true; }, from);
+    return waitResult(
+        match, seat, seq, [](const pool_ShotResult&) { return true; }, from);
   }
 
   /// The final result of an accepted command (with its verdict), waiting for it.
   const pool_ShotResult* waitFinal(const std::string& match, int seat, std::uint32_t seq,
                                    std::chrono::milliseconds timeout = 20s) {
-    return waitResult(match, seat, seq, [](const pool_ShotResult& r) {
-      return r.accepted && r.verdict_text[0] != '\0';
-    }, 0, timeout);
+    return waitResult(
+        match, seat, seq,
+        [](const pool_ShotResult& r) { return r.accepted && r.verdict_text[0] != '\0'; }, 0,
+        timeout);
   }
 
   /// The latest recorded MatchState of `match`, or null.
@@ -170,10 +173,12 @@ class TestClient {
   const pool_MatchState* waitState(const std::string& match,
                                    const std::function<bool(const pool_MatchState&)>& ok,
                                    std::chrono::milliseconds timeout = 10s) {
-    waitUntil([&] {
-      const auto* s = latestState(match);
-      return s && ok(*s);
-    }, timeout);
+    waitUntil(
+        [&] {
+          const auto* s = latestState(match);
+          return s && ok(*s);
+        },
+        timeout);
     const auto* s = latestState(match);
     return s && ok(*s) ? s : nullptr;
   }

@@ -39,7 +39,8 @@ TEST_F(InOtherDirectory, FindsTheShippedAssets) {
   EXPECT_TRUE(dir.is_absolute()) << dir;
   const auto spec = findAsset("tables/wpa-9ft.json");
   ASSERT_TRUE(spec.has_value());
-  EXPECT_TRUE(fs::equivalent(*spec, fs::path(POOL_SOURCE_DIR) / "assets" / "tables" / "wpa-9ft.json"));
+  EXPECT_TRUE(
+      fs::equivalent(*spec, fs::path(POOL_SOURCE_DIR) / "assets" / "tables" / "wpa-9ft.json"));
   EXPECT_FALSE(findAsset("tables/no-such-table.json").has_value());
   const auto loaded = loadTableSpec("wpa-7ft");
   EXPECT_TRUE(loaded) << loaded.error();

@@ -21,7 +21,8 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 
 const std::vector<std::string> kTables{"wpa-9ft", "wpa-8ft", "wpa-7ft"};
-const std::vector<std::string> kRails{"head", "foot", "head_left", "foot_left", "head_right", "foot_right"};
+const std::vector<std::string> kRails{"head",      "foot",       "head_left",
+                                      "foot_left", "head_right", "foot_right"};
 const std::vector<std::string> kPockets{"head_left_corner",  "left_side",  "foot_left_corner",
                                         "head_right_corner", "right_side", "foot_right_corner"};
 
@@ -55,12 +56,15 @@ const MeshPart* part(const TableGeometry& g, const std::string& name) {
 
 /// The corner where two rail nose lines meet, or the side pocket's point on the nose line.
 Vec2 pocketReference(const TableSpec& s, const std::string& pocket) {
-  const double x = pocket.starts_with("head") ? -s.length / 2.0 : pocket.starts_with("foot") ? s.length / 2.0 : 0.0;
+  const double x = pocket.starts_with("head")   ? -s.length / 2.0
+                   : pocket.starts_with("foot") ? s.length / 2.0
+                                                : 0.0;
   const double y = pocket.find("left") != std::string::npos ? s.width / 2.0 : -s.width / 2.0;
   return {x, y};
 }
 
-/// A facing's jaw point (shared with a rail's end), the rail that ends there and the facing's far end.
+/// A facing's jaw point (shared with a rail's end), the rail that ends there and the facing's far
+/// end.
 struct Facing {
   Vec2 point, far, rail_other_end;
   NoseSegment segment;
@@ -81,7 +85,8 @@ std::vector<Facing> facingsOf(const TableGeometry& g, const std::string& pocket)
 }
 
 double angleDeg(const Vec2& u, const Vec2& v) {
-  return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) * 180.0 /
+         std::numbers::pi;
 }
 
 TEST(TableGeometry, HasSixRailsAndTwelveFacings) {
@@ -101,8 +106,10 @@ TEST(TableGeometry, RailsLieOnThePlayingSurfaceEdges) {
     const double hl = s.length / 2.0, hw = s.width / 2.0;
     EXPECT_DOUBLE_EQ(nosesNamed(g, "head")[0].a.x(), -hl);
     EXPECT_DOUBLE_EQ(nosesNamed(g, "foot")[0].b.x(), hl);
-    for (const char* r : {"head_left", "foot_left"}) EXPECT_DOUBLE_EQ(nosesNamed(g, r)[0].a.y(), hw) << r;
-    for (const char* r : {"head_right", "foot_right"}) EXPECT_DOUBLE_EQ(nosesNamed(g, r)[0].a.y(), -hw) << r;
+    for (const char* r : {"head_left", "foot_left"})
+      EXPECT_DOUBLE_EQ(nosesNamed(g, r)[0].a.y(), hw) << r;
+    for (const char* r : {"head_right", "foot_right"})
+      EXPECT_DOUBLE_EQ(nosesNamed(g, r)[0].a.y(), -hw) << r;
     for (const char* r : {"head_left", "head_right"}) {
       EXPECT_LT(std::max(nosesNamed(g, r)[0].a.x(), nosesNamed(g, r)[0].b.x()), 0.0) << r;
     }
@@ -131,8 +138,9 @@ TEST(TableGeometry, MouthsAndJawAnglesMatchTheSpec) {
       const Vec2 ref = pocketReference(s, pocket);
       for (const Facing& f : facings) {
         const Vec2 rail_dir = (f.point - f.rail_other_end).normalized();
-        const Vec2 outward = Vec2(-rail_dir.y(), rail_dir.x()).dot(f.point) > 0 ? Vec2(-rail_dir.y(), rail_dir.x())
-                                                                                 : Vec2(rail_dir.y(), -rail_dir.x());
+        const Vec2 outward = Vec2(-rail_dir.y(), rail_dir.x()).dot(f.point) > 0
+                                 ? Vec2(-rail_dir.y(), rail_dir.x())
+                                 : Vec2(rail_dir.y(), -rail_dir.x());
         EXPECT_NEAR((f.far - f.point).dot(outward), s.cushion_width, 1e-12);
         EXPECT_LT((f.point - ref).norm(), ps.mouth);  // the jaw point is near its pocket
       }
@@ -179,12 +187,14 @@ TEST(TableGeometry, HolesAreWhereTheSpecPutsThem) {
       const PocketHole& h = hole(g, pocket);
       const Vec2 ref = pocketReference(s, pocket);
       // Corners: the pocket's axis of symmetry (45°), away from the table; sides: straight out.
-      const Vec2 away = corner ? Vec2(ref.x() > 0 ? 1.0 : -1.0, ref.y() > 0 ? 1.0 : -1.0) / std::sqrt(2.0)
-                               : Vec2(0.0, ref.y() > 0 ? 1.0 : -1.0);
+      const Vec2 away =
+          corner ? Vec2(ref.x() > 0 ? 1.0 : -1.0, ref.y() > 0 ? 1.0 : -1.0) / std::sqrt(2.0)
+                 : Vec2(0.0, ref.y() > 0 ? 1.0 : -1.0);
       EXPECT_NEAR((h.centre - (ref + ps.hole_offset * away)).norm(), 0.0, 1e-12);
       EXPECT_DOUBLE_EQ(h.radius, ps.hole_radius);
       for (const Facing& f : facingsOf(g, pocket)) {
-        EXPECT_GT((f.point - h.centre).norm(), h.radius + 0.01);  // the hole stays clear of the jaw points
+        EXPECT_GT((f.point - h.centre).norm(),
+                  h.radius + 0.01);  // the hole stays clear of the jaw points
       }
       // How far past the mouth line a ball centre travels (straight in) before it is over the hole.
       const auto facings = facingsOf(g, pocket);
@@ -211,7 +221,9 @@ Vec3 triNormal(const MeshPart& p, const std::array<std::uint32_t, 3>& t) {
 double pointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = (b - a).cross(c - a).normalized();
   const Vec3 q = p - n * (p - a).dot(n);
-  const auto inside = [&](const Vec3& u, const Vec3& v) { return (v - u).cross(q - u).dot(n) >= 0.0; };
+  const auto inside = [&](const Vec3& u, const Vec3& v) {
+    return (v - u).cross(q - u).dot(n) >= 0.0;
+  };
   if (inside(a, b) && inside(b, c) && inside(c, a)) return (p - q).norm();
   const auto seg = [&](const Vec3& u, const Vec3& v) {
     const double t = std::clamp((p - u).dot(v - u) / (v - u).squaredNorm(), 0.0, 1.0);
@@ -224,8 +236,10 @@ TEST(TableMesh, HasEveryPartWithSaneTriangles) {
   const TableSpec s = spec("wpa-9ft");
   const TableGeometry g = buildTableGeometry(s);
   std::vector<std::string> expected{"slate", "trough"};
-  for (const std::string& r : kRails) expected.insert(expected.end(), {"cushion_" + r, "rail_" + r});
-  for (const std::string& p : kPockets) expected.insert(expected.end(), {"jaw_" + p, "pocket_" + p});
+  for (const std::string& r : kRails)
+    expected.insert(expected.end(), {"cushion_" + r, "rail_" + r});
+  for (const std::string& p : kPockets)
+    expected.insert(expected.end(), {"jaw_" + p, "pocket_" + p});
   std::size_t total = 0;
   for (const std::string& name : expected) {
     const MeshPart* p = part(g, name);
@@ -279,7 +293,8 @@ TEST(TableMesh, PocketLinersFaceTheirAxis) {
 /// Signed volume of a part (positive when a closed part's triangles face outward).
 double signedVolume(const MeshPart& p) {
   double v = 0.0;
-  for (const auto& t : p.triangles) v += p.vertices[t[0]].dot(p.vertices[t[1]].cross(p.vertices[t[2]])) / 6.0;
+  for (const auto& t : p.triangles)
+    v += p.vertices[t[0]].dot(p.vertices[t[1]].cross(p.vertices[t[2]])) / 6.0;
   return v;
 }
 
@@ -324,8 +339,9 @@ TEST(TableMesh, ABallTouchingANoseTouchesNothingElse) {
         for (const MeshPart& p : g.parts) {
           if (!p.name.starts_with("cushion_") && !p.name.starts_with("jaw_")) continue;
           for (const auto& tri : p.triangles) {
-            nearest = std::min(nearest, pointTriangleDistance(centre, p.vertices[tri[0]], p.vertices[tri[1]],
-                                                              p.vertices[tri[2]]));
+            nearest =
+                std::min(nearest, pointTriangleDistance(centre, p.vertices[tri[0]],
+                                                        p.vertices[tri[1]], p.vertices[tri[2]]));
           }
         }
         EXPECT_NEAR(nearest, r, 1e-9) << name << " " << n.name << " at " << t;
@@ -338,13 +354,15 @@ TEST(TableMesh, ABallTouchingANoseTouchesNothingElse) {
 
 TEST(TableObj, CommittedMeshesAreReproducible) {
   for (const std::string& name : kTables) {
-    const std::filesystem::path path = std::filesystem::path(POOL_SOURCE_DIR) / "assets" / "tables" / (name + ".obj");
+    const std::filesystem::path path =
+        std::filesystem::path(POOL_SOURCE_DIR) / "assets" / "tables" / (name + ".obj");
     std::ifstream in(path, std::ios::binary);
     ASSERT_TRUE(in) << path;
     std::stringstream committed;
     committed << in.rdbuf();
     EXPECT_TRUE(committed.str() == toObj(buildTableGeometry(spec(name))))
-        << path << " is stale: regenerate it with `pool-tablegen " << name << " -o " << path.string() << "`";
+        << path << " is stale: regenerate it with `pool-tablegen " << name << " -o "
+        << path.string() << "`";
   }
 }
 
@@ -394,7 +412,8 @@ TEST(TableObj, AssimpRoundTripMatchesTheBuiltGeometry) {
       for (std::size_t t = 0; t < a.triangles.size(); ++t) {
         for (int k = 0; k < 3; ++k) {
           const auto kk = static_cast<std::size_t>(k);
-          worst = std::max(worst, (a.vertices[a.triangles[t][kk]] - b.vertices[b.triangles[t][kk]]).norm());
+          worst = std::max(
+              worst, (a.vertices[a.triangles[t][kk]] - b.vertices[b.triangles[t][kk]]).norm());
         }
       }
       EXPECT_LT(worst, 1e-6) << b.name;
@@ -411,7 +430,8 @@ TEST(TableObj, LoadFailuresAreReasons) {
   s.collision_mesh = "/nonexistent/table.obj";
   const auto missing = loadTableGeometry(s);
   ASSERT_FALSE(missing);
-  EXPECT_TRUE(missing.error().starts_with("collision_mesh: /nonexistent/table.obj")) << missing.error();
+  EXPECT_TRUE(missing.error().starts_with("collision_mesh: /nonexistent/table.obj"))
+      << missing.error();
   EXPECT_EQ(missing.error().find('\n'), std::string::npos) << missing.error();
 }
 

@@ -32,16 +32,19 @@ const BallPlacement& ball(const std::vector<BallPlacement>& rack, int id) {
 void expectNoOverlap(const std::vector<BallPlacement>& rack) {
   for (std::size_t i = 0; i < rack.size(); ++i) {
     for (std::size_t k = i + 1; k < rack.size(); ++k) {
-      EXPECT_GE((rack[i].pos - rack[k].pos).norm(), 2.0 * kR - 1e-12) << rack[i].id << " and " << rack[k].id;
+      EXPECT_GE((rack[i].pos - rack[k].pos).norm(), 2.0 * kR - 1e-12)
+          << rack[i].id << " and " << rack[k].id;
     }
   }
 }
 
 /// The ball nearest to a point.
 int idAt(const std::vector<BallPlacement>& rack, const Vec2& p) {
-  return std::min_element(rack.begin(), rack.end(), [&](const BallPlacement& a, const BallPlacement& b) {
-           return (a.pos - p).norm() < (b.pos - p).norm();
-         })->id;
+  return std::min_element(rack.begin(), rack.end(),
+                          [&](const BallPlacement& a, const BallPlacement& b) {
+                            return (a.pos - p).norm() < (b.pos - p).norm();
+                          })
+      ->id;
 }
 
 TEST(Spots, QuarterLengthsFromTheCushions) {
@@ -70,8 +73,9 @@ TEST(EightBallRack, LayoutFollowsTheRules) {
     for (const BallPlacement& b : rack) ids.insert(b.id);
     ASSERT_EQ(ids, (std::set<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}));
     expectNoOverlap(rack);
-    EXPECT_TRUE(std::any_of(rack.begin(), rack.end(), [&](const BallPlacement& b) { return b.pos == foot; }))
-        << "apex exactly on the foot spot";
+    EXPECT_TRUE(std::any_of(rack.begin(), rack.end(), [&](const BallPlacement& b) {
+      return b.pos == foot;
+    })) << "apex exactly on the foot spot";
     EXPECT_LT((ball(rack, 8).pos - (foot + Vec2(2.0 * row, 0.0))).norm(), 1e-12);
     const int left = idAt(rack, foot + Vec2(4.0 * row, 2.0 * pitch));
     const int right = idAt(rack, foot + Vec2(4.0 * row, -2.0 * pitch));
@@ -80,7 +84,8 @@ TEST(EightBallRack, LayoutFollowsTheRules) {
     EXPECT_NE(left_solid, right_solid) << "seed " << seed;
     EXPECT_NE(left, 8);
     EXPECT_NE(right, 8);
-    for (const BallPlacement& b : rack) EXPECT_GE(b.pos.x(), foot.x());  // rows toward the foot cushion
+    for (const BallPlacement& b : rack)
+      EXPECT_GE(b.pos.x(), foot.x());  // rows toward the foot cushion
   }
 }
 
@@ -116,7 +121,8 @@ TEST(EightBallRack, SeedsAreDeterministicAndMatter) {
 }
 
 TEST(EightBallRack, PinnedLayoutForSeedZero) {
-  // The shuffle is our own PRNG, so this holds on every platform. Slot order: row by row from the apex, each row from −y to +y.
+  // The shuffle is our own PRNG, so this holds on every platform. Slot order: row by row from the
+  // apex, each row from −y to +y.
   const auto rack = rackBalls(RackType::EightBall, nineFoot(), kR, 0);
   std::vector<int> ids;
   for (const BallPlacement& b : rack) ids.push_back(b.id);

@@ -3,8 +3,8 @@
 
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -62,8 +62,9 @@ struct Dimensions {
 };
 
 TEST(TableSpec, LoadsTheShippedTablesByName) {
-  for (const Dimensions& d : {Dimensions{"wpa-9ft", 2.54, 1.27}, Dimensions{"wpa-8ft", 2.3368, 1.1684},
-                              Dimensions{"wpa-7ft", 1.9812, 0.9906}}) {
+  for (const Dimensions& d :
+       {Dimensions{"wpa-9ft", 2.54, 1.27}, Dimensions{"wpa-8ft", 2.3368, 1.1684},
+        Dimensions{"wpa-7ft", 1.9812, 0.9906}}) {
     SCOPED_TRACE(d.name);
     const auto spec = loadTableSpec(d.name);
     ASSERT_TRUE(spec) << spec.error();
@@ -155,14 +156,18 @@ TEST(TableSpec, BadFieldsGiveOneLineReasonsNamingTheField) {
     std::string reason;
   };
   const std::vector<Case> cases{
-      {[](json& j) { j["corner"].erase("mouth"); }, "corner.mouth: missing (must be a finite number > 0)"},
+      {[](json& j) { j["corner"].erase("mouth"); },
+       "corner.mouth: missing (must be a finite number > 0)"},
       {[](json& j) { j["corner"]["mouth"] = "wide"; }, "corner.mouth: must be a finite number > 0"},
       {[](json& j) { j["corner"]["mouth"] = -0.1; }, "corner.mouth: must be a finite number > 0"},
       {[](json& j) { j["length"] = nullptr; }, "length: must be a finite number > 0"},
       {[](json& j) { j.erase("width"); }, "width: missing (must be a finite number > 0)"},
-      {[](json& j) { j["side"]["jaw_angle_deg"] = 80; }, "side.jaw_angle_deg: must be a finite number in (90, 180)"},
-      {[](json& j) { j["side"]["hole_offset"] = true; }, "side.hole_offset: must be a finite number"},
-      {[](json& j) { j["slate_thickness"] = 0.2; }, "slate_thickness: must be a finite number in (0, 0.05]"},
+      {[](json& j) { j["side"]["jaw_angle_deg"] = 80; },
+       "side.jaw_angle_deg: must be a finite number in (90, 180)"},
+      {[](json& j) { j["side"]["hole_offset"] = true; },
+       "side.hole_offset: must be a finite number"},
+      {[](json& j) { j["slate_thickness"] = 0.2; },
+       "slate_thickness: must be a finite number in (0, 0.05]"},
       {[](json& j) { j["side"] = 3; }, "side: must be an object"},
       {[](json& j) { j.erase("corner"); }, "corner: missing (must be an object)"},
       {[](json& j) { j["lenght"] = 2.5; }, "lenght: unknown field"},
@@ -171,16 +176,21 @@ TEST(TableSpec, BadFieldsGiveOneLineReasonsNamingTheField) {
       {[](json& j) { j["collision_mesh"] = json::array(); }, "collision_mesh: must be a string"},
       {[](json& j) { j["params"] = 1; }, "params: must be an object"},
       {[](json& j) { j["params"]["u_s"] = 5; }, "params.u_s: must be a finite number in (0, 2]"},
-      {[](json& j) { j["params"]["u_s"] = "fast"; }, "params.u_s: must be a finite number in (0, 2]"},
-      {[](json& j) { j["params"]["e_c"] = nullptr; }, "params.e_c: must be a finite number in [0, 1]"},
+      {[](json& j) { j["params"]["u_s"] = "fast"; },
+       "params.u_s: must be a finite number in (0, 2]"},
+      {[](json& j) { j["params"]["e_c"] = nullptr; },
+       "params.e_c: must be a finite number in [0, 1]"},
       {[](json& j) { j["params"]["mu"] = 0.2; }, "params.mu: unknown parameter"},
       {[](json& j) { j["params"]["cushion_height"] = 0.02; },
        "params.cushion_height: must be above ball_radius and below 2 * ball_radius"},
       {[](json& j) { j["length"] = 0.2; }, "length: too short for its pockets"},
       {[](json& j) { j["width"] = 0.1; }, "width: too narrow for its pockets"},
-      {[](json& j) { j["corner"]["mouth"] = 0.05; }, "corner.mouth: must be wider than a ball (2 * ball_radius)"},
-      {[](json& j) { j["side"]["hole_radius"] = 0.02; }, "side.hole_radius: must be larger than ball_radius"},
-      {[](json& j) { j["corner"]["hole_radius"] = 0.13; }, "corner.hole_radius: the hole reaches beyond the rail"},
+      {[](json& j) { j["corner"]["mouth"] = 0.05; },
+       "corner.mouth: must be wider than a ball (2 * ball_radius)"},
+      {[](json& j) { j["side"]["hole_radius"] = 0.02; },
+       "side.hole_radius: must be larger than ball_radius"},
+      {[](json& j) { j["corner"]["hole_radius"] = 0.13; },
+       "corner.hole_radius: the hole reaches beyond the rail"},
       {[](json& j) {
          j["corner"]["hole_offset"] = -0.03;
          j["corner"]["hole_radius"] = 0.08;
@@ -216,10 +226,10 @@ TEST(TableSpec, FileLevelFailures) {
 }
 
 TEST(PhysicsParams, NamesFollowTheContract) {
-  const std::vector<std::string_view> expected{"u_s",         "u_r",           "spin_decel", "e_b",       "u_b",
-                                               "e_c",         "u_c",           "e_slate",    "cushion_height",
-                                               "ball_mass",   "ball_radius",   "cue_mass",   "cue_end_mass",
-                                               "miscue_limit"};
+  const std::vector<std::string_view> expected{
+      "u_s",          "u_r",         "spin_decel",     "e_b",       "u_b",         "e_c",
+      "u_c",          "e_slate",     "cushion_height", "ball_mass", "ball_radius", "cue_mass",
+      "cue_end_mass", "miscue_limit"};
   EXPECT_EQ(paramNames(), expected);
 }
 
@@ -227,8 +237,8 @@ TEST(PhysicsParams, SetParamAcceptsInRangeValues) {
   PhysicsParams p;
   EXPECT_EQ(setParam(p, "u_s", 0.25), "");
   EXPECT_DOUBLE_EQ(p.u_s, 0.25);
-  EXPECT_EQ(setParam(p, "u_s", 2.0), "");  // closed upper end
-  EXPECT_EQ(setParam(p, "u_r", 1.0), "");  // closed upper end
+  EXPECT_EQ(setParam(p, "u_s", 2.0), "");                                   // closed upper end
+  EXPECT_EQ(setParam(p, "u_r", 1.0), "");                                   // closed upper end
   EXPECT_EQ(setParam(p, "u_r", 0.0), "must be a finite number in (0, 1]");  // would roll for ever
   EXPECT_EQ(setParam(p, "u_b", 0.06), "");
   ASSERT_TRUE(p.u_b.has_value());
@@ -261,13 +271,20 @@ TEST(PhysicsParams, SetParamRejectsAndLeavesValuesAlone) {
 TEST(PhysicsParams, EveryNameAcceptsItsTypicalValue) {
   const PhysicsParams d;
   const std::vector<std::pair<std::string_view, double>> typical{
-      {"u_s", d.u_s},         {"u_r", d.u_r},
-      {"spin_decel", d.spin_decel}, {"e_b", d.e_b},
-      {"u_b", 0.06},          {"e_c", d.e_c},
-      {"u_c", d.u_c},         {"e_slate", d.e_slate},
-      {"cushion_height", d.cushion_height}, {"ball_mass", d.ball_mass},
-      {"ball_radius", d.ball_radius}, {"cue_mass", d.cue_mass},
-      {"cue_end_mass", d.cue_end_mass}, {"miscue_limit", d.miscue_limit}};
+      {"u_s", d.u_s},
+      {"u_r", d.u_r},
+      {"spin_decel", d.spin_decel},
+      {"e_b", d.e_b},
+      {"u_b", 0.06},
+      {"e_c", d.e_c},
+      {"u_c", d.u_c},
+      {"e_slate", d.e_slate},
+      {"cushion_height", d.cushion_height},
+      {"ball_mass", d.ball_mass},
+      {"ball_radius", d.ball_radius},
+      {"cue_mass", d.cue_mass},
+      {"cue_end_mass", d.cue_end_mass},
+      {"miscue_limit", d.miscue_limit}};
   ASSERT_EQ(typical.size(), paramNames().size());
   PhysicsParams p;
   for (const auto& [name, value] : typical) EXPECT_EQ(setParam(p, name, value), "") << name;

@@ -10,7 +10,7 @@
 namespace pool::bot {
 namespace {
 
-constexpr std::array<double, 3> kBackOff{0.18, 0.32, 0.5};   // m behind the ghost point
+constexpr std::array<double, 3> kBackOff{0.18, 0.32, 0.5};           // m behind the ghost point
 constexpr std::array<double, 5> kAngles{0.0, 0.3, -0.3, 0.6, -0.6};  // rad off the pot line
 // Kitchen grid: distances behind the head string (m) and lateral steps.
 constexpr std::array<double, 3> kKitchenDepth{0.02, 0.2, 0.4};
@@ -103,9 +103,8 @@ std::vector<Vec2> restingSpots(const PlanContext& context) {
   std::vector<Vec2> spots;
   const Vec2 head = context.view.context.spots.head_spot;
   const double hs = context.view.headStringX();
-  const std::array<Vec2, 5> tries{Vec2(hs - 0.1, 0.0), Vec2(hs - 0.1, 0.25),
-                                  Vec2(hs - 0.1, -0.25), Vec2(head.x() - 0.3, 0.0),
-                                  Vec2(0.0, 0.0)};
+  const std::array<Vec2, 5> tries{Vec2(hs - 0.1, 0.0), Vec2(hs - 0.1, 0.25), Vec2(hs - 0.1, -0.25),
+                                  Vec2(head.x() - 0.3, 0.0), Vec2(0.0, 0.0)};
   for (const Vec2& at : tries) {
     if (placementLegal(context, at)) spots.push_back(at);
   }

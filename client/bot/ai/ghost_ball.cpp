@@ -98,8 +98,8 @@ double potSpeed(const PotLine& line, const table::PhysicsParams& params) {
   const double roll_decel = params.u_r * physics::kGravity;
   // A struck or hit ball slides first and keeps 5/7 of its speed once it rolls.
   constexpr double kSlideLoss = 7.0 / 5.0;
-  const double object_roll = std::sqrt(kArrivalSpeed * kArrivalSpeed +
-                                       2 * roll_decel * line.object_distance);
+  const double object_roll =
+      std::sqrt(kArrivalSpeed * kArrivalSpeed + 2 * roll_decel * line.object_distance);
   const double transfer = std::max(std::cos(line.cut), 0.2) * (1 + params.e_b) / 2;
   const double cue_at_contact = kSlideLoss * object_roll / transfer;
   const double cue_roll =

@@ -14,14 +14,14 @@ namespace pool::bot {
 /// One way to pot one ball: the cue ball rolls straight to the ghost-ball point, the object ball
 /// goes straight to the pocket. Table frame, metres, radians.
 struct PotLine {
-  int ball = 0;         ///< object ball id
-  int pocket = -1;      ///< index into TableView::pockets
-  Vec2 cue;             ///< cue ball centre
-  Vec2 object;          ///< object ball centre
-  Vec2 target;          ///< where the object ball is sent (the pocket mouth)
-  Vec2 ghost;           ///< cue ball centre at contact
-  double yaw = 0.0;     ///< heading of the cue ball, rad (0 = +x)
-  double cut = 0.0;     ///< angle between the cue ball's path and the object ball's, rad
+  int ball = 0;                  ///< object ball id
+  int pocket = -1;               ///< index into TableView::pockets
+  Vec2 cue;                      ///< cue ball centre
+  Vec2 object;                   ///< object ball centre
+  Vec2 target;                   ///< where the object ball is sent (the pocket mouth)
+  Vec2 ghost;                    ///< cue ball centre at contact
+  double yaw = 0.0;              ///< heading of the cue ball, rad (0 = +x)
+  double cut = 0.0;              ///< angle between the cue ball's path and the object ball's, rad
   double cue_distance = 0.0;     ///< cue ball centre to ghost point, m
   double object_distance = 0.0;  ///< object ball centre to target, m
   double difficulty = 0.0;       ///< larger is harder (dimensionless, for ranking only)

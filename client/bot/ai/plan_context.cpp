@@ -18,7 +18,9 @@ PlannedShot PlanContext::blank(ShotKind kind) const {
   return shot;
 }
 
-std::vector<int> PlanContext::legalBalls() const { return rules::legalFirstBalls(play_state, balls); }
+std::vector<int> PlanContext::legalBalls() const {
+  return rules::legalFirstBalls(play_state, balls);
+}
 
 double shooterChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
                       const TableView& view) {

@@ -18,11 +18,11 @@ namespace pool::bot {
 struct PlanContext {
   const TableView& view;
   ShotVerifier& verifier;
-  std::vector<physics::Ball> balls;  ///< the layout at rest, every ball
-  rules::GameState judge_state;      ///< the rules state as it stands (options pending included)
-  rules::GameState play_state;       ///< the state once the chosen option applies
+  std::vector<physics::Ball> balls;     ///< the layout at rest, every ball
+  rules::GameState judge_state;         ///< the rules state as it stands (options pending included)
+  rules::GameState play_state;          ///< the state once the chosen option applies
   std::optional<rules::Choice> choice;  ///< the answer carried with the shot
-  int runs_left = 0;                 ///< physics trials still allowed this turn
+  int runs_left = 0;                    ///< physics trials still allowed this turn
 
   /// Runs `shot` if the budget allows; empty when it is spent.
   std::optional<Trial> tryShot(const PlannedShot& shot);

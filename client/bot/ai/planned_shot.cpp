@@ -7,11 +7,16 @@ namespace pool::bot {
 
 const char* toString(ShotKind kind) {
   switch (kind) {
-    case ShotKind::Break: return "break";
-    case ShotKind::Pot: return "pot";
-    case ShotKind::Safety: return "safety";
-    case ShotKind::Fallback: return "fallback";
-    case ShotKind::Choice: return "choice";
+    case ShotKind::Break:
+      return "break";
+    case ShotKind::Pot:
+      return "pot";
+    case ShotKind::Safety:
+      return "safety";
+    case ShotKind::Fallback:
+      return "fallback";
+    case ShotKind::Choice:
+      return "choice";
   }
   return "unknown";
 }
@@ -35,8 +40,9 @@ std::string describe(const PlannedShot& shot) {
     std::snprintf(text, sizeof text, "choice %s", rules::toString(*shot.choice));
     return text;
   }
-  std::string call = shot.called_ball ? std::to_string(*shot.called_ball) + " in " + shot.called_pocket
-                                      : std::string(shot.safety ? "safety" : "no call");
+  std::string call = shot.called_ball
+                         ? std::to_string(*shot.called_ball) + " in " + shot.called_pocket
+                         : std::string(shot.safety ? "safety" : "no call");
   std::snprintf(text, sizeof text, "%s: %s at %.2f m/s (yaw %.4f)", toString(shot.kind),
                 call.c_str(), shot.cue.speed, shot.cue.yaw);
   std::string line = text;

@@ -27,12 +27,12 @@ const char* toString(ShotKind kind);  ///< "break", "pot", "safety", "fallback",
 struct PlannedShot {
   ShotKind kind = ShotKind::Fallback;
   physics::CueShot cue;
-  std::optional<int> called_ball;                ///< with called_pocket
-  std::string called_pocket;                     ///< pocket name; empty: none
-  bool safety = false;                           ///< a declared safety
-  std::optional<Eigen::Vector2d> cue_ball_at;    ///< ball in hand: place the cue ball here, m
-  std::optional<rules::Choice> choice;           ///< the answer to pending options
-  double value = 0.0;                            ///< the planner's score (for logs)
+  std::optional<int> called_ball;              ///< with called_pocket
+  std::string called_pocket;                   ///< pocket name; empty: none
+  bool safety = false;                         ///< a declared safety
+  std::optional<Eigen::Vector2d> cue_ball_at;  ///< ball in hand: place the cue ball here, m
+  std::optional<rules::Choice> choice;         ///< the answer to pending options
+  double value = 0.0;                          ///< the planner's score (for logs)
 };
 
 /// The shooter's declared intent for the rules.

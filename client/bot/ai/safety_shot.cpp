@@ -34,8 +34,8 @@ void trySafetiesFrom(PlanContext& context, const Vec2& from, const std::optional
   const double r = context.view.radius();
   for (int id : context.legalBalls()) {
     const auto object = ballAt(context.balls, id);
-    if (!object || !pathClear(from, *object - 2 * r * (*object - from).normalized(),
-                              context.balls, r, physics::kCueBall, id)) {
+    if (!object || !pathClear(from, *object - 2 * r * (*object - from).normalized(), context.balls,
+                              r, physics::kCueBall, id)) {
       continue;
     }
     for (double offset : kContact) {

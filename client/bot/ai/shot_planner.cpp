@@ -19,7 +19,8 @@ bool offered(const std::vector<rules::Choice>& options, rules::Choice choice) {
 // The state the shot is played in once `choice` applies (it only changes the ball in hand).
 rules::GameState stateAfterChoice(rules::GameState state, std::optional<rules::Choice> choice) {
   if (!choice) return state;
-  if (*choice == rules::Choice::BallInHand) state.ball_in_hand = rules::BallInHand::BehindHeadString;
+  if (*choice == rules::Choice::BallInHand)
+    state.ball_in_hand = rules::BallInHand::BehindHeadString;
   state.options.clear();
   return state;
 }
@@ -50,8 +51,8 @@ ShotPlanner::ShotPlanner(const TableView& view, PlannerOptions options)
 PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
                               const rules::GameState& state) {
   const auto choice = chooseOption(state.options);
-  PlanContext context{view_, verifier_, balls, state, stateAfterChoice(state, choice), choice,
-                      options_.max_runs};
+  PlanContext context{view_,  verifier_,        balls, state, stateAfterChoice(state, choice),
+                      choice, options_.max_runs};
   if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand) {
     // Re-racking answers carry no stroke (a re-spotted 8 is never chosen: re-breaking is simpler).
     return context.blank(ShotKind::Choice);

@@ -54,12 +54,13 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
   ++runs_;
   Trial trial;
   rules::Shot judged_shot;
-  judged_shot.before = shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, view_.radius())
-                                        : balls;
+  judged_shot.before =
+      shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, view_.radius()) : balls;
   judged_shot.intent = intentOf(shot);
   // Only balls on the table go into the world; the rest stay where they are.
   std::vector<physics::Ball> in_play, down;
-  for (const auto& b : judged_shot.before) (physics::onTable(b.state) ? in_play : down).push_back(b);
+  for (const auto& b : judged_shot.before)
+    (physics::onTable(b.state) ? in_play : down).push_back(b);
   if (auto placed = simulation_.setBalls(in_play); !placed) {
     trial.error = placed.error();
     return trial;

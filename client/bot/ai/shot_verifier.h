@@ -16,13 +16,13 @@ namespace pool::bot {
 
 /// What a shot would do.
 struct Trial {
-  bool judged = false;         ///< the physics ran and the rules judged it
-  std::string error;           ///< why not, when !judged
+  bool judged = false;  ///< the physics ran and the rules judged it
+  std::string error;    ///< why not, when !judged
   rules::Verdict verdict;
   std::vector<physics::Ball> after;  ///< every ball at rest, respots applied
-  bool potted_call = false;    ///< the called ball dropped in the called pocket
-  bool wins = false;           ///< the game ends with the shooter winning
-  bool loses = false;          ///< the game ends with the shooter losing
+  bool potted_call = false;          ///< the called ball dropped in the called pocket
+  bool wins = false;                 ///< the game ends with the shooter winning
+  bool loses = false;                ///< the game ends with the shooter losing
   /// The physics would refuse the layout it leaves (e.g. a ball at rest in a pocket mouth, past
   /// the nose line): the next shot could not be played, so the planner avoids such shots.
   bool dead_layout = false;

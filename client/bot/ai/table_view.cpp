@@ -7,7 +7,9 @@
 namespace pool::bot {
 namespace {
 
-bool isJaw(const table::NoseSegment& nose) { return nose.name.rfind("jaw_", 0) == 0; }
+bool isJaw(const table::NoseSegment& nose) {
+  return nose.name.rfind("jaw_", 0) == 0;
+}
 
 // The two rail-nose end points nearest a hole: the jaw points of its pocket.
 std::pair<Vec2, Vec2> jawPoints(const table::TableGeometry& geometry, const Vec2& hole) {
