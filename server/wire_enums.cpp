@@ -181,6 +181,12 @@ pool_JoinOutcome toWire(JoinOutcome outcome) {
       return pool_JOIN_NOT_ALLOWED;
     case JoinOutcome::ServerFull:
       return pool_JOIN_SERVER_FULL;
+    case JoinOutcome::Unsigned:
+      return pool_JOIN_UNSIGNED;
+    case JoinOutcome::BadSignature:
+      return pool_JOIN_BAD_SIGNATURE;
+    case JoinOutcome::StaleSequence:
+      return pool_JOIN_STALE_SEQUENCE;
   }
   return pool_JOIN_NOT_ALLOWED;
 }

@@ -70,6 +70,8 @@ net::Sample<pool_MatchState> matchState(const Match& match) {
   st.phase = toWire(match.phase());
   st.seats[0] = seatState(match, 0);
   st.seats[1] = seatState(match, 1);
+  st.seat_seq[0] = match.seats()[0].last_seq;
+  st.seat_seq[1] = match.seats()[1].last_seq;
   st.shooter = static_cast<std::int16_t>(match.inPlay() ? game.shooter : -1);
   st.breaker = static_cast<std::int16_t>(started ? game.breaker : -1);
   st.rack = match.rack();
@@ -150,6 +152,7 @@ pool_JoinReply joinReply(const JoinCommand& command, const JoinAnswer& answer,
   net::setText(reply.reason, answer.reason);
   reply.seat = static_cast<std::int16_t>(answer.seat);
   reply.seat_token = answer.token;
+  reply.last_seq = answer.last_seq;
   return reply;
 }
 

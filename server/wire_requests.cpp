@@ -24,6 +24,9 @@ Result<JoinCommand> joinCommand(const pool_JoinRequest& r) {
   c.token = r.seat_token;
   const auto key = net::elementsOf(r.public_key);
   c.public_key.assign(key.begin(), key.end());
+  c.seq = r.seq;
+  const auto signature = net::elementsOf(r.signature);
+  c.signature.assign(signature.begin(), signature.end());
   return Result<JoinCommand>::ok(std::move(c));
 }
 

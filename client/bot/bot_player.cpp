@@ -170,7 +170,7 @@ void BotPlayer::findMatch(double now) {
 }
 
 void BotPlayer::sendJoin(double now) {
-  join_request_ = saved_ ? client_.requestRejoin(saved_->match, saved_->token)
+  join_request_ = saved_ ? client_.requestRejoin(saved_->match, saved_->token, saved_->seat)
                          : client_.requestSeat(target_, -1);
   join_sent_at_ = now;
   stage_ = BotStage::Joining;

@@ -8,6 +8,7 @@
 #include "client/net/wire_read.h"
 #include "net/command_signature.h"
 #include "net/convert.h"
+#include "net/protocol_version.h"
 #include "net/wire_fields.h"
 
 namespace pool::client {
@@ -35,14 +36,29 @@ void GameClient::problem(const std::string& what) {
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
                                    std::uint64_t token) {
-  JoinRequestFields fields{
-      options_.client_id, next_request_++, match, action, seat, options_.name, token,
-      key().publicKey()};
-  pending_[fields.request] = action;
-  if (auto status = endpoints_->join_requests.write(*toWire(fields)); !status) {
+  net::SeatRequest r;
+  r.client = options_.client_id;
+  r.request = next_request_++;
+  r.protocol_version = net::kProtocolVersion;
+  r.match = match;
+  r.action = action;
+  r.seat = seat;
+  r.name = options_.name;
+  r.token = token;
+  pending_[r.request] = PendingJoin{std::move(r), false};
+  send(pending_[next_request_ - 1].request);
+  return next_request_ - 1;
+}
+
+void GameClient::send(net::SeatRequest& r) {
+  r.public_key = key().publicKey();
+  if (net::changesSeat(r)) {
+    r.seq = ++last_seq_;
+    net::signSeatRequest(r, key());
+  }
+  if (auto status = endpoints_->join_requests.write(*toWire(r)); !status) {
     last_problem_ = "join request: " + status.error;
   }
-  return fields.request;
 }
 
 std::uint32_t GameClient::requestSeat(const std::string& match, int seat) {
@@ -53,8 +69,12 @@ std::uint32_t GameClient::requestSpectate(const std::string& match) {
   return sendJoin(match, JoinAction::Spectate, -1, 0);
 }
 
-std::uint32_t GameClient::requestRejoin(const std::string& match, std::uint64_t token) {
-  return sendJoin(match, JoinAction::Rejoin, -1, token);
+std::uint32_t GameClient::requestRejoin(const std::string& match, std::uint64_t token, int seat) {
+  // Continue above the numbers the seat's key used before (a restarted process starts at 0).
+  if (const MatchView* view = state(match); view && (seat == 0 || seat == 1)) {
+    noteSequence(view->seats[static_cast<std::size_t>(seat)].last_seq);
+  }
+  return sendJoin(match, JoinAction::Rejoin, seat, token);
 }
 
 std::uint32_t GameClient::requestLeave(const std::string& match) {
@@ -123,21 +143,28 @@ void GameClient::pollLobby(std::vector<ClientEvent>& out) {
   }
 }
 
-void GameClient::accept(const JoinAnswer& answer) {
+bool GameClient::accept(const JoinAnswer& answer) {
   const auto it = pending_.find(answer.request);
-  const JoinAction action = it->second;
+  PendingJoin& pending = it->second;
+  // The server says which numbers the key has used: ours continue above them.
+  if (pending.request.seq != 0) noteSequence(answer.last_seq);
+  if (answer.outcome == JoinOutcome::StaleSequence && !pending.retried) {
+    // A restarted process with a kept key: the same request once more, numbered above the
+    // server's floor (its answer carries the same request number).
+    pending.retried = true;
+    send(pending.request);
+    return false;
+  }
+  const net::SeatRequest sent = std::move(pending.request);
   pending_.erase(it);
-  if (!answer.accepted()) return;
-  if (action == JoinAction::Seat || action == JoinAction::Rejoin) {
-    // A new seat starts where the server's results for it left off (a rejoined seat has used
-    // numbers, and an earlier process of ours may have used them).
-    const bool same = seat_ && seat_->match == answer.match && seat_->seat == answer.seat;
-    if (!same) last_seq_ = 0;
+  if (!answer.accepted()) return true;
+  if (sent.action == JoinAction::Seat || sent.action == JoinAction::Rejoin) {
     noteSequence(seen_seq_[{answer.match, answer.seat}]);
     seat_ = SeatHolding{answer.match, answer.seat, answer.token};
-  } else if (action == JoinAction::Leave && seat_ && seat_->match == answer.match) {
+  } else if (sent.action == JoinAction::Leave && seat_ && seat_->match == answer.match) {
     seat_.reset();
   }
+  return true;
 }
 
 void GameClient::pollReplies(std::vector<ClientEvent>& out) {
@@ -150,8 +177,7 @@ void GameClient::pollReplies(std::vector<ClientEvent>& out) {
     }
     // Replies to requests of an earlier session with the same id, or repeated ones, are stale.
     if (!pending_.count(answer->request)) continue;
-    accept(*answer);
-    out.emplace_back(std::move(*answer));
+    if (accept(*answer)) out.emplace_back(std::move(*answer));
   }
 }
 

@@ -16,6 +16,7 @@
 #include "client/net/match_types.h"
 #include "core/result.h"
 #include "net/key_pair.h"
+#include "net/seat_request.h"
 #include "net/shot_request.h"
 
 namespace pool::client {
@@ -58,7 +59,9 @@ class GameClient {
   // ---- Join requests: each returns its request number, which the answer echoes -------------
   std::uint32_t requestSeat(const std::string& match, int seat = -1);
   std::uint32_t requestSpectate(const std::string& match);
-  std::uint32_t requestRejoin(const std::string& match, std::uint64_t token);
+  /// Takes back `seat` (0 or 1; -1: the one bound to our key) of `match` held with `token`,
+  /// proving with our key's signature that it is ours.
+  std::uint32_t requestRejoin(const std::string& match, std::uint64_t token, int seat = -1);
   /// Leaves the seat held (or stops watching `match` when no seat is held there).
   std::uint32_t requestLeave(const std::string& match);
   std::uint32_t requestRematch();
@@ -100,16 +103,23 @@ class GameClient {
   void pollStates(std::vector<ClientEvent>& out);
   void pollResults(std::vector<ClientEvent>& out);
   void pollFrames(std::vector<ClientEvent>& out);
-  void accept(const JoinAnswer& answer);
+  struct PendingJoin {
+    net::SeatRequest request;
+    bool retried = false;  ///< sent again once after a stale-sequence answer
+  };
+
+  void send(net::SeatRequest& request);
+  /// Applies an answer to one of our requests; false when it was consumed by a retry.
+  bool accept(const JoinAnswer& answer);
   void problem(const std::string& what);
 
   ClientOptions options_;
   net::KeyPair key_;
   std::unique_ptr<ClientEndpoints> endpoints_;
   std::uint32_t next_request_ = 1;
-  std::map<std::uint32_t, JoinAction> pending_;  ///< our requests not answered yet
+  std::map<std::uint32_t, PendingJoin> pending_;  ///< our requests not answered yet
   std::optional<SeatHolding> seat_;
-  std::uint32_t last_seq_ = 0;
+  std::uint32_t last_seq_ = 0;  ///< the last seq our key used (shots and seat requests alike)
   std::map<std::pair<std::string, int>, std::uint32_t> seen_seq_;  ///< highest seq per seat seen
   Lobby lobby_;
   std::map<std::string, MatchView> states_;

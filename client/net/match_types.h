@@ -47,9 +47,10 @@ struct JoinAnswer {
   std::string match;  ///< the match joined
   JoinAction action = JoinAction::Seat;
   JoinOutcome outcome = JoinOutcome::Accepted;
-  std::string reason;       ///< empty when accepted
-  int seat = -1;            ///< the seat taken; -1 for spectators and refusals
-  std::uint64_t token = 0;  ///< the seat's token; 0 for spectators and refusals
+  std::string reason;          ///< empty when accepted
+  int seat = -1;               ///< the seat taken; -1 for spectators and refusals
+  std::uint64_t token = 0;     ///< the seat's token; 0 for spectators and refusals
+  std::uint32_t last_seq = 0;  ///< the last seq the request's key used on that server
 
   bool accepted() const { return outcome == JoinOutcome::Accepted; }
 };
@@ -62,6 +63,7 @@ struct SeatView {
   int balls_left = 0;
   int fouls = 0;
   int racks_won = 0;
+  std::uint32_t last_seq = 0;  ///< the seat's last used sequence number
 };
 
 /// A match between shots (MatchState).

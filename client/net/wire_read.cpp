@@ -13,7 +13,7 @@ namespace {
 // The domain enums copy the IDL's enumerators in order; these catch a change on either side.
 static_assert(pool_PHASE_CLOSED == static_cast<int>(MatchPhase::Closed));
 static_assert(pool_JOIN_REMATCH == static_cast<int>(JoinAction::Rematch));
-static_assert(pool_JOIN_SERVER_FULL == static_cast<int>(JoinOutcome::ServerFull));
+static_assert(pool_JOIN_STALE_SEQUENCE == static_cast<int>(JoinOutcome::StaleSequence));
 static_assert(pool_REJECT_BAD_SIGNATURE == static_cast<int>(RejectReason::BadSignature));
 static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
 static_assert(pool_END_FORFEIT == static_cast<int>(rules::GameEnd::Forfeit));
@@ -104,13 +104,14 @@ Result<JoinAnswer> fromWire(const pool_JoinReply& reply) {
   answer.server = std::string(net::textOf(reply.server));
   answer.match = std::string(net::textOf(reply.match));
   const auto action = enumOf<JoinAction>(reply.action, pool_JOIN_REMATCH + 1);
-  const auto outcome = enumOf<JoinOutcome>(reply.outcome, pool_JOIN_SERVER_FULL + 1);
+  const auto outcome = enumOf<JoinOutcome>(reply.outcome, pool_JOIN_STALE_SEQUENCE + 1);
   if (!action || !outcome) return fail<JoinAnswer>("join reply", "unknown action or outcome");
   answer.action = *action;
   answer.outcome = *outcome;
   answer.reason = std::string(net::textOf(reply.reason));
   answer.seat = seatNumber(reply.seat);
   answer.token = reply.seat_token;
+  answer.last_seq = reply.last_seq;
   return Result<JoinAnswer>::ok(std::move(answer));
 }
 
@@ -131,6 +132,7 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
     const auto seat = seatOf(state.seats[i]);
     if (!seat) return fail<MatchView>(what, "unknown group");
     view.seats[i] = *seat;
+    view.seats[i].last_seq = state.seat_seq[i];
   }
   view.shooter = seatNumber(state.shooter);
   view.breaker = seatNumber(state.breaker);
@@ -195,20 +197,20 @@ Result<TableFrame> fromWire(const pool_TableSnapshot& snapshot) {
   return Result<TableFrame>::ok(std::move(frame));
 }
 
-net::Sample<pool_JoinRequest> toWire(const JoinRequestFields& fields) {
+net::Sample<pool_JoinRequest> toWire(const net::SeatRequest& fields) {
   net::Sample<pool_JoinRequest> sample;
   pool_JoinRequest& request = *sample;
   net::setText(request.client, fields.client);
   request.request = fields.request;
-  request.protocol_version = net::kProtocolVersion;
+  request.protocol_version = fields.protocol_version;
   net::setText(request.match, fields.match);
   request.action = static_cast<pool_JoinAction>(static_cast<int>(fields.action));
   request.seat = static_cast<std::int16_t>(fields.seat);
   net::setText(request.name, fields.name);
   request.seat_token = fields.token;
-  const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(fields.public_key.size(), 32));
-  auto key = net::resizeSequence(request.public_key, n);
-  std::copy_n(fields.public_key.begin(), n, key.begin());
+  net::setBytes(request.public_key, fields.public_key, net::kPublicKeyBytes);
+  request.seq = fields.seq;
+  net::setBytes(request.signature, fields.signature, net::kSignatureBytes);
   return sample;
 }
 

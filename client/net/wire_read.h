@@ -10,6 +10,7 @@
 #include "core/result.h"
 #include "net/messages.h"
 #include "net/sample.h"
+#include "net/seat_request.h"
 
 namespace pool::client {
 
@@ -19,19 +20,7 @@ Result<MatchView> fromWire(const pool_MatchState& state);
 Result<ShotReport> fromWire(const pool_ShotResult& result);
 Result<TableFrame> fromWire(const pool_TableSnapshot& snapshot);
 
-/// What goes into a JoinRequest.
-struct JoinRequestFields {
-  std::string client;
-  std::uint32_t request = 0;
-  std::string match;
-  JoinAction action = JoinAction::Seat;
-  int seat = -1;
-  std::string name;
-  std::uint64_t token = 0;
-  std::vector<std::uint8_t> public_key;  ///< at most 32 bytes are sent
-};
-
-/// A JoinRequest sample (protocol version of this build; text cut to its bounds).
-net::Sample<pool_JoinRequest> toWire(const JoinRequestFields& fields);
+/// A JoinRequest sample (text cut to its bounds, key and signature to theirs).
+net::Sample<pool_JoinRequest> toWire(const net::SeatRequest& request);
 
 }  // namespace pool::client

@@ -57,6 +57,12 @@ const char* toString(JoinOutcome outcome) {
       return "not_allowed";
     case JoinOutcome::ServerFull:
       return "server_full";
+    case JoinOutcome::Unsigned:
+      return "unsigned";
+    case JoinOutcome::BadSignature:
+      return "bad_signature";
+    case JoinOutcome::StaleSequence:
+      return "stale_sequence";
   }
   return "unknown";
 }

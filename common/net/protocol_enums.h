@@ -22,6 +22,9 @@ enum class JoinOutcome : std::uint8_t {
   VersionMismatch,
   NotAllowed,
   ServerFull,
+  Unsigned,       ///< a request that changes a seat carried no signature
+  BadSignature,   ///< not the signature of the key that binds (or is bound to) the seat
+  StaleSequence,  ///< seq not above the last one that key used
 };
 
 /// Why the server refused a shot command (RejectReason of pool.idl, whose values these keep).

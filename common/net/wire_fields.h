@@ -82,4 +82,12 @@ std::span<const ElementOf<Seq>> elementsOf(const Seq& seq) {
   return {seq._buffer, seq._length};
 }
 
+/// Copies at most `bound` bytes of `bytes` into an octet sequence (empty input: empty sequence).
+template <class Seq>
+void setBytes(Seq& seq, std::span<const std::uint8_t> bytes, std::size_t bound) {
+  const auto n = static_cast<std::uint32_t>(bytes.size() < bound ? bytes.size() : bound);
+  auto out = resizeSequence(seq, n);
+  if (n) std::memcpy(out.data(), bytes.data(), n);
+}
+
 }  // namespace pool::net

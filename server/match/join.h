@@ -6,39 +6,30 @@
 #include <vector>
 
 #include "net/protocol_enums.h"
+#include "net/seat_request.h"
 
 namespace pool::server {
 
 using net::JoinAction;   ///< what a JoinRequest asks for (shared with the clients)
 using net::JoinOutcome;  ///< its outcome
 
-/// The match id that asks for a new match.
-inline constexpr const char* kNewMatch = "new";
+using net::kNewMatch;  ///< the match id that asks for a new match
 
-/// A client's request.
-struct JoinCommand {
-  std::string client;         ///< the client's id
-  std::uint32_t request = 0;  ///< echoed in the answer
-  std::uint32_t protocol_version = 0;
-  std::string match;  ///< a match id, or kNewMatch
-  JoinAction action = JoinAction::Seat;
-  int seat = -1;                         ///< Seat: 0, 1 or -1 (any)
-  std::string name;                      ///< the player's name (Seat)
-  std::uint64_t token = 0;               ///< Rejoin, Leave, Rematch: the seat's token
-  std::vector<std::uint8_t> public_key;  ///< Seat, Rejoin: the Ed25519 key commands are signed with
-};
+/// A client's request (a JoinRequest in domain terms; net/seat_request.h says which are signed).
+using JoinCommand = net::SeatRequest;
 
 /// The server's answer.
 struct JoinAnswer {
   JoinOutcome outcome = JoinOutcome::Accepted;
-  std::string reason;       ///< one line; empty when accepted
-  std::string match;        ///< the match concerned (the new one for kNewMatch)
-  int seat = -1;            ///< the seat taken; -1 for spectators and refusals
-  std::uint64_t token = 0;  ///< the seat's token; 0 for spectators and refusals
+  std::string reason;          ///< one line; empty when accepted
+  std::string match;           ///< the match concerned (the new one for kNewMatch)
+  int seat = -1;               ///< the seat taken; -1 for spectators and refusals
+  std::uint64_t token = 0;     ///< the seat's token; 0 for spectators and refusals
+  std::uint32_t last_seq = 0;  ///< the last seq the request's key used (signed requests)
 
   bool accepted() const { return outcome == JoinOutcome::Accepted; }
   static JoinAnswer refuse(JoinOutcome outcome, std::string reason) {
-    return {outcome, std::move(reason), {}, -1, 0};
+    return {outcome, std::move(reason), {}, -1, 0, 0};
   }
 };
 

@@ -95,44 +95,77 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   return seated(id_, seat, token);
 }
 
-JoinAnswer Match::rejoin(std::uint64_t token, const std::string& client,
-                         const std::vector<std::uint8_t>& public_key) {
-  const auto seat = seatOf(token);
-  if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
-  Seat& s = seats_[static_cast<std::size_t>(*seat)];
-  if (s.public_key != public_key) {
-    return JoinAnswer::refuse(JoinOutcome::BadToken, "public_key: not the key seat " +
-                                                         std::to_string(*seat) + " was taken with");
+JoinAnswer Match::seatRequest(const net::SeatRequest& r) {
+  const auto found = seatOf(r);
+  if (!found) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat here is bound to that key");
+  const int seat = *found;
+  Seat& s = seats_[static_cast<std::size_t>(seat)];
+  const std::string which = "seat " + std::to_string(seat);
+  if (r.token != s.token) {
+    return JoinAnswer::refuse(JoinOutcome::BadToken, "the token is not " + which + "'s");
   }
+  if (r.signature.empty()) {
+    return JoinAnswer::refuse(JoinOutcome::Unsigned, "signature: seat requests must be signed");
+  }
+  if (r.seq <= s.last_seq) {
+    JoinAnswer stale =
+        JoinAnswer::refuse(JoinOutcome::StaleSequence, "seq " + std::to_string(r.seq) +
+                                                           " is not above the last used " +
+                                                           std::to_string(s.last_seq));
+    stale.last_seq = s.last_seq;
+    return stale;
+  }
+  if (net::verifySeatRequest(r, s.public_key) != net::SignatureCheck::Valid) {
+    return JoinAnswer::refuse(JoinOutcome::BadSignature, "signature: not " + which + "'s key");
+  }
+  s.last_seq = r.seq;  // used up from here on, whatever the outcome
+  touch();
+  JoinAnswer answer = JoinAnswer::refuse(JoinOutcome::NotAllowed, "not a seat request");
+  switch (r.action) {
+    case JoinAction::Rejoin:
+      answer = rejoinSeat(seat, r.client);
+      break;
+    case JoinAction::Leave:
+      answer = leaveSeat(seat);
+      break;
+    case JoinAction::Rematch:
+      answer = rematchSeat(seat);
+      break;
+    case JoinAction::Seat:
+    case JoinAction::Spectate:
+      break;
+  }
+  answer.last_seq = r.seq;
+  return answer;
+}
+
+JoinAnswer Match::rejoinSeat(int seat, const std::string& client) {
+  Seat& s = seats_[static_cast<std::size_t>(seat)];
   s.client = client;
   s.away_since.reset();
   touch();
-  return seated(id_, *seat, token);
+  return seated(id_, seat, s.token);
 }
 
-JoinAnswer Match::leave(std::uint64_t token) {
-  const auto seat = seatOf(token);
-  if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
-  if (inPlay()) forfeitSeat(*seat, "left");
-  seats_[static_cast<std::size_t>(*seat)] = Seat{};
+JoinAnswer Match::leaveSeat(int seat) {
+  if (inPlay()) forfeitSeat(seat, "left");
+  seats_[static_cast<std::size_t>(seat)] = Seat{};
   touch();
-  return seated(id_, *seat, 0);
+  return seated(id_, seat, 0);
 }
 
-JoinAnswer Match::rematch(std::uint64_t token) {
-  const auto seat = seatOf(token);
-  if (!seat) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat holds that token");
+JoinAnswer Match::rematchSeat(int seat) {
   if (phase() != MatchPhase::Over || pending_forfeit_) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "the match is not over");
   }
-  seats_[static_cast<std::size_t>(*seat)].wants_rematch = true;
+  seats_[static_cast<std::size_t>(seat)].wants_rematch = true;
   touch();
   if (seats_[0].taken() && seats_[1].taken() && seats_[0].wants_rematch &&
       seats_[1].wants_rematch) {
     // Breaks alternate between racks.
     startRack(rules::opponentOf(game_.breaker));
   }
-  return seated(id_, *seat, token);
+  return seated(id_, seat, seats_[static_cast<std::size_t>(seat)].token);
 }
 
 JoinAnswer Match::addSpectator(const std::string& client) {
@@ -389,10 +422,13 @@ std::vector<physics::Ball> Match::tableAfter(const rules::Verdict& verdict,
   return balls;
 }
 
-std::optional<int> Match::seatOf(std::uint64_t token) const {
-  if (token == 0) return std::nullopt;
+std::optional<int> Match::seatOf(const net::SeatRequest& r) const {
+  // The seat named, else the one bound to the request's key (the token is public: it only names
+  // a holding, so it never picks a seat by itself).
   for (int s = 0; s < 2; ++s) {
-    if (seats_[static_cast<std::size_t>(s)].token == token) return s;
+    const Seat& seat = seats_[static_cast<std::size_t>(s)];
+    if (!seat.taken() || (r.seat != -1 && r.seat != s)) continue;
+    if (seat.public_key == r.public_key) return s;
   }
   return std::nullopt;
 }

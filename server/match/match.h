@@ -16,6 +16,7 @@
 #include "match/match_types.h"
 #include "match/seat.h"
 #include "match/shot_runner.h"
+#include "net/seat_request.h"
 #include "net/shot_request.h"
 #include "physics/simulation.h"
 #include "rules/game_state.h"
@@ -44,19 +45,20 @@ class Match {
   // ---- Seats and spectators (the registry checks names, versions and ids first) -------------
 
   /// Seats `player` (client `client`) in `seat` (0, 1, or -1 for the first free one) with
-  /// `token` (non-zero), binding `public_key` to it: the seat's commands must be signed with it.
+  /// `token` (non-zero), binding `public_key` to it: the seat's commands and requests must be
+  /// signed with it (the registry checked the seat request's signature) and carry the token.
   /// The client already in that seat with that key gets it back unchanged (a repeated request).
   /// Starts a rack when both seats are taken and no game is in play.
   JoinAnswer takeSeat(int seat, const std::string& player, const std::string& client,
                       std::uint64_t token, const std::vector<std::uint8_t>& public_key);
-  /// Gives the seat holding `token` back to `client`, present again, if `public_key` is the one
-  /// the seat was taken with.
-  JoinAnswer rejoin(std::uint64_t token, const std::string& client,
-                    const std::vector<std::uint8_t>& public_key);
-  /// The seat holding `token` leaves; a game in play is forfeited to the other seat.
-  JoinAnswer leave(std::uint64_t token);
-  /// Asks for a new rack once the match is over; it starts when both seats asked.
-  JoinAnswer rematch(std::uint64_t token);
+  /// A request that changes a held seat (Rejoin, Leave, Rematch), checked in this order: the
+  /// seat (the one named, or the one bound to the request's key) → the holding's token (public,
+  /// but a request signed for an earlier holding of the seat never matches it) → unsigned
+  /// → stale sequence → signature by the seat's key. Once the signature checks out the sequence
+  /// number is used up, even if the request is then refused. Rejoin gives the seat back to
+  /// `request.client`, present again; Leave frees it (a game in play is forfeited to the other
+  /// seat); Rematch asks for a new rack once the match is over (it starts when both asked).
+  JoinAnswer seatRequest(const net::SeatRequest& request);
   /// `client` watches (counted once however often it asks).
   JoinAnswer addSpectator(const std::string& client);
   /// `client` stops watching; false when it was not.
@@ -136,7 +138,10 @@ class Match {
   void forfeitSeat(int loser, const std::string& why);
   std::vector<physics::Ball> tableAfter(const rules::Verdict& verdict,
                                         std::vector<physics::Ball> balls);
-  std::optional<int> seatOf(std::uint64_t token) const;
+  std::optional<int> seatOf(const net::SeatRequest& request) const;
+  JoinAnswer rejoinSeat(int seat, const std::string& client);
+  JoinAnswer leaveSeat(int seat);
+  JoinAnswer rematchSeat(int seat);
   void touch() { ++revision_; }
 
   std::string id_;

@@ -14,6 +14,9 @@ std::uint64_t seedOf(std::uint64_t seed) {
   return seed != 0 ? seed : randomSeed();
 }
 
+/// Keys whose last sequence number is remembered before the unseated ones are forgotten.
+constexpr std::size_t kMaxKeyFloors = 100000;
+
 JoinAnswer about(JoinAnswer answer, const std::string& match) {
   if (answer.match.empty()) answer.match = match;
   return answer;
@@ -47,6 +50,9 @@ Match* MatchRegistry::adopt(const MatchSnapshot& snapshot, double now) {
   continueAfter(snapshot.number);
   matches_.push_back(std::make_unique<Match>(snapshot, runner_, options_.match, now));
   if (snapshot.client_made) client_made_.insert(snapshot.id);
+  for (const Seat& s : snapshot.seats) {
+    if (s.taken()) useKeySeq(s.public_key, s.last_seq);
+  }
   return matches_.back().get();
 }
 
@@ -84,19 +90,13 @@ JoinAnswer MatchRegistry::join(const JoinCommand& c) {
   if (!match) {
     return about(JoinAnswer::refuse(JoinOutcome::NoSuchMatch, "no match " + c.match), c.match);
   }
-  switch (c.action) {
-    case JoinAction::Spectate:
-      return match->addSpectator(c.client);
-    case JoinAction::Rejoin:
-      return about(match->rejoin(c.token, c.client, c.public_key), c.match);
-    case JoinAction::Leave:
-      return about(leave(c), c.match);
-    case JoinAction::Rematch:
-      return about(match->rematch(c.token), c.match);
-    case JoinAction::Seat:
-      break;
+  if (c.action == JoinAction::Spectate) return match->addSpectator(c.client);
+  if (!net::changesSeat(c)) return about(leave(c), c.match);  // a spectator's leave
+  JoinAnswer answer = match->seatRequest(c);
+  if (answer.outcome != JoinOutcome::StaleSequence && answer.last_seq != 0) {
+    useKeySeq(c.public_key, answer.last_seq);  // the key's signature checked out
   }
-  return about(JoinAnswer::refuse(JoinOutcome::NotAllowed, "unknown action"), c.match);
+  return about(std::move(answer), c.match);
 }
 
 JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
@@ -110,6 +110,21 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed,
                               "public_key: a seat needs the 32-byte Ed25519 key of its commands");
   }
+  if (c.signature.empty()) {
+    return JoinAnswer::refuse(JoinOutcome::Unsigned, "signature: seat requests must be signed");
+  }
+  if (const std::uint32_t floor = keyFloor(c.public_key); c.seq <= floor) {
+    JoinAnswer stale =
+        JoinAnswer::refuse(JoinOutcome::StaleSequence, "seq " + std::to_string(c.seq) +
+                                                           " is not above the key's last used " +
+                                                           std::to_string(floor));
+    stale.last_seq = floor;
+    return stale;
+  }
+  if (net::verifySeatRequest(c, c.public_key) != net::SignatureCheck::Valid) {
+    return JoinAnswer::refuse(JoinOutcome::BadSignature, "signature: not by the key it carries");
+  }
+  useKeySeq(c.public_key, c.seq);
   Match* match = nullptr;
   if (c.match == kNewMatch) {
     match = open();
@@ -119,21 +134,50 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     match = find(c.match);
     if (!match) return JoinAnswer::refuse(JoinOutcome::NoSuchMatch, "no match " + c.match);
   }
-  return match->takeSeat(c.seat, c.name, c.client, random_.token(), c.public_key);
+  JoinAnswer answer = match->takeSeat(c.seat, c.name, c.client, random_.token(), c.public_key);
+  answer.last_seq = c.seq;
+  return answer;
 }
 
 JoinAnswer MatchRegistry::leave(const JoinCommand& c) {
   Match* match = find(c.match);
-  if (c.token != 0) return match->leave(c.token);
   if (!match->removeSpectator(c.client)) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "not watching " + c.match);
   }
-  return {JoinOutcome::Accepted, {}, c.match, -1, 0};
+  return {JoinOutcome::Accepted, {}, c.match, -1, 0, 0};
+}
+
+std::uint32_t MatchRegistry::keyFloor(const std::vector<std::uint8_t>& key) const {
+  const auto it = key_seq_.find(key);
+  return it == key_seq_.end() ? 0 : it->second;
+}
+
+void MatchRegistry::useKeySeq(const std::vector<std::uint8_t>& key, std::uint32_t seq) {
+  if (key.size() != net::kPublicKeyBytes) return;
+  auto& floor = key_seq_[key];
+  floor = std::max(floor, seq);
+  if (key_seq_.size() <= kMaxKeyFloors) return;
+  // Bounded memory: keep the keys bound to a seat (a request replayed for a key forgotten here
+  // still needs that key's signature, and seats it only where a seat is free).
+  std::set<std::vector<std::uint8_t>> seated;
+  for (const auto& m : matches_) {
+    for (const Seat& s : m->seats()) {
+      if (s.taken()) seated.insert(s.public_key);
+    }
+  }
+  std::erase_if(key_seq_, [&](const auto& entry) { return !seated.count(entry.first); });
 }
 
 CommandAnswer MatchRegistry::shoot(const net::ShotRequest& command, double now) {
   Match* match = find(command.match);
-  if (match) return match->handleShot(command, now);
+  if (match) {
+    CommandAnswer answer = match->handleShot(command, now);
+    if (command.seat == 0 || command.seat == 1) {
+      const Seat& seat = match->seats()[static_cast<std::size_t>(command.seat)];
+      if (seat.taken()) useKeySeq(seat.public_key, seat.last_seq);
+    }
+    return answer;
+  }
   CommandAnswer answer;
   answer.seat = command.seat;
   answer.seq = command.seq;

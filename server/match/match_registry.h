@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -81,6 +82,10 @@ class MatchRegistry {
   JoinAnswer seat(const JoinCommand& command);
   JoinAnswer spectate(const JoinCommand& command);
   JoinAnswer leave(const JoinCommand& command);
+  /// The last seq `key` used on this server (0: none seen).
+  std::uint32_t keyFloor(const std::vector<std::uint8_t>& key) const;
+  /// Records that `key` used `seq` (the floor only rises).
+  void useKeySeq(const std::vector<std::uint8_t>& key, std::uint32_t seq);
 
   RegistryOptions options_;
   TokenSource random_;
@@ -89,6 +94,9 @@ class MatchRegistry {
   std::vector<std::unique_ptr<Match>> matches_;
   std::set<std::string> client_made_;  ///< ids of matches created by a join to "new"
   std::uint64_t opened_ = 0;
+  /// Per public key, the last seq it used here: a seat request replayed after its player left
+  /// cannot seat them again. Seeded from the seats of resumed matches.
+  std::map<std::vector<std::uint8_t>, std::uint32_t> key_seq_;
 };
 
 /// A player name is 1–31 printable characters (no control characters).

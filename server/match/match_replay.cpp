@@ -46,6 +46,19 @@ MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> co
   }
 }
 
+net::SeatRequest MatchReplay::signedRematch(int seat) {
+  const auto i = static_cast<std::size_t>(seat);
+  net::SeatRequest r;
+  r.client = "replay-" + std::to_string(seat);
+  r.match = target_.id();
+  r.action = net::JoinAction::Rematch;
+  r.seat = seat;
+  r.token = tokens_[i];
+  r.seq = ++seqs_[i];
+  net::signSeatRequest(r, keys_[i]);
+  return r;
+}
+
 std::optional<CommandAnswer> MatchReplay::step(double now) {
   if (next_ >= commands_.size() || target_.inMotion()) {
     idle_since_.reset();
@@ -56,12 +69,14 @@ std::optional<CommandAnswer> MatchReplay::step(double now) {
   idle_since_.reset();
   // A stored match that went on to another rack: both players asked for it.
   if (target_.phase() == MatchPhase::Over) {
-    for (const auto token : tokens_) target_.rematch(token);
+    for (int s = 0; s < 2; ++s) target_.seatRequest(signedRematch(s));
   }
   const ShotRecord& stored = commands_[next_++];
   net::ShotRequest command = stored.command;
   command.match = target_.id();
   command.seat_token = tokens_[static_cast<std::size_t>(command.seat)];
+  // The replay's own numbering: stored numbers may not leave room for its rematch requests.
+  command.seq = ++seqs_[static_cast<std::size_t>(command.seat)];
   net::signCommand(command, keys_[static_cast<std::size_t>(command.seat)]);
   CommandAnswer answer = target_.handleShot(command, now);
   check(stored, answer);

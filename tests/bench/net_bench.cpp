@@ -175,9 +175,17 @@ class Driver {
     int request = 0;
     for (auto& [id, t] : tables_) {
       for (int seat = 0; seat < 2; ++seat) {
-        requests_.write(*client::toWire({clientOf(id, seat), static_cast<std::uint32_t>(++request),
-                                         id, client::JoinAction::Seat, seat,
-                                         "p" + std::to_string(seat), 0, key_.publicKey()}));
+        net::SeatRequest r;
+        r.client = clientOf(id, seat);
+        r.request = static_cast<std::uint32_t>(++request);
+        r.protocol_version = net::kProtocolVersion;
+        r.match = id;
+        r.action = client::JoinAction::Seat;
+        r.seat = seat;
+        r.name = "p" + std::to_string(seat);
+        r.seq = ++seq_;
+        net::signSeatRequest(r, key_);
+        requests_.write(*client::toWire(r));
       }
     }
     std::size_t seated = 0;
@@ -355,6 +363,7 @@ class Driver {
   net::Writer<pool_JoinRequest> requests_;
   net::Writer<pool_ShotCommand> commands_;
   net::KeyPair key_ = net::generateKeyPair();  ///< every seat's, for the driver plays them all
+  std::uint32_t seq_ = 0;                      ///< the key's seat requests, numbered
   net::WaitSet waitset_;
   std::map<std::string, Table> tables_;
   std::vector<double> latencies_, round_trips_, command_to_frame_;

@@ -56,7 +56,8 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   std::filesystem::copy_file(file("alice.json"), file("mallory.json"));
   ChildProcess& mallory = startBot("mallory", 11, {"--token-file", file("mallory.json")});
   EXPECT_TRUE(recorder.pump(20s, [&] {
-    return mallory.err().find("refused: bad_token public_key") != std::string::npos;
+    return mallory.err().find("refused: bad_token no seat here is bound to that key") !=
+           std::string::npos;
   })) << mallory.err();
   mallory.kill(SIGKILL);
   const MatchView* held = recorder.latest(recorder.firstMatch());

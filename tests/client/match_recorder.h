@@ -88,6 +88,16 @@ class MatchRecorder {
     return it == commands_seen_.end() ? nullptr : &it->second;
   }
 
+  /// The `n`-th command (from 1) `seat` of `match` sent, in the order of its sequence numbers
+  /// (a client numbers its seat requests and its shots alike, so shots need not start at 1).
+  const net::ShotRequest* nthCommand(const std::string& match, int seat, std::size_t n) const {
+    for (auto it = commands_seen_.lower_bound({match, seat, 0}); it != commands_seen_.end(); ++it) {
+      if (std::get<0>(it->first) != match || std::get<1>(it->first) != seat) break;
+      if (--n == 0) return &it->second;
+    }
+    return nullptr;
+  }
+
  private:
   using CommandKey = std::tuple<std::string, int, std::uint32_t>;
 

@@ -87,9 +87,9 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
     match = recorder.firstMatch();
     const MatchView* v = recorder.latest(match);
     if (!v || v->breaker < 0) return false;
-    sent = recorder.command(match, v->breaker, 1);
-    second = recorder.command(match, v->breaker, 2);
-    if (!second) second = recorder.command(match, 1 - v->breaker, 1);
+    sent = recorder.nthCommand(match, v->breaker, 1);
+    second = recorder.nthCommand(match, v->breaker, 2);
+    if (!second) second = recorder.nthCommand(match, 1 - v->breaker, 1);
     return sent && second && recorder.finals(match).size() >= 2;
   });
   const int status = windowExit();

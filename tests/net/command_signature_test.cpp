@@ -28,19 +28,24 @@ ShotRequest sample() {
   return r;
 }
 
-TEST(CommandSignature, TheEncodingHasAFixedLayoutWithTheVersionsUpFront) {
-  const SignedBytes bytes = signedBytes(sample());
-  EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 9), "POOL-SHOT");
-  EXPECT_EQ(bytes[9], kSignedLayoutVersion);  // little-endian u32
-  EXPECT_EQ(bytes[13], kProtocolVersion);
+TEST(CommandSignature, TheEncodingIsTheEnvelopeWithTagShotAndAFixedLayout) {
+  const std::vector<std::uint8_t> bytes = signedBytes(sample());
+  EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 8), "POOL-MSG");
+  EXPECT_EQ(bytes[8], kEnvelopeLayoutVersion);  // little-endian u32
+  EXPECT_EQ(bytes[12], kProtocolVersion);
+  EXPECT_EQ(bytes[16], static_cast<std::uint8_t>(MessageTag::Shot));
   EXPECT_EQ(bytes[17], 5);  // the match id's length, then its bytes
   EXPECT_EQ(std::string(bytes.begin() + 18, bytes.begin() + 23), "srv-3");
+  EXPECT_EQ(bytes[58], 1);     // seat, i32 after the 40-byte match field
+  EXPECT_EQ(bytes[62], 0xef);  // the token's low byte
+  EXPECT_EQ(bytes[70], 17);    // seq
+  EXPECT_EQ(bytes.size(), kSignedCommandBytes);
   // An empty command encodes to the same size: nothing depends on the text lengths.
   EXPECT_EQ(signedBytes(ShotRequest{}).size(), bytes.size());
 }
 
 TEST(CommandSignature, EveryFieldThatMattersChangesTheBytes) {
-  const SignedBytes base = signedBytes(sample());
+  const std::vector<std::uint8_t> base = signedBytes(sample());
   const std::vector<std::pair<const char*, std::function<void(ShotRequest&)>>> changes = {
       {"match", [](ShotRequest& r) { r.match = "srv-4"; }},
       {"seat", [](ShotRequest& r) { r.seat = 0; }},

@@ -56,7 +56,7 @@ TEST_F(RoundTrip, MatchInfo) {
   EXPECT_EQ(textOf(got->players[1]), "Bob");
   EXPECT_EQ(got->seats_taken, 2);
   EXPECT_EQ(got->spectators, 17u);
-  EXPECT_EQ(got->protocol_version, 2u);
+  EXPECT_EQ(got->protocol_version, kProtocolVersion);
 }
 
 TEST_F(RoundTrip, JoinRequestAndReply) {

@@ -14,6 +14,8 @@
 #include "match/table_kit.h"
 #include "net/command_signature.h"
 #include "net/key_pair.h"
+#include "net/protocol_version.h"
+#include "net/seat_request.h"
 #include "net/shot_request.h"
 
 namespace pool::server::test {
@@ -62,6 +64,31 @@ inline std::string clientOf(int seat) {
 /// signed by seat 0's player).
 inline net::ShotRequest sealed(net::ShotRequest r) {
   net::signCommand(r, keyOf(clientOf(r.seat)));
+  return r;
+}
+
+/// A seat request (Rejoin, Leave, Rematch) for `seat` of "srv-1" held with `token`, from
+/// `client`, carrying `client`'s public key and number `seq`, signed by `signer`'s key (default:
+/// the client's own; another signer's signature cannot verify, as a forger's).
+inline net::SeatRequest seatRequest(net::JoinAction action, const std::string& client, int seat,
+                                    std::uint64_t token, std::uint32_t seq,
+                                    const std::string& signer = {}) {
+  net::SeatRequest r;
+  r.client = client;
+  r.protocol_version = net::kProtocolVersion;
+  r.match = "srv-1";
+  r.action = action;
+  r.seat = seat;
+  r.token = token;
+  r.seq = seq;
+  net::signSeatRequest(r, keyOf(signer.empty() ? client : signer));
+  r.public_key = publicKeyOf(client);
+  return r;
+}
+
+/// `r` without its signature.
+inline net::SeatRequest unsignedCopy(net::SeatRequest r) {
+  r.signature.clear();
   return r;
 }
 

@@ -1,6 +1,7 @@
 // The lobby: unique match ids, joins with their outcomes, presence, commands routed by match id.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <regex>
 
 #include "match_fixture.h"
@@ -18,6 +19,14 @@ RegistryOptions fixedOptions(std::string server_id = "srv") {
   return o;
 }
 
+// `c` numbered with `signer`'s next sequence number and signed with its key.
+JoinCommand signedBy(JoinCommand c, const std::string& signer) {
+  static std::map<std::string, std::uint32_t> last;
+  c.seq = ++last[signer];
+  net::signSeatRequest(c, keyOf(signer));
+  return c;
+}
+
 JoinCommand seatRequest(std::string client, std::string match, std::string name, int seat = -1) {
   JoinCommand c;
   c.client = std::move(client);
@@ -26,16 +35,15 @@ JoinCommand seatRequest(std::string client, std::string match, std::string name,
   c.action = JoinAction::Seat;
   c.seat = seat;
   c.name = std::move(name);
-  c.public_key = publicKeyOf(c.client);
-  return c;
+  return signedBy(c, c.client);
 }
 
-JoinCommand withToken(std::string client, std::string match, JoinAction action,
-                      std::uint64_t token) {
-  JoinCommand c = seatRequest(std::move(client), std::move(match), "");
+JoinCommand withToken(std::string client, std::string match, JoinAction action, std::uint64_t token,
+                      std::string signer = {}) {
+  JoinCommand c = seatRequest(client, std::move(match), "");
   c.action = action;
   c.token = token;
-  return c;
+  return signedBy(c, signer.empty() ? client : signer);
 }
 
 TEST(MatchRegistry, MatchIdsAreTheServerIdAndACounter) {
@@ -132,10 +140,11 @@ TEST(MatchRegistry, AVanishedPlayerRejoinsWithTheTokenOrForfeitsAfterTheGrace) {
   r.clientGone("a", 100.0);
   EXPECT_FALSE(r.find("srv-1")->seats()[0].connected());
   EXPECT_FALSE(r.find("srv-2")->seats()[0].connected());
-  JoinCommand restarted = withToken("a-restarted", "srv-1", JoinAction::Rejoin, a1.token);
-  EXPECT_EQ(r.join(restarted).outcome, JoinOutcome::BadToken);  // a new key: not the player
-  restarted.public_key = publicKeyOf("a");  // the key kept by the player who left
-  const JoinAnswer back = r.join(restarted);
+  const JoinCommand stranger = withToken("a-restarted", "srv-1", JoinAction::Rejoin, a1.token);
+  EXPECT_EQ(r.join(stranger).outcome, JoinOutcome::BadToken);  // a new key: not the player
+  // The key kept by the player who left, in a new process (a new client id).
+  const JoinAnswer back =
+      r.join(withToken("a-restarted", "srv-1", JoinAction::Rejoin, a1.token, "a"));
   ASSERT_TRUE(back.accepted());
   EXPECT_EQ(back.seat, 0);
   EXPECT_EQ(back.token, a1.token);
@@ -151,15 +160,46 @@ TEST(MatchRegistry, ASeatNeedsAnEd25519PublicKey) {
   r.open();
   JoinCommand keyless = seatRequest("a", "srv-1", "Ada");
   keyless.public_key.clear();
+  keyless.signature.clear();
   const JoinAnswer refused = r.join(keyless);
   EXPECT_EQ(refused.outcome, JoinOutcome::NotAllowed);
   EXPECT_NE(refused.reason.find("public_key"), std::string::npos) << refused.reason;
   keyless.public_key.assign(31, 7);
+  keyless.signature.assign(64, 7);
   EXPECT_EQ(r.join(keyless).outcome, JoinOutcome::NotAllowed);
   EXPECT_FALSE(r.find("srv-1")->seats()[0].taken());
   const JoinAnswer seated = r.join(seatRequest("a", "srv-1", "Ada"));
   ASSERT_TRUE(seated.accepted());
   EXPECT_EQ(r.find("srv-1")->seats()[0].public_key, publicKeyOf("a"));
+}
+
+TEST(MatchRegistry, ASeatRequestMustBeSignedByTheKeyItBindsWithAFreshNumber) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  r.open();
+  JoinCommand bare = seatRequest("a", "srv-1", "Ada");
+  bare.signature.clear();
+  EXPECT_EQ(r.join(bare).outcome, JoinOutcome::Unsigned);
+  // Eve binds Ada's public key with her own signature: refused.
+  JoinCommand forged = seatRequest("eve", "srv-1", "Ada");
+  forged.public_key = publicKeyOf("a");
+  EXPECT_EQ(r.join(forged).outcome, JoinOutcome::BadSignature);
+  EXPECT_FALSE(r.find("srv-1")->seats()[0].taken());
+  EXPECT_EQ(r.matches().size(), 1u);
+  // Ada's own request seats her; after she leaves, the same bytes replayed seat nobody.
+  const JoinCommand mine = seatRequest("a", "srv-1", "Ada");
+  const JoinAnswer seated = r.join(mine);
+  ASSERT_TRUE(seated.accepted()) << seated.reason;
+  EXPECT_EQ(seated.last_seq, mine.seq);
+  ASSERT_TRUE(r.join(withToken("a", "srv-1", JoinAction::Leave, seated.token)).accepted());
+  const JoinAnswer replayed = r.join(mine);
+  EXPECT_EQ(replayed.outcome, JoinOutcome::StaleSequence);
+  EXPECT_GT(replayed.last_seq, mine.seq);
+  EXPECT_FALSE(r.find("srv-1")->seats()[0].taken());
+  // A "new" table is not opened for a refused request either.
+  JoinCommand fresh = mine;
+  fresh.match = kNewMatch;
+  EXPECT_EQ(r.join(fresh).outcome, JoinOutcome::StaleSequence);
+  EXPECT_EQ(r.matches().size(), 1u);
 }
 
 TEST(MatchRegistry, ShotsAreRoutedByMatchIdAndUnknownMatchesRefused) {

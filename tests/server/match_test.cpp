@@ -157,7 +157,9 @@ TEST(MatchShot, AChoiceWithoutAShotIsDoneAtOnce) {
 
 TEST(MatchPresence, ALeaverInPlayForfeitsToTheOpponent) {
   auto m = seatedMatch();
-  ASSERT_TRUE(m->leave(kToken1).accepted());
+  const JoinAnswer left = m->seatRequest(seatRequest(JoinAction::Leave, "b", 1, kToken1, 1));
+  ASSERT_TRUE(left.accepted()) << left.reason;
+  EXPECT_EQ(left.last_seq, 1u);
   EXPECT_EQ(m->phase(), MatchPhase::Over);
   EXPECT_EQ(m->game().winner, 0);
   EXPECT_EQ(m->game().end, rules::GameEnd::Forfeit);
@@ -171,26 +173,58 @@ TEST(MatchPresence, AnAwayPlayerKeepsTheSeatForTheGracePeriodAndMayRejoin) {
   EXPECT_FALSE(m->seats()[1].connected());
   EXPECT_FALSE(m->expireAway(39.9, 30.0));
   EXPECT_EQ(m->phase(), MatchPhase::Break);
-  const JoinAnswer back = m->rejoin(kToken1, "b2", publicKeyOf("b"));
-  ASSERT_TRUE(back.accepted());
+  net::SeatRequest rejoin = seatRequest(JoinAction::Rejoin, "b", -1, kToken1, 1);
+  rejoin.client = "b2";  // a restarted process: a new client id, the same key
+  net::signSeatRequest(rejoin, keyOf("b"));
+  const JoinAnswer back = m->seatRequest(rejoin);
+  ASSERT_TRUE(back.accepted()) << back.reason;
   EXPECT_EQ(back.seat, 1);
+  EXPECT_EQ(m->seats()[1].client, "b2");
   EXPECT_TRUE(m->seats()[1].connected());
   EXPECT_FALSE(m->expireAway(100.0, 30.0));
-  EXPECT_EQ(m->rejoin(0x7777, "x", publicKeyOf("x")).outcome, JoinOutcome::BadToken);
+  EXPECT_EQ(m->seatRequest(seatRequest(JoinAction::Rejoin, "x", -1, 0x7777, 1)).outcome,
+            JoinOutcome::BadToken);
 }
 
-TEST(MatchPresence, ARejoinMustPresentTheKeyTheSeatWasTakenWith) {
+// A stranger on the LAN reads every token and public key off the wire; none of that lets it act
+// for a seat: each attempt is refused with its reason and changes nothing.
+TEST(MatchPresence, ReadingTokenAndKeyOffTheWireTakesNothing) {
   auto m = seatedMatch();
   m->clientGone("b", 10.0);
   const std::uint64_t revision = m->revision();
-  const JoinAnswer thief = m->rejoin(kToken1, "eve", publicKeyOf("eve"));  // token read off the LAN
-  EXPECT_EQ(thief.outcome, JoinOutcome::BadToken);
-  EXPECT_NE(thief.reason.find("public_key"), std::string::npos) << thief.reason;
-  EXPECT_EQ(m->rejoin(kToken1, "b", {}).outcome, JoinOutcome::BadToken);
+  const auto refused = [&](const net::SeatRequest& r, JoinOutcome outcome, const char* what) {
+    const JoinAnswer a = m->seatRequest(r);
+    EXPECT_EQ(a.outcome, outcome) << what << ": " << toString(a.outcome) << " " << a.reason;
+  };
+  for (const auto action : {JoinAction::Rejoin, JoinAction::Leave, JoinAction::Rematch}) {
+    // Eve's own key: no seat of the match is bound to it.
+    refused(seatRequest(action, "eve", 1, kToken1, 5), JoinOutcome::BadToken, "own key");
+    // Bob's public key and token, signed by Eve.
+    refused(seatRequest(action, "b", 1, kToken1, 5, "eve"), JoinOutcome::BadSignature, "forged");
+    // Bob's public key and token, no signature.
+    refused(unsignedCopy(seatRequest(action, "b", 1, kToken1, 5)), JoinOutcome::Unsigned,
+            "unsigned");
+    // Signed by Bob for another holding of the seat (another token).
+    refused(seatRequest(action, "b", 1, 0x9999, 5), JoinOutcome::BadToken, "other holding");
+    // Signed by Ada for her seat, sent as Bob's.
+    refused(seatRequest(action, "a", 1, kToken1, 5), JoinOutcome::BadToken, "other seat");
+  }
   EXPECT_EQ(m->revision(), revision);
   EXPECT_FALSE(m->seats()[1].connected());
   EXPECT_EQ(m->seats()[1].client, "b");
-  EXPECT_TRUE(m->rejoin(kToken1, "b", publicKeyOf("b")).accepted());
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
+  // Bob's own signed request is taken; the same bytes again are stale and change nothing.
+  const net::SeatRequest mine = seatRequest(JoinAction::Rejoin, "b", 1, kToken1, 3);
+  ASSERT_TRUE(m->seatRequest(mine).accepted());
+  const std::uint64_t after = m->revision();
+  const JoinAnswer replayed = m->seatRequest(mine);
+  EXPECT_EQ(replayed.outcome, JoinOutcome::StaleSequence);
+  EXPECT_EQ(replayed.last_seq, 3u);
+  EXPECT_EQ(m->revision(), after);
+  // A leave replayed from an earlier request of his is stale too: the game goes on.
+  EXPECT_EQ(m->seatRequest(seatRequest(JoinAction::Leave, "b", 1, kToken1, 2)).outcome,
+            JoinOutcome::StaleSequence);
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
 }
 
 TEST(MatchPresence, PastTheGracePeriodTheGameIsForfeited) {
@@ -217,14 +251,15 @@ TEST(MatchPresence, AForfeitDuringAShotWaitsForItsEnd) {
 
 TEST(MatchRematch, BothPlayersMustAskAndTheOtherSeatBreaks) {
   auto m = seatedMatch();
-  EXPECT_EQ(m->rematch(kToken0).outcome, JoinOutcome::NotAllowed);  // not over yet
+  EXPECT_EQ(m->seatRequest(seatRequest(JoinAction::Rematch, "a", 0, kToken0, 1)).outcome,
+            JoinOutcome::NotAllowed);  // not over yet
   m->clientGone("b", 0.0);
   m->expireAway(30.0, 30.0);
   ASSERT_EQ(m->phase(), MatchPhase::Over);
-  ASSERT_TRUE(m->rejoin(kToken1, "b", publicKeyOf("b")).accepted());
-  ASSERT_TRUE(m->rematch(kToken0).accepted());
+  ASSERT_TRUE(m->seatRequest(seatRequest(JoinAction::Rejoin, "b", 1, kToken1, 1)).accepted());
+  ASSERT_TRUE(m->seatRequest(seatRequest(JoinAction::Rematch, "a", 0, kToken0, 2)).accepted());
   EXPECT_EQ(m->phase(), MatchPhase::Over);
-  ASSERT_TRUE(m->rematch(kToken1).accepted());
+  ASSERT_TRUE(m->seatRequest(seatRequest(JoinAction::Rematch, "b", 1, kToken1, 2)).accepted());
   EXPECT_EQ(m->phase(), MatchPhase::Break);
   EXPECT_EQ(m->rack(), 2u);
   EXPECT_EQ(m->game().breaker, 1);

@@ -26,6 +26,7 @@ enum Domain : std::uint32_t {
   kJoinRefusals,
   kNewMatch,
   kSideBySide,
+  kSeatAttacks,
 };
 
 /// The flood tests' domain (135–149 are theirs).

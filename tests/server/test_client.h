@@ -19,6 +19,7 @@
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
+#include "net/seat_request.h"
 #include "net/shot_request.h"
 #include "net/topic.h"
 #include "net/waitset.h"
@@ -82,38 +83,77 @@ class TestClient {
            command_writer_.waitForReaders(1, timeout);
   }
 
-  /// Sends a join request and waits for its reply.
+  /// Sends a join request and waits for its reply. Requests that change a seat are signed with
+  /// this client's key and numbered with its next sequence number.
   std::optional<pool_JoinReply> join(pool_JoinAction action, const std::string& match,
                                      const std::string& name = "", short seat = -1,
                                      std::uint64_t token = 0,
                                      std::uint32_t version = net::kProtocolVersion) {
-    net::Sample<pool_JoinRequest> sample;
-    pool_JoinRequest& r = *sample;
-    net::setText(r.client, id_);
-    r.request = ++requests_;
+    net::SeatRequest r = request(action, match, name, seat, token);
     r.protocol_version = version;
-    net::setText(r.match, match);
-    r.action = action;
+    if (net::changesSeat(r)) {
+      r.seq = ++seq_;
+      net::signSeatRequest(r, key_);
+    }
+    return joinAsIs(r);
+  }
+
+  /// A join request from this client, unsigned, with the next request number.
+  net::SeatRequest request(pool_JoinAction action, const std::string& match,
+                           const std::string& name = "", short seat = -1, std::uint64_t token = 0) {
+    net::SeatRequest r;
+    r.client = id_;
+    r.request = ++requests_;
+    r.protocol_version = net::kProtocolVersion;
+    r.match = match;
+    r.action = static_cast<net::JoinAction>(static_cast<int>(action));
     r.seat = seat;
-    net::setText(r.name, name);
-    r.seat_token = token;
-    auto key = net::resizeSequence(r.public_key, net::kPublicKeyBytes);
-    std::copy(key_.public_key.begin(), key_.public_key.end(), key.begin());
-    EXPECT_TRUE(join_writer_.write(r));
-    const std::uint32_t wanted = r.request;
+    r.name = name;
+    r.token = token;
+    r.public_key = key_.publicKey();
+    return r;
+  }
+
+  /// Writes `r` exactly as given (whatever its key, number and signature) and waits for the
+  /// reply to its request number.
+  std::optional<pool_JoinReply> joinAsIs(const net::SeatRequest& r) {
+    net::Sample<pool_JoinRequest> sample;
+    pool_JoinRequest& w = *sample;
+    net::setText(w.client, r.client);
+    w.request = r.request;
+    w.protocol_version = r.protocol_version;
+    net::setText(w.match, r.match);
+    w.action = static_cast<pool_JoinAction>(static_cast<int>(r.action));
+    w.seat = static_cast<std::int16_t>(r.seat);
+    net::setText(w.name, r.name);
+    w.seat_token = r.token;
+    net::setBytes(w.public_key, r.public_key, net::kPublicKeyBytes);
+    w.seq = r.seq;
+    net::setBytes(w.signature, r.signature, net::kSignatureBytes);
+    pump();
+    const std::size_t from = replies.size();  // a replayed request's answer is a new sample
+    EXPECT_TRUE(join_writer_.write(w));
     std::optional<pool_JoinReply> reply;
     waitUntil([&] {
-      for (const auto& s : replies) {
-        if (s->request == wanted && net::textOf(s->client) == id_) reply = *s;
+      for (std::size_t i = from; i < replies.size(); ++i) {
+        const auto& s = replies[i];
+        if (s->request == r.request && net::textOf(s->client) == r.client) reply = *s;
       }
       return reply.has_value();
     });
     return reply;
   }
 
+  /// The last sequence number this client used for a seat request; sets the next one's floor.
+  std::uint32_t seq() const { return seq_; }
+  void setSeq(std::uint32_t seq) { seq_ = seq; }
+
   /// Writes a shot command as given.
   void send(const pool_ShotCommand& command) { EXPECT_TRUE(command_writer_.write(command)); }
-  void sendAsIs(const net::ShotRequest& request) { send(*net::toWire(request)); }
+  void sendAsIs(const net::ShotRequest& request) {
+    seq_ = std::max(seq_, request.seq);  // later seat requests number above it
+    send(*net::toWire(request));
+  }
   /// Signs `request` with this client's key and writes it.
   void send(net::ShotRequest request) {
     net::signCommand(request, key_);
@@ -230,6 +270,7 @@ class TestClient {
   std::string id_;
   net::KeyPair key_ = net::generateKeyPair();
   std::uint32_t requests_ = 0;
+  std::uint32_t seq_ = 0;    ///< the last sequence number this client's key used
   net::ProtocolTopics bus_;  ///< the participant and the protocol's topics
   net::Writer<pool_JoinRequest> join_writer_;
   net::Writer<pool_ShotCommand> command_writer_;

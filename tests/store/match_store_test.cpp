@@ -119,7 +119,11 @@ TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
   }
   // Away since the resume: the grace period counts from then.
   EXPECT_FALSE(resumed->expireAway(5.0 + 29.0, 30.0));
-  EXPECT_TRUE(resumed->rejoin(kToken1, "b2", server::test::publicKeyOf("b")).accepted());
+  net::SeatRequest rejoin =
+      server::test::seatRequest(net::JoinAction::Rejoin, "b", 1, kToken1, 1000);
+  rejoin.client = "b2";
+  net::signSeatRequest(rejoin, server::test::keyOf("b"));
+  EXPECT_TRUE(resumed->seatRequest(rejoin).accepted());
   EXPECT_TRUE(resumed->seats()[1].connected());
   // The next match opened takes a new number.
   registry.continueAfter(1);

@@ -1,0 +1,48 @@
+// The signed encoding of seat requests.
+#include "net/seat_request.h"
+
+namespace pool::net {
+
+namespace {
+
+constexpr std::size_t kClientField = 40;
+constexpr std::size_t kNameField = 32;
+
+}  // namespace
+
+bool changesSeat(const SeatRequest& r) {
+  switch (r.action) {
+    case JoinAction::Spectate:
+      return false;
+    case JoinAction::Leave:
+      return r.token != 0 || r.seat >= 0;  // a spectator's leave names no seat
+    case JoinAction::Seat:
+    case JoinAction::Rejoin:
+    case JoinAction::Rematch:
+      return true;
+  }
+  return true;
+}
+
+std::vector<std::uint8_t> signedBytes(const SeatRequest& r) {
+  SignedEncoder e({MessageTag::SeatRequest, r.match, r.seat, r.token, r.seq});
+  e.u8(static_cast<std::uint8_t>(r.action));
+  e.text(r.client, kClientField);
+  e.u32(r.request);
+  e.text(r.name, kNameField);
+  e.bytes(r.public_key, kPublicKeyBytes);
+  return e.message();
+}
+
+void signSeatRequest(SeatRequest& request, const KeyPair& key) {
+  request.public_key = key.publicKey();
+  request.signature = signMessage(signedBytes(request), key);
+}
+
+SignatureCheck verifySeatRequest(const SeatRequest& request,
+                                 std::span<const std::uint8_t> public_key) {
+  if (request.signature.empty()) return SignatureCheck::Unsigned;
+  return verifyMessage(signedBytes(request), request.signature, public_key);
+}
+
+}  // namespace pool::net
