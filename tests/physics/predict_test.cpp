@@ -1,5 +1,6 @@
 // The event predictors against closed forms: two balls head-on, a ball grazing another at ±1 nm
-// from tangency, a ball reaching a cushion nose under friction or stopping just short of it.
+// from tangency, a ball reaching a cushion nose, a jaw point or a pocket's hole under friction, or
+// stopping 1 µm short of a nose.
 #include "physics/predict.h"
 
 #include <gtest/gtest.h>
@@ -151,6 +152,32 @@ TEST(NextTableHit, BallPassingBeyondTheNoseSegmentDoesNotHitIt) {
   // The nose spans y in [−1, 1]; a ball at y = 1.5 crosses its line but not the segment.
   const Kinematics k{Vec3(0.0, 1.5, R), Vec3(1.0, 0.0, 0.0), Vec3::Zero()};
   EXPECT_EQ(nextTableHit(k, false, oneNose(0.5), R, kParams.cushion_height, 10.0).t, kNever);
+}
+
+TEST(NextTableHit, BallRollingHeadOnIntoAJawPoint) {
+  // A jaw point at nose height: a ball on the slate touches it when its centre is noseReach()
+  // from the point horizontally, the same reach as for a nose line.
+  const double v = 1.2, L = 0.5;
+  const double dec = kParams.u_r * kGravity;
+  TableFeatures f;
+  f.points.push_back({Vec2(L, 0.0), "jaw_test"});
+  const Kinematics k{Vec3(0.0, 0.0, R), Vec3(v, 0.0, 0.0), Vec3(-dec, 0.0, 0.0)};
+  const TableHit hit = nextTableHit(k, false, f, R, kParams.cushion_height, 10.0);
+  ASSERT_EQ(hit.kind, FeatureKind::Point);
+  EXPECT_EQ(hit.index, 0);
+  EXPECT_NEAR(hit.t, firstClosing(L - noseReach(), v, dec), kTimeTolerance);
+}
+
+TEST(NextTableHit, BallDropsWhenItsCentreCrossesTheHoleEdge) {
+  // A ball rolling straight at a hole's centre drops when its centre is one hole radius away.
+  const double v = 0.9, L = 0.4, hole_radius = 0.07;
+  const double dec = kParams.u_r * kGravity;
+  TableFeatures f;
+  f.holes.push_back({Vec2(L, 0.0), hole_radius, "test_pocket"});
+  const Kinematics k{Vec3(0.0, 0.0, R), Vec3(v, 0.0, 0.0), Vec3(-dec, 0.0, 0.0)};
+  const TableHit hit = nextTableHit(k, false, f, R, kParams.cushion_height, 10.0);
+  ASSERT_EQ(hit.kind, FeatureKind::Hole);
+  EXPECT_NEAR(hit.t, firstClosing(L - hole_radius, v, dec), kTimeTolerance);
 }
 
 }  // namespace
