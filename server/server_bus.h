@@ -14,7 +14,7 @@
 
 namespace pool::server {
 
-/// Every topic of pool.idl as the server uses it, with DESIGN.md's QoS (common/net's profiles).
+/// Every topic of pool.idl as the server uses it, with docs/PROTOCOL.md's QoS (net's profiles).
 /// Members are built in declaration order and destroyed in reverse, the participant last.
 struct ServerBus : net::ProtocolTopics {
   /// Joins `domain` (its configuration from CYCLONEDDS_URI). Throws net::DdsError on failure.

@@ -1,4 +1,4 @@
-// Named QoS profiles, one per topic of DESIGN.md, applied alike to its writers and readers.
+// Named QoS profiles, one per topic of docs/PROTOCOL.md, applied alike to its writers and readers.
 #pragma once
 
 #include <chrono>

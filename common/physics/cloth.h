@@ -40,7 +40,7 @@ class ClothModel {
   virtual MotionState classify(const Ball& ball) const = 0;
 };
 
-/// Leckie & Greenspan (2005), as PHYSICS.md states it: while the contact point slips, only sliding
+/// Leckie & Greenspan (2005), docs/PHYSICS.md: while the contact point slips, only sliding
 /// friction u_s·m·g against the slip; once rolling, v and ω·R fall together at u_r·g; spin about
 /// the vertical decays at spin_decel; airborne balls feel gravity only.
 std::unique_ptr<ClothModel> makeClothLeckieGreenspan(const table::PhysicsParams& params);

@@ -1,4 +1,4 @@
-// Every physics coefficient of a table, under the names of SIM-CONTRACT.md, with PHYSICS.md's
+// Every physics coefficient of a table, under the names of SIM-CONTRACT.md, with docs/PHYSICS.md's
 // defaults.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 namespace pool::table {
 
-/// The coefficients the physics reads. Units SI; defaults are PHYSICS.md's typical values.
+/// The coefficients the physics reads. Units SI; defaults are docs/PHYSICS.md's typical values.
 struct PhysicsParams {
   double u_s = 0.2;           ///< ball–cloth sliding friction
   double u_r = 0.01;          ///< rolling resistance: a rolling ball slows at u_r·g

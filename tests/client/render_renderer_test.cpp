@@ -8,6 +8,7 @@
 #include "client/render/offscreen.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
+#include "display_check.h"
 #include "png_image.h"
 
 namespace pool::client::test {
@@ -25,7 +26,7 @@ class RendererTest : public ::testing::Test {
     try {
       context_.emplace(kW, kH);
     } catch (const std::runtime_error& e) {
-      GTEST_SKIP() << "no OpenGL context: " << e.what();
+      POOL_NO_DISPLAY("no OpenGL context: " << e.what());
     }
     renderer_ = std::make_unique<render::Renderer>(scene_);
     camera_ = render::overviewCamera(scene_.geometry, float(kW) / float(kH));

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "display_check.h"
 #include "png_image.h"
 
 namespace pool::client::test {
@@ -16,8 +17,9 @@ namespace pool::client::test {
 class ScreenshotTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0)
-      GTEST_SKIP() << "xvfb-run is not installed";
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
+      POOL_NO_DISPLAY("xvfb-run is not installed");
+    }
     png_ = "/tmp/pool-render-test-" + std::to_string(::getpid()) + ".png";
   }
   void TearDown() override {

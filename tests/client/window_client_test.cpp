@@ -13,6 +13,7 @@
 #include "client/app/aim.h"
 #include "client/app/controls.h"
 #include "client_fixture.h"
+#include "display_check.h"
 
 namespace pool::client::test {
 namespace {
@@ -24,7 +25,7 @@ class WindowClientTest : public ClientIntegrationTest {
   void SetUp() override {
     ClientIntegrationTest::SetUp();
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
-      GTEST_SKIP() << "xvfb-run is not installed";
+      POOL_NO_DISPLAY("xvfb-run is not installed");
     }
   }
 

@@ -1,4 +1,4 @@
-// The QoS profiles behave as DESIGN.md needs: late joiners, keep-all order, best effort, disposal.
+// QoS profiles as docs/PROTOCOL.md needs: late joiners, keep-all order, best effort, disposal.
 #include <gtest/gtest.h>
 
 #include <chrono>

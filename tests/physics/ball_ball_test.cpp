@@ -60,7 +60,7 @@ TEST(BallBall, ThirtyDegreeRuleWithIdealBalls) {
   }
 }
 
-// PHYSICS.md: "with the default friction it comes out about 1° less". Restitution is what does
+// docs/PHYSICS.md: "about 1° less with the default restitution". Restitution is what does
 // that: e_b = 0.95 keeps (1 − e)/2 of the normal speed in the cue ball, pulling it toward its
 // original line; we check 0.5°–2° less with e_b = 0.95 and no friction. Ball–ball friction acting
 // on the full slip (the topspin's vertical slip included, which is also why a rolling cue ball

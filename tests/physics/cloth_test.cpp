@@ -1,4 +1,4 @@
-// Closed-form checks of the cloth model on an open slate (PHYSICS.md: Leckie & Greenspan,
+// Closed-form checks of the cloth model on an open slate (docs/PHYSICS.md: Leckie & Greenspan,
 // Alciatore).
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@ namespace {
 
 constexpr double g = kGravity;
 
-// A centre hit at 2 m/s cue speed gives v0 = 3.07694 m/s (PHYSICS.md); everything after follows
+// A centre hit at 2 m/s cue speed gives v0 = 3.07694 m/s (docs/PHYSICS.md); all else follows
 // from u_s = 0.2 and u_r = 0.01. The event times come from the engine's analytic transition
 // times and the distances from ODE's integration, so they must agree to far better than the
 // 1 % the issue allows: 1e-6 relative.
@@ -63,7 +63,7 @@ TEST(Cloth, RollSpeedAfterSlidingIsFiveSeventhsOfStrikeSpeed) {
   }
 }
 
-// Follow and draw (PHYSICS.md): cue 2 m/s, b = ±0.5 → v0 = 2.07793, |ω| = 90.898 rad/s; follow
+// Follow, draw (docs/PHYSICS.md): cue 2 m/s, b = ±0.5 → v0 = 2.07793, |ω| = 90.898 rad/s; follow
 // rolls at 2.22635 m/s after 0.075649 s, draw at 0.74212 m/s after 0.680841 s. Tolerance 1e-5
 // relative (the published figures have six significant digits).
 TEST(Cloth, FollowAndDrawRollSpeedsAndTimes) {

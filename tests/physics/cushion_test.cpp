@@ -57,7 +57,7 @@ TEST(Cushion, RunningEnglishWidensAndReverseNarrowsTheRebound) {
   EXPECT_LT(reverse.speed, none.speed);
 }
 
-// The normal speed after the impact is about e_c times the speed in (PHYSICS.md). The nose above
+// The normal speed after the impact is about e_c times the speed in (docs/PHYSICS.md). A nose above
 // the centre tilts the impulse down into the slate, which absorbs that part, so the horizontal
 // normal speed comes back at e_c·cos²θ-ish: within 0.7·e_c .. e_c.
 TEST(Cushion, NormalSpeedComesBackScaledByRestitution) {

@@ -2,6 +2,8 @@
 // ball.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -53,14 +55,27 @@ inline const Ball& ballById(const ShotOutcome& o, int id) {
   return o.balls.front();
 }
 
-/// Runs one shot on the open cloth.
+/// Places the balls and shoots. A refused placement or shot fails the calling test (with the
+/// reason) and returns an empty outcome, which the caller's own checks then also reject.
+inline ShotOutcome placeAndShoot(Simulation& sim, const std::vector<Ball>& balls,
+                                 const CueShot& shot, const SimOptions& options) {
+  if (auto placed = sim.setBalls(balls); !placed) {
+    ADD_FAILURE() << "placement refused: " << placed.error();
+    return {};
+  }
+  auto out = sim.shoot(shot, options);
+  if (!out) {
+    ADD_FAILURE() << "shot refused: " << out.error();
+    return {};
+  }
+  return *out;
+}
+
+/// Runs one shot on the open cloth; fails the test if placement or shot are refused.
 inline ShotOutcome shootOpen(const table::TableSpec& spec, std::vector<Ball> balls,
                              const CueShot& shot, SimOptions options = {}) {
   Simulation sim(spec, openGeometry(spec));
-  auto placed = sim.setBalls(balls);
-  if (!placed) return {};
-  auto out = sim.shoot(shot, options);
-  return out ? *out : ShotOutcome{};
+  return placeAndShoot(sim, balls, shot, options);
 }
 
 }  // namespace pool::physics::test
@@ -77,11 +92,15 @@ inline Ball movingBall(int id, double x, double y, const Vec3& vel, const Vec3& 
   return b;
 }
 
-/// Runs balls already in motion on the open cloth, sampling at `hz`.
+/// Runs balls already in motion on the open cloth, sampling at `hz`; fails the test if the
+/// placement is refused.
 inline ShotOutcome runOpen(const table::TableSpec& spec, const std::vector<Ball>& balls,
                            double hz = 0.0) {
   Simulation sim(spec, openGeometry(spec));
-  if (!sim.setBalls(balls)) return {};
+  if (auto placed = sim.setBalls(balls); !placed) {
+    ADD_FAILURE() << "placement refused: " << placed.error();
+    return {};
+  }
   SimOptions opt;
   opt.sample_hz = hz;
   return sim.run(opt);
@@ -125,14 +144,13 @@ inline const RealTable& realTable() {
   return t;
 }
 
-/// Shoots on the real table; fails the test (empty outcome) if placement or shot are refused.
+/// Shoots on the real table; fails the test (with the reason, and an empty outcome) if placement
+/// or shot are refused.
 inline ShotOutcome shootReal(const std::vector<Ball>& balls, const CueShot& shot,
                              SimOptions options = {}) {
   const auto& t = realTable();
   Simulation sim(t.spec, t.geometry);
-  if (!sim.setBalls(balls)) return {};
-  auto out = sim.shoot(shot, options);
-  return out ? *out : ShotOutcome{};
+  return placeAndShoot(sim, balls, shot, options);
 }
 
 /// The 8-ball break of the issue: rack of seed 0, cue ball on the head spot, 8 m/s at the apex.

@@ -37,7 +37,7 @@ TEST(Strike, HeightOffsetGivesSpinAboutRollAxis) {
 }
 
 TEST(Strike, RightEnglishSpinsCounterClockwiseAndSquirtsLeft) {
-  // PHYSICS.md's example uses m_ball/m_end = 20 exactly (the default end mass gives 20.01).
+  // docs/PHYSICS.md's example uses m_ball/m_end = 20 exactly (the default end mass gives 20.01).
   table::PhysicsParams params;
   params.cue_end_mass = params.ball_mass / 20.0;
   CueShot shot;
