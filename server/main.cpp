@@ -44,7 +44,7 @@ pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& 
   options.table = config.table;
   options.match.snapshot_hz = config.snapshot_hz;
   options.match.unpaced = config.fast;
-  options.protocol_version = pool::net::kProtocolVersion;
+  options.protocol_version = pool::protocol::kProtocolVersion;
   return options;
 }
 

@@ -5,7 +5,7 @@
 
 namespace pool::server {
 
-void RejectionTally::add(net::RejectReason reason, double now) {
+void RejectionTally::add(protocol::RejectReason reason, double now) {
   const auto index = static_cast<std::size_t>(reason);
   if (index >= kReasons) return;
   if (!since_) since_ = now;
@@ -21,7 +21,7 @@ std::optional<std::string> RejectionTally::summary(double now) {
     if (counts_[i] == 0) continue;
     n += counts_[i];
     reasons += (reasons.empty() ? "" : ", ") +
-               std::string(net::toString(static_cast<net::RejectReason>(i))) + " " +
+               std::string(protocol::toString(static_cast<protocol::RejectReason>(i))) + " " +
                std::to_string(counts_[i]);
   }
   char head[96];

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "net/protocol_enums.h"
+#include "protocol/protocol_enums.h"
 
 namespace pool::server {
 
@@ -17,7 +17,7 @@ class RejectionTally {
   explicit RejectionTally(double period = 1.0) : period_(period) {}
 
   /// Counts one refusal at `now` (s, monotonic).
-  void add(net::RejectReason reason, double now);
+  void add(protocol::RejectReason reason, double now);
 
   /// Once `period` s have passed since the first refusal counted: "refused N shot commands in
   /// T s: reason n, ..." (reasons in enum order), and the counts start over. Empty otherwise.
@@ -27,7 +27,8 @@ class RejectionTally {
   std::uint64_t total() const { return total_; }
 
  private:
-  static constexpr std::size_t kReasons = static_cast<std::size_t>(net::RejectReason::Unsigned) + 1;
+  static constexpr std::size_t kReasons =
+      static_cast<std::size_t>(protocol::RejectReason::Unsigned) + 1;
 
   double period_;
   std::optional<double> since_;  ///< when the first refusal of this period was counted

@@ -68,7 +68,7 @@ class ServerLoop {
   ServerConfig config_;
   MatchRegistry& registry_;
   ServerBus& bus_;
-  net::CommandLimits limits_;
+  protocol::CommandLimits limits_;
   store::MatchStore* store_;
   MatchReplay* replay_ = nullptr;
   bool replay_reported_ = false;

@@ -56,7 +56,7 @@ pool_MatchInfo matchInfo(const Match& match, const std::string& server_id) {
     info.seats_taken = static_cast<std::uint8_t>(info.seats_taken + (seat.taken() ? 1 : 0));
   }
   info.spectators = static_cast<std::uint32_t>(match.spectators());
-  info.protocol_version = net::kProtocolVersion;
+  info.protocol_version = protocol::kProtocolVersion;
   return info;
 }
 

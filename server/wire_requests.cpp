@@ -45,15 +45,15 @@ pool_JoinReply unreadableJoinReply(const pool_JoinRequest& r, const std::string&
   return reply;
 }
 
-net::CommandLimits commandLimits(const table::TableSpec& spec) {
-  net::CommandLimits limits;
+protocol::CommandLimits commandLimits(const table::TableSpec& spec) {
+  protocol::CommandLimits limits;
   limits.miscue_limit = spec.params.miscue_limit;
   limits.half_length = spec.length / 2;
   limits.half_width = spec.width / 2;
   return limits;
 }
 
-ReadCommand readCommand(const pool_ShotCommand& command, const net::CommandLimits& limits) {
+ReadCommand readCommand(const pool_ShotCommand& command, const protocol::CommandLimits& limits) {
   ReadCommand out;
   out.refusal.seat = command.seat;
   out.refusal.seq = command.seq;

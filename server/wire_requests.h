@@ -8,7 +8,7 @@
 #include "match/match_types.h"
 #include "net/messages.h"
 #include "net/shot_command_check.h"
-#include "net/shot_request.h"
+#include "protocol/shot_request.h"
 #include "table/table_spec.h"
 
 namespace pool::server {
@@ -22,16 +22,16 @@ pool_JoinReply unreadableJoinReply(const pool_JoinRequest& request, const std::s
                                    const std::string& server_id);
 
 /// The wire limits of a command on `spec`'s table (speed, elevation, miscue, playing surface).
-net::CommandLimits commandLimits(const table::TableSpec& spec);
+protocol::CommandLimits commandLimits(const table::TableSpec& spec);
 
 /// A shot command that passed the wire checks, or the refusal to publish for it.
 struct ReadCommand {
-  net::ShotRequest request;  ///< meaningful when `refusal` is accepted()
-  CommandAnswer refusal;     ///< reason None: the request goes on to its match
+  protocol::ShotRequest request;  ///< meaningful when `refusal` is accepted()
+  CommandAnswer refusal;          ///< reason None: the request goes on to its match
 };
 
 /// Checks `command`'s fields (net's validateShotCommand) and converts it; a failure becomes a
 /// Malformed refusal (BadSignature for a bad signature field).
-ReadCommand readCommand(const pool_ShotCommand& command, const net::CommandLimits& limits);
+ReadCommand readCommand(const pool_ShotCommand& command, const protocol::CommandLimits& limits);
 
 }  // namespace pool::server

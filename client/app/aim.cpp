@@ -7,7 +7,7 @@
 
 namespace pool::app {
 
-void clampAim(AimState& aim, const net::CommandLimits& limits) {
+void clampAim(AimState& aim, const protocol::CommandLimits& limits) {
   aim.yaw = std::remainder(aim.yaw, 2 * std::numbers::pi);
   if (aim.yaw <= -std::numbers::pi) aim.yaw += 2 * std::numbers::pi;
   // Just inside the circle: the server compares hypot() with the limit itself.
@@ -21,14 +21,14 @@ void clampAim(AimState& aim, const net::CommandLimits& limits) {
   aim.power = std::clamp(aim.power, 0.0, 1.0);
 }
 
-double cueSpeedOf(double power, const net::CommandLimits& limits) {
+double cueSpeedOf(double power, const protocol::CommandLimits& limits) {
   return kMinCueSpeed + std::clamp(power, 0.0, 1.0) * (limits.max_speed - kMinCueSpeed);
 }
 
-net::ShotRequest requestOf(const AimState& aim, const net::CommandLimits& limits) {
+protocol::ShotRequest requestOf(const AimState& aim, const protocol::CommandLimits& limits) {
   AimState clamped = aim;
   clampAim(clamped, limits);
-  net::ShotRequest request;
+  protocol::ShotRequest request;
   request.cue.yaw = clamped.yaw;
   request.cue.tip_side = clamped.tip_side;
   request.cue.tip_height = clamped.tip_height;

@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "net/shot_command_check.h"
-#include "net/shot_request.h"
+#include "protocol/command_limits.h"
+#include "protocol/shot_request.h"
 
 namespace pool::app {
 
@@ -33,18 +33,18 @@ struct AimState {
   double power = 0.0;       ///< 0–1 of the power bar
   std::optional<Eigen::Vector2d> cue_ball_at;  ///< ball in hand: where the cue ball goes, m
   ShotCall call;
-  net::ShotOption option = net::ShotOption::None;
+  protocol::ShotOption option = protocol::ShotOption::None;
 };
 
 /// Keeps `aim`'s numbers inside `limits`: yaw wrapped to (-pi, pi], the tip inside the miscue
 /// circle (scaled back along its direction), elevation in [0, max], power in [0, 1].
-void clampAim(AimState& aim, const net::CommandLimits& limits);
+void clampAim(AimState& aim, const protocol::CommandLimits& limits);
 
 /// Cue speed of power `power` (0–1), m/s: kMinCueSpeed to the limit's max_speed.
-double cueSpeedOf(double power, const net::CommandLimits& limits);
+double cueSpeedOf(double power, const protocol::CommandLimits& limits);
 
 /// The command for `aim` (match, seat, token and sequence are the client's to fill in): the cue's
 /// speed from the power, the call (none with a safety), the placement and the option.
-net::ShotRequest requestOf(const AimState& aim, const net::CommandLimits& limits);
+protocol::ShotRequest requestOf(const AimState& aim, const protocol::CommandLimits& limits);
 
 }  // namespace pool::app

@@ -19,7 +19,7 @@ int axis(bool minus, bool plus) {
 
 }  // namespace
 
-Controls::Controls(net::CommandLimits limits, PlacementArea area, CameraRig camera,
+Controls::Controls(protocol::CommandLimits limits, PlacementArea area, CameraRig camera,
                    ControlRates rates)
     : limits_(limits), area_(area), camera_(std::move(camera)), rates_(rates) {}
 
@@ -30,7 +30,7 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   charging_ = false;
   aim_.power = 0.0;
   aim_.call = ShotCall{};
-  aim_.option = net::ShotOption::None;
+  aim_.option = protocol::ShotOption::None;
   aim_.cue_ball_at.reset();
   if (in_hand != rules::BallInHand::None) placeCueBall(cue_ball.head<2>());
   camera_.setAiming(true);
@@ -237,7 +237,7 @@ void Controls::setViewport(int width, int height) {
   camera_.setAspect(static_cast<double>(width) / height);
 }
 
-std::optional<net::ShotRequest> Controls::takeShot() {
+std::optional<protocol::ShotRequest> Controls::takeShot() {
   auto shot = std::move(shot_);
   shot_.reset();
   return shot;

@@ -9,8 +9,8 @@
 #include "client/app/aim.h"
 #include "client/app/camera_rig.h"
 #include "client/app/input.h"
-#include "net/shot_command_check.h"
-#include "net/shot_request.h"
+#include "protocol/command_limits.h"
+#include "protocol/shot_request.h"
 #include "rules/game_state.h"
 
 namespace pool::app {
@@ -54,7 +54,7 @@ enum class ControlMode : std::uint8_t {
 
 class Controls {
  public:
-  Controls(net::CommandLimits limits, PlacementArea area, CameraRig camera,
+  Controls(protocol::CommandLimits limits, PlacementArea area, CameraRig camera,
            ControlRates rates = {});
 
   /// Our turn starts: aiming from the cue ball at `cue_ball` (m), with the cue ball in hand as
@@ -79,12 +79,12 @@ class Controls {
   void advance(double dt);
 
   /// The command of the shot released with Space since the last call, if any.
-  std::optional<net::ShotRequest> takeShot();
+  std::optional<protocol::ShotRequest> takeShot();
 
   /// The automatic call for the current aim; ignored once the player chose one.
   void suggestCall(const ShotCall& call);
   /// The answer to the rules' pending choice that goes with the next shot.
-  void setOption(net::ShotOption option) { aim_.option = option; }
+  void setOption(protocol::ShotOption option) { aim_.option = option; }
 
   const AimState& aim() const { return aim_; }
   bool charging() const { return charging_; }
@@ -94,7 +94,7 @@ class Controls {
   rules::BallInHand ballInHand() const { return in_hand_; }
   const CameraRig& camera() const { return camera_; }
   const Toggles& toggles() const { return toggles_; }
-  const net::CommandLimits& limits() const { return limits_; }
+  const protocol::CommandLimits& limits() const { return limits_; }
 
  private:
   enum class Drag : std::uint8_t { None, Cue, View, CueBall };
@@ -107,7 +107,7 @@ class Controls {
   bool held(Key key) const { return held_.count(key) != 0; }
   void followCue();
 
-  net::CommandLimits limits_;
+  protocol::CommandLimits limits_;
   PlacementArea area_;
   CameraRig camera_;
   ControlRates rates_;
@@ -116,7 +116,7 @@ class Controls {
   Eigen::Vector3d cue_ball_ = Eigen::Vector3d::Zero();
   rules::BallInHand in_hand_ = rules::BallInHand::None;
   bool charging_ = false;
-  std::optional<net::ShotRequest> shot_;
+  std::optional<protocol::ShotRequest> shot_;
   std::map<Key, Mods> held_;  ///< keys held, with the modifiers they were pressed with
   Toggles toggles_;
   Drag drag_ = Drag::None;

@@ -232,11 +232,11 @@ int MatchSession::localShooter() const {
   return std::find(seats.begin(), seats.end(), v->shooter) != seats.end() ? v->shooter : -1;
 }
 
-Result<std::uint32_t> MatchSession::shoot(int seat, net::ShotRequest request) {
+Result<std::uint32_t> MatchSession::shoot(int seat, protocol::ShotRequest request) {
   for (auto& c : clients_) {
     if (!c->seat() || c->seat()->match != match_ || c->seat()->seat != seat) continue;
     const client::MatchView* v = view();
-    const bool shoots = net::optionShoots(request.option);
+    const bool shoots = protocol::optionShoots(request.option);
     auto sent = c->shoot(std::move(request));
     if (sent) {
       unanswered_ = *sent;

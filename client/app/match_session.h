@@ -11,7 +11,7 @@
 #include "client/app/playback_clock.h"
 #include "client/net/game_client.h"
 #include "core/result.h"
-#include "net/shot_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::app {
 
@@ -81,7 +81,7 @@ class MatchSession {
   /// Seats held by this screen.
   std::vector<int> localSeats() const;
   /// Sends `request` for seat `seat` (one of localSeats). Returns the sequence number.
-  Result<std::uint32_t> shoot(int seat, net::ShotRequest request);
+  Result<std::uint32_t> shoot(int seat, protocol::ShotRequest request);
   /// Asks the server for a rematch (every local seat) after a match is over.
   void rematch();
   /// `listener` (or null) hears the frames and final shot reports of the match followed.

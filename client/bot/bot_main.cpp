@@ -39,9 +39,9 @@ int run(const Flags& flags) {
   }
   // The key its commands are signed with lives beside the seat file: a restarted bot rejoins
   // its seat with the same key.
-  std::optional<net::KeyPair> key;
+  std::optional<protocol::KeyPair> key;
   if (!flags.bot.seat_file.empty()) {
-    auto loaded = net::loadOrCreateKeyFile(bot::keyFileFor(flags.bot.seat_file));
+    auto loaded = protocol::loadOrCreateKeyFile(bot::keyFileFor(flags.bot.seat_file));
     if (!loaded) {
       spdlog::error("key file: {}", loaded.error());
       return 2;

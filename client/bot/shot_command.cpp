@@ -3,24 +3,24 @@
 
 namespace pool::bot {
 
-net::ShotOption optionOf(rules::Choice choice) {
+protocol::ShotOption optionOf(rules::Choice choice) {
   switch (choice) {
     case rules::Choice::PlayOn:
-      return net::ShotOption::PlayOn;
+      return protocol::ShotOption::PlayOn;
     case rules::Choice::BallInHand:
-      return net::ShotOption::BallInHand;
+      return protocol::ShotOption::BallInHand;
     case rules::Choice::RespotEight:
-      return net::ShotOption::RespotEight;
+      return protocol::ShotOption::RespotEight;
     case rules::Choice::ReBreak:
-      return net::ShotOption::ReBreak;
+      return protocol::ShotOption::ReBreak;
     case rules::Choice::OpponentReBreaks:
-      return net::ShotOption::OpponentReBreaks;
+      return protocol::ShotOption::OpponentReBreaks;
   }
-  return net::ShotOption::None;
+  return protocol::ShotOption::None;
 }
 
-net::ShotRequest requestOf(const PlannedShot& shot) {
-  net::ShotRequest request;
+protocol::ShotRequest requestOf(const PlannedShot& shot) {
+  protocol::ShotRequest request;
   request.cue = shot.cue;
   if (!shoots(shot)) {
     request.cue = physics::CueShot{};
@@ -31,7 +31,7 @@ net::ShotRequest requestOf(const PlannedShot& shot) {
   request.called_pocket = shot.called_pocket;
   request.safety = shot.safety;
   request.cue_ball_at = shot.cue_ball_at;
-  request.option = shot.choice ? optionOf(*shot.choice) : net::ShotOption::None;
+  request.option = shot.choice ? optionOf(*shot.choice) : protocol::ShotOption::None;
   return request;
 }
 

@@ -2,15 +2,15 @@
 #pragma once
 
 #include "client/bot/ai/planned_shot.h"
-#include "net/shot_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::bot {
 
 /// The rules' choice as the protocol's option.
-net::ShotOption optionOf(rules::Choice choice);
+protocol::ShotOption optionOf(rules::Choice choice);
 
 /// The command for `shot` (match, seat, token and sequence are the client's to fill in). A
 /// re-racking choice carries a harmless stroke that the server does not play.
-net::ShotRequest requestOf(const PlannedShot& shot);
+protocol::ShotRequest requestOf(const PlannedShot& shot);
 
 }  // namespace pool::bot

@@ -6,10 +6,10 @@
 
 #include "client/net/client_endpoints.h"
 #include "client/net/wire_read.h"
-#include "net/command_signature.h"
 #include "net/convert.h"
-#include "net/protocol_version.h"
 #include "net/wire_fields.h"
+#include "protocol/command_signature.h"
+#include "protocol/protocol_version.h"
 
 namespace pool::client {
 
@@ -21,8 +21,8 @@ std::string randomClientId() {
   return text;
 }
 
-GameClient::GameClient(ClientOptions options, std::optional<net::KeyPair> key)
-    : options_(std::move(options)), key_(key ? *key : net::generateKeyPair()) {
+GameClient::GameClient(ClientOptions options, std::optional<protocol::KeyPair> key)
+    : options_(std::move(options)), key_(key ? *key : protocol::generateKeyPair()) {
   if (options_.client_id.empty()) options_.client_id = randomClientId();
   endpoints_ = std::make_unique<ClientEndpoints>(options_.domain);
 }
@@ -36,10 +36,10 @@ void GameClient::problem(const std::string& what) {
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
                                    std::uint64_t token) {
-  net::SeatRequest r;
+  protocol::SeatRequest r;
   r.client = options_.client_id;
   r.request = next_request_++;
-  r.protocol_version = net::kProtocolVersion;
+  r.protocol_version = protocol::kProtocolVersion;
   r.match = match;
   r.action = action;
   r.seat = seat;
@@ -50,11 +50,11 @@ std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, 
   return next_request_ - 1;
 }
 
-void GameClient::send(net::SeatRequest& r) {
+void GameClient::send(protocol::SeatRequest& r) {
   r.public_key = key().publicKey();
-  if (net::changesSeat(r)) {
+  if (protocol::changesSeat(r)) {
     r.seq = ++last_seq_;
-    net::signSeatRequest(r, key());
+    protocol::signSeatRequest(r, key());
   }
   if (auto status = endpoints_->join_requests.write(*toWire(r)); !status) {
     last_problem_ = "join request: " + status.error;
@@ -87,13 +87,13 @@ std::uint32_t GameClient::requestRematch() {
   return sendJoin(seat_->match, JoinAction::Rematch, seat_->seat, seat_->token);
 }
 
-Result<std::uint32_t> GameClient::shoot(net::ShotRequest request) {
+Result<std::uint32_t> GameClient::shoot(protocol::ShotRequest request) {
   if (!seat_) return Result<std::uint32_t>::fail("no seat held");
   request.match = seat_->match;
   request.seat = seat_->seat;
   request.seat_token = seat_->token;
   request.seq = ++last_seq_;
-  net::signCommand(request, key());
+  protocol::signCommand(request, key());
   const auto sample = net::toWire(request);
   if (auto status = endpoints_->commands.write(*sample); !status) {
     return Result<std::uint32_t>::fail("shot command: " + status.error);
@@ -155,7 +155,7 @@ bool GameClient::accept(const JoinAnswer& answer) {
     send(pending.request);
     return false;
   }
-  const net::SeatRequest sent = std::move(pending.request);
+  const protocol::SeatRequest sent = std::move(pending.request);
   pending_.erase(it);
   if (!answer.accepted()) return true;
   if (sent.action == JoinAction::Seat || sent.action == JoinAction::Rejoin) {

@@ -15,9 +15,9 @@
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
 #include "core/result.h"
-#include "net/key_pair.h"
-#include "net/seat_request.h"
-#include "net/shot_request.h"
+#include "protocol/key_pair.h"
+#include "protocol/seat_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::client {
 
@@ -47,14 +47,14 @@ class GameClient {
  public:
   /// `key` signs the commands of its seats (its public half goes with seat and rejoin requests);
   /// empty: a fresh pair for this session. Keep it to rejoin a seat from another process.
-  explicit GameClient(ClientOptions options, std::optional<net::KeyPair> key = std::nullopt);
+  explicit GameClient(ClientOptions options, std::optional<protocol::KeyPair> key = std::nullopt);
   ~GameClient();
   GameClient(const GameClient&) = delete;
   GameClient& operator=(const GameClient&) = delete;
 
   const std::string& clientId() const { return options_.client_id; }
   const std::string& name() const { return options_.name; }
-  const net::KeyPair& key() const { return key_; }
+  const protocol::KeyPair& key() const { return key_; }
 
   // ---- Join requests: each returns its request number, which the answer echoes -------------
   std::uint32_t requestSeat(const std::string& match, int seat = -1);
@@ -74,7 +74,7 @@ class GameClient {
   /// Sends `request` for the seat held, filling in match, seat, token and the next sequence
   /// number, signed with the client's key. Returns the sequence number used, or why nothing was
   /// sent.
-  Result<std::uint32_t> shoot(net::ShotRequest request);
+  Result<std::uint32_t> shoot(protocol::ShotRequest request);
   /// Makes the next sequence number larger than `seq` (after a restart, from a saved number or
   /// from the server's last result for the seat).
   void noteSequence(std::uint32_t seq);
@@ -104,17 +104,17 @@ class GameClient {
   void pollResults(std::vector<ClientEvent>& out);
   void pollFrames(std::vector<ClientEvent>& out);
   struct PendingJoin {
-    net::SeatRequest request;
+    protocol::SeatRequest request;
     bool retried = false;  ///< sent again once after a stale-sequence answer
   };
 
-  void send(net::SeatRequest& request);
+  void send(protocol::SeatRequest& request);
   /// Applies an answer to one of our requests; false when it was consumed by a retry.
   bool accept(const JoinAnswer& answer);
   void problem(const std::string& what);
 
   ClientOptions options_;
-  net::KeyPair key_;
+  protocol::KeyPair key_;
   std::unique_ptr<ClientEndpoints> endpoints_;
   std::uint32_t next_request_ = 1;
   std::map<std::uint32_t, PendingJoin> pending_;  ///< our requests not answered yet

@@ -197,7 +197,7 @@ Result<TableFrame> fromWire(const pool_TableSnapshot& snapshot) {
   return Result<TableFrame>::ok(std::move(frame));
 }
 
-net::Sample<pool_JoinRequest> toWire(const net::SeatRequest& fields) {
+net::Sample<pool_JoinRequest> toWire(const protocol::SeatRequest& fields) {
   net::Sample<pool_JoinRequest> sample;
   pool_JoinRequest& request = *sample;
   net::setText(request.client, fields.client);
@@ -208,9 +208,9 @@ net::Sample<pool_JoinRequest> toWire(const net::SeatRequest& fields) {
   request.seat = static_cast<std::int16_t>(fields.seat);
   net::setText(request.name, fields.name);
   request.seat_token = fields.token;
-  net::setBytes(request.public_key, fields.public_key, net::kPublicKeyBytes);
+  net::setBytes(request.public_key, fields.public_key, protocol::kPublicKeyBytes);
   request.seq = fields.seq;
-  net::setBytes(request.signature, fields.signature, net::kSignatureBytes);
+  net::setBytes(request.signature, fields.signature, protocol::kSignatureBytes);
   return sample;
 }
 

@@ -10,7 +10,7 @@
 #include "core/result.h"
 #include "net/messages.h"
 #include "net/sample.h"
-#include "net/seat_request.h"
+#include "protocol/seat_request.h"
 
 namespace pool::client {
 
@@ -21,6 +21,6 @@ Result<ShotReport> fromWire(const pool_ShotResult& result);
 Result<TableFrame> fromWire(const pool_TableSnapshot& snapshot);
 
 /// A JoinRequest sample (text cut to its bounds, key and signature to theirs).
-net::Sample<pool_JoinRequest> toWire(const net::SeatRequest& request);
+net::Sample<pool_JoinRequest> toWire(const protocol::SeatRequest& request);
 
 }  // namespace pool::client

@@ -61,7 +61,7 @@ void choicePanel(const HudInput& in, HudActions& actions) {
   ImGui::Begin("Your choice", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   const auto chosen = in.controls->aim().option;
   for (const rules::Choice c : in.view->options) {
-    const net::ShotOption option = bot::optionOf(c);
+    const protocol::ShotOption option = bot::optionOf(c);
     const bool on = chosen == option;
     if (ImGui::RadioButton(rules::toString(c), on)) actions.option = option;
   }

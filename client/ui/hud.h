@@ -10,7 +10,7 @@
 #include "client/app/controls.h"
 #include "client/app/match_session.h"
 #include "client/net/match_types.h"
-#include "net/shot_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::ui {
 
@@ -30,7 +30,7 @@ struct HudInput {
 
 /// What the player clicked.
 struct HudActions {
-  std::optional<net::ShotOption> option;  ///< an answer to the rules' pending choice
+  std::optional<protocol::ShotOption> option;  ///< an answer to the rules' pending choice
   bool rematch = false;
   bool leave = false;
   bool visit_room = false;  ///< the winner goes to the Magic Eight Ball room

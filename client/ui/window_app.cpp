@@ -118,8 +118,8 @@ class SoundListener final : public app::ShotListener {
   audio::SoundBoard board_;
 };
 
-net::CommandLimits limitsOf(const bot::TableView& view) {
-  net::CommandLimits limits;
+protocol::CommandLimits limitsOf(const bot::TableView& view) {
+  protocol::CommandLimits limits;
   limits.half_length = view.halfLength();
   limits.half_width = view.halfWidth();
   return limits;
@@ -266,14 +266,14 @@ class WindowApp {
       if (legal) controls_.moveCueBall(*legal);
     }
     for (const rules::Choice c : v->options) {
-      if (net::optionShoots(bot::optionOf(c))) {
+      if (protocol::optionShoots(bot::optionOf(c))) {
         controls_.setOption(bot::optionOf(c));
         break;
       }
     }
   }
 
-  void send(net::ShotRequest request) {
+  void send(protocol::ShotRequest request) {
     const int seat = aiming_seat_;
     aiming_seat_ = -1;
     auto sent = session_.shoot(seat, request);
@@ -293,7 +293,7 @@ class WindowApp {
                         {"speed", request.cue.speed},
                         {"speed_is_ball", request.cue.speed_is_ball},
                         {"safety", request.safety},
-                        {"option", net::toString(request.option)}};
+                        {"option", protocol::toString(request.option)}};
     if (request.called_ball) {
       line["called_ball"] = *request.called_ball;
       line["called_pocket"] = request.called_pocket;
@@ -314,13 +314,13 @@ class WindowApp {
     while (notes_.size() > kNotesShown) notes_.pop_front();
   }
 
-  void chooseOption(net::ShotOption option) {
-    if (net::optionShoots(option)) {
+  void chooseOption(protocol::ShotOption option) {
+    if (protocol::optionShoots(option)) {
       controls_.setOption(option);
       return;
     }
     // A re-rack carries no shot: sent at once with a harmless stroke the server does not play.
-    net::ShotRequest request;
+    protocol::ShotRequest request;
     request.cue.speed = 1.0;
     request.cue.speed_is_ball = true;
     request.option = option;

@@ -224,43 +224,44 @@ Result<physics::EventLog> getEvents(const dds_sequence_pool_ShotEvent& seq) {
   return Result<physics::EventLog>::ok(std::move(events));
 }
 
-pool_ShotOption toWire(ShotOption option) {
+pool_ShotOption toWire(protocol::ShotOption option) {
   switch (option) {
-    case ShotOption::None:
+    case protocol::ShotOption::None:
       return pool_OPTION_NONE;
-    case ShotOption::PlayOn:
+    case protocol::ShotOption::PlayOn:
       return pool_OPTION_PLAY_ON;
-    case ShotOption::BallInHand:
+    case protocol::ShotOption::BallInHand:
       return pool_OPTION_BALL_IN_HAND;
-    case ShotOption::RespotEight:
+    case protocol::ShotOption::RespotEight:
       return pool_OPTION_RESPOT_EIGHT;
-    case ShotOption::ReBreak:
+    case protocol::ShotOption::ReBreak:
       return pool_OPTION_REBREAK;
-    case ShotOption::OpponentReBreaks:
+    case protocol::ShotOption::OpponentReBreaks:
       return pool_OPTION_OPPONENT_REBREAKS;
   }
   return pool_OPTION_NONE;
 }
 
-Result<ShotOption> fromWire(const pool_ShotOption& option) {
+Result<protocol::ShotOption> fromWire(const pool_ShotOption& option) {
   switch (rawValue(option)) {
     case pool_OPTION_NONE:
-      return Result<ShotOption>::ok(ShotOption::None);
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::None);
     case pool_OPTION_PLAY_ON:
-      return Result<ShotOption>::ok(ShotOption::PlayOn);
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::PlayOn);
     case pool_OPTION_BALL_IN_HAND:
-      return Result<ShotOption>::ok(ShotOption::BallInHand);
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::BallInHand);
     case pool_OPTION_RESPOT_EIGHT:
-      return Result<ShotOption>::ok(ShotOption::RespotEight);
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::RespotEight);
     case pool_OPTION_REBREAK:
-      return Result<ShotOption>::ok(ShotOption::ReBreak);
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::ReBreak);
     case pool_OPTION_OPPONENT_REBREAKS:
-      return Result<ShotOption>::ok(ShotOption::OpponentReBreaks);
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::OpponentReBreaks);
   }
-  return Result<ShotOption>::fail("unknown shot option " + std::to_string(rawValue(option)));
+  return Result<protocol::ShotOption>::fail("unknown shot option " +
+                                            std::to_string(rawValue(option)));
 }
 
-Sample<pool_ShotCommand> toWire(const ShotRequest& request) {
+Sample<pool_ShotCommand> toWire(const protocol::ShotRequest& request) {
   Sample<pool_ShotCommand> sample;
   pool_ShotCommand& c = *sample;
   setText(c.match, request.match);
@@ -286,12 +287,12 @@ Sample<pool_ShotCommand> toWire(const ShotRequest& request) {
   return sample;
 }
 
-Result<ShotRequest> fromWire(const pool_ShotCommand& command) {
+Result<protocol::ShotRequest> fromWire(const pool_ShotCommand& command) {
   const auto option = fromWire(command.option);
   if (!option) {
-    return Result<ShotRequest>::fail(option.error());
+    return Result<protocol::ShotRequest>::fail(option.error());
   }
-  ShotRequest r;
+  protocol::ShotRequest r;
   r.match = std::string(textOf(command.match));
   r.seat = command.seat;
   r.seat_token = command.seat_token;
@@ -309,7 +310,7 @@ Result<ShotRequest> fromWire(const pool_ShotCommand& command) {
   r.option = *option;
   const auto signature = elementsOf(command.signature);
   r.signature.assign(signature.begin(), signature.end());
-  return Result<ShotRequest>::ok(std::move(r));
+  return Result<protocol::ShotRequest>::ok(std::move(r));
 }
 
 }  // namespace pool::net

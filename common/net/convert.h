@@ -8,9 +8,9 @@
 #include "core/result.h"
 #include "net/messages.h"
 #include "net/sample.h"
-#include "net/shot_request.h"
 #include "physics/ball.h"
 #include "physics/events.h"
+#include "protocol/shot_request.h"
 
 namespace pool::net {
 
@@ -40,13 +40,13 @@ Result<physics::EventLog> getEvents(const dds_sequence_pool_ShotEvent& seq);
 
 /// A shot request as a ShotCommand sample (the signature in a buffer the sample owns). Text that
 /// does not fit its bound is cut; a signature longer than 64 bytes is cut.
-Sample<pool_ShotCommand> toWire(const ShotRequest& request);
+Sample<pool_ShotCommand> toWire(const protocol::ShotRequest& request);
 /// A ShotCommand as a shot request; fails only on what the domain type cannot hold (an unknown
 /// option). Ranges are validateShotCommand's job (shot_command_check.h).
-Result<ShotRequest> fromWire(const pool_ShotCommand& command);
+Result<protocol::ShotRequest> fromWire(const pool_ShotCommand& command);
 
 /// Domain option <-> wire option (fails on a value that is no enumerator).
-pool_ShotOption toWire(ShotOption option);
-Result<ShotOption> fromWire(const pool_ShotOption& option);
+pool_ShotOption toWire(protocol::ShotOption option);
+Result<protocol::ShotOption> fromWire(const pool_ShotOption& option);
 
 }  // namespace pool::net

@@ -70,7 +70,7 @@ Check checkOption(const pool_ShotCommand& c) {
   return std::nullopt;
 }
 
-Check checkCue(const pool_ShotCommand& c, const CommandLimits& limits) {
+Check checkCue(const pool_ShotCommand& c, const protocol::CommandLimits& limits) {
   if (!(c.speed > 0.0 && c.speed <= limits.max_speed)) {
     return fail(CommandProblem::SpeedOutOfRange,
                 "speed: must be in (0, " + number(limits.max_speed) + "] m/s");
@@ -106,7 +106,7 @@ Check checkCall(const pool_ShotCommand& c) {
   return std::nullopt;
 }
 
-Check checkPlacement(const pool_ShotCommand& c, const CommandLimits& limits) {
+Check checkPlacement(const pool_ShotCommand& c, const protocol::CommandLimits& limits) {
   if (c.has_cue_ball_placement &&
       (std::abs(c.cue_ball_x) > limits.half_length || std::abs(c.cue_ball_y) > limits.half_width)) {
     return fail(CommandProblem::PlacementOutOfRange, "cue_ball_x, cue_ball_y: off the table");
@@ -153,7 +153,8 @@ const char* toString(CommandProblem problem) {
   return "unknown";
 }
 
-CommandCheck validateShotCommand(const pool_ShotCommand& command, const CommandLimits& limits) {
+CommandCheck validateShotCommand(const pool_ShotCommand& command,
+                                 const protocol::CommandLimits& limits) {
   // In CommandProblem's order; the first problem found is the one reported.
   Check found = checkIdentity(command);
   if (!found) found = checkFinite(command);

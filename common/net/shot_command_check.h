@@ -7,6 +7,7 @@
 #include <string>
 
 #include "net/messages.h"
+#include "protocol/command_limits.h"
 
 namespace pool::net {
 
@@ -16,7 +17,7 @@ enum class CommandProblem : std::uint8_t {
   BadMatchId,           ///< empty, unterminated or not printable
   BadSeat,              ///< not 0 or 1
   NonFinite,            ///< a number is NaN or infinite
-  BadOption,            ///< not a ShotOption value
+  BadOption,            ///< not a protocol::ShotOption value
   SpeedOutOfRange,      ///< not in (0, max_speed]
   ElevationOutOfRange,  ///< not in [0, max_elevation]
   TipOutOfRange,        ///< sqrt(side² + height²) beyond the miscue limit
@@ -28,16 +29,6 @@ enum class CommandProblem : std::uint8_t {
 
 const char* toString(CommandProblem problem);  ///< snake_case, e.g. "speed_out_of_range"
 
-/// The ranges a command's values must lie in. Defaults: SIM-CONTRACT.md and a 9-ft table.
-struct CommandLimits {
-  double max_speed = 12.0;                               ///< m/s
-  double max_elevation = 89.0 * std::numbers::pi / 180;  ///< rad
-  double miscue_limit = 0.5;                             ///< fraction of R
-  double max_abs_yaw = 2 * std::numbers::pi;             ///< rad
-  double half_length = 1.27;                             ///< playing surface, m (x)
-  double half_width = 0.635;                             ///< playing surface, m (y)
-};
-
 /// The verdict on a command's fields.
 struct CommandCheck {
   CommandProblem problem = CommandProblem::None;
@@ -48,6 +39,7 @@ struct CommandCheck {
 
 /// Checks every field of `command` against `limits`. Shot values (speed, elevation, tip, yaw) are
 /// range-checked only when the option answers with a shot; every number must be finite always.
-CommandCheck validateShotCommand(const pool_ShotCommand& command, const CommandLimits& limits = {});
+CommandCheck validateShotCommand(const pool_ShotCommand& command,
+                                 const protocol::CommandLimits& limits = {});
 
 }  // namespace pool::net

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "match/match.h"
-#include "net/command_signature.h"
+#include "protocol/command_signature.h"
 #include "rules/eight_ball.h"
 #include "rules/placement.h"
 
@@ -23,8 +23,8 @@ std::string seatName(int seat) {
   return "seat " + std::to_string(seat);
 }
 
-Check checkValues(const Match& match, const net::ShotRequest& c) {
-  if (!net::optionShoots(c.option)) return std::nullopt;
+Check checkValues(const Match& match, const protocol::ShotRequest& c) {
+  if (!protocol::optionShoots(c.option)) return std::nullopt;
   if (auto why = physics::validateShot(c.cue, match.table().spec.params); !why.empty()) {
     return refuse(Reject::Malformed, why);
   }
@@ -34,7 +34,7 @@ Check checkValues(const Match& match, const net::ShotRequest& c) {
   return std::nullopt;
 }
 
-Check checkSeat(const Match& match, const net::ShotRequest& c) {
+Check checkSeat(const Match& match, const protocol::ShotRequest& c) {
   if (c.seat != 0 && c.seat != 1) return refuse(Reject::WrongSeat, "seat: must be 0 or 1");
   const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
   if (!seat.taken()) return refuse(Reject::WrongSeat, seatName(c.seat) + " is free");
@@ -44,20 +44,20 @@ Check checkSeat(const Match& match, const net::ShotRequest& c) {
   return std::nullopt;
 }
 
-Check checkSigned(const net::ShotRequest& c) {
+Check checkSigned(const protocol::ShotRequest& c) {
   if (c.signature.empty()) return refuse(Reject::Unsigned, "signature: commands must be signed");
   return std::nullopt;
 }
 
-Check checkSignature(const Match& match, const net::ShotRequest& c) {
+Check checkSignature(const Match& match, const protocol::ShotRequest& c) {
   const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
-  if (net::verifyCommand(c, seat.public_key) != net::SignatureCheck::Valid) {
+  if (protocol::verifyCommand(c, seat.public_key) != protocol::SignatureCheck::Valid) {
     return refuse(Reject::BadSignature, "signature: not " + seatName(c.seat) + "'s key");
   }
   return std::nullopt;
 }
 
-Check checkTurn(const Match& match, const net::ShotRequest& c) {
+Check checkTurn(const Match& match, const protocol::ShotRequest& c) {
   const MatchPhase phase = match.phase();
   if (phase == MatchPhase::Over || phase == MatchPhase::Closed) {
     return refuse(Reject::MatchOver, std::string("the match is ") + toString(phase));
@@ -75,7 +75,7 @@ Check checkTurn(const Match& match, const net::ShotRequest& c) {
   return std::nullopt;
 }
 
-Check checkSequence(const Match& match, const net::ShotRequest& c) {
+Check checkSequence(const Match& match, const protocol::ShotRequest& c) {
   const std::uint32_t last = match.seats()[static_cast<std::size_t>(c.seat)].last_seq;
   if (c.seq <= last) {
     return refuse(Reject::StaleSequence, "seq " + std::to_string(c.seq) +
@@ -85,7 +85,7 @@ Check checkSequence(const Match& match, const net::ShotRequest& c) {
 }
 
 // Applies a pending choice to the plan's copies; refuses a missing or unoffered one.
-Check checkOption(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
+Check checkOption(const Match& match, const protocol::ShotRequest& c, ShotPlan& plan) {
   const auto& offered = match.game().options;
   const auto choice = choiceOf(c.option);
   if (!choice) {
@@ -94,7 +94,7 @@ Check checkOption(const Match& match, const net::ShotRequest& c, ShotPlan& plan)
   }
   if (std::find(offered.begin(), offered.end(), *choice) == offered.end()) {
     return refuse(Reject::OptionNotOffered,
-                  std::string("option ") + net::toString(c.option) + " is not offered");
+                  std::string("option ") + protocol::toString(c.option) + " is not offered");
   }
   auto verdict = rules::applyChoice(match.game(), *choice, match.balls(), match.table().context);
   if (!verdict) return refuse(Reject::OptionNotOffered, verdict.error());
@@ -107,7 +107,7 @@ Check checkOption(const Match& match, const net::ShotRequest& c, ShotPlan& plan)
       b.pos = physics::Vec3(respot.pos.x(), respot.pos.y(), match.table().context.ball_radius);
     }
   }
-  plan.shoots = net::optionShoots(c.option);
+  plan.shoots = protocol::optionShoots(c.option);
   plan.choice = std::move(*verdict);
   return std::nullopt;
 }
@@ -119,7 +119,7 @@ physics::Ball* cueBallOf(std::vector<physics::Ball>& balls) {
 }
 
 // Places the cue ball in hand on the plan's table, or refuses the placement.
-Check checkPlacement(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
+Check checkPlacement(const Match& match, const protocol::ShotRequest& c, ShotPlan& plan) {
   physics::Ball* cue = cueBallOf(plan.before);
   if (!cue) return refuse(Reject::IllegalPlacement, "no cue ball in this match");
   const rules::BallInHand in_hand = plan.state.ball_in_hand;
@@ -138,7 +138,7 @@ Check checkPlacement(const Match& match, const net::ShotRequest& c, ShotPlan& pl
   return std::nullopt;
 }
 
-Check checkCall(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
+Check checkCall(const Match& match, const protocol::ShotRequest& c, ShotPlan& plan) {
   plan.intent.ball = c.called_ball;
   plan.intent.pocket = c.called_pocket;
   plan.intent.safety = c.safety;
@@ -149,25 +149,25 @@ Check checkCall(const Match& match, const net::ShotRequest& c, ShotPlan& plan) {
 
 }  // namespace
 
-std::optional<rules::Choice> choiceOf(net::ShotOption option) {
+std::optional<rules::Choice> choiceOf(protocol::ShotOption option) {
   switch (option) {
-    case net::ShotOption::None:
+    case protocol::ShotOption::None:
       return std::nullopt;
-    case net::ShotOption::PlayOn:
+    case protocol::ShotOption::PlayOn:
       return rules::Choice::PlayOn;
-    case net::ShotOption::BallInHand:
+    case protocol::ShotOption::BallInHand:
       return rules::Choice::BallInHand;
-    case net::ShotOption::RespotEight:
+    case protocol::ShotOption::RespotEight:
       return rules::Choice::RespotEight;
-    case net::ShotOption::ReBreak:
+    case protocol::ShotOption::ReBreak:
       return rules::Choice::ReBreak;
-    case net::ShotOption::OpponentReBreaks:
+    case protocol::ShotOption::OpponentReBreaks:
       return rules::Choice::OpponentReBreaks;
   }
   return std::nullopt;
 }
 
-CheckedCommand checkCommand(const Match& match, const net::ShotRequest& command) {
+CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& command) {
   CheckedCommand out;
   out.plan.state = match.game();
   out.plan.before = match.balls();

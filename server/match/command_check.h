@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "match/reject.h"
-#include "net/shot_request.h"
 #include "physics/ball.h"
+#include "protocol/shot_request.h"
 #include "rules/game_state.h"
 #include "rules/shot.h"
 #include "rules/verdict.h"
@@ -33,7 +33,7 @@ struct CheckedCommand {
 };
 
 /// The rules' choice an option answers; empty for ShotOption::None.
-std::optional<rules::Choice> choiceOf(net::ShotOption option);
+std::optional<rules::Choice> choiceOf(protocol::ShotOption option);
 
 /// Checks `command` against `match` and stops at the first failure, in this order:
 /// 1. malformed: shot values the table's physics refuses (net's validateShotCommand has already
@@ -54,6 +54,6 @@ std::optional<rules::Choice> choiceOf(net::ShotOption option);
 ///    while the cue ball in hand is off the table;
 /// 11. bad call: the rules' intent check (a legal group's ball and a pocket name, or a safety).
 /// Nothing is changed; the plan says what to run.
-CheckedCommand checkCommand(const Match& match, const net::ShotRequest& command);
+CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& command);
 
 }  // namespace pool::server

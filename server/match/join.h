@@ -5,18 +5,18 @@
 #include <string>
 #include <vector>
 
-#include "net/protocol_enums.h"
-#include "net/seat_request.h"
+#include "protocol/protocol_enums.h"
+#include "protocol/seat_request.h"
 
 namespace pool::server {
 
-using net::JoinAction;   ///< what a JoinRequest asks for (shared with the clients)
-using net::JoinOutcome;  ///< its outcome
+using protocol::JoinAction;   ///< what a JoinRequest asks for (shared with the clients)
+using protocol::JoinOutcome;  ///< its outcome
 
-using net::kNewMatch;  ///< the match id that asks for a new match
+using protocol::kNewMatch;  ///< the match id that asks for a new match
 
 /// A client's request (a JoinRequest in domain terms; net/seat_request.h says which are signed).
-using JoinCommand = net::SeatRequest;
+using JoinCommand = protocol::SeatRequest;
 
 /// The server's answer.
 struct JoinAnswer {

@@ -95,7 +95,7 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   return seated(id_, seat, token);
 }
 
-JoinAnswer Match::seatRequest(const net::SeatRequest& r) {
+JoinAnswer Match::seatRequest(const protocol::SeatRequest& r) {
   const auto found = seatOf(r);
   if (!found) return JoinAnswer::refuse(JoinOutcome::BadToken, "no seat here is bound to that key");
   const int seat = *found;
@@ -115,7 +115,7 @@ JoinAnswer Match::seatRequest(const net::SeatRequest& r) {
     stale.last_seq = s.last_seq;
     return stale;
   }
-  if (net::verifySeatRequest(r, s.public_key) != net::SignatureCheck::Valid) {
+  if (protocol::verifySeatRequest(r, s.public_key) != protocol::SignatureCheck::Valid) {
     return JoinAnswer::refuse(JoinOutcome::BadSignature, "signature: not " + which + "'s key");
   }
   s.last_seq = r.seq;  // used up from here on, whatever the outcome
@@ -209,7 +209,7 @@ bool Match::expireAway(double now, double grace) {
 
 // ---- Shots --------------------------------------------------------------------------------------
 
-CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
+CommandAnswer Match::handleShot(const protocol::ShotRequest& command, double now) {
   CommandAnswer answer;
   answer.seat = command.seat;
   answer.seq = command.seq;
@@ -252,7 +252,8 @@ CommandAnswer Match::handleShot(const net::ShotRequest& command, double now) {
   return answer;
 }
 
-CommandAnswer Match::applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
+CommandAnswer Match::applyChoiceNow(const protocol::ShotRequest& command,
+                                    const rules::Verdict& verdict,
                                     std::vector<physics::Ball> balls) {
   CommandAnswer answer;
   answer.record = ShotRecord{command, shot_number_, false, game_, balls, {}, {}, balls, verdict};
@@ -422,7 +423,7 @@ std::vector<physics::Ball> Match::tableAfter(const rules::Verdict& verdict,
   return balls;
 }
 
-std::optional<int> Match::seatOf(const net::SeatRequest& r) const {
+std::optional<int> Match::seatOf(const protocol::SeatRequest& r) const {
   // The seat named, else the one bound to the request's key (the token is public: it only names
   // a holding, so it never picks a seat by itself).
   for (int s = 0; s < 2; ++s) {

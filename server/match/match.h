@@ -16,9 +16,9 @@
 #include "match/match_types.h"
 #include "match/seat.h"
 #include "match/shot_runner.h"
-#include "net/seat_request.h"
-#include "net/shot_request.h"
 #include "physics/simulation.h"
+#include "protocol/seat_request.h"
+#include "protocol/shot_request.h"
 #include "rules/game_state.h"
 
 namespace pool::server {
@@ -58,7 +58,7 @@ class Match {
   /// number is used up, even if the request is then refused. Rejoin gives the seat back to
   /// `request.client`, present again; Leave frees it (a game in play is forfeited to the other
   /// seat); Rematch asks for a new rack once the match is over (it starts when both asked).
-  JoinAnswer seatRequest(const net::SeatRequest& request);
+  JoinAnswer seatRequest(const protocol::SeatRequest& request);
   /// `client` watches (counted once however often it asks).
   JoinAnswer addSpectator(const std::string& client);
   /// `client` stops watching; false when it was not.
@@ -76,7 +76,7 @@ class Match {
   /// Checks `command` (see command_check.h for the order) and, if accepted, simulates the shot
   /// (its frames are then due from `now` on) or applies the choice. The registry has already
   /// checked the wire fields and the match id.
-  CommandAnswer handleShot(const net::ShotRequest& command, double now);
+  CommandAnswer handleShot(const protocol::ShotRequest& command, double now);
 
   /// The frames of the shot in motion due by `now` and not handed out before (empty when none).
   DueFrames takeDueFrames(double now);
@@ -129,8 +129,8 @@ class Match {
     FramePacer pacer;
   };
 
-  CommandAnswer accept(const net::ShotRequest& command);
-  CommandAnswer applyChoiceNow(const net::ShotRequest& command, const rules::Verdict& verdict,
+  CommandAnswer accept(const protocol::ShotRequest& command);
+  CommandAnswer applyChoiceNow(const protocol::ShotRequest& command, const rules::Verdict& verdict,
                                std::vector<physics::Ball> after);
   void land(Flight flight);
   void startRack(int breaker);
@@ -138,7 +138,7 @@ class Match {
   void forfeitSeat(int loser, const std::string& why);
   std::vector<physics::Ball> tableAfter(const rules::Verdict& verdict,
                                         std::vector<physics::Ball> balls);
-  std::optional<int> seatOf(const net::SeatRequest& request) const;
+  std::optional<int> seatOf(const protocol::SeatRequest& request) const;
   JoinAnswer rejoinSeat(int seat, const std::string& client);
   JoinAnswer leaveSeat(int seat);
   JoinAnswer rematchSeat(int seat);

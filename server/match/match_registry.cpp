@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "net/key_pair.h"
+#include "protocol/key_pair.h"
 
 namespace pool::server {
 
@@ -91,7 +91,7 @@ JoinAnswer MatchRegistry::join(const JoinCommand& c) {
     return about(JoinAnswer::refuse(JoinOutcome::NoSuchMatch, "no match " + c.match), c.match);
   }
   if (c.action == JoinAction::Spectate) return match->addSpectator(c.client);
-  if (!net::changesSeat(c)) return about(leave(c), c.match);  // a spectator's leave
+  if (!protocol::changesSeat(c)) return about(leave(c), c.match);  // a spectator's leave
   JoinAnswer answer = match->seatRequest(c);
   if (answer.outcome != JoinOutcome::StaleSequence && answer.last_seq != 0) {
     useKeySeq(c.public_key, answer.last_seq);  // the key's signature checked out
@@ -106,7 +106,7 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
   if (c.seat < -1 || c.seat > 1) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "seat: must be 0, 1 or -1 (any)");
   }
-  if (c.public_key.size() != net::kPublicKeyBytes) {
+  if (c.public_key.size() != protocol::kPublicKeyBytes) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed,
                               "public_key: a seat needs the 32-byte Ed25519 key of its commands");
   }
@@ -121,7 +121,7 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     stale.last_seq = floor;
     return stale;
   }
-  if (net::verifySeatRequest(c, c.public_key) != net::SignatureCheck::Valid) {
+  if (protocol::verifySeatRequest(c, c.public_key) != protocol::SignatureCheck::Valid) {
     return JoinAnswer::refuse(JoinOutcome::BadSignature, "signature: not by the key it carries");
   }
   useKeySeq(c.public_key, c.seq);
@@ -153,7 +153,7 @@ std::uint32_t MatchRegistry::keyFloor(const std::vector<std::uint8_t>& key) cons
 }
 
 void MatchRegistry::useKeySeq(const std::vector<std::uint8_t>& key, std::uint32_t seq) {
-  if (key.size() != net::kPublicKeyBytes) return;
+  if (key.size() != protocol::kPublicKeyBytes) return;
   auto& floor = key_seq_[key];
   floor = std::max(floor, seq);
   if (key_seq_.size() <= kMaxKeyFloors) return;
@@ -168,7 +168,7 @@ void MatchRegistry::useKeySeq(const std::vector<std::uint8_t>& key, std::uint32_
   std::erase_if(key_seq_, [&](const auto& entry) { return !seated.count(entry.first); });
 }
 
-CommandAnswer MatchRegistry::shoot(const net::ShotRequest& command, double now) {
+CommandAnswer MatchRegistry::shoot(const protocol::ShotRequest& command, double now) {
   Match* match = find(command.match);
   if (match) {
     CommandAnswer answer = match->handleShot(command, now);

@@ -17,7 +17,7 @@
 #include "match/match_types.h"
 #include "match/shot_runner.h"
 #include "match/token_source.h"
-#include "net/shot_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::server {
 
@@ -65,7 +65,7 @@ class MatchRegistry {
   JoinAnswer join(const JoinCommand& command);
   /// Routes a shot command to its match (refused with NoSuchMatch when there is none). The wire
   /// fields were checked before (net's validateShotCommand).
-  CommandAnswer shoot(const net::ShotRequest& command, double now);
+  CommandAnswer shoot(const protocol::ShotRequest& command, double now);
 
   /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching.
   void clientGone(const std::string& client, double now);

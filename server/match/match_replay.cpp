@@ -1,7 +1,7 @@
 // Replaying: seats, rematches between racks, the stored commands re-addressed to the replay match.
 #include "match/match_replay.h"
 
-#include "net/command_signature.h"
+#include "protocol/command_signature.h"
 
 #include "match/shot_runner.h"
 
@@ -36,7 +36,7 @@ MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> co
     : commands_(std::move(commands)),
       target_(target),
       tokens_(tokens),
-      keys_{net::generateKeyPair(), net::generateKeyPair()},
+      keys_{protocol::generateKeyPair(), protocol::generateKeyPair()},
       pause_(pause) {
   for (int s = 0; s < 2; ++s) {
     const auto i = static_cast<std::size_t>(s);
@@ -46,16 +46,16 @@ MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> co
   }
 }
 
-net::SeatRequest MatchReplay::signedRematch(int seat) {
+protocol::SeatRequest MatchReplay::signedRematch(int seat) {
   const auto i = static_cast<std::size_t>(seat);
-  net::SeatRequest r;
+  protocol::SeatRequest r;
   r.client = "replay-" + std::to_string(seat);
   r.match = target_.id();
-  r.action = net::JoinAction::Rematch;
+  r.action = protocol::JoinAction::Rematch;
   r.seat = seat;
   r.token = tokens_[i];
   r.seq = ++seqs_[i];
-  net::signSeatRequest(r, keys_[i]);
+  protocol::signSeatRequest(r, keys_[i]);
   return r;
 }
 
@@ -72,12 +72,12 @@ std::optional<CommandAnswer> MatchReplay::step(double now) {
     for (int s = 0; s < 2; ++s) target_.seatRequest(signedRematch(s));
   }
   const ShotRecord& stored = commands_[next_++];
-  net::ShotRequest command = stored.command;
+  protocol::ShotRequest command = stored.command;
   command.match = target_.id();
   command.seat_token = tokens_[static_cast<std::size_t>(command.seat)];
   // The replay's own numbering: stored numbers may not leave room for its rematch requests.
   command.seq = ++seqs_[static_cast<std::size_t>(command.seat)];
-  net::signCommand(command, keys_[static_cast<std::size_t>(command.seat)]);
+  protocol::signCommand(command, keys_[static_cast<std::size_t>(command.seat)]);
   CommandAnswer answer = target_.handleShot(command, now);
   check(stored, answer);
   return answer;

@@ -9,8 +9,8 @@
 #include "match/match.h"
 #include "match/match_snapshot.h"
 #include "match/shot_record.h"
-#include "net/key_pair.h"
-#include "net/seat_request.h"
+#include "protocol/key_pair.h"
+#include "protocol/seat_request.h"
 
 namespace pool::server {
 
@@ -35,13 +35,13 @@ class MatchReplay {
   const std::vector<std::string>& differences() const { return differences_; }
 
  private:
-  net::SeatRequest signedRematch(int seat);
+  protocol::SeatRequest signedRematch(int seat);
   void check(const ShotRecord& stored, const CommandAnswer& answer);
 
   std::vector<ShotRecord> commands_;
   Match& target_;
   std::array<std::uint64_t, 2> tokens_;
-  std::array<net::KeyPair, 2> keys_;
+  std::array<protocol::KeyPair, 2> keys_;
   std::array<std::uint32_t, 2> seqs_{};  ///< the replay's own sequence numbers per seat
   double pause_;
   std::size_t next_ = 0;

@@ -7,14 +7,14 @@
 
 #include "match/reject.h"
 #include "match/shot_record.h"
-#include "net/protocol_enums.h"
 #include "physics/events.h"
+#include "protocol/protocol_enums.h"
 #include "rules/eight_ball.h"
 #include "rules/verdict.h"
 
 namespace pool::server {
 
-using net::MatchPhase;  ///< where a match stands (shared with the clients)
+using protocol::MatchPhase;  ///< where a match stands (shared with the clients)
 
 /// How a match is played and published.
 struct MatchOptions {

@@ -4,12 +4,12 @@
 #include <cstdint>
 #include <string>
 
-#include "net/protocol_enums.h"
+#include "protocol/protocol_enums.h"
 
 namespace pool::server {
 
 /// Why a command was refused, in the order the server checks (shared with the clients).
-using Reject = net::RejectReason;
+using Reject = protocol::RejectReason;
 
 /// A refusal: the reason and one human-readable line.
 struct Rejection {

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "net/shot_request.h"
 #include "physics/ball.h"
 #include "physics/events.h"
+#include "protocol/shot_request.h"
 #include "rules/game_state.h"
 #include "rules/shot.h"
 #include "rules/verdict.h"
@@ -15,7 +15,7 @@ namespace pool::server {
 
 /// An accepted shot (or a choice without a shot) with everything needed to judge or run it again.
 struct ShotRecord {
-  net::ShotRequest command;
+  protocol::ShotRequest command;
   std::uint32_t shot_number = 0;      ///< the shot's number; a choice keeps the shots so far
   bool shoots = true;                 ///< false: a choice that re-racked, no physics
   rules::GameState state;             ///< the state it was judged in (any choice applied)

@@ -230,7 +230,7 @@ rules::Intent intentFrom(const std::string& text) {
   });
 }
 
-std::string commandJson(const net::ShotRequest& c) {
+std::string commandJson(const protocol::ShotRequest& c) {
   Json out = {{"match", c.match},
               {"seat", c.seat},
               {"token", c.seat_token},
@@ -250,9 +250,9 @@ std::string commandJson(const net::ShotRequest& c) {
   return out.dump();
 }
 
-net::ShotRequest commandFrom(const std::string& text) {
+protocol::ShotRequest commandFrom(const std::string& text) {
   return parse(text, "command", [](const Json& j) {
-    net::ShotRequest c;
+    protocol::ShotRequest c;
     c.match = j.at("match").get<std::string>();
     c.seat = j.at("seat").get<int>();
     c.seat_token = j.at("token").get<std::uint64_t>();
@@ -265,7 +265,7 @@ net::ShotRequest commandFrom(const std::string& text) {
     c.cue.speed_is_ball = j.at("speed_is_ball").get<bool>();
     c.called_pocket = j.at("called_pocket").get<std::string>();
     c.safety = j.at("safety").get<bool>();
-    c.option = enumAt<net::ShotOption>(j, "option");
+    c.option = enumAt<protocol::ShotOption>(j, "option");
     c.signature = j.at("signature").get<std::vector<std::uint8_t>>();
     if (j.contains("called_ball")) c.called_ball = j.at("called_ball").get<int>();
     if (j.contains("cue_ball_at")) c.cue_ball_at = vec2(j.at("cue_ball_at"));

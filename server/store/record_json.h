@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "net/shot_request.h"
 #include "physics/ball.h"
 #include "physics/events.h"
+#include "protocol/shot_request.h"
 #include "rules/game_state.h"
 #include "rules/shot.h"
 #include "rules/verdict.h"
@@ -31,7 +31,7 @@ physics::EventLog eventsFrom(const std::string& text);
 std::string intentJson(const rules::Intent& intent);
 rules::Intent intentFrom(const std::string& text);
 
-std::string commandJson(const net::ShotRequest& command);
-net::ShotRequest commandFrom(const std::string& text);
+std::string commandJson(const protocol::ShotRequest& command);
+protocol::ShotRequest commandFrom(const std::string& text);
 
 }  // namespace pool::store

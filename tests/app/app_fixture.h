@@ -28,7 +28,8 @@ inline const bot::TableView& nineFoot() {
 
 /// Controls of a 9-ft table in a 1280 × 720 viewport.
 inline Controls nineFootControls() {
-  Controls controls(net::CommandLimits{}, PlacementArea{}, CameraRig(2.54, 1.27, 1280.0 / 720.0));
+  Controls controls(protocol::CommandLimits{}, PlacementArea{},
+                    CameraRig(2.54, 1.27, 1280.0 / 720.0));
   controls.setViewport(1280, 720);
   return controls;
 }
@@ -43,7 +44,7 @@ inline render::Camera cameraOf(const ViewPoint& view) {
 }
 
 /// The server's field check of `request` once on the wire (with a match and seat filled in).
-inline net::CommandCheck wireCheck(net::ShotRequest request) {
+inline net::CommandCheck wireCheck(protocol::ShotRequest request) {
   request.match = "srv-1";
   request.seat = 0;
   const auto sample = net::toWire(request);
@@ -59,7 +60,7 @@ inline void hold(Controls& controls, Key key, double seconds, Mods mods = {}) {
 }
 
 /// Charges for `seconds` and releases: the shot sent.
-inline std::optional<net::ShotRequest> shoot(Controls& controls, double seconds) {
+inline std::optional<protocol::ShotRequest> shoot(Controls& controls, double seconds) {
   hold(controls, Key::Space, seconds);
   return controls.takeShot();
 }

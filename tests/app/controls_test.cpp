@@ -12,7 +12,7 @@ namespace pool::app::test {
 namespace {
 
 const ControlRates kRates{};
-const net::CommandLimits kLimits{};
+const protocol::CommandLimits kLimits{};
 
 class ControlsTest : public ::testing::Test {
  protected:
@@ -174,10 +174,10 @@ TEST_F(ControlsTest, TheCallCyclesPocketsAndASafetyDropsIt) {
 }
 
 TEST_F(ControlsTest, TheOptionGoesWithTheShot) {
-  controls.setOption(net::ShotOption::PlayOn);
+  controls.setOption(protocol::ShotOption::PlayOn);
   const auto shot = shoot(controls, 0.2);
   ASSERT_TRUE(shot);
-  EXPECT_EQ(shot->option, net::ShotOption::PlayOn);
+  EXPECT_EQ(shot->option, protocol::ShotOption::PlayOn);
 }
 
 class BallInHandTest : public ::testing::Test {

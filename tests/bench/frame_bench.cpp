@@ -71,7 +71,7 @@ double processCpuMs() {
 class Hud {
  public:
   Hud()
-      : controls_(pool::net::CommandLimits{}, pool::app::PlacementArea{},
+      : controls_(pool::protocol::CommandLimits{}, pool::app::PlacementArea{},
                   pool::app::CameraRig(2.54, 1.27, double(kWidth) / kHeight)) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();

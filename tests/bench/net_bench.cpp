@@ -21,9 +21,7 @@
 #include <vector>
 
 #include "client/net/wire_read.h"
-#include "net/command_signature.h"
 #include "net/convert.h"
-#include "net/key_pair.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
@@ -32,6 +30,8 @@
 #include "net/waitset.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
+#include "protocol/command_signature.h"
+#include "protocol/key_pair.h"
 
 namespace {
 
@@ -175,16 +175,16 @@ class Driver {
     int request = 0;
     for (auto& [id, t] : tables_) {
       for (int seat = 0; seat < 2; ++seat) {
-        net::SeatRequest r;
+        protocol::SeatRequest r;
         r.client = clientOf(id, seat);
         r.request = static_cast<std::uint32_t>(++request);
-        r.protocol_version = net::kProtocolVersion;
+        r.protocol_version = protocol::kProtocolVersion;
         r.match = id;
         r.action = client::JoinAction::Seat;
         r.seat = seat;
         r.name = "p" + std::to_string(seat);
         r.seq = ++seq_;
-        net::signSeatRequest(r, key_);
+        protocol::signSeatRequest(r, key_);
         requests_.write(*client::toWire(r));
       }
     }
@@ -266,7 +266,7 @@ class Driver {
   void send(Table& t, bool hard) {
     const client::MatchView& s = *t.state;
     const auto seat = static_cast<std::size_t>(s.shooter < 0 ? 0 : s.shooter);
-    net::ShotRequest r;
+    protocol::ShotRequest r;
     r.match = t.match;
     r.seat = static_cast<int>(seat);
     r.seat_token = t.tokens[seat];
@@ -276,10 +276,11 @@ class Driver {
     if (!s.options.empty()) {
       const auto& o = s.options;
       auto offered = [&](rules::Choice c) { return std::find(o.begin(), o.end(), c) != o.end(); };
-      r.option = offered(rules::Choice::PlayOn)       ? net::ShotOption::PlayOn
-                 : offered(rules::Choice::BallInHand) ? net::ShotOption::BallInHand
-                                                      : net::ShotOption::ReBreak;
-      if (r.option == net::ShotOption::BallInHand) in_hand = rules::BallInHand::BehindHeadString;
+      r.option = offered(rules::Choice::PlayOn)       ? protocol::ShotOption::PlayOn
+                 : offered(rules::Choice::BallInHand) ? protocol::ShotOption::BallInHand
+                                                      : protocol::ShotOption::ReBreak;
+      if (r.option == protocol::ShotOption::BallInHand)
+        in_hand = rules::BallInHand::BehindHeadString;
     }
     if (hard && s.phase == client::MatchPhase::Break) {
       // The break: full on the apex from just behind the head string.
@@ -298,7 +299,7 @@ class Driver {
     t.arrivals.clear();
     t.done = false;
     t.shot = s.shot_number + 1;
-    net::signCommand(r, key_);
+    protocol::signCommand(r, key_);
     commands_.write(*net::toWire(r));
   }
 
@@ -362,8 +363,9 @@ class Driver {
   net::Reader<pool_MatchState> states_;
   net::Writer<pool_JoinRequest> requests_;
   net::Writer<pool_ShotCommand> commands_;
-  net::KeyPair key_ = net::generateKeyPair();  ///< every seat's, for the driver plays them all
-  std::uint32_t seq_ = 0;                      ///< the key's seat requests, numbered
+  protocol::KeyPair key_ =
+      protocol::generateKeyPair();  ///< every seat's, for the driver plays them all
+  std::uint32_t seq_ = 0;           ///< the key's seat requests, numbered
   net::WaitSet waitset_;
   std::map<std::string, Table> tables_;
   std::vector<double> latencies_, round_trips_, command_to_frame_;

@@ -8,8 +8,8 @@
 
 #include "match/match.h"
 #include "match/table_kit.h"
-#include "net/command_signature.h"
-#include "net/key_pair.h"
+#include "protocol/command_signature.h"
+#include "protocol/key_pair.h"
 #include "ratio_reporter.h"
 #include "store/match_store.h"
 #include "store/record_json.h"
@@ -32,16 +32,16 @@ const BreakRecord& breakRecord() {
       std::exit(1);
     }
     server::Match match("srv-1", "Table 1", std::make_shared<server::ShotRunner>(*kit), {}, 42);
-    const net::KeyPair ada = net::generateKeyPair();
+    const protocol::KeyPair ada = protocol::generateKeyPair();
     match.takeSeat(0, "Ada", "a", 0x1111, ada.publicKey());
-    match.takeSeat(1, "Bob", "b", 0x2222, net::generateKeyPair().publicKey());
-    net::ShotRequest r;
+    match.takeSeat(1, "Bob", "b", 0x2222, protocol::generateKeyPair().publicKey());
+    protocol::ShotRequest r;
     r.match = "srv-1";
     r.seat_token = 0x1111;
     r.seq = 1;
     r.cue.speed = 8.0;
     r.cue.tip_height = 0.1;
-    net::signCommand(r, ada);
+    protocol::signCommand(r, ada);
     const auto answer = match.handleShot(r, 0.0);
     if (!answer.record) {
       std::fprintf(stderr, "the break was refused: %s\n", answer.rejection.text.c_str());

@@ -83,14 +83,15 @@ class MatchRecorder {
     return out;
   }
   /// The command a seat sent with a sequence number, if seen.
-  const net::ShotRequest* command(const std::string& match, int seat, std::uint32_t seq) const {
+  const protocol::ShotRequest* command(const std::string& match, int seat,
+                                       std::uint32_t seq) const {
     const auto it = commands_seen_.find({match, seat, seq});
     return it == commands_seen_.end() ? nullptr : &it->second;
   }
 
   /// The `n`-th command (from 1) `seat` of `match` sent, in the order of its sequence numbers
   /// (a client numbers its seat requests and its shots alike, so shots need not start at 1).
-  const net::ShotRequest* nthCommand(const std::string& match, int seat, std::size_t n) const {
+  const protocol::ShotRequest* nthCommand(const std::string& match, int seat, std::size_t n) const {
     for (auto it = commands_seen_.lower_bound({match, seat, 0}); it != commands_seen_.end(); ++it) {
       if (std::get<0>(it->first) != match || std::get<1>(it->first) != seat) break;
       if (--n == 0) return &it->second;
@@ -128,7 +129,7 @@ class MatchRecorder {
   net::Reader<pool_MatchState> all_states_;
   std::vector<MatchView> states_;
   std::vector<ShotReport> reports_;
-  std::map<CommandKey, net::ShotRequest> commands_seen_;
+  std::map<CommandKey, protocol::ShotRequest> commands_seen_;
 };
 
 }  // namespace pool::client::test

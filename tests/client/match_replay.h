@@ -51,13 +51,13 @@ inline std::vector<physics::Ball> afterOf(std::vector<physics::Ball> balls,
   return balls;
 }
 
-inline rules::Intent intentOf(const net::ShotRequest& command) {
+inline rules::Intent intentOf(const protocol::ShotRequest& command) {
   rules::Intent intent;
   if (command.called_ball)
     intent = rules::Intent::call(*command.called_ball, command.called_pocket);
   intent.safety = command.safety;
-  if (command.option == net::ShotOption::PlayOn) intent.choice = rules::Choice::PlayOn;
-  if (command.option == net::ShotOption::BallInHand) intent.choice = rules::Choice::BallInHand;
+  if (command.option == protocol::ShotOption::PlayOn) intent.choice = rules::Choice::PlayOn;
+  if (command.option == protocol::ShotOption::BallInHand) intent.choice = rules::Choice::BallInHand;
   return intent;
 }
 
@@ -90,14 +90,14 @@ inline Replay replayMatch(const MatchRecorder& recorder, const std::string& matc
     const std::string at = "shot " + std::to_string(n) + ": ";
     const MatchView* before = detail::stateAt(states, n - 1, true);
     const MatchView* after = detail::stateAt(states, n, false);
-    const net::ShotRequest* command = recorder.command(match, report.seat, report.seq);
+    const protocol::ShotRequest* command = recorder.command(match, report.seat, report.seq);
     if (!before || !after || !command) {
       replay.error = at + "missing " + (!command ? "command" : "state");
       return replay;
     }
     Result<rules::Verdict> verdict = Result<rules::Verdict>::fail("");
-    if (!net::optionShoots(command->option)) {
-      const auto choice = command->option == net::ShotOption::ReBreak
+    if (!protocol::optionShoots(command->option)) {
+      const auto choice = command->option == protocol::ShotOption::ReBreak
                               ? rules::Choice::ReBreak
                               : rules::Choice::OpponentReBreaks;
       verdict = rules::applyChoice(game, choice, before->balls, table.context);

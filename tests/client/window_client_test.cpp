@@ -80,10 +80,10 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
               "down SPACE\nframes 30\nup SPACE\n"
               "frames 30\nquit\n");
   const app::ControlRates rates;
-  const net::CommandLimits limits;
+  const protocol::CommandLimits limits;
   std::string match;
-  const net::ShotRequest* sent = nullptr;
-  const net::ShotRequest* second = nullptr;
+  const protocol::ShotRequest* sent = nullptr;
+  const protocol::ShotRequest* second = nullptr;
   const bool seen = recorder.pump(120s, [&] {
     match = recorder.firstMatch();
     const MatchView* v = recorder.latest(match);

@@ -13,8 +13,8 @@
 namespace {
 
 namespace fs = std::filesystem;
-using pool::net::ShotOption;
-using pool::net::ShotRequest;
+using pool::protocol::ShotOption;
+using pool::protocol::ShotRequest;
 
 void writeFile(const fs::path& path, const void* data, std::size_t size) {
   std::ofstream(path, std::ios::binary)

@@ -23,7 +23,7 @@ inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& che
   if (check.ok() != check.text.empty()) violated("a reason without a problem or back", check);
   if (std::strcmp(net::toString(check.problem), "unknown") == 0) violated("unknown problem", check);
   if (!check.ok()) return;
-  const net::CommandLimits limits;
+  const protocol::CommandLimits limits;
   const auto match = net::textOf(c.match);
   const bool printable =
       std::all_of(match.begin(), match.end(), [](char ch) { return ch > ' ' && ch < 127; });

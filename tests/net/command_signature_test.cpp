@@ -7,12 +7,14 @@
 #include <fstream>
 #include <functional>
 
-#include "net/command_signature.h"
-#include "net/key_pair.h"
 #include "net/messages.h"
+#include "protocol/command_signature.h"
+#include "protocol/key_pair.h"
 
 namespace pool::net {
 namespace {
+
+using namespace protocol;
 
 ShotRequest sample() {
   ShotRequest r;

@@ -12,6 +12,8 @@
 namespace pool::net {
 namespace {
 
+using namespace protocol;
+
 using test::oddBall;
 
 /// Bitwise equality of doubles (so -0.0 and 0.0 differ, NaN equals the same NaN).

@@ -12,6 +12,8 @@
 namespace pool::net {
 namespace {
 
+using namespace protocol;
+
 using namespace test;
 
 class Construction : public NetTest {};

@@ -22,6 +22,8 @@
 namespace pool::net {
 namespace {
 
+using namespace protocol;
+
 using namespace test;
 
 class Qos : public NetTest {};

@@ -13,6 +13,8 @@
 namespace pool::net {
 namespace {
 
+using namespace protocol;
+
 using namespace test;
 
 /// Writes `sent` from one participant and returns what a reader in another took.

@@ -13,6 +13,8 @@
 namespace pool::net {
 namespace {
 
+using namespace protocol;
+
 /// A legal, ordinary command.
 Sample<pool_ShotCommand> goodCommand() {
   ShotRequest r;
@@ -110,7 +112,7 @@ TEST(ShotCommandCheck, ChoicesWithoutAShotSkipTheCueRanges) {
 TEST(ShotCommandCheck, LimitsComeFromTheCaller) {
   auto c = goodCommand();
   c->speed = 5.0;
-  CommandLimits slow;
+  protocol::CommandLimits slow;
   slow.max_speed = 4.0;
   const CommandCheck check = validateShotCommand(*c, slow);
   EXPECT_EQ(check.problem, CommandProblem::SpeedOutOfRange);

@@ -18,6 +18,8 @@
 namespace pool::net {
 namespace {
 
+using namespace protocol;
+
 using namespace test;
 
 constexpr std::uint32_t kCommands = 200;

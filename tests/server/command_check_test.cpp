@@ -13,7 +13,7 @@ using namespace test;
 
 /// Sends `command` as it is and expects it refused with `reason`, the match unchanged but for
 /// the seat's used-up number after a signed refusal.
-void expectRefusedAsSent(Match& m, const net::ShotRequest& command, Reject reason) {
+void expectRefusedAsSent(Match& m, const protocol::ShotRequest& command, Reject reason) {
   const std::uint64_t revision = m.revision();
   const auto balls = m.balls();
   const std::uint32_t last_seq[2] = {m.seats()[0].last_seq, m.seats()[1].last_seq};
@@ -24,7 +24,7 @@ void expectRefusedAsSent(Match& m, const net::ShotRequest& command, Reject reaso
   EXPECT_FALSE(answer.in_motion);
   EXPECT_EQ(m.revision(), revision);
   for (int seat = 0; seat < 2; ++seat) {
-    const bool used = net::refusedAfterSignature(reason) && command.seat == seat;
+    const bool used = protocol::refusedAfterSignature(reason) && command.seat == seat;
     EXPECT_EQ(m.seats()[static_cast<std::size_t>(seat)].last_seq,
               used ? command.seq : last_seq[seat])
         << "seat " << seat;
@@ -34,7 +34,7 @@ void expectRefusedAsSent(Match& m, const net::ShotRequest& command, Reject reaso
 }
 
 /// Signs `command` as its seat's player and expects it refused with `reason`.
-void expectRefused(Match& m, const net::ShotRequest& command, Reject reason) {
+void expectRefused(Match& m, const protocol::ShotRequest& command, Reject reason) {
   expectRefusedAsSent(m, sealed(command), reason);
 }
 
@@ -47,8 +47,8 @@ void openTable(Match& m, rules::BallInHand in_hand = rules::BallInHand::None) {
   ASSERT_TRUE(m.setPosition(st, m.balls()));
 }
 
-net::ShotRequest calledShot(std::uint32_t seq) {
-  net::ShotRequest r = breakShot(seq);
+protocol::ShotRequest calledShot(std::uint32_t seq) {
+  protocol::ShotRequest r = breakShot(seq);
   r.called_ball = 1;
   r.called_pocket = "foot_left_corner";
   return r;
@@ -146,7 +146,7 @@ TEST(CommandCheck, StaleSequenceNumbersAreRefusedAndSignedRefusalsUseThemUp) {
 
 TEST(CommandCheck, AnUnsignedCommandIsRefusedBeforeItsNumberIsLookedAt) {
   auto m = seatedMatch();
-  net::ShotRequest bare = breakShot(1);
+  protocol::ShotRequest bare = breakShot(1);
   bare.signature.clear();
   expectRefusedAsSent(*m, bare, Reject::Unsigned);
   bare.seq = 0;
@@ -160,35 +160,35 @@ TEST(CommandCheck, ForgedSignaturesAreRefusedAndUseNothingUp) {
   auto m = seatedMatch();
   // Someone who read seat 0's token off the wire signs with their own key, or with seat 1's.
   for (const char* signer : {"eve", "b"}) {
-    net::ShotRequest forged = breakShot(1);
-    net::signCommand(forged, keyOf(signer));
+    protocol::ShotRequest forged = breakShot(1);
+    protocol::signCommand(forged, keyOf(signer));
     expectRefusedAsSent(*m, forged, Reject::BadSignature);
   }
   // A genuine signature over other fields: a faster shot, another sequence number.
-  net::ShotRequest faster = breakShot(1);
+  protocol::ShotRequest faster = breakShot(1);
   faster.cue.speed = 11.0;
   expectRefusedAsSent(*m, faster, Reject::BadSignature);
-  net::ShotRequest renumbered = breakShot(1);
+  protocol::ShotRequest renumbered = breakShot(1);
   renumbered.seq = 2;
   expectRefusedAsSent(*m, renumbered, Reject::BadSignature);
-  net::ShotRequest cut = breakShot(1);
+  protocol::ShotRequest cut = breakShot(1);
   cut.signature.resize(63);
   expectRefusedAsSent(*m, cut, Reject::BadSignature);
-  net::ShotRequest flipped = breakShot(1);
+  protocol::ShotRequest flipped = breakShot(1);
   flipped.signature[10] ^= 0x01;
   expectRefusedAsSent(*m, flipped, Reject::BadSignature);
   // Seat 1's own command signed by seat 0's player: the other seat's key is not its key.
-  net::ShotRequest other_seat = breakShot(1);
+  protocol::ShotRequest other_seat = breakShot(1);
   other_seat.seat = 1;
   other_seat.seat_token = kToken1;
-  net::signCommand(other_seat, keyOf("a"));
+  protocol::signCommand(other_seat, keyOf("a"));
   expectRefusedAsSent(*m, other_seat, Reject::BadSignature);
   EXPECT_TRUE(m->handleShot(breakShot(1), 0.0).accepted());  // 1 is still seat 0's to use
 }
 
 TEST(CommandCheck, AReplayedCommandIsStale) {
   auto m = seatedMatch();
-  const net::ShotRequest shot = breakShot(1);
+  const protocol::ShotRequest shot = breakShot(1);
   ASSERT_TRUE(m->handleShot(shot, 0.0).accepted());
   ASSERT_TRUE(finishNow(*m));
   rules::GameState st = m->game();
@@ -206,12 +206,12 @@ TEST(CommandCheck, PendingChoicesMustBeAnsweredAndOnlyWithAnOfferedOne) {
   ASSERT_TRUE(m->setPosition(st, m->balls()));
   expectRefused(*m, calledShot(1), Reject::OptionRequired);
   auto respot = calledShot(2);
-  respot.option = net::ShotOption::RespotEight;
+  respot.option = protocol::ShotOption::RespotEight;
   expectRefused(*m, respot, Reject::OptionNotOffered);
   auto open = seatedMatch();
   openTable(*open);
   auto unasked = calledShot(1);
-  unasked.option = net::ShotOption::PlayOn;
+  unasked.option = protocol::ShotOption::PlayOn;
   expectRefused(*open, unasked, Reject::OptionNotOffered);
 }
 

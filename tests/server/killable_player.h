@@ -27,7 +27,8 @@ inline constexpr const char* kPlayerKeyEnv = "POOL_SERVER_TEST_PLAYER_KEY";
 inline int playUntilKilled(std::uint32_t domain) {
   TestClient bob(domain, "bob-process");
   const char* key_file = std::getenv(kPlayerKeyEnv);
-  const auto key = key_file ? net::loadOrCreateKeyFile(key_file) : Result<net::KeyPair>::fail("");
+  const auto key =
+      key_file ? protocol::loadOrCreateKeyFile(key_file) : Result<protocol::KeyPair>::fail("");
   if (!key) return 5;
   bob.useKey(*key);
   if (!bob.waitForServer()) return 3;
@@ -88,7 +89,7 @@ class KillablePlayer {
   }
 
   /// The key pair the player kept in its key file (once it has taken its seat).
-  Result<net::KeyPair> key() const { return net::loadOrCreateKeyFile(key_file_); }
+  Result<protocol::KeyPair> key() const { return protocol::loadOrCreateKeyFile(key_file_); }
 
   /// SIGKILL: no goodbye on the wire, only the liveliness lease running out.
   void kill() {

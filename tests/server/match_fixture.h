@@ -12,11 +12,11 @@
 #include "match/match.h"
 #include "match/match_registry.h"
 #include "match/table_kit.h"
-#include "net/command_signature.h"
-#include "net/key_pair.h"
-#include "net/protocol_version.h"
-#include "net/seat_request.h"
-#include "net/shot_request.h"
+#include "protocol/command_signature.h"
+#include "protocol/key_pair.h"
+#include "protocol/protocol_version.h"
+#include "protocol/seat_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::server::test {
 
@@ -45,10 +45,10 @@ constexpr std::uint64_t kToken0 = 0x1111;
 constexpr std::uint64_t kToken1 = 0x2222;
 
 /// The key pair of the test client `client` (made once per test program).
-inline const net::KeyPair& keyOf(const std::string& client) {
-  static std::map<std::string, net::KeyPair> keys;
+inline const protocol::KeyPair& keyOf(const std::string& client) {
+  static std::map<std::string, protocol::KeyPair> keys;
   auto it = keys.find(client);
-  if (it == keys.end()) it = keys.emplace(client, net::generateKeyPair()).first;
+  if (it == keys.end()) it = keys.emplace(client, protocol::generateKeyPair()).first;
   return it->second;
 }
 inline std::vector<std::uint8_t> publicKeyOf(const std::string& client) {
@@ -62,32 +62,32 @@ inline std::string clientOf(int seat) {
 
 /// `r` signed by the player seatedMatch put in its seat (a command for another seat number is
 /// signed by seat 0's player).
-inline net::ShotRequest sealed(net::ShotRequest r) {
-  net::signCommand(r, keyOf(clientOf(r.seat)));
+inline protocol::ShotRequest sealed(protocol::ShotRequest r) {
+  protocol::signCommand(r, keyOf(clientOf(r.seat)));
   return r;
 }
 
 /// A seat request (Rejoin, Leave, Rematch) for `seat` of "srv-1" held with `token`, from
 /// `client`, carrying `client`'s public key and number `seq`, signed by `signer`'s key (default:
 /// the client's own; another signer's signature cannot verify, as a forger's).
-inline net::SeatRequest seatRequest(net::JoinAction action, const std::string& client, int seat,
-                                    std::uint64_t token, std::uint32_t seq,
-                                    const std::string& signer = {}) {
-  net::SeatRequest r;
+inline protocol::SeatRequest seatRequest(protocol::JoinAction action, const std::string& client,
+                                         int seat, std::uint64_t token, std::uint32_t seq,
+                                         const std::string& signer = {}) {
+  protocol::SeatRequest r;
   r.client = client;
-  r.protocol_version = net::kProtocolVersion;
+  r.protocol_version = protocol::kProtocolVersion;
   r.match = "srv-1";
   r.action = action;
   r.seat = seat;
   r.token = token;
   r.seq = seq;
-  net::signSeatRequest(r, keyOf(signer.empty() ? client : signer));
+  protocol::signSeatRequest(r, keyOf(signer.empty() ? client : signer));
   r.public_key = publicKeyOf(client);
   return r;
 }
 
 /// `r` without its signature.
-inline net::SeatRequest unsignedCopy(net::SeatRequest r) {
+inline protocol::SeatRequest unsignedCopy(protocol::SeatRequest r) {
   r.signature.clear();
   return r;
 }
@@ -102,8 +102,8 @@ inline std::unique_ptr<Match> seatedMatch(MatchOptions options = pacedOptions())
 
 /// A firm break straight up the table from the cue ball's spot, by seat 0, signed (a test that
 /// changes a field signs it again with sealed()).
-inline net::ShotRequest breakShot(std::uint32_t seq = 1) {
-  net::ShotRequest r;
+inline protocol::ShotRequest breakShot(std::uint32_t seq = 1) {
+  protocol::ShotRequest r;
   r.match = "srv-1";
   r.seat = 0;
   r.seat_token = kToken0;

@@ -23,7 +23,7 @@ RegistryOptions fixedOptions(std::string server_id = "srv") {
 JoinCommand signedBy(JoinCommand c, const std::string& signer) {
   static std::map<std::string, std::uint32_t> last;
   c.seq = ++last[signer];
-  net::signSeatRequest(c, keyOf(signer));
+  protocol::signSeatRequest(c, keyOf(signer));
   return c;
 }
 
@@ -207,7 +207,7 @@ TEST(MatchRegistry, ShotsAreRoutedByMatchIdAndUnknownMatchesRefused) {
   r.open();
   const JoinAnswer a = r.join(seatRequest("a", "srv-1", "Ada"));
   ASSERT_TRUE(r.join(seatRequest("b", "srv-1", "Bob")).accepted());
-  net::ShotRequest shot = breakShot();
+  protocol::ShotRequest shot = breakShot();
   shot.seat_token = a.token;
   shot.match = "srv-7";
   EXPECT_EQ(r.shoot(shot, 0.0).rejection.reason, Reject::NoSuchMatch);

@@ -139,10 +139,10 @@ TEST(MatchShot, AChoiceWithoutAShotIsDoneAtOnce) {
   st.shooter = 1;
   st.options = {rules::Choice::PlayOn, rules::Choice::ReBreak};
   ASSERT_TRUE(m->setPosition(st, m->balls()));
-  net::ShotRequest r = breakShot();
+  protocol::ShotRequest r = breakShot();
   r.seat = 1;
   r.seat_token = kToken1;
-  r.option = net::ShotOption::ReBreak;
+  r.option = protocol::ShotOption::ReBreak;
   r.cue.speed = 0.0;  // no shot: the cue values are not looked at
   const CommandAnswer answer = m->handleShot(sealed(r), 1.0);
   ASSERT_TRUE(answer.accepted()) << answer.rejection.text;
@@ -173,9 +173,9 @@ TEST(MatchPresence, AnAwayPlayerKeepsTheSeatForTheGracePeriodAndMayRejoin) {
   EXPECT_FALSE(m->seats()[1].connected());
   EXPECT_FALSE(m->expireAway(39.9, 30.0));
   EXPECT_EQ(m->phase(), MatchPhase::Break);
-  net::SeatRequest rejoin = seatRequest(JoinAction::Rejoin, "b", -1, kToken1, 1);
+  protocol::SeatRequest rejoin = seatRequest(JoinAction::Rejoin, "b", -1, kToken1, 1);
   rejoin.client = "b2";  // a restarted process: a new client id, the same key
-  net::signSeatRequest(rejoin, keyOf("b"));
+  protocol::signSeatRequest(rejoin, keyOf("b"));
   const JoinAnswer back = m->seatRequest(rejoin);
   ASSERT_TRUE(back.accepted()) << back.reason;
   EXPECT_EQ(back.seat, 1);
@@ -192,7 +192,7 @@ TEST(MatchPresence, ReadingTokenAndKeyOffTheWireTakesNothing) {
   auto m = seatedMatch();
   m->clientGone("b", 10.0);
   const std::uint64_t revision = m->revision();
-  const auto refused = [&](const net::SeatRequest& r, JoinOutcome outcome, const char* what) {
+  const auto refused = [&](const protocol::SeatRequest& r, JoinOutcome outcome, const char* what) {
     const JoinAnswer a = m->seatRequest(r);
     EXPECT_EQ(a.outcome, outcome) << what << ": " << toString(a.outcome) << " " << a.reason;
   };
@@ -214,7 +214,7 @@ TEST(MatchPresence, ReadingTokenAndKeyOffTheWireTakesNothing) {
   EXPECT_EQ(m->seats()[1].client, "b");
   EXPECT_EQ(m->phase(), MatchPhase::Break);
   // Bob's own signed request is taken; the same bytes again are stale and change nothing.
-  const net::SeatRequest mine = seatRequest(JoinAction::Rejoin, "b", 1, kToken1, 3);
+  const protocol::SeatRequest mine = seatRequest(JoinAction::Rejoin, "b", 1, kToken1, 3);
   ASSERT_TRUE(m->seatRequest(mine).accepted());
   const std::uint64_t after = m->revision();
   const JoinAnswer replayed = m->seatRequest(mine);

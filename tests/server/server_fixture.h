@@ -71,8 +71,8 @@ class ServerTest : public ::testing::Test {
 };
 
 /// A firm break up the table from where the server racks the cue ball.
-inline net::ShotRequest breakShot(const Seated& s, int seat, std::uint32_t seq) {
-  net::ShotRequest r;
+inline protocol::ShotRequest breakShot(const Seated& s, int seat, std::uint32_t seq) {
+  protocol::ShotRequest r;
   r.match = s.match;
   r.seat = seat;
   r.seat_token = s.token[seat];
@@ -83,8 +83,8 @@ inline net::ShotRequest breakShot(const Seated& s, int seat, std::uint32_t seq) 
 }
 
 /// A slow roll toward the head cushion, hitting nothing: about two seconds of motion.
-inline net::ShotRequest softShot(const Seated& s, int seat, std::uint32_t seq) {
-  net::ShotRequest r = breakShot(s, seat, seq);
+inline protocol::ShotRequest softShot(const Seated& s, int seat, std::uint32_t seq) {
+  protocol::ShotRequest r = breakShot(s, seat, seq);
   r.cue.yaw = std::numbers::pi;
   r.cue.speed = 0.3;
   r.cue.tip_height = 0.0;
@@ -93,16 +93,17 @@ inline net::ShotRequest softShot(const Seated& s, int seat, std::uint32_t seq) {
 
 /// A safety by whoever is to shoot in `state`: the first offered choice that shoots, the cue
 /// ball placed behind the head string when it is in hand.
-inline net::ShotRequest anyLegalShot(const pool_MatchState& state, const Seated& s,
-                                     std::uint32_t seq) {
-  net::ShotRequest r = breakShot(s, state.shooter, seq);
+inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Seated& s,
+                                          std::uint32_t seq) {
+  protocol::ShotRequest r = breakShot(s, state.shooter, seq);
   r.safety = true;
-  for (std::uint32_t i = 0; i < state.options._length && r.option == net::ShotOption::None; ++i) {
+  for (std::uint32_t i = 0; i < state.options._length && r.option == protocol::ShotOption::None;
+       ++i) {
     const auto option = net::fromWire(state.options._buffer[i]);
-    if (option && net::optionShoots(*option)) r.option = *option;
+    if (option && protocol::optionShoots(*option)) r.option = *option;
   }
   const bool in_hand =
-      state.ball_in_hand != pool_IN_HAND_NONE || r.option == net::ShotOption::BallInHand;
+      state.ball_in_hand != pool_IN_HAND_NONE || r.option == protocol::ShotOption::BallInHand;
   if (in_hand) r.cue_ball_at = Eigen::Vector2d(-0.9, 0.3);
   return r;
 }

@@ -9,8 +9,8 @@
 #include <set>
 #include <thread>
 
-#include "net/command_signature.h"
 #include "net/wire_fields.h"
+#include "protocol/command_signature.h"
 #include "server_fixture.h"
 
 namespace pool::server::test {
@@ -76,8 +76,8 @@ class Flooder {
     seconds_ = std::chrono::duration<double>(Clock::now() - t0).count();
   }
 
-  net::ShotRequest command(std::uint32_t n) const {
-    net::ShotRequest r;
+  protocol::ShotRequest command(std::uint32_t n) const {
+    protocol::ShotRequest r;
     r.match = target_.match;
     r.seq = n + 1;  // always above the seat's last: only the signature check stops it
     r.cue.speed = 5.0;
@@ -87,16 +87,16 @@ class Flooder {
         break;
       case 1:
         r.seat_token = target_.token[0];
-        net::signCommand(r, client_.key());
+        protocol::signCommand(r, client_.key());
         break;
       case 2:
         r.seat_token = target_.token[1];
-        net::signCommand(r, client_.key());
+        protocol::signCommand(r, client_.key());
         break;
       default:
         r.seat = 1;
         r.seat_token = target_.token[1];
-        net::signCommand(r, client_.key());
+        protocol::signCommand(r, client_.key());
         break;
     }
     return r;

@@ -85,7 +85,7 @@ TEST_F(ServerFlow, ASpectatorJoiningMidMatchGetsTheStateAtOnceAndLaterShots) {
 
   // The next shot reaches the spectator too.
   const int shooter = played->shooter;
-  const net::ShotRequest next = anyLegalShot(*played, s, shooter == 0 ? 2 : 1);
+  const protocol::ShotRequest next = anyLegalShot(*played, s, shooter == 0 ? 2 : 1);
   (shooter == 0 ? a : b).send(next);
   const auto* answer = watcher.waitAnswer(s.match, shooter, next.seq);
   ASSERT_NE(answer, nullptr);
@@ -109,7 +109,7 @@ TEST_F(ServerFlow, TwoMatchesInOneServerDoNotCrossTalk) {
   const std::uint32_t two_revision = two_before->revision;
 
   // Match 1's token is no good in match 2, although the seat and sequence fit.
-  net::ShotRequest crossed = breakShot(two, 0, 1);
+  protocol::ShotRequest crossed = breakShot(two, 0, 1);
   crossed.seat_token = one.token[0];
   a.send(crossed);
   const auto* refused = a.waitAnswer("t-2", 0, 1);

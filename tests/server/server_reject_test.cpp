@@ -28,8 +28,9 @@ pool_RejectReason answerTo(TestClient& observer, TestClient& sender,
 }
 
 /// The same for `request` signed with the sender's key.
-pool_RejectReason answerTo(TestClient& observer, TestClient& sender, net::ShotRequest request) {
-  net::signCommand(request, sender.key());
+pool_RejectReason answerTo(TestClient& observer, TestClient& sender,
+                           protocol::ShotRequest request) {
+  protocol::signCommand(request, sender.key());
   return answerTo(observer, sender, *net::toWire(request));
 }
 
@@ -47,24 +48,24 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   const std::size_t states_before = a.states.size();
 
   EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 1)), pool_REJECT_NOT_YOUR_TURN);
-  net::ShotRequest stolen = breakShot(s, 0, 1);
+  protocol::ShotRequest stolen = breakShot(s, 0, 1);
   stolen.seat_token = s.token[1];
   EXPECT_EQ(answerTo(a, b, stolen), pool_REJECT_BAD_TOKEN);
-  net::ShotRequest nan = breakShot(s, 0, 1);
+  protocol::ShotRequest nan = breakShot(s, 0, 1);
   nan.cue.speed = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(answerTo(a, a, nan), pool_REJECT_MALFORMED);
-  net::ShotRequest fast = breakShot(s, 0, 1);
+  protocol::ShotRequest fast = breakShot(s, 0, 1);
   fast.cue.speed = 50.0;
   EXPECT_EQ(answerTo(a, a, fast), pool_REJECT_MALFORMED);
   // (An enum value outside pool.idl's cannot be sent: Cyclone refuses to serialize it. The server's
   // check of it is in wire_requests_test.cpp.) Malformed fields that do cross the wire:
-  net::ShotRequest half_call = breakShot(s, 0, 1);
+  protocol::ShotRequest half_call = breakShot(s, 0, 1);
   half_call.called_pocket = "foot_left_corner";  // a pocket without a ball
   EXPECT_EQ(answerTo(a, a, half_call), pool_REJECT_MALFORMED);
-  net::ShotRequest no_seat = breakShot(s, 0, 1);
+  protocol::ShotRequest no_seat = breakShot(s, 0, 1);
   no_seat.seat = 7;
   EXPECT_EQ(answerTo(a, a, no_seat), pool_REJECT_MALFORMED);
-  net::ShotRequest ahead = breakShot(s, 0, 1);
+  protocol::ShotRequest ahead = breakShot(s, 0, 1);
   ahead.cue_ball_at = Eigen::Vector2d(0.2, 0.0);
   EXPECT_EQ(answerTo(a, a, ahead), pool_REJECT_ILLEGAL_PLACEMENT);  // signed: 1 is used up
   EXPECT_EQ(answerTo(a, a, breakShot(s, 0, 1)), pool_REJECT_STALE_SEQUENCE);
@@ -94,12 +95,12 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   EXPECT_EQ(choose->shooter, 1);
   ASSERT_GT(choose->options._length, 0u);
   EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 3)), pool_REJECT_OPTION_REQUIRED);
-  net::ShotRequest respot = breakShot(s, 1, 4);
-  respot.option = net::ShotOption::RespotEight;
+  protocol::ShotRequest respot = breakShot(s, 1, 4);
+  respot.option = protocol::ShotOption::RespotEight;
   EXPECT_EQ(answerTo(a, b, respot), pool_REJECT_OPTION_NOT_OFFERED);
-  net::ShotRequest rebreak = breakShot(s, 1, 5);
-  rebreak.option = net::ShotOption::ReBreak;
-  net::signCommand(rebreak, b.key());
+  protocol::ShotRequest rebreak = breakShot(s, 1, 5);
+  rebreak.option = protocol::ShotOption::ReBreak;
+  protocol::signCommand(rebreak, b.key());
   const auto rebreak_bytes = net::toWire(rebreak);
   EXPECT_EQ(answerTo(a, b, *rebreak_bytes), pool_REJECT_NONE);
   ASSERT_NE(b.waitState(s.match,

@@ -24,13 +24,14 @@ std::uint64_t tokenReadOffTheWire(TestClient& eve, const std::string& victim) {
 
 /// A seat request for `victim`'s seat 1 of `match`: its client id, token and public key, numbered
 /// far ahead, signed by `signer` (nullptr: unsigned).
-net::SeatRequest craft(TestClient& eve, pool_JoinAction action, const std::string& match,
-                       const TestClient& victim, std::uint64_t token, const net::KeyPair* signer) {
-  net::SeatRequest r = eve.request(action, match, "", 1, token);
+protocol::SeatRequest craft(TestClient& eve, pool_JoinAction action, const std::string& match,
+                            const TestClient& victim, std::uint64_t token,
+                            const protocol::KeyPair* signer) {
+  protocol::SeatRequest r = eve.request(action, match, "", 1, token);
   r.client = victim.id();
   r.request += 100000;  // the victim's own request numbers stay its own
   r.seq = 1000000;
-  if (signer) net::signSeatRequest(r, *signer);
+  if (signer) protocol::signSeatRequest(r, *signer);
   r.public_key = victim.key().publicKey();  // the victim's key, read off the wire
   return r;
 }
@@ -62,9 +63,9 @@ TEST_F(ServerSeatAttacks, StolenTokensAndKeysLeaveRejoinAndRematchNothing) {
   for (const auto action : {pool_JOIN_LEAVE, pool_JOIN_REJOIN, pool_JOIN_REMATCH}) {
     SCOPED_TRACE(static_cast<int>(action));
     // Signed with Eve's own key: no seat of the match is bound to it.
-    net::SeatRequest own = eve.request(action, s.match, "", 1, token);
+    protocol::SeatRequest own = eve.request(action, s.match, "", 1, token);
     own.seq = 1000000;
-    net::signSeatRequest(own, eve.key());
+    protocol::signSeatRequest(own, eve.key());
     EXPECT_EQ(outcomeOf(eve.joinAsIs(own)), pool_JOIN_BAD_TOKEN);
     // Bob's client id, token and public key, signed by Eve.
     EXPECT_EQ(outcomeOf(eve.joinAsIs(craft(eve, action, s.match, b, token, &eve.key()))),
@@ -81,10 +82,10 @@ TEST_F(ServerSeatAttacks, StolenTokensAndKeysLeaveRejoinAndRematchNothing) {
 
   // Bob's own signed rematch request (refused: the match is not over) uses its number up; the
   // same sample published again by Eve is stale and changes nothing.
-  net::SeatRequest mine = b.request(pool_JOIN_REMATCH, s.match, "", 1, token);
+  protocol::SeatRequest mine = b.request(pool_JOIN_REMATCH, s.match, "", 1, token);
   mine.seq = b.seq() + 1;
   b.setSeq(mine.seq);
-  net::signSeatRequest(mine, b.key());
+  protocol::signSeatRequest(mine, b.key());
   EXPECT_EQ(outcomeOf(b.joinAsIs(mine)), pool_JOIN_NOT_ALLOWED);
   const auto replayed = eve.joinAsIs(mine);
   EXPECT_EQ(outcomeOf(replayed), pool_JOIN_STALE_SEQUENCE);
@@ -114,7 +115,7 @@ TEST_F(ServerSeatAttacks, AClientOfAnotherProtocolVersionIsToldSo) {
   EXPECT_EQ(reply->outcome, pool_JOIN_VERSION_MISMATCH);
   EXPECT_NE(std::string(net::textOf(reply->reason)).find("protocol 3"), std::string::npos)
       << net::textOf(reply->reason);
-  EXPECT_EQ(old.infos.back()->protocol_version, net::kProtocolVersion);
+  EXPECT_EQ(old.infos.back()->protocol_version, protocol::kProtocolVersion);
 }
 
 }  // namespace

@@ -11,20 +11,20 @@
 #include <string>
 #include <vector>
 
-#include "net/command_signature.h"
 #include "net/convert.h"
-#include "net/key_pair.h"
 #include "net/messages.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
-#include "net/seat_request.h"
-#include "net/shot_request.h"
 #include "net/topic.h"
 #include "net/waitset.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
+#include "protocol/command_signature.h"
+#include "protocol/key_pair.h"
+#include "protocol/seat_request.h"
+#include "protocol/shot_request.h"
 
 namespace pool::server::test {
 
@@ -60,9 +60,9 @@ class TestClient {
 
   const std::string& id() const { return id_; }
   /// The key pair whose public half this client's seat and rejoin requests carry.
-  const net::KeyPair& key() const { return key_; }
+  const protocol::KeyPair& key() const { return key_; }
   /// Uses `key` from now on (e.g. a restarted player's kept key).
-  void useKey(const net::KeyPair& key) { key_ = key; }
+  void useKey(const protocol::KeyPair& key) { key_ = key; }
 
   /// Pumps the readers until `done()` holds or `timeout` passes; returns done().
   bool waitUntil(const std::function<bool()>& done, std::chrono::milliseconds timeout = 10s) {
@@ -88,25 +88,26 @@ class TestClient {
   std::optional<pool_JoinReply> join(pool_JoinAction action, const std::string& match,
                                      const std::string& name = "", short seat = -1,
                                      std::uint64_t token = 0,
-                                     std::uint32_t version = net::kProtocolVersion) {
-    net::SeatRequest r = request(action, match, name, seat, token);
+                                     std::uint32_t version = protocol::kProtocolVersion) {
+    protocol::SeatRequest r = request(action, match, name, seat, token);
     r.protocol_version = version;
-    if (net::changesSeat(r)) {
+    if (protocol::changesSeat(r)) {
       r.seq = ++seq_;
-      net::signSeatRequest(r, key_);
+      protocol::signSeatRequest(r, key_);
     }
     return joinAsIs(r);
   }
 
   /// A join request from this client, unsigned, with the next request number.
-  net::SeatRequest request(pool_JoinAction action, const std::string& match,
-                           const std::string& name = "", short seat = -1, std::uint64_t token = 0) {
-    net::SeatRequest r;
+  protocol::SeatRequest request(pool_JoinAction action, const std::string& match,
+                                const std::string& name = "", short seat = -1,
+                                std::uint64_t token = 0) {
+    protocol::SeatRequest r;
     r.client = id_;
     r.request = ++requests_;
-    r.protocol_version = net::kProtocolVersion;
+    r.protocol_version = protocol::kProtocolVersion;
     r.match = match;
-    r.action = static_cast<net::JoinAction>(static_cast<int>(action));
+    r.action = static_cast<protocol::JoinAction>(static_cast<int>(action));
     r.seat = seat;
     r.name = name;
     r.token = token;
@@ -116,7 +117,7 @@ class TestClient {
 
   /// Writes `r` exactly as given (whatever its key, number and signature) and waits for the
   /// reply to its request number.
-  std::optional<pool_JoinReply> joinAsIs(const net::SeatRequest& r) {
+  std::optional<pool_JoinReply> joinAsIs(const protocol::SeatRequest& r) {
     net::Sample<pool_JoinRequest> sample;
     pool_JoinRequest& w = *sample;
     net::setText(w.client, r.client);
@@ -127,9 +128,9 @@ class TestClient {
     w.seat = static_cast<std::int16_t>(r.seat);
     net::setText(w.name, r.name);
     w.seat_token = r.token;
-    net::setBytes(w.public_key, r.public_key, net::kPublicKeyBytes);
+    net::setBytes(w.public_key, r.public_key, protocol::kPublicKeyBytes);
     w.seq = r.seq;
-    net::setBytes(w.signature, r.signature, net::kSignatureBytes);
+    net::setBytes(w.signature, r.signature, protocol::kSignatureBytes);
     pump();
     const std::size_t from = replies.size();  // a replayed request's answer is a new sample
     EXPECT_TRUE(join_writer_.write(w));
@@ -150,13 +151,13 @@ class TestClient {
 
   /// Writes a shot command as given.
   void send(const pool_ShotCommand& command) { EXPECT_TRUE(command_writer_.write(command)); }
-  void sendAsIs(const net::ShotRequest& request) {
+  void sendAsIs(const protocol::ShotRequest& request) {
     seq_ = std::max(seq_, request.seq);  // later seat requests number above it
     send(*net::toWire(request));
   }
   /// Signs `request` with this client's key and writes it.
-  void send(net::ShotRequest request) {
-    net::signCommand(request, key_);
+  void send(protocol::ShotRequest request) {
+    protocol::signCommand(request, key_);
     sendAsIs(request);
   }
 
@@ -268,7 +269,7 @@ class TestClient {
   }
 
   std::string id_;
-  net::KeyPair key_ = net::generateKeyPair();
+  protocol::KeyPair key_ = protocol::generateKeyPair();
   std::uint32_t requests_ = 0;
   std::uint32_t seq_ = 0;    ///< the last sequence number this client's key used
   net::ProtocolTopics bus_;  ///< the participant and the protocol's topics

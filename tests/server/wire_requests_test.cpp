@@ -14,7 +14,7 @@ namespace {
 
 using namespace test;
 
-net::CommandLimits nineFootLimits() {
+protocol::CommandLimits nineFootLimits() {
   return commandLimits(nineFoot()->spec);
 }
 
@@ -27,7 +27,8 @@ TEST(ReadCommand, AGoodCommandBecomesAShotRequest) {
   EXPECT_EQ(read.request.cue.speed, 8.0);
   // The signature crosses unchanged and still verifies against the signer's key.
   EXPECT_EQ(read.request.signature, breakShot(3).signature);
-  EXPECT_EQ(net::verifyCommand(read.request, publicKeyOf("a")), net::SignatureCheck::Valid);
+  EXPECT_EQ(protocol::verifyCommand(read.request, publicKeyOf("a")),
+            protocol::SignatureCheck::Valid);
 }
 
 TEST(ReadCommand, UnreadableFieldsAreMalformedWithTheSeatAndSeqEchoed) {

@@ -119,10 +119,10 @@ TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
   }
   // Away since the resume: the grace period counts from then.
   EXPECT_FALSE(resumed->expireAway(5.0 + 29.0, 30.0));
-  net::SeatRequest rejoin =
-      server::test::seatRequest(net::JoinAction::Rejoin, "b", 1, kToken1, 1000);
+  protocol::SeatRequest rejoin =
+      server::test::seatRequest(protocol::JoinAction::Rejoin, "b", 1, kToken1, 1000);
   rejoin.client = "b2";
-  net::signSeatRequest(rejoin, server::test::keyOf("b"));
+  protocol::signSeatRequest(rejoin, server::test::keyOf("b"));
   EXPECT_TRUE(resumed->seatRequest(rejoin).accepted());
   EXPECT_TRUE(resumed->seats()[1].connected());
   // The next match opened takes a new number.
@@ -131,7 +131,7 @@ TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
 
   // The shooter's stale sequence number stays refused; the next one plays.
   const int shooter = resumed->game().shooter;
-  net::ShotRequest next = breakShot(1);
+  protocol::ShotRequest next = breakShot(1);
   next.seat = shooter;
   next.seat_token = shooter == 0 ? kToken0 : kToken1;
   next.cue.speed = 2.0;

@@ -1,15 +1,15 @@
 // The signed envelope's header encoding and the Ed25519 signing and checking of its bytes.
-#include "net/envelope.h"
+#include "protocol/envelope.h"
 
 #include <sodium.h>
 
 #include <algorithm>
 #include <bit>
 
-#include "net/protocol_version.h"
-#include "net/sodium_init.h"
+#include "protocol/protocol_version.h"
+#include "protocol/sodium_init.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 namespace {
 
@@ -68,4 +68,4 @@ SignatureCheck verifyMessage(std::span<const std::uint8_t> message,
   return ok ? SignatureCheck::Valid : SignatureCheck::BadSignature;
 }
 
-}  // namespace pool::net
+}  // namespace pool::protocol

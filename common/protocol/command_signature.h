@@ -6,11 +6,11 @@
 #include <span>
 #include <vector>
 
-#include "net/envelope.h"
-#include "net/key_pair.h"
-#include "net/shot_request.h"
+#include "protocol/envelope.h"
+#include "protocol/key_pair.h"
+#include "protocol/shot_request.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 /// Bytes of a shot command's encoding (fixed whatever the command holds).
 inline constexpr std::size_t kSignedCommandBytes =
@@ -29,4 +29,4 @@ void signCommand(ShotRequest& command, const KeyPair& key);
 /// Checks `command`'s signature against `public_key` (32 bytes; any other length fails).
 SignatureCheck verifyCommand(const ShotRequest& command, std::span<const std::uint8_t> public_key);
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -1,7 +1,7 @@
 // The signed encoding of seat requests.
-#include "net/seat_request.h"
+#include "protocol/seat_request.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 namespace {
 
@@ -45,4 +45,4 @@ SignatureCheck verifySeatRequest(const SeatRequest& request,
   return verifyMessage(signedBytes(request), request.signature, public_key);
 }
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -1,7 +1,7 @@
-// The rules' view of a match state as the client receives it.
-#include "client/net/match_types.h"
+// The rules' view of a published match state, and which shot results use a sequence number up.
+#include "protocol/match_messages.h"
 
-namespace pool::client {
+namespace pool::protocol {
 
 bool inPlay(MatchPhase phase) {
   return phase == MatchPhase::Break || phase == MatchPhase::Open || phase == MatchPhase::Assigned;
@@ -34,7 +34,7 @@ rules::GameState gameStateOf(const MatchView& view) {
 }
 
 bool ShotReport::usesUpSequence() const {
-  return accepted || net::refusedAfterSignature(reject_reason);
+  return accepted || protocol::refusedAfterSignature(reject_reason);
 }
 
-}  // namespace pool::client
+}  // namespace pool::protocol

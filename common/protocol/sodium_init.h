@@ -1,9 +1,9 @@
 // libsodium's one-time initialisation, shared by key generation and command signing.
 #pragma once
 
-namespace pool::net {
+namespace pool::protocol {
 
 /// Initialises libsodium once per process (thread-safe); throws std::runtime_error if it cannot.
 void initSodium();
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-namespace pool::net {
+namespace pool::protocol {
 
 /// Where a match stands (MatchPhase of pool.idl).
 enum class MatchPhase : std::uint8_t { Lobby, Break, Open, Assigned, Over, Closed };
@@ -56,4 +56,4 @@ const char* toString(JoinAction action);
 const char* toString(JoinOutcome outcome);
 const char* toString(RejectReason reason);
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -1,7 +1,7 @@
 // Names of the protocol's enums.
-#include "net/protocol_enums.h"
+#include "protocol/protocol_enums.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 const char* toString(MatchPhase phase) {
   switch (phase) {
@@ -118,4 +118,4 @@ bool refusedAfterSignature(RejectReason reason) {
   }
 }
 
-}  // namespace pool::net
+}  // namespace pool::protocol

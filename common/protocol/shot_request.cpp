@@ -1,7 +1,7 @@
 // Names and kinds of shot options.
-#include "net/shot_request.h"
+#include "protocol/shot_request.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 const char* toString(ShotOption option) {
   switch (option) {
@@ -25,4 +25,4 @@ bool optionShoots(ShotOption option) {
   return option != ShotOption::ReBreak && option != ShotOption::OpponentReBreaks;
 }
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -8,7 +8,7 @@
 
 #include "core/result.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 inline constexpr std::size_t kPublicKeyBytes = 32;  ///< Ed25519 public key
 inline constexpr std::size_t kSecretKeyBytes = 64;  ///< libsodium's secret key (seed + public)
@@ -31,4 +31,4 @@ KeyPair generateKeyPair();
 /// error (and is left as it is).
 Result<KeyPair> loadOrCreateKeyFile(const std::filesystem::path& path);
 
-}  // namespace pool::net
+}  // namespace pool::protocol

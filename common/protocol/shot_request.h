@@ -9,7 +9,7 @@
 
 #include "physics/cue_strike.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 /// The answer to a choice the rules offered before a shot (mirrors rules::Choice, plus None).
 enum class ShotOption : std::uint8_t {
@@ -42,4 +42,4 @@ struct ShotRequest {
   std::vector<std::uint8_t> signature;  ///< empty until commands are signed (at most 64 bytes)
 };
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -1,5 +1,5 @@
 // Ed25519 key pairs and their key files.
-#include "net/key_pair.h"
+#include "protocol/key_pair.h"
 
 #include <sodium.h>
 
@@ -10,9 +10,9 @@
 #include <string>
 #include <system_error>
 
-#include "net/sodium_init.h"
+#include "protocol/sodium_init.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 namespace {
 
@@ -68,4 +68,4 @@ Result<KeyPair> loadOrCreateKeyFile(const std::filesystem::path& path) {
   return Result<KeyPair>::ok(pair);
 }
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -7,9 +7,9 @@
 #include <string_view>
 #include <vector>
 
-#include "net/key_pair.h"
+#include "protocol/key_pair.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 /// The version of the envelope's byte layout; raised whenever any message's layout changes.
 inline constexpr std::uint32_t kEnvelopeLayoutVersion = 2;
@@ -81,4 +81,4 @@ SignatureCheck verifyMessage(std::span<const std::uint8_t> message,
                              std::span<const std::uint8_t> signature,
                              std::span<const std::uint8_t> public_key);
 
-}  // namespace pool::net
+}  // namespace pool::protocol

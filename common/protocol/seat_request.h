@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "net/envelope.h"
-#include "net/key_pair.h"
-#include "net/protocol_enums.h"
+#include "protocol/envelope.h"
+#include "protocol/key_pair.h"
+#include "protocol/protocol_enums.h"
 
-namespace pool::net {
+namespace pool::protocol {
 
 /// The match id that asks for a new match.
 inline constexpr const char* kNewMatch = "new";
@@ -48,4 +48,4 @@ void signSeatRequest(SeatRequest& request, const KeyPair& key);
 SignatureCheck verifySeatRequest(const SeatRequest& request,
                                  std::span<const std::uint8_t> public_key);
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -1,9 +1,9 @@
 // The canonical encoding of a shot command inside the signed envelope, and its Ed25519 signature.
-#include "net/command_signature.h"
+#include "protocol/command_signature.h"
 
 #include <cassert>
 
-namespace pool::net {
+namespace pool::protocol {
 
 namespace {
 
@@ -39,4 +39,4 @@ SignatureCheck verifyCommand(const ShotRequest& command, std::span<const std::ui
   return verifyMessage(signedBytes(command), command.signature, public_key);
 }
 
-}  // namespace pool::net
+}  // namespace pool::protocol

@@ -1,0 +1,132 @@
+// The protocol's published messages in domain terms, free of DDS types: lobby entries, join
+// answers, match states, shot results and table frames (the server fills them, clients read them).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/ball.h"
+#include "physics/events.h"
+#include "protocol/protocol_enums.h"
+#include "protocol/shot_request.h"
+#include "rules/game_state.h"
+#include "rules/verdict.h"
+
+namespace pool::protocol {
+
+/// True while a rack is being played (break, open or assigned).
+bool inPlay(MatchPhase phase);
+
+/// One match of the lobby (MatchInfo).
+struct LobbyEntry {
+  std::string match;  ///< "<server id>-<local number>"
+  std::string server;
+  std::string name;
+  std::string table;  ///< table spec name, e.g. "wpa-9ft"
+  MatchPhase phase = MatchPhase::Lobby;
+  std::array<std::string, 2> players;  ///< empty: seat free
+  int seats_taken = 0;
+  std::uint32_t spectators = 0;
+  std::uint32_t protocol_version = 0;
+};
+
+/// The answer to a join request (JoinReply).
+struct JoinAnswer {
+  std::string client;         ///< the client that asked
+  std::uint32_t request = 0;  ///< the request answered
+  std::string server;
+  std::string match;  ///< the match joined
+  JoinAction action = JoinAction::Seat;
+  JoinOutcome outcome = JoinOutcome::Accepted;
+  std::string reason;          ///< empty when accepted
+  int seat = -1;               ///< the seat taken; -1 for spectators and refusals
+  std::uint64_t token = 0;     ///< the seat's token; 0 for spectators and refusals
+  std::uint32_t last_seq = 0;  ///< the last seq the request's key used on that server
+
+  bool accepted() const { return outcome == JoinOutcome::Accepted; }
+};
+
+/// One seat of a match state.
+struct SeatView {
+  std::string name;  ///< empty: free
+  bool connected = false;
+  rules::Group group = rules::Group::None;
+  int balls_left = 0;
+  int fouls = 0;
+  int racks_won = 0;
+  std::uint32_t last_seq = 0;  ///< the seat's last used sequence number
+};
+
+/// A match between shots (MatchState).
+struct MatchView {
+  std::string match;
+  std::uint32_t revision = 0;
+  MatchPhase phase = MatchPhase::Lobby;
+  std::array<SeatView, 2> seats;
+  int shooter = -1;  ///< seat to shoot or choose; -1: none
+  int breaker = -1;
+  std::uint32_t rack = 0;
+  std::uint32_t shot_number = 0;
+  rules::BallInHand ball_in_hand = rules::BallInHand::None;
+  std::vector<rules::Choice> options;  ///< the shooter must choose one first
+  double shot_clock = -1.0;            ///< s left; < 0: no clock
+  int winner = -1;
+  rules::GameEnd end = rules::GameEnd::None;
+  std::string last_verdict;
+  std::vector<physics::Ball> balls;  ///< the layout at rest, pocketed balls included
+};
+
+/// The rules' state of a match view in play (phase, shooter, breaker, groups, ball in hand,
+/// options; dry turns are not on the wire).
+rules::GameState gameStateOf(const MatchView& view);
+
+/// An answer to a shot command (ShotResult): the immediate acceptance or rejection, or the final
+/// report of an accepted shot with its events and verdict.
+struct ShotReport {
+  std::string match;
+  int seat = 0;
+  std::uint32_t seq = 0;
+  std::uint32_t shot_number = 0;
+  bool accepted = false;
+  RejectReason reject_reason = RejectReason::None;
+  std::string reject_text;
+  physics::EventLog events;
+  std::vector<rules::Foul> fouls;
+  std::vector<int> pocketed;
+  bool turn_continues = false;
+  int next_shooter = -1;
+  rules::BallInHand ball_in_hand = rules::BallInHand::None;
+  std::vector<rules::Choice> options;
+  bool game_over = false;
+  int winner = -1;
+  rules::GameEnd end = rules::GameEnd::None;
+  std::string verdict_text;
+
+  /// True for the report that closes an accepted command (its verdict is known). The immediate
+  /// acceptance of a stroke carries neither events nor a verdict text.
+  bool final() const { return accepted && (!verdict_text.empty() || !events.empty()); }
+  /// True when the server used up the seat's sequence number with this command: accepted, or
+  /// refused by a check after the signature's (server/README.md). A refusal before it (token,
+  /// unsigned, bad signature, stale, malformed fields) may answer anyone's command.
+  bool usesUpSequence() const;
+};
+
+/// Every ball of one match at one instant of a shot (TableSnapshot).
+struct TableFrame {
+  std::string match;
+  std::uint32_t frame = 0;  ///< from 0 at the strike
+  double sim_time = 0.0;    ///< s since the strike
+  std::uint32_t shot_number = 0;
+  std::vector<physics::Ball> balls;
+};
+
+/// A match's lobby entry or state went away: the server closed it or stopped answering.
+struct MatchGone {
+  std::string match;
+  bool disposed = false;  ///< true: closed by the server; false: its writer vanished
+};
+
+}  // namespace pool::protocol
