@@ -6,9 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "physics/ball_ball_alciatore.h"
-#include "physics/cloth.h"
-#include "physics/contact_coulomb.h"
+#include "physics/contact_models.h"
 #include "physics/ode_world.h"
 #include "physics/pocket_world.h"
 #include "physics/predict.h"
@@ -58,7 +56,8 @@ struct Simulation::Impl {
   table::TableGeometry geometry;
   table::PhysicsParams p;
   TableFeatures features;
-  std::unique_ptr<ClothModel> cloth;
+  ContactModelSet models;
+  std::string models_error;  ///< why the spec's models could not be made ("" when they were)
   std::unique_ptr<OdeWorld> world;
   std::unique_ptr<PocketWorld> pockets;  ///< made at the first drop, kept for later shots
   bool dropped = false;                  ///< a ball dropped in this shot
@@ -72,11 +71,14 @@ struct Simulation::Impl {
   std::uint64_t next_sample = 0;
 
   Impl(const table::TableSpec& s, const table::TableGeometry& g)
-      : spec(s),
-        geometry(g),
-        p(s.params),
-        features(TableFeatures::from(g)),
-        cloth(makeClothLeckieGreenspan(s.params)) {}
+      : spec(s), geometry(g), p(s.params), features(TableFeatures::from(g)) {
+    auto made = makeContactModels(s.models, s.params);
+    if (made) {
+      models = std::move(*made);
+    } else {
+      models_error = made.error();
+    }
+  }
 
   size_t n() const { return balls.size(); }
   double R() const { return p.ball_radius; }
@@ -131,7 +133,7 @@ struct Simulation::Impl {
     Track& tr = tracks[i];
     Ball& b = balls[i];
     if (onTable(b.state)) {
-      tr.motion = cloth->motion(b);
+      tr.motion = models.cloth->motion(b);
       tr.t_end = now + tr.motion.duration;
     } else {
       tr.motion = ClothMotion{};
@@ -207,7 +209,7 @@ struct Simulation::Impl {
     if (was_airborne) emit(EventType::Land, i, -1, {}, std::max(0.0, -b.vel.z()));
     b.vel.z() = 0.0;
     b.pos.z() = R();
-    b.state = cloth->classify(b);
+    b.state = models.cloth->classify(b);
   }
 
   /// The ball's centre passed over a hole's edge: it drops, and falls on in the pocket world.
@@ -237,7 +239,7 @@ struct Simulation::Impl {
       land(i);
       return;
     }
-    cloth->apply(t, b);
+    models.cloth->apply(t, b);
     if (t == Transition::SlideToRoll) emit(EventType::SlideToRoll, i);
     if (t == Transition::RollToRest) emit(EventType::RollToRest, i);
     if (t == Transition::SpinEnds && before == MotionState::Spinning)
@@ -256,12 +258,12 @@ struct Simulation::Impl {
       }
     }
     emit(EventType::Land, i, -1, {}, -b.vel.z());
-    resolveFixedContact(b.vel, b.ang_vel, Vec3::UnitZ(), p.e_slate, p.u_s, R(), p.ball_mass);
+    models.slate->bounce(b.vel, b.ang_vel, p.u_s);
     if (b.vel.z() > kSettleSpeed) {
       emit(EventType::Airborne, i);  // bounces: still airborne
     } else {
       b.vel.z() = 0.0;
-      b.state = cloth->classify(b);
+      b.state = models.cloth->classify(b);
     }
     refresh(i);
   }
@@ -283,7 +285,8 @@ struct Simulation::Impl {
     const Vec3 normal = contactNormal(b.pos, features, hit.kind, hit.index, p.cushion_height);
     const double approach = -(b.vel + b.ang_vel.cross(-R() * normal)).dot(normal);
     const double e = approach < kPushSpeed ? 0.0 : p.e_c;
-    const double speed = resolveFixedContact(b.vel, b.ang_vel, normal, e, p.u_c, R(), p.ball_mass);
+    const bool on_slate = b.pos.z() - R() <= kNearSlate;
+    const double speed = models.cushion->resolve(b.vel, b.ang_vel, normal, e, on_slate);
     if (approach < kPushSpeed) {
       // A push or a graze: step off the nose so the next contact is predicted afresh.
       const Vec2 away = Vec2(normal.x(), normal.y()).normalized();
@@ -306,8 +309,8 @@ struct Simulation::Impl {
     const double approach =
         (a.vel + a.ang_vel.cross(R() * n) - b.vel - b.ang_vel.cross(-R() * n)).dot(n);
     const double e = approach < kPushSpeed ? 0.0 : p.e_b;
-    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e, p.u_b,
-                                         R(), p.ball_mass);
+    const double speed =
+        models.ball_ball->resolve(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e);
     if (approach < kPushSpeed) {
       // A push or a graze: part them so the next contact is predicted afresh.
       a.pos -= 0.5 * kPushGap * n;
@@ -506,6 +509,7 @@ Simulation::Simulation(const table::TableSpec& spec, const table::TableGeometry&
 Simulation::~Simulation() = default;
 
 Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
+  if (!impl_->models_error.empty()) return Result<bool>::fail(impl_->models_error);
   if (auto reason = table::validate(impl_->p); !reason.empty()) {
     return Result<bool>::fail("params: " + reason);
   }
@@ -521,7 +525,7 @@ Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
     if (onTable(b.state) && b.state != MotionState::Airborne) {
       b.pos.z() = s.R();
       b.vel.z() = 0.0;
-      b.state = s.cloth->classify(b);
+      b.state = s.models.cloth->classify(b);
     }
     s.world->addBall(b);
   }
@@ -552,8 +556,7 @@ Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& opt
   // That impact happens while the tip is still on the ball, which pins it: the cloth takes the
   // normal impulse but no friction, so a massé leaves along the cue's line and curves after.
   if (cue->vel.z() < 0.0) {
-    resolveFixedContact(cue->vel, cue->ang_vel, Vec3::UnitZ(), s.p.e_slate, 0.0, s.R(),
-                        s.p.ball_mass);
+    s.models.slate->bounce(cue->vel, cue->ang_vel, 0.0);
   }
   cue->state = MotionState::Sliding;
   s.settle(i);
