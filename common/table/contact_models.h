@@ -11,7 +11,7 @@ namespace pool::table {
 struct ContactModels {
   std::string ball_cloth = "leckie_greenspan2005";  ///< sliding, rolling, spin decay on the cloth
   std::string ball_ball = "alciatore";              ///< ball–ball impulse with throw
-  std::string ball_cushion = "han2005";             ///< ball against a cushion nose or jaw point
+  std::string ball_cushion = "mathavan2010";        ///< ball against a cushion nose or jaw point
   std::string ball_slate = "rigid_coulomb";  ///< a ball landing on (or driven into) the slate
   std::string cue_ball = "alciatore";        ///< the cue tip's strike
 };

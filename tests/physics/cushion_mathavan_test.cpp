@@ -47,7 +47,7 @@ TEST(CushionMathavan, MatchesPublishedReboundsOfARollingBall) {
 }
 
 // The integration converges: the default step gives the rebound of a 16× finer run to 1e-3 in the
-// ratio and 0.1° in the angle (an order finer than the published table's tolerances).
+// ratio and 0.05° in the angle, a tenth of the published table's tolerances.
 TEST(CushionMathavan, DefaultStepIsConverged) {
   const table::PhysicsParams p;
   const auto coarse = makeCushionMathavan2010(p);
@@ -56,7 +56,7 @@ TEST(CushionMathavan, DefaultStepIsConverged) {
     const Rebound a = rollInto(*coarse, p, incidence);
     const Rebound b = rollInto(*fine, p, incidence);
     EXPECT_NEAR(a.ratio, b.ratio, 1e-3) << incidence;
-    EXPECT_NEAR(a.angle, b.angle, 0.1) << incidence;
+    EXPECT_NEAR(a.angle, b.angle, 0.05) << incidence;
   }
 }
 
@@ -89,7 +89,7 @@ TEST(CushionMathavan, NeverAddsEnergyAndEZeroStopsTheApproach) {
       EXPECT_LE(after, before * (1.0 + 1e-12)) << incidence << " " << e;
       EXPECT_NEAR(v.z(), 0.0, 1e-12);  // the slate holds the ball down
       if (e == 0.0) {
-        EXPECT_NEAR(v.y(), 0.0, 1e-9);
+        EXPECT_NEAR(v.y(), 0.0, 1e-6);  // the end of the approach found to 1 µm/s
       }
     }
   }

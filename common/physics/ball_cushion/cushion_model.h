@@ -26,14 +26,15 @@ class CushionModel {
 std::unique_ptr<CushionModel> makeCushionHan2005(const table::PhysicsParams& params);
 
 /// Default impulse steps of the Mathavan model's compression phase (see the convergence test).
-constexpr int kMathavanSteps = 400;
+constexpr int kMathavanSteps = 16;
 
 /// Mathavan, Jackson & Parkin (2010): the ball touches the nose and the slate during the impact,
 /// with friction u_c at the nose and u_s at the slate, integrated over the normal impulse;
-/// restitution by energy (the rebound gives back e² of the compression's work). `steps`: Euler
-/// steps of the normal impulse in the compression phase (the restitution phase takes steps of the
-/// same size); the equations are homogeneous in the velocities, so the step is a fixed fraction of
-/// the impulse that stops the approach and the cost does not grow with the speed.
+/// restitution by energy (the rebound gives back e² of the compression's work). `steps`: impulse
+/// steps in the compression phase of the coarser of the two extrapolated runs (the restitution
+/// phase takes steps of the same size); the equations are homogeneous in the velocities, so the
+/// step is a fixed fraction of the impulse that stops the approach and the cost does not grow
+/// with the speed.
 std::unique_ptr<CushionModel> makeCushionMathavan2010(const table::PhysicsParams& params,
                                                       int steps = kMathavanSteps);
 
