@@ -14,14 +14,15 @@ struct Rebound {
   double angle;  ///< rebound angle from the cushion's normal, degrees
 };
 
-/// A ball rolling at `speed` into a cushion along +y, `incidence` degrees from the normal; the
-/// nose at params.cushion_height touches it at θ above the centre.
+/// A ball rolling at `speed` into a cushion along +y, `incidence` degrees from the normal (`roll`
+/// scales its topspin: 0 for a stun ball); the nose at params.cushion_height touches it at θ
+/// above the centre. `e` < 0: the params' e_c.
 Rebound rollInto(const CushionModel& model, const table::PhysicsParams& p, double incidence,
-                 double speed = 1.0, double e = -1.0) {
+                 double speed = 1.0, double e = -1.0, double roll = 1.0) {
   const double R = p.ball_radius;
   const double a = incidence * kDeg;
   Vec3 v(speed * std::sin(a), speed * std::cos(a), 0.0);
-  Vec3 w(-v.y() / R, v.x() / R, 0.0);  // rolling: v + ω × (−R ẑ) = 0
+  Vec3 w(-v.y() / R * roll, v.x() / R * roll, 0.0);  // roll 1: v + ω × (−R ẑ) = 0; 0: stun
   const double sin_theta = (p.cushion_height - R) / R;
   const Vec3 normal(0.0, -std::sqrt(1.0 - sin_theta * sin_theta), -sin_theta);
   model.resolve(v, w, normal, e < 0.0 ? p.e_c : e, true);
@@ -44,6 +45,37 @@ TEST(CushionMathavan, MatchesPublishedReboundsOfARollingBall) {
     EXPECT_NEAR(r.ratio, c.ratio, 0.01) << "incidence " << c.incidence;
     EXPECT_NEAR(r.angle, c.angle, 0.5) << "incidence " << c.incidence;
   }
+}
+
+// A stun ball (no spin) at 30° incidence rebounds at 23.7° from the normal in Mathavan et al.
+// (2010) with our default coefficients, and at 29.3° in Han (2005)'s single impulse (the figures
+// of the side-by-side comparison with pooltool); 0.5° as for the table above.
+TEST(CushionMathavan, StunBallAtThirtyDegreesShortensItsAngle) {
+  const table::PhysicsParams p;
+  const Rebound mathavan = rollInto(*makeCushionMathavan2010(p), p, 30.0, 1.0, -1.0, 0.0);
+  const Rebound han = rollInto(*makeCushionHan2005(p), p, 30.0, 1.0, -1.0, 0.0);
+  EXPECT_NEAR(mathavan.angle, 23.7, 0.5);
+  EXPECT_NEAR(han.angle, 29.3, 0.5);
+}
+
+// Closed form: without friction only the horizontal normal velocity changes, and restitution by
+// energy gives it back scaled by e (the work is quadratic in it), whatever the nose height. The
+// paper's own table: e 0.98, nose at 7R/5; spin and the velocity along the cushion unchanged.
+TEST(CushionMathavan, FrictionlessImpactReturnsENormalSpeed) {
+  table::PhysicsParams p;
+  p.e_c = 0.98;
+  p.cushion_height = 1.4 * p.ball_radius;
+  p.u_c = 0.0;
+  p.u_s = 0.0;
+  const double sin_theta = 0.4;  // (7R/5 − R)/R
+  const Vec3 n(0.0, -std::sqrt(1.0 - sin_theta * sin_theta), -sin_theta);
+  Vec3 v(0.6, 1.5, 0.0), w(10.0, -20.0, 30.0);
+  const Vec3 w0 = w;
+  makeCushionMathavan2010(p)->resolve(v, w, n, p.e_c, true);
+  EXPECT_NEAR(v.y(), -0.98 * 1.5, 1e-9);
+  EXPECT_NEAR(v.x(), 0.6, 1e-12);
+  EXPECT_NEAR(v.z(), 0.0, 1e-12);
+  EXPECT_NEAR((w - w0).norm(), 0.0, 1e-9);
 }
 
 // The integration converges: the default step gives the rebound of a 16× finer run to 1e-3 in the
