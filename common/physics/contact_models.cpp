@@ -28,6 +28,8 @@ Result<ContactModelSet> makeContactModels(const table::ContactModels& names,
     set.cushion = makeCushionHan2005(params);
   } else if (names.ball_cushion == "mathavan2010") {
     set.cushion = makeCushionMathavan2010(params);
+  } else if (names.ball_cushion == "stronge_compliant") {
+    set.cushion = makeCushionStrongeCompliant(params);
   } else {
     return R::fail(unknown("ball_cushion", names.ball_cushion));
   }

@@ -19,7 +19,9 @@ const std::vector<PairModels>& table() {
   static const std::vector<PairModels> pairs = {
       {"ball_cloth", {"leckie_greenspan2005"}, &ContactModels::ball_cloth},
       {"ball_ball", {"alciatore"}, &ContactModels::ball_ball},
-      {"ball_cushion", {"han2005", "mathavan2010"}, &ContactModels::ball_cushion},
+      {"ball_cushion",
+       {"han2005", "mathavan2010", "stronge_compliant"},
+       &ContactModels::ball_cushion},
       {"ball_slate", {"rigid_coulomb"}, &ContactModels::ball_slate},
       {"cue_ball", {"alciatore"}, &ContactModels::cue_ball},
   };

@@ -198,7 +198,8 @@ TEST(TableSpec, BadFieldsGiveOneLineReasonsNamingTheField) {
        "params.cushion_height: must be above ball_radius and below 2 * ball_radius"},
       {[](json& j) { j["models"] = 1; }, "models: must be an object"},
       {[](json& j) { j["models"]["ball_cushion"] = "bouncy"; },
-       "models.ball_cushion: unknown model 'bouncy' (known: han2005, mathavan2010)"},
+       "models.ball_cushion: unknown model 'bouncy' (known: han2005, mathavan2010, "
+       "stronge_compliant)"},
       {[](json& j) { j["models"]["ball_cushion"] = 2010; },
        "models.ball_cushion: must be a string"},
       {[](json& j) { j["models"]["ball_rail"] = "han2005"; },

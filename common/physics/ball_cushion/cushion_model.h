@@ -38,4 +38,10 @@ constexpr int kMathavanSteps = 16;
 std::unique_ptr<CushionModel> makeCushionMathavan2010(const table::PhysicsParams& params,
                                                       int steps = kMathavanSteps);
 
+/// Stronge's compliant impact (pooltool's default cushion model): normal and tangential springs
+/// at the contact (frequency ratio 1.7), Coulomb friction u_c, unloading stiffness k/e² so the
+/// rebound returns e² of the stored energy. As in pooltool, the contact is taken at the ball's
+/// equator against the horizontal normal, so the two engines compare like for like.
+std::unique_ptr<CushionModel> makeCushionStrongeCompliant(const table::PhysicsParams& params);
+
 }  // namespace pool::physics
