@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "physics/ball_ball/compliant_cluster.h"
 #include "physics/contact_models.h"
 #include "physics/ode_world.h"
 #include "physics/pocket_world.h"
@@ -29,6 +30,8 @@ constexpr std::uint64_t kMaxIterations = 200000;
 // (Zeno) until rounding lets one ball through the other.
 constexpr double kPushSpeed = 0.01;  // m/s
 constexpr double kPushGap = 1e-7;    // m
+// Balls this close (or closer) when one of them is struck take part in the same impact (a rack).
+constexpr double kTouchGap = 1e-6;  // m
 // Balls this close (or closer) count as overlapping for a placement.
 constexpr double kPlacementTolerance = 1e-6;  // m
 // An airborne ball this close to the slate is on it for a cushion's or a ball's impulse.
@@ -302,12 +305,53 @@ struct Simulation::Impl {
     refresh(i);
   }
 
+  /// The balls touching i or j, directly or through others (i and j first), on the slate.
+  std::vector<size_t> touchingCluster(size_t i, size_t j) const {
+    std::vector<size_t> cluster{i, j};
+    for (size_t k = 0; k < cluster.size(); ++k) {
+      const Ball& c = balls[cluster[k]];
+      for (size_t m = 0; m < n(); ++m) {
+        const Ball& o = balls[m];
+        if (!onTable(o.state) || o.state == MotionState::Airborne) continue;
+        if (std::find(cluster.begin(), cluster.end(), m) != cluster.end()) continue;
+        if ((o.pos - c.pos).norm() - 2.0 * R() <= kTouchGap) cluster.push_back(m);
+      }
+    }
+    return cluster;
+  }
+
+  /// Three or more touching balls: every contact at once, through compliant springs.
+  void clusterImpact(const std::vector<size_t>& cluster) {
+    std::vector<Vec3> pos, vel;
+    for (size_t k : cluster) {
+      pos.push_back(balls[k].pos);
+      vel.push_back(balls[k].vel);
+    }
+    const auto contacts = resolveCompliantCluster(pos, vel, p.e_b, R(), p.ball_mass, kTouchGap);
+    for (size_t k = 0; k < cluster.size(); ++k) balls[cluster[k]].vel = vel[k];
+    for (const ClusterContact& c : contacts) {
+      size_t a = cluster[c.a], b = cluster[c.b];
+      if (balls[b].id < balls[a].id) std::swap(a, b);
+      emit(EventType::BallBall, a, balls[b].id, {}, c.speed);
+    }
+    for (size_t k : cluster) settle(k);
+    for (size_t k : cluster) refresh(k);
+  }
+
   void ballBall(size_t i, size_t j) {
     Ball& a = balls[i];
     Ball& b = balls[j];
     const Vec3 n = (b.pos - a.pos).normalized();
     const double approach =
         (a.vel + a.ang_vel.cross(R() * n) - b.vel - b.ang_vel.cross(-R() * n)).dot(n);
+    if (approach >= kPushSpeed && a.state != MotionState::Airborne &&
+        b.state != MotionState::Airborne) {
+      const std::vector<size_t> cluster = touchingCluster(i, j);
+      if (cluster.size() > 2) {
+        clusterImpact(cluster);
+        return;
+      }
+    }
     const double e = approach < kPushSpeed ? 0.0 : p.e_b;
     const double speed =
         models.ball_ball->resolve(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e);
