@@ -6,9 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "physics/ball_ball_alciatore.h"
-#include "physics/cloth.h"
-#include "physics/contact_coulomb.h"
+#include "physics/ball_ball/compliant_cluster.h"
+#include "physics/contact_models.h"
 #include "physics/ode_world.h"
 #include "physics/pocket_world.h"
 #include "physics/predict.h"
@@ -31,6 +30,8 @@ constexpr std::uint64_t kMaxIterations = 200000;
 // (Zeno) until rounding lets one ball through the other.
 constexpr double kPushSpeed = 0.01;  // m/s
 constexpr double kPushGap = 1e-7;    // m
+// Balls this close (or closer) when one of them is struck take part in the same impact (a rack).
+constexpr double kTouchGap = 1e-6;  // m
 // Balls this close (or closer) count as overlapping for a placement.
 constexpr double kPlacementTolerance = 1e-6;  // m
 // An airborne ball this close to the slate is on it for a cushion's or a ball's impulse.
@@ -58,7 +59,8 @@ struct Simulation::Impl {
   table::TableGeometry geometry;
   table::PhysicsParams p;
   TableFeatures features;
-  std::unique_ptr<ClothModel> cloth;
+  ContactModelSet models;
+  std::string models_error;  ///< why the spec's models could not be made ("" when they were)
   std::unique_ptr<OdeWorld> world;
   std::unique_ptr<PocketWorld> pockets;  ///< made at the first drop, kept for later shots
   bool dropped = false;                  ///< a ball dropped in this shot
@@ -72,11 +74,14 @@ struct Simulation::Impl {
   std::uint64_t next_sample = 0;
 
   Impl(const table::TableSpec& s, const table::TableGeometry& g)
-      : spec(s),
-        geometry(g),
-        p(s.params),
-        features(TableFeatures::from(g)),
-        cloth(makeClothLeckieGreenspan(s.params)) {}
+      : spec(s), geometry(g), p(s.params), features(TableFeatures::from(g)) {
+    auto made = makeContactModels(s.models, s.params);
+    if (made) {
+      models = std::move(*made);
+    } else {
+      models_error = made.error();
+    }
+  }
 
   size_t n() const { return balls.size(); }
   double R() const { return p.ball_radius; }
@@ -131,7 +136,7 @@ struct Simulation::Impl {
     Track& tr = tracks[i];
     Ball& b = balls[i];
     if (onTable(b.state)) {
-      tr.motion = cloth->motion(b);
+      tr.motion = models.cloth->motion(b);
       tr.t_end = now + tr.motion.duration;
     } else {
       tr.motion = ClothMotion{};
@@ -207,7 +212,7 @@ struct Simulation::Impl {
     if (was_airborne) emit(EventType::Land, i, -1, {}, std::max(0.0, -b.vel.z()));
     b.vel.z() = 0.0;
     b.pos.z() = R();
-    b.state = cloth->classify(b);
+    b.state = models.cloth->classify(b);
   }
 
   /// The ball's centre passed over a hole's edge: it drops, and falls on in the pocket world.
@@ -237,7 +242,7 @@ struct Simulation::Impl {
       land(i);
       return;
     }
-    cloth->apply(t, b);
+    models.cloth->apply(t, b);
     if (t == Transition::SlideToRoll) emit(EventType::SlideToRoll, i);
     if (t == Transition::RollToRest) emit(EventType::RollToRest, i);
     if (t == Transition::SpinEnds && before == MotionState::Spinning)
@@ -256,12 +261,12 @@ struct Simulation::Impl {
       }
     }
     emit(EventType::Land, i, -1, {}, -b.vel.z());
-    resolveFixedContact(b.vel, b.ang_vel, Vec3::UnitZ(), p.e_slate, p.u_s, R(), p.ball_mass);
+    models.slate->bounce(b.vel, b.ang_vel, p.u_s);
     if (b.vel.z() > kSettleSpeed) {
       emit(EventType::Airborne, i);  // bounces: still airborne
     } else {
       b.vel.z() = 0.0;
-      b.state = cloth->classify(b);
+      b.state = models.cloth->classify(b);
     }
     refresh(i);
   }
@@ -283,7 +288,8 @@ struct Simulation::Impl {
     const Vec3 normal = contactNormal(b.pos, features, hit.kind, hit.index, p.cushion_height);
     const double approach = -(b.vel + b.ang_vel.cross(-R() * normal)).dot(normal);
     const double e = approach < kPushSpeed ? 0.0 : p.e_c;
-    const double speed = resolveFixedContact(b.vel, b.ang_vel, normal, e, p.u_c, R(), p.ball_mass);
+    const bool on_slate = b.pos.z() - R() <= kNearSlate;
+    const double speed = models.cushion->resolve(b.vel, b.ang_vel, normal, e, on_slate);
     if (approach < kPushSpeed) {
       // A push or a graze: step off the nose so the next contact is predicted afresh.
       const Vec2 away = Vec2(normal.x(), normal.y()).normalized();
@@ -299,15 +305,56 @@ struct Simulation::Impl {
     refresh(i);
   }
 
+  /// The balls touching i or j, directly or through others (i and j first), on the slate.
+  std::vector<size_t> touchingCluster(size_t i, size_t j) const {
+    std::vector<size_t> cluster{i, j};
+    for (size_t k = 0; k < cluster.size(); ++k) {
+      const Ball& c = balls[cluster[k]];
+      for (size_t m = 0; m < n(); ++m) {
+        const Ball& o = balls[m];
+        if (!onTable(o.state) || o.state == MotionState::Airborne) continue;
+        if (std::find(cluster.begin(), cluster.end(), m) != cluster.end()) continue;
+        if ((o.pos - c.pos).norm() - 2.0 * R() <= kTouchGap) cluster.push_back(m);
+      }
+    }
+    return cluster;
+  }
+
+  /// Three or more touching balls: every contact at once, through compliant springs.
+  void clusterImpact(const std::vector<size_t>& cluster) {
+    std::vector<Vec3> pos, vel;
+    for (size_t k : cluster) {
+      pos.push_back(balls[k].pos);
+      vel.push_back(balls[k].vel);
+    }
+    const auto contacts = resolveCompliantCluster(pos, vel, p.e_b, R(), p.ball_mass, kTouchGap);
+    for (size_t k = 0; k < cluster.size(); ++k) balls[cluster[k]].vel = vel[k];
+    for (const ClusterContact& c : contacts) {
+      size_t a = cluster[c.a], b = cluster[c.b];
+      if (balls[b].id < balls[a].id) std::swap(a, b);
+      emit(EventType::BallBall, a, balls[b].id, {}, c.speed);
+    }
+    for (size_t k : cluster) settle(k);
+    for (size_t k : cluster) refresh(k);
+  }
+
   void ballBall(size_t i, size_t j) {
     Ball& a = balls[i];
     Ball& b = balls[j];
     const Vec3 n = (b.pos - a.pos).normalized();
     const double approach =
         (a.vel + a.ang_vel.cross(R() * n) - b.vel - b.ang_vel.cross(-R() * n)).dot(n);
+    if (approach >= kPushSpeed && a.state != MotionState::Airborne &&
+        b.state != MotionState::Airborne) {
+      const std::vector<size_t> cluster = touchingCluster(i, j);
+      if (cluster.size() > 2) {
+        clusterImpact(cluster);
+        return;
+      }
+    }
     const double e = approach < kPushSpeed ? 0.0 : p.e_b;
-    const double speed = resolveBallBall(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e, p.u_b,
-                                         R(), p.ball_mass);
+    const double speed =
+        models.ball_ball->resolve(a.pos, a.vel, a.ang_vel, b.pos, b.vel, b.ang_vel, e);
     if (approach < kPushSpeed) {
       // A push or a graze: part them so the next contact is predicted afresh.
       a.pos -= 0.5 * kPushGap * n;
@@ -506,6 +553,7 @@ Simulation::Simulation(const table::TableSpec& spec, const table::TableGeometry&
 Simulation::~Simulation() = default;
 
 Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
+  if (!impl_->models_error.empty()) return Result<bool>::fail(impl_->models_error);
   if (auto reason = table::validate(impl_->p); !reason.empty()) {
     return Result<bool>::fail("params: " + reason);
   }
@@ -521,7 +569,7 @@ Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
     if (onTable(b.state) && b.state != MotionState::Airborne) {
       b.pos.z() = s.R();
       b.vel.z() = 0.0;
-      b.state = s.cloth->classify(b);
+      b.state = s.models.cloth->classify(b);
     }
     s.world->addBall(b);
   }
@@ -552,8 +600,7 @@ Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& opt
   // That impact happens while the tip is still on the ball, which pins it: the cloth takes the
   // normal impulse but no friction, so a massé leaves along the cue's line and curves after.
   if (cue->vel.z() < 0.0) {
-    resolveFixedContact(cue->vel, cue->ang_vel, Vec3::UnitZ(), s.p.e_slate, 0.0, s.R(),
-                        s.p.ball_mass);
+    s.models.slate->bounce(cue->vel, cue->ang_vel, 0.0);
   }
   cue->state = MotionState::Sliding;
   s.settle(i);

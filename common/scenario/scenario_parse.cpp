@@ -13,6 +13,7 @@ constexpr Interval kTrajectoryHz{0.0, 1000.0, false};  // 0 = no trajectory
 struct TopLevel {
   std::string table = "wpa-9ft";
   const nlohmann::json* params = nullptr;
+  const nlohmann::json* models = nullptr;
   const nlohmann::json* balls = nullptr;
   const nlohmann::json* rack = nullptr;
   const nlohmann::json* shot = nullptr;
@@ -20,12 +21,13 @@ struct TopLevel {
 
 std::string readTopLevel(const nlohmann::json& doc, TopLevel& top, Scenario& s) {
   ObjectReader reader(doc, "");
-  reader.onlyKnown({"description", "table", "params", "balls", "rack", "shot", "seed", "max_time",
-                    "trajectory_hz"});
+  reader.onlyKnown({"description", "table", "params", "models", "balls", "rack", "shot", "seed",
+                    "max_time", "trajectory_hz"});
   std::string description;  // free text for people; not used
   reader.string("description", description);
   reader.string("table", top.table);
   top.params = reader.member("params");
+  top.models = reader.member("models");
   top.balls = reader.member("balls");
   top.rack = reader.member("rack");
   top.shot = reader.member("shot", Presence::Required);
@@ -47,6 +49,7 @@ Result<Scenario> parseScenarioIn(const std::string& json_text,
   // Each step needs the ones before it: params change the spec, the geometry needs the params...
   if (why.empty()) why = readTable(top.table, base_dir, s);
   if (why.empty()) why = readParams(top.params, s);
+  if (why.empty()) why = readModels(top.models, s);
   if (why.empty()) why = buildGeometry(s);
   if (why.empty()) why = readBalls(top.balls, top.rack, s);
   if (why.empty()) why = readShot(*top.shot, s);

@@ -18,6 +18,10 @@ std::string readTable(const std::string& name_or_path, const std::filesystem::pa
 /// Returns "" or "params.<name>: <reason>".
 std::string readParams(const nlohmann::json* params, Scenario& s);
 
+/// Applies the `models` object (nullptr: none) through table::setModel: the contact model of each
+/// pair, over the spec's choice. Returns "" or "models.<pair>: <reason>".
+std::string readModels(const nlohmann::json* models, Scenario& s);
+
 /// Computes s.geometry from s.spec (after the params: the ball radius and nose height count).
 std::string buildGeometry(Scenario& s);
 

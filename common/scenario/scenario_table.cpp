@@ -1,10 +1,12 @@
-// The scenario's table: spec by name or path, coefficient overrides (`params`), collision geometry.
+// The scenario's table: spec by name or path, coefficient and model overrides (`params`,
+// `models`), collision geometry.
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
 
 #include "scenario/object_reader.h"
 #include "scenario/scenario_sections.h"
+#include "table/contact_models.h"
 #include "table/physics_params.h"
 
 namespace pool::scenario {
@@ -54,6 +56,21 @@ std::string readParams(const nlohmann::json* params, Scenario& s) {
   }
   const std::string why = table::validate(s.spec.params);
   return why.empty() ? "" : "params." + why;
+}
+
+std::string readModels(const nlohmann::json* models, Scenario& s) {
+  if (models == nullptr) return "";
+  ObjectReader reader(*models, "models");
+  if (!reader.ok()) return reader.error();
+  for (const auto& item : models->items()) {
+    std::string name;
+    reader.string(item.key(), name, Presence::Required);
+    if (!reader.ok()) break;
+    if (const std::string why = table::setModel(s.spec.models, item.key(), name); !why.empty()) {
+      reader.fail(item.key(), why);
+    }
+  }
+  return reader.error();
 }
 
 std::string buildGeometry(Scenario& s) {

@@ -93,6 +93,18 @@ std::string readParams(const json& root, PhysicsParams& params) {
   return reason.empty() ? "" : "params." + reason;
 }
 
+std::string readModels(const json& root, ContactModels& models) {
+  const auto it = root.find("models");
+  if (it == root.end()) return "";
+  if (!it->is_object()) return "models: must be an object";
+  for (const auto& [key, value] : it->items()) {
+    if (!value.is_string()) return "models." + key + ": must be a string";
+    const std::string reason = setModel(models, key, value.get<std::string>());
+    if (!reason.empty()) return "models." + key + ": " + reason;
+  }
+  return "";
+}
+
 /// Reads an optional string field; "" or a reason.
 std::string readString(const json& root, const char* key, std::string& out) {
   const auto it = root.find(key);
@@ -165,14 +177,14 @@ std::string checkSpec(const TableSpec& spec) {
 
 /// Fills `spec` from the parsed root object; "" or a reason.
 std::string readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
-  std::string r = readFields(
-      root, "",
-      {{"length", &spec.length, &kPositive},
-       {"width", &spec.width, &kPositive},
-       {"cushion_width", &spec.cushion_width, &kPositive},
-       {"rail_width", &spec.rail_width, &kPositive},
-       {"slate_thickness", &spec.slate_thickness, &kSlate}},
-      {"name", "description", "corner", "side", "params", "collision_mesh", "render_mesh"});
+  std::string r = readFields(root, "",
+                             {{"length", &spec.length, &kPositive},
+                              {"width", &spec.width, &kPositive},
+                              {"cushion_width", &spec.cushion_width, &kPositive},
+                              {"rail_width", &spec.rail_width, &kPositive},
+                              {"slate_thickness", &spec.slate_thickness, &kSlate}},
+                             {"name", "description", "corner", "side", "params", "models",
+                              "collision_mesh", "render_mesh"});
   if (!r.empty()) return r;
   std::string description, collision, render;
   for (const auto& [key, target] :
@@ -183,6 +195,7 @@ std::string readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec
   if (r = readPocket(root, "corner", spec.corner); !r.empty()) return r;
   if (r = readPocket(root, "side", spec.side); !r.empty()) return r;
   if (r = readParams(root, spec.params); !r.empty()) return r;
+  if (r = readModels(root, spec.models); !r.empty()) return r;
   spec.collision_mesh = resolveMesh(collision, spec_dir);
   spec.render_mesh = render.empty() ? spec.collision_mesh : resolveMesh(render, spec_dir);
   return checkSpec(spec);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/result.h"
+#include "table/contact_models.h"
 #include "table/physics_params.h"
 
 namespace pool::table {
@@ -30,6 +31,7 @@ struct TableSpec {
   PocketSpec corner;
   PocketSpec side;
   PhysicsParams params;
+  ContactModels models;                  ///< the contact model of each pair (`models` in the spec)
   std::filesystem::path collision_mesh;  ///< absolute path of the collision mesh (OBJ)
   std::filesystem::path
       render_mesh;  ///< absolute path of the render mesh; may equal collision_mesh

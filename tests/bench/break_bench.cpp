@@ -51,6 +51,23 @@ BENCHMARK(BM_BreakToRest)
     ->Repetitions(25)
     ->ReportAggregatesOnly(true);
 
+/// The same break on Han (2005)'s one-impulse cushion model, the default before Mathavan (2010):
+/// the cost of the cushion model against the same run.
+void BM_BreakToRestHan2005Cushions(benchmark::State& state) {
+  scenario::Scenario s = breakScene();
+  s.spec.models.ball_cushion = "han2005";
+  for (auto _ : state) {
+    physics::Simulation sim(s.spec, s.geometry);
+    (void)sim.setBalls(s.balls);
+    auto out = sim.shoot(s.shot, s.options);
+    benchmark::DoNotOptimize(out->balls.data());
+  }
+}
+BENCHMARK(BM_BreakToRestHan2005Cushions)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(25)
+    ->ReportAggregatesOnly(true);
+
 /// The same break with 60 Hz frames recorded, as the server publishes them.
 void BM_BreakToRestWithFrames(benchmark::State& state) {
   const auto& s = breakScene();

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fixtures.h"
-#include "physics/ball_ball_alciatore.h"
+#include "physics/ball_ball/alciatore.h"
 
 namespace pool::physics::test {
 namespace {

@@ -108,6 +108,11 @@ inline std::vector<BadScenario> badScenarios() {
       {"param_string", withRaw("/params", R"({"u_s": "high"})"), "params.u_s: must be a number"},
       {"param_inf", withRaw("/params", R"({"u_s": 1e999})"), "params.u_s: must be a finite number"},
       {"param_out_of_range", withRaw("/params", R"({"u_s": -0.2})"), "params.u_s:"},
+      {"models_not_object", withRaw("/models", "[1]"), "models: must be a JSON object"},
+      {"unknown_model", withRaw("/models", R"({"ball_cushion": "bouncy"})"),
+       "models.ball_cushion: unknown model 'bouncy'"},
+      {"unknown_pair", withRaw("/models", R"({"ball_rail": "han2005"})"),
+       "models.ball_rail: unknown contact pair"},
       {"param_null", withRaw("/params", R"({"e_b": null})"), "params.e_b: must be a number"},
       // Balls and rack.
       {"no_balls_no_rack", without("", "balls"), "balls: missing"},

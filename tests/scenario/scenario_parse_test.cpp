@@ -136,6 +136,15 @@ TEST(ScenarioParse, ParamsChangeTheSpec) {
   EXPECT_DOUBLE_EQ(*s.spec.params.u_b, 0.05);
 }
 
+TEST(ScenarioParse, ModelsOverrideTheSpecsChoice) {
+  const Scenario plain = parseOk(goodScenario().dump());
+  const std::string other =
+      plain.spec.models.ball_cushion == "han2005" ? "mathavan2010" : "han2005";
+  const Scenario s = parseOk(withRaw("/models", R"({"ball_cushion": ")" + other + R"("})"));
+  EXPECT_EQ(s.spec.models.ball_cushion, other);
+  EXPECT_EQ(s.spec.models.ball_ball, plain.spec.models.ball_ball);
+}
+
 TEST(ScenarioParse, EveryContractParamNameIsAccepted) {
   // SIM-CONTRACT.md's names, each with its typical value.
   const std::vector<std::pair<std::string, double>> contract = {{"u_s", 0.2},

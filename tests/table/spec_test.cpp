@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "table/contact_models.h"
 #include "table/physics_params.h"
 #include "table/table_spec.h"
 
@@ -125,6 +126,18 @@ TEST(TableSpec, LoadsByPathAndResolvesMeshesBesideTheSpec) {
   EXPECT_DOUBLE_EQ(spec->params.u_r, 0.01);  // untouched coefficients keep their defaults
 }
 
+TEST(TableSpec, ModelsNameTheContactModelOfEachPair) {
+  TempDir dir;
+  json j = shippedJson("wpa-9ft");
+  const std::string other = ContactModels{}.ball_cushion == "han2005" ? "mathavan2010" : "han2005";
+  j["models"] = json{{"ball_cushion", other}};
+  const auto spec = loadTableSpec(dir.write("models.json", j.dump()).string());
+  ASSERT_TRUE(spec) << spec.error();
+  EXPECT_EQ(spec->models.ball_cushion, other);
+  EXPECT_EQ(spec->models.ball_ball, "alciatore");  // pairs not named keep their default
+  for (const auto pair : contactPairs()) EXPECT_FALSE(knownModels(pair).empty()) << pair;
+}
+
 TEST(TableSpec, NameDefaultsToTheFileStem) {
   TempDir dir;
   json j = shippedJson("wpa-7ft");
@@ -183,6 +196,15 @@ TEST(TableSpec, BadFieldsGiveOneLineReasonsNamingTheField) {
       {[](json& j) { j["params"]["mu"] = 0.2; }, "params.mu: unknown parameter"},
       {[](json& j) { j["params"]["cushion_height"] = 0.02; },
        "params.cushion_height: must be above ball_radius and below 2 * ball_radius"},
+      {[](json& j) { j["models"] = 1; }, "models: must be an object"},
+      {[](json& j) { j["models"]["ball_cushion"] = "bouncy"; },
+       "models.ball_cushion: unknown model 'bouncy' (known: han2005, mathavan2010, "
+       "stronge_compliant)"},
+      {[](json& j) { j["models"]["ball_cushion"] = 2010; },
+       "models.ball_cushion: must be a string"},
+      {[](json& j) { j["models"]["ball_rail"] = "han2005"; },
+       "models.ball_rail: unknown contact pair (known: ball_cloth, ball_ball, ball_cushion, "
+       "ball_slate, cue_ball)"},
       {[](json& j) { j["length"] = 0.2; }, "length: too short for its pockets"},
       {[](json& j) { j["width"] = 0.1; }, "width: too narrow for its pockets"},
       {[](json& j) { j["corner"]["mouth"] = 0.05; },

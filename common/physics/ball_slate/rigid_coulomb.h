@@ -1,5 +1,5 @@
-// A ball against a fixed surface (cushion nose, jaw point, slate): restitution and Coulomb friction
-// as one impulse.
+// A ball against a fixed surface (slate, or a cushion nose in Han's model): restitution and
+// Coulomb friction as one rigid impulse.
 #pragma once
 
 #include "physics/ball.h"

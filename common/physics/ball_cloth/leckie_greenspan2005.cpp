@@ -2,7 +2,7 @@
 #include <cmath>
 #include <limits>
 
-#include "physics/cloth.h"
+#include "physics/ball_cloth/cloth_model.h"
 
 namespace pool::physics {
 

@@ -1,7 +1,9 @@
-// Frictional, inelastic impulse between two equal balls.
-#include "physics/ball_ball_alciatore.h"
+// Frictional, inelastic impulse between two equal balls (Alciatore), and its ball–ball model.
+#include "physics/ball_ball/alciatore.h"
 
 #include <cmath>
+
+#include "physics/ball_ball/ball_ball_model.h"
 
 namespace pool::physics {
 
@@ -41,6 +43,30 @@ double resolveBallBall(const Vec3& pa, Vec3& va, Vec3& wa, const Vec3& pb, Vec3&
   wa += dw;
   wb += dw;
   return un;
+}
+
+}  // namespace pool::physics
+
+namespace pool::physics {
+namespace {
+
+class BallBallAlciatore final : public BallBallModel {
+ public:
+  explicit BallBallAlciatore(const table::PhysicsParams& p) : p_(p) {}
+  double resolve(const Vec3& pa, Vec3& va, Vec3& wa, const Vec3& pb, Vec3& vb, Vec3& wb,
+                 double restitution) const override {
+    return resolveBallBall(pa, va, wa, pb, vb, wb, restitution, p_.u_b, p_.ball_radius,
+                           p_.ball_mass);
+  }
+
+ private:
+  table::PhysicsParams p_;
+};
+
+}  // namespace
+
+std::unique_ptr<BallBallModel> makeBallBallAlciatore(const table::PhysicsParams& params) {
+  return std::make_unique<BallBallAlciatore>(params);
 }
 
 }  // namespace pool::physics

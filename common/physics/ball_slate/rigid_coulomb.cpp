@@ -1,5 +1,7 @@
-// Impulse of a ball on a fixed contact, with restitution and Coulomb friction.
-#include "physics/contact_coulomb.h"
+// Impulse of a ball on a fixed contact, with restitution and Coulomb friction; the slate model.
+#include "physics/ball_slate/rigid_coulomb.h"
+
+#include "physics/ball_slate/slate_model.h"
 
 namespace pool::physics {
 
@@ -27,6 +29,29 @@ double resolveFixedContact(Vec3& vel, Vec3& ang_vel, const Vec3& normal, double 
   vel += p / mass;
   ang_vel += r.cross(p) / inertia;
   return -un;
+}
+
+}  // namespace pool::physics
+
+namespace pool::physics {
+namespace {
+
+class SlateRigidCoulomb final : public SlateModel {
+ public:
+  explicit SlateRigidCoulomb(const table::PhysicsParams& p) : p_(p) {}
+  double bounce(Vec3& vel, Vec3& ang_vel, double friction) const override {
+    return resolveFixedContact(vel, ang_vel, Vec3::UnitZ(), p_.e_slate, friction, p_.ball_radius,
+                               p_.ball_mass);
+  }
+
+ private:
+  table::PhysicsParams p_;
+};
+
+}  // namespace
+
+std::unique_ptr<SlateModel> makeSlateRigidCoulomb(const table::PhysicsParams& params) {
+  return std::make_unique<SlateRigidCoulomb>(params);
 }
 
 }  // namespace pool::physics

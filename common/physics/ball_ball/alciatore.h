@@ -1,4 +1,4 @@
-// Ball–ball collision: restitution and friction (throw, spin transfer) with Alciatore's
+// Ball–ball model after Alciatore: restitution and friction (throw, spin transfer) with his
 // speed-dependent friction (TP A-14).
 #pragma once
 
