@@ -8,9 +8,9 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${POOL_PKG_BUILD_DIR:-$root/build-pkg}
 packages=(pool-common pool-server pool-client)
+# It installs and purges packages on this machine (any pool packages installed before are purged).
 if [[ $(id -u) -ne 0 ]]; then
-  echo "ci-package.sh installs packages on this machine: run it as root" >&2
-  exit 2
+  exec sudo -E "$0" "$@"
 fi
 "$root/scripts/deps.sh"
 
