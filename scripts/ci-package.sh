@@ -33,6 +33,7 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+trap 'exit 1' INT TERM  # a timeout's signal runs the cleanup too
 
 # 1. Release (-O3), warnings as errors, programs only; no path of this checkout inside them.
 build_release() {

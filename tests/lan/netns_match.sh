@@ -27,6 +27,7 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+trap 'exit 1' INT TERM  # a timeout's signal runs the cleanup too
 
 ip netns add "$srv"
 ip netns add "$cli"
