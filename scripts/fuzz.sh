@@ -17,7 +17,9 @@ fi
 "$root/scripts/deps.sh"
 
 flags="-O1 -g1"
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DPOOL_FUZZ=ON \
+werror=()
+[[ ${CI:-} == true ]] && werror=(-DPOOL_WERROR=ON)  # CI builds with warnings as errors
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DPOOL_FUZZ=ON "${werror[@]}" \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$flags" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$flags" >/dev/null
 cmake --build "$build" -j "$(nproc)" --target fuzz

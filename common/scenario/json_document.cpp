@@ -51,7 +51,10 @@ class PathTracker {
     std::string out;
     for (const Frame& f : frames_) {
       if (f.is_array) {
-        out += "[" + std::to_string(f.index) + "]";
+        // Appended piece by piece: g++ 12's -Wrestrict false positive at -O3 (GCC bug 105651).
+        out += '[';
+        out += std::to_string(f.index);
+        out += ']';
       } else if (!f.key.empty()) {
         out += (out.empty() ? "" : ".") + f.key;
       }

@@ -1,4 +1,4 @@
-// Asset folder lookup: $POOL_ASSETS, then next to the executable, then the source tree.
+// Asset folder lookup: $POOL_ASSETS, then beside the executable, then the install and source paths.
 #include "table/assets.h"
 
 #include <cstdlib>
@@ -19,22 +19,29 @@ std::optional<fs::path> besideExecutable() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec || exe.empty()) return std::nullopt;
-  const fs::path dir = exe.parent_path();
+  return assetsBesideProgram(exe.parent_path());
+}
+
+}  // namespace
+
+std::optional<fs::path> assetsBesideProgram(const fs::path& bin_dir) {
   for (const fs::path& candidate :
-       {dir / ".." / ".." / "assets", dir / ".." / "share" / "pool" / "assets"}) {
+       {bin_dir / ".." / ".." / "assets", bin_dir / ".." / "share" / "pool"}) {
     if (looksLikeAssets(candidate)) return candidate.lexically_normal();
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 fs::path assetsDir() {
   if (const char* env = std::getenv("POOL_ASSETS"); env != nullptr && *env != '\0') {
     return fs::path(env);
   }
   if (auto beside = besideExecutable()) return *beside;
-  return fs::path(POOL_SOURCE_ASSETS_DIR);
+#ifdef POOL_SOURCE_ASSETS_DIR
+  // A build of this checkout run from elsewhere (a build folder outside the source tree).
+  if (const fs::path source(POOL_SOURCE_ASSETS_DIR); looksLikeAssets(source)) return source;
+#endif
+  return fs::path(POOL_INSTALL_ASSETS_DIR);
 }
 
 std::optional<fs::path> findAsset(std::string_view relative) {

@@ -49,8 +49,13 @@ class ObjWriter {
 
   void element(char kind, const std::vector<std::size_t>& indices) {
     out_ += kind;
-    for (std::size_t i : indices) out_ += " " + std::to_string(i);
-    out_ += "\n";
+    // Appended piece by piece: `" " + std::to_string(i)` trips g++ 12's -Wrestrict false
+    // positive at -O3 (GCC bug 105651).
+    for (std::size_t i : indices) {
+      out_ += ' ';
+      out_ += std::to_string(i);
+    }
+    out_ += '\n';
   }
 
   std::string take() { return std::move(out_); }

@@ -256,7 +256,16 @@ CommandAnswer Match::applyChoiceNow(const protocol::ShotRequest& command,
                                     const rules::Verdict& verdict,
                                     std::vector<physics::Ball> balls) {
   CommandAnswer answer;
-  answer.record = ShotRecord{command, shot_number_, false, game_, balls, {}, {}, balls, verdict};
+  // Field by field: the aggregate with `{}` members made g++ 12 at -O3 warn that the empty
+  // intent's string "may be used uninitialized" (-Wmaybe-uninitialized, a false positive).
+  ShotRecord& record = answer.record.emplace();
+  record.command = command;
+  record.shot_number = shot_number_;
+  record.shoots = false;
+  record.state = game_;
+  record.before = balls;
+  record.after = balls;
+  record.verdict = verdict;
   auto after = tableAfter(verdict, std::move(balls));
   commit(verdict, std::move(after), command.seat);
   answer.seat = command.seat;

@@ -152,7 +152,10 @@ TEST_F(ServerFlood, EveryBadCommandIsRefusedAndOtherMatchesKeepTheirSnapshotRate
   std::this_thread::sleep_for(500ms);
   shootNext(a, b, one, 1, 2);
   shootNext(c, d, two, 1, 2);
-  for (auto [watcher, match] : {std::pair{&a, "t-1"}, std::pair{&c, "t-2"}}) {
+  for (const auto& [watcher_of, match_id] : {std::pair{&a, "t-1"}, std::pair{&c, "t-2"}}) {
+    // Plain copies: clang 14 cannot capture structured bindings in a lambda.
+    auto* watcher = watcher_of;
+    const char* match = match_id;
     const bool done = watcher->waitUntil(
         [&] {
           const auto* st = watcher->latestState(match);

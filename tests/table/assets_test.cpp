@@ -1,4 +1,4 @@
-// Asset lookup from any working directory, and the $POOL_ASSETS override.
+// Asset lookup from any working directory, installed and build-tree layouts, $POOL_ASSETS.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -56,6 +56,24 @@ TEST_F(InOtherDirectory, EnvironmentOverrides) {
   ::unsetenv("POOL_ASSETS");
   fs::remove_all(fake);
   EXPECT_TRUE(findAsset("tables/wpa-9ft.json").has_value());
+}
+
+TEST(AssetsBesideProgram, FindsInstalledAndBuildTreeLayouts) {
+  const fs::path root = fs::temp_directory_path() / "pool_assets_layouts";
+  fs::remove_all(root);
+  // Installed: <prefix>/bin/pool-server reads <prefix>/share/pool/tables/...
+  fs::create_directories(root / "usr" / "bin");
+  fs::create_directories(root / "usr" / "share" / "pool" / "tables");
+  EXPECT_EQ(assetsBesideProgram(root / "usr" / "bin"), root / "usr" / "share" / "pool");
+  // A build tree inside the checkout: <src>/build/bin reads <src>/assets/tables/...
+  fs::create_directories(root / "src" / "build" / "bin");
+  fs::create_directories(root / "src" / "assets" / "tables");
+  EXPECT_EQ(assetsBesideProgram(root / "src" / "build" / "bin"), root / "src" / "assets");
+  // A folder without table specs is not an assets folder.
+  fs::create_directories(root / "opt" / "bin");
+  fs::create_directories(root / "opt" / "share" / "pool");
+  EXPECT_FALSE(assetsBesideProgram(root / "opt" / "bin").has_value());
+  fs::remove_all(root);
 }
 
 }  // namespace
