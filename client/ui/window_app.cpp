@@ -38,6 +38,7 @@
 #include "client/ui/scene_convert.h"
 #include "net/dds_error.h"
 #include "rules/placement.h"
+#include "scenario/cue_shot_json.h"
 
 namespace pool::ui {
 namespace {
@@ -282,18 +283,10 @@ class WindowApp {
       return;
     }
     if (!options_.json) return;
-    nlohmann::json line{{"event", "shot"},
-                        {"match", session_.match()},
-                        {"seat", seat},
-                        {"seq", *sent},
-                        {"yaw", request.cue.yaw},
-                        {"tip_side", request.cue.tip_side},
-                        {"tip_height", request.cue.tip_height},
-                        {"elevation", request.cue.elevation},
-                        {"speed", request.cue.speed},
-                        {"speed_is_ball", request.cue.speed_is_ball},
-                        {"safety", request.safety},
-                        {"option", net::toString(request.option)}};
+    nlohmann::json line{
+        {"event", "shot"}, {"match", session_.match()}, {"seat", seat},
+        {"seq", *sent},    {"safety", request.safety},  {"option", net::toString(request.option)}};
+    line.update(scenario::cueShotJson(request.cue));
     if (request.called_ball) {
       line["called_ball"] = *request.called_ball;
       line["called_pocket"] = request.called_pocket;
