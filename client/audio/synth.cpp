@@ -6,26 +6,22 @@
 #include <cstdint>
 #include <numbers>
 
+#include "core/split_mix64.h"
+
 namespace pool::audio {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-/// A small deterministic generator (SplitMix64): the same seed, the same sounds on every machine.
+/// Deterministic noise: the same seed, the same sounds on every machine.
 class Noise {
  public:
-  explicit Noise(std::uint64_t seed) : state_(seed) {}
+  explicit Noise(std::uint64_t seed) : rng_(seed) {}
   /// Uniform in [-1, 1).
-  double next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * 0x1.0p-52 - 1.0;
-  }
+  double next() { return 2.0 * rng_.uniform() - 1.0; }
 
  private:
-  std::uint64_t state_;
+  SplitMix64 rng_;
 };
 
 /// One ringing mode of a struck body.

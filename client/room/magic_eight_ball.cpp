@@ -3,6 +3,8 @@
 
 #include <cctype>
 
+#include "core/split_mix64.h"
+
 namespace pool::room {
 
 namespace {
@@ -31,13 +33,6 @@ std::uint64_t fnv1a(std::string_view text) {
     h *= 0x100000001b3ull;
   }
   return h;
-}
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
 }
 
 }  // namespace
@@ -79,7 +74,7 @@ Result<std::string> answer(std::string_view question, std::uint64_t seed) {
   bool meaningful = false;
   for (const char c : q) meaningful = meaningful || std::isalnum(static_cast<unsigned char>(c));
   if (!meaningful) return Result<std::string>::fail("ask the Magic Eight Ball a question first");
-  const std::uint64_t pick = splitmix64(fnv1a(q) ^ splitmix64(seed));
+  const std::uint64_t pick = splitMix64(fnv1a(q) ^ splitMix64(seed));
   return Result<std::string>::ok(std::string(classicAnswers()[pick % classicAnswers().size()]));
 }
 

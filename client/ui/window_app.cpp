@@ -1,4 +1,4 @@
-// The window's loop: network, script, controls, aim line and call, scene, HUD.
+// The window's loop: network, script, controls, turns and shots, scene, HUD and lobby.
 #include "client/ui/window_app.h"
 
 // clang-format off
@@ -8,36 +8,36 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
-#include <stb_image_write.h>
 
 #include <chrono>
 #include <deque>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
-#include "client/app/aim_line.h"
 #include "client/app/controls.h"
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
-#include "client/app/overlay.h"
 #include "client/app/placement_search.h"
-#include "client/audio/sound_board.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
 #include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
 #include "client/ui/eight_ball_room_ui.h"
-#include "client/ui/glfw_keys.h"
 #include "client/ui/hud.h"
 #include "client/ui/lobby_screen.h"
 #include "client/ui/scene_convert.h"
+#include "client/ui/window_capture.h"
+#include "client/ui/window_glfw.h"
+#include "client/ui/window_input.h"
+#include "client/ui/window_log.h"
+#include "client/ui/window_overlay.h"
+#include "client/ui/window_script.h"
+#include "client/ui/window_sound.h"
 #include "net/dds_error.h"
-#include "rules/placement.h"
 
 namespace pool::ui {
 namespace {
@@ -46,80 +46,8 @@ constexpr double kScriptStep = 1.0 / 60.0;  // s of input time per frame under a
 constexpr std::size_t kNotesShown = 6;
 constexpr std::chrono::microseconds kMinFrame(1000000 / 144);  // at most 144 frames a second
 
-/// GLFW and a window with an OpenGL 3.3 core context; ImGui on top.
-class GlfwWindow {
- public:
-  GlfwWindow(int width, int height) {
-    if (glfwInit() != GLFW_TRUE) throw std::runtime_error("glfwInit failed (is DISPLAY set?)");
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    window_ = glfwCreateWindow(width, height, "pool", nullptr, nullptr);
-    if (!window_) {
-      glfwTerminate();
-      throw std::runtime_error("no OpenGL 3.3 core context");
-    }
-    glfwMakeContextCurrent(window_);
-    glfwSwapInterval(1);
-    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
-      glfwDestroyWindow(window_);
-      glfwTerminate();
-      throw std::runtime_error("glad could not load OpenGL 3.3");
-    }
-  }
-  ~GlfwWindow() {
-    if (imgui_) {
-      ImGui_ImplOpenGL3_Shutdown();
-      ImGui_ImplGlfw_Shutdown();
-      ImGui::DestroyContext();
-    }
-    glfwDestroyWindow(window_);
-    glfwTerminate();
-  }
-  GlfwWindow(const GlfwWindow&) = delete;
-  GlfwWindow& operator=(const GlfwWindow&) = delete;
-
-  /// ImGui chains to the callbacks installed before this call.
-  void startImGui() {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(window_, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-    imgui_ = true;
-  }
-  GLFWwindow* get() const { return window_; }
-
- private:
-  GLFWwindow* window_ = nullptr;
-  bool imgui_ = false;
-};
-
-/// The window's sound: the match's frames and shot logs into a SoundBoard.
-class SoundListener final : public app::ShotListener {
- public:
-  explicit SoundListener(bool mute) : board_(options(mute)) {}
-  void onFrame(const client::TableFrame& frame) override {
-    board_.onFrame(frame.shot_number, frame.sim_time, frame.balls);
-  }
-  void onShot(const client::ShotReport& report) override {
-    board_.onShot(report.events, report.shot_number);
-  }
-  void update(double playback_time) { board_.update(playback_time); }
-
- private:
-  static audio::SoundOptions options(bool mute) {
-    audio::SoundOptions o;
-    o.mute = mute;
-    return o;
-  }
-  audio::SoundBoard board_;
-};
-
-protocol::CommandLimits limitsOf(const bot::TableView& view) {
-  protocol::CommandLimits limits;
+net::CommandLimits limitsOf(const bot::TableView& view) {
+  net::CommandLimits limits;
   limits.half_length = view.halfLength();
   limits.half_width = view.halfWidth();
   return limits;
@@ -142,7 +70,7 @@ class WindowApp {
         session_({options.domain, options.name, options.hotseat}),
         sound_(options.mute) {
     session_.setListener(&sound_);
-    installCallbacks();
+    installInput(window_.get(), controls_);
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
     if (options.play) session_.play(options.match);
@@ -174,70 +102,12 @@ class WindowApp {
   /// Writes the frame just drawn (read before the swap) when the window is closing.
   void capture() {
     if (!quit_ && !glfwWindowShouldClose(window_.get())) return;
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(window_.get(), &width, &height);
-    std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-    stbi_flip_vertically_on_write(1);
-    captured_ =
-        stbi_write_png(options_.capture.c_str(), width, height, 3, rgb.data(), width * 3) != 0;
+    captured_ = writeFramePng(window_.get(), options_.capture);
     if (!captured_) std::cerr << "could not write " << options_.capture << '\n';
   }
 
-  // ---- Input ----------------------------------------------------------------------------------
-  static WindowApp& self(GLFWwindow* w) {
-    return *static_cast<WindowApp*>(glfwGetWindowUserPointer(w));
-  }
-
-  void installCallbacks() {
-    GLFWwindow* w = window_.get();
-    glfwSetWindowUserPointer(w, this);
-    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
-      if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard) return;
-      const auto k = keyOf(key);
-      if (!k || action == GLFW_REPEAT) return;
-      if (action == GLFW_PRESS) self(win).controls_.keyDown(*k, modsOf(mods));
-      if (action == GLFW_RELEASE) self(win).controls_.keyUp(*k);
-    });
-    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
-      if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
-      if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
-      double x = 0, y = 0;
-      glfwGetCursorPos(win, &x, &y);
-      self(win).controls_.mouseButton(
-          button == GLFW_MOUSE_BUTTON_LEFT ? app::MouseButton::Left : app::MouseButton::Right,
-          action == GLFW_PRESS, x, y);
-    });
-    glfwSetCursorPosCallback(
-        w, [](GLFWwindow* win, double x, double y) { self(win).controls_.mouseMove(x, y); });
-    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
-      if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
-      self(win).controls_.scroll(dy);
-    });
-  }
-
   void applyScript() {
-    if (!script_) return;
-    app::ScriptConditions now;
-    now.can_aim = controls_.mode() == app::ControlMode::Aiming;
-    if (const auto* v = session_.view()) now.shot_number = v->shot_number;
-    for (const auto& step : script_->frame(now)) {
-      switch (step.kind) {
-        case app::ScriptStep::Kind::Down:
-          controls_.keyDown(step.key, step.mods);
-          break;
-        case app::ScriptStep::Kind::Up:
-          controls_.keyUp(step.key);
-          break;
-        case app::ScriptStep::Kind::Quit:
-          quit_ = true;
-          break;
-        default:
-          break;
-      }
-    }
+    if (script_ && playScriptFrame(*script_, controls_, session_)) quit_ = true;
   }
 
   // ---- Turns and shots ------------------------------------------------------------------------
@@ -266,14 +136,14 @@ class WindowApp {
       if (legal) controls_.moveCueBall(*legal);
     }
     for (const rules::Choice c : v->options) {
-      if (protocol::optionShoots(bot::optionOf(c))) {
+      if (net::optionShoots(bot::optionOf(c))) {
         controls_.setOption(bot::optionOf(c));
         break;
       }
     }
   }
 
-  void send(protocol::ShotRequest request) {
+  void send(net::ShotRequest request) {
     const int seat = aiming_seat_;
     aiming_seat_ = -1;
     auto sent = session_.shoot(seat, request);
@@ -281,46 +151,22 @@ class WindowApp {
       addNote({"shot not sent: " + sent.error(), true});
       return;
     }
-    if (!options_.json) return;
-    nlohmann::json line{{"event", "shot"},
-                        {"match", session_.match()},
-                        {"seat", seat},
-                        {"seq", *sent},
-                        {"yaw", request.cue.yaw},
-                        {"tip_side", request.cue.tip_side},
-                        {"tip_height", request.cue.tip_height},
-                        {"elevation", request.cue.elevation},
-                        {"speed", request.cue.speed},
-                        {"speed_is_ball", request.cue.speed_is_ball},
-                        {"safety", request.safety},
-                        {"option", protocol::toString(request.option)}};
-    if (request.called_ball) {
-      line["called_ball"] = *request.called_ball;
-      line["called_pocket"] = request.called_pocket;
-    }
-    if (request.cue_ball_at)
-      line["cue_ball_at"] = {request.cue_ball_at->x(), request.cue_ball_at->y()};
-    std::cout << line.dump() << '\n' << std::flush;
+    if (options_.json) printShotLine(session_.match(), seat, *sent, request);
   }
 
   void addNote(app::SessionNote note) {
-    if (options_.json) {
-      std::cout << nlohmann::json{{"event", "note"}, {"text", note.text}, {"problem", note.problem}}
-                       .dump()
-                << '\n'
-                << std::flush;
-    }
+    if (options_.json) printNoteLine(note);
     notes_.push_back(std::move(note));
     while (notes_.size() > kNotesShown) notes_.pop_front();
   }
 
-  void chooseOption(protocol::ShotOption option) {
-    if (protocol::optionShoots(option)) {
+  void chooseOption(net::ShotOption option) {
+    if (net::optionShoots(option)) {
       controls_.setOption(option);
       return;
     }
     // A re-rack carries no shot: sent at once with a harmless stroke the server does not play.
-    protocol::ShotRequest request;
+    net::ShotRequest request;
     request.cue.speed = 1.0;
     request.cue.speed_is_ball = true;
     request.option = option;
@@ -329,55 +175,17 @@ class WindowApp {
   }
 
   // ---- One frame ------------------------------------------------------------------------------
-  std::vector<physics::Ball> ballsWithPlacement(std::vector<physics::Ball> balls) const {
-    if (!controls_.aim().cue_ball_at) return balls;
-    for (auto& b : balls) {
-      if (b.id != physics::kCueBall) continue;
-      b.pos = controls_.cueBall();
-      b.state = physics::MotionState::Stationary;
-    }
-    return balls;
-  }
-
-  std::vector<app::OverlaySegment> overlay(const std::vector<physics::Ball>& balls) {
-    std::vector<app::OverlaySegment> lines;
-    const app::Toggles& t = controls_.toggles();
-    placement_problem_.clear();
-    if (controls_.mode() == app::ControlMode::Aiming && session_.view()) {
-      const auto prediction =
-          app::predictAim(controls_.cueBall().head<2>(), controls_.aim().yaw, balls, view_);
-      controls_.suggestCall(
-          app::autoCall(prediction, client::gameStateOf(*session_.view()), balls, view_));
-      if (t.aim_line) {
-        const auto aim = app::aimOverlay(prediction, controls_.aim(), view_.radius());
-        lines.insert(lines.end(), aim.begin(), aim.end());
-      }
-      if (t.vectors) {
-        const auto cue = app::cueDirectionOverlay(controls_.cueBall(), controls_.aim().yaw);
-        lines.insert(lines.end(), cue.begin(), cue.end());
-      }
-      if (controls_.aim().cue_ball_at) {
-        const auto check = rules::checkCueBallPlacement(
-            controls_.ballInHand(), *controls_.aim().cue_ball_at, balls, view_.context);
-        placement_problem_ = check.reason();
-      }
-    }
-    if (t.vectors) {
-      const auto motion = app::motionOverlay(balls);
-      lines.insert(lines.end(), motion.begin(), motion.end());
-    }
-    return lines;
-  }
-
   void drawScene(double now) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     if (width <= 0 || height <= 0) return;
     controls_.setViewport(width, height);
     const auto balls = session_.balls(now);
-    const auto shown = ballsWithPlacement(balls.value_or(std::vector<physics::Ball>{}));
+    const auto shown = withCueBallInHand(balls.value_or(std::vector<physics::Ball>{}), controls_);
     if (balls) renderer_.setBalls(sceneBalls(shown));
-    renderer_.setOverlay(overlayLines(overlay(shown)));
+    auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
+    placement_problem_ = std::move(overlay.placement_problem);
+    renderer_.setOverlay(overlayLines(overlay.lines));
     const app::Toggles& t = controls_.toggles();
     renderer_.setOptions({t.wireframe, t.textures, t.lighting});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -437,37 +245,9 @@ class WindowApp {
     }
   }
 
-  /// With --json: a line for each new state of the match and each shot whose motion starts.
-  void reportProgress() {
-    if (!options_.json) return;
-    const client::MatchView* v = session_.view();
-    if (v && (!last_revision_ || *last_revision_ != v->revision)) {
-      last_revision_ = v->revision;
-      std::cout << nlohmann::json{{"event", "state"},
-                                  {"match", v->match},
-                                  {"revision", v->revision},
-                                  {"phase", client::toString(v->phase)},
-                                  {"shot_number", v->shot_number},
-                                  {"shooter", v->shooter}}
-                       .dump()
-                << '\n'
-                << std::flush;
-    }
-    const auto shot = session_.motionShot();
-    if (shot && session_.inMotion() && shot != last_motion_) {
-      last_motion_ = shot;
-      std::cout << nlohmann::json{{"event", "motion"},
-                                  {"match", session_.match()},
-                                  {"shot_number", *shot}}
-                       .dump()
-                << '\n'
-                << std::flush;
-    }
-  }
-
   void frame(double now, double dt) {
     session_.poll(now);
-    reportProgress();
+    if (options_.json) progress_.report(session_);
     for (auto& note : session_.takeNotes()) addNote(std::move(note));
     followTurn();
     applyScript();
@@ -493,8 +273,7 @@ class WindowApp {
   EightBallRoomState room_;
   std::unique_ptr<render::EightBallRoom> room_scene_;  ///< made on the first visit
   bool quit_ = false;
-  std::optional<std::uint32_t> last_revision_;
-  std::optional<std::uint32_t> last_motion_;
+  ProgressLog progress_;  ///< with --json
   bool captured_ = true;  ///< false once writing the capture failed
 };
 

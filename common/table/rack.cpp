@@ -5,35 +5,12 @@
 #include <array>
 #include <cmath>
 
+#include "core/split_mix64.h"
+
 namespace pool::table {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
-
-/// splitmix64: a tiny PRNG whose output is fixed by its seed on every platform.
-class SplitMix64 {
- public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-
-  /// Uniform in [0, n), n > 0, without modulo bias.
-  std::uint64_t below(std::uint64_t n) {
-    const std::uint64_t threshold = (0 - n) % n;
-    for (;;) {
-      const std::uint64_t r = next();
-      if (r >= threshold) return r % n;
-    }
-  }
-
- private:
-  std::uint64_t state_;
-};
 
 /// Fisher–Yates with our own PRNG (std::shuffle's results differ between standard libraries).
 void shuffle(std::vector<int>& v, SplitMix64& rng) {

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenario/cue_shot_json.h"
 #include "store/sqlite_db.h"
 
 namespace pool::store {
@@ -235,16 +236,11 @@ std::string commandJson(const protocol::ShotRequest& c) {
               {"seat", c.seat},
               {"token", c.seat_token},
               {"seq", c.seq},
-              {"yaw", c.cue.yaw},
-              {"tip_side", c.cue.tip_side},
-              {"tip_height", c.cue.tip_height},
-              {"elevation", c.cue.elevation},
-              {"speed", c.cue.speed},
-              {"speed_is_ball", c.cue.speed_is_ball},
               {"called_pocket", c.called_pocket},
               {"safety", c.safety},
               {"option", num(c.option)},
               {"signature", c.signature}};
+  out.update(scenario::cueShotJson(c.cue));
   if (c.called_ball) out["called_ball"] = *c.called_ball;
   if (c.cue_ball_at) out["cue_ball_at"] = vec(*c.cue_ball_at);
   return out.dump();

@@ -32,6 +32,15 @@ class BotRejoinTest : public ClientIntegrationTest {
       return seat >= 0 && v->seats[static_cast<std::size_t>(seat)].connected == connected;
     });
   }
+
+  /// Fails, with the layout and the logs, when the match stalled on a layout the physics refused.
+  ::testing::AssertionResult notStalled(const MatchRecorder& recorder) const {
+    if (!stalledOnLayout(recorder)) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure()
+           << "the match stalled: the server refused shots because the physics refused the layout "
+              "it had left\n"
+           << layoutOf(recorder, recorder.firstMatch()) << logs();
+  }
 };
 
 TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
@@ -72,21 +81,19 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
       "rejoin " + (*saved)->match + " seat " + std::to_string((*saved)->seat);
   EXPECT_TRUE(recorder.pump(5s, [&] { return alice->err().find(rejoined) != std::string::npos; }))
       << alice->err();
-  ASSERT_TRUE(recorder.pump(20s, [&] {
+  const auto shot_after_rejoin = [&] {
     const MatchView* v = recorder.latest(recorder.firstMatch());
     return stalledOnLayout(recorder) || (v && v->shot_number > shots_when_killed);
-  }));
-  if (stalledOnLayout(recorder)) {
-    std::printf("note: the match stalled (physics refuses its own layout) after the rejoin\n");
-    return;
-  }
+  };
+  ASSERT_TRUE(recorder.pump(20s, shot_after_rejoin)) << "no shot after the rejoin\n" << logs();
+  ASSERT_TRUE(notStalled(recorder));
   const MatchView* v = recorder.latest(recorder.firstMatch());
   EXPECT_EQ(seatOf(*v, "alice"), (*saved)->seat);
 
-  // The match then ends normally for both (or stalls on the physics bug, reported elsewhere).
+  // The match then ends normally for both.
   recorder.pump(60s,
                 [&] { return stalledOnLayout(recorder) || (!alice->running() && !bob.running()); });
-  if (stalledOnLayout(recorder)) return;
+  ASSERT_TRUE(notStalled(recorder));
   EXPECT_EQ(alice->waitExit(1s), 0) << alice->err();
   EXPECT_EQ(bob.waitExit(1s), 0) << bob.err();
   EXPECT_EQ(alice->lastLine().rfind("result: ", 0), 0u) << alice->out();
@@ -118,13 +125,10 @@ TEST_F(BotRejoinTest, ABotStalledPastItsLeaseTakesItsSeatBackAndPlaysOn) {
     const MatchView* v = recorder.latest(recorder.firstMatch());
     return stalledOnLayout(recorder) || (v && v->shot_number > shots_when_stopped + 1);
   })) << alice->err();
-  if (stalledOnLayout(recorder)) {
-    std::printf("note: the match stalled (physics refuses its own layout) after the rejoin\n");
-    return;
-  }
+  ASSERT_TRUE(notStalled(recorder));
   recorder.pump(90s,
                 [&] { return stalledOnLayout(recorder) || (!alice->running() && !bob.running()); });
-  if (stalledOnLayout(recorder)) return;
+  ASSERT_TRUE(notStalled(recorder));
   EXPECT_EQ(alice->err().find("bad_token"), std::string::npos) << alice->err();
   EXPECT_EQ(alice->waitExit(1s), 0) << alice->err();
   EXPECT_EQ(bob.waitExit(1s), 0) << bob.err();

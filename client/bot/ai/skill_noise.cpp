@@ -8,15 +8,11 @@
 namespace pool::bot {
 
 std::uint64_t Rng::next() {
-  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
+  return rng_.next();
 }
 
 double Rng::uniform() {
-  // The top 53 bits make every double in [0, 1) on a 2^-53 grid equally likely.
-  return static_cast<double>(next() >> 11) * 0x1.0p-53;
+  return rng_.uniform();
 }
 
 double Rng::gaussian() {

@@ -3,14 +3,16 @@
 
 #include <cstdint>
 
+#include "core/split_mix64.h"
 #include "physics/cue_strike.h"
 
 namespace pool::bot {
 
-/// A small PRNG (splitmix64) whose sequence is fixed by its seed on every platform.
+/// A seeded PRNG (SplitMix64) whose sequence is fixed by its seed on every platform.
 class Rng {
  public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
+  explicit Rng(std::uint64_t seed) : rng_(seed) {}
+  /// The next 64 random bits.
   std::uint64_t next();
   /// Uniform in [0, 1).
   double uniform();
@@ -18,7 +20,7 @@ class Rng {
   double gaussian();
 
  private:
-  std::uint64_t state_;
+  SplitMix64 rng_;
 };
 
 /// Standard deviations of the noise at skill 0; they shrink linearly to 0 at skill 1.

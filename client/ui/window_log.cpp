@@ -1,0 +1,58 @@
+// JSON lines with nlohmann-json, one object a line, flushed at once.
+#include "client/ui/window_log.h"
+
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "scenario/cue_shot_json.h"
+
+namespace pool::ui {
+namespace {
+
+void printLine(const nlohmann::json& line) {
+  std::cout << line.dump() << '\n' << std::flush;
+}
+
+}  // namespace
+
+void printShotLine(const std::string& match, int seat, std::uint32_t seq,
+                   const net::ShotRequest& request) {
+  nlohmann::json line = scenario::cueShotJson(request.cue);
+  line["event"] = "shot";
+  line["match"] = match;
+  line["seat"] = seat;
+  line["seq"] = seq;
+  line["safety"] = request.safety;
+  line["option"] = net::toString(request.option);
+  if (request.called_ball) {
+    line["called_ball"] = *request.called_ball;
+    line["called_pocket"] = request.called_pocket;
+  }
+  if (request.cue_ball_at)
+    line["cue_ball_at"] = {request.cue_ball_at->x(), request.cue_ball_at->y()};
+  printLine(line);
+}
+
+void printNoteLine(const app::SessionNote& note) {
+  printLine({{"event", "note"}, {"text", note.text}, {"problem", note.problem}});
+}
+
+void ProgressLog::report(const app::MatchSession& session) {
+  const client::MatchView* v = session.view();
+  if (v && (!last_revision_ || *last_revision_ != v->revision)) {
+    last_revision_ = v->revision;
+    printLine({{"event", "state"},
+               {"match", v->match},
+               {"revision", v->revision},
+               {"phase", client::toString(v->phase)},
+               {"shot_number", v->shot_number},
+               {"shooter", v->shooter}});
+  }
+  const auto shot = session.motionShot();
+  if (shot && session.inMotion() && shot != last_motion_) {
+    last_motion_ = shot;
+    printLine({{"event", "motion"}, {"match", session.match()}, {"shot_number", *shot}});
+  }
+}
+
+}  // namespace pool::ui

@@ -1,0 +1,54 @@
+// The overlay of a frame from the controls, the aim prediction and the moving balls.
+#include "client/ui/window_overlay.h"
+
+#include "rules/placement.h"
+
+namespace pool::ui {
+namespace {
+
+void append(std::vector<app::OverlaySegment>& lines, const std::vector<app::OverlaySegment>& more) {
+  lines.insert(lines.end(), more.begin(), more.end());
+}
+
+/// The aim line and cue arrow while aiming, and the placement check of a cue ball in hand.
+void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchView& match,
+               const std::vector<physics::Ball>& balls, const bot::TableView& view) {
+  const app::Toggles& t = controls.toggles();
+  const auto prediction =
+      app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
+  controls.suggestCall(app::autoCall(prediction, client::gameStateOf(match), balls, view));
+  if (t.aim_line) append(out.lines, app::aimOverlay(prediction, controls.aim(), view.radius()));
+  if (t.vectors) {
+    append(out.lines, app::cueDirectionOverlay(controls.cueBall(), controls.aim().yaw));
+  }
+  if (controls.aim().cue_ball_at) {
+    const auto check = rules::checkCueBallPlacement(
+        controls.ballInHand(), *controls.aim().cue_ball_at, balls, view.context);
+    out.placement_problem = check.reason();
+  }
+}
+
+}  // namespace
+
+std::vector<physics::Ball> withCueBallInHand(std::vector<physics::Ball> balls,
+                                             const app::Controls& controls) {
+  if (!controls.aim().cue_ball_at) return balls;
+  for (auto& b : balls) {
+    if (b.id != physics::kCueBall) continue;
+    b.pos = controls.cueBall();
+    b.state = physics::MotionState::Stationary;
+  }
+  return balls;
+}
+
+WindowOverlay windowOverlay(app::Controls& controls, const client::MatchView* match,
+                            const std::vector<physics::Ball>& balls, const bot::TableView& view) {
+  WindowOverlay out;
+  if (controls.mode() == app::ControlMode::Aiming && match) {
+    addAiming(out, controls, *match, balls, view);
+  }
+  if (controls.toggles().vectors) append(out.lines, app::motionOverlay(balls));
+  return out;
+}
+
+}  // namespace pool::ui

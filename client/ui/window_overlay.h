@@ -1,0 +1,29 @@
+// The window's lines over the table: aim line, cue and motion vectors, and the cue ball in hand.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "client/app/controls.h"
+#include "client/app/overlay.h"
+#include "client/bot/ai/table_view.h"
+#include "client/net/match_types.h"
+
+namespace pool::ui {
+
+/// The lines to draw this frame, and why the cue ball in hand may not go where it is (or "").
+struct WindowOverlay {
+  std::vector<app::OverlaySegment> lines;
+  std::string placement_problem;
+};
+
+/// `balls` with the cue ball where the player holds it, at rest, while it is in hand.
+std::vector<physics::Ball> withCueBallInHand(std::vector<physics::Ball> balls,
+                                             const app::Controls& controls);
+
+/// The overlay over `balls` by the toggles of `controls`. While aiming at `match` (the state
+/// followed, or null) it also suggests the controls a call for the predicted shot.
+WindowOverlay windowOverlay(app::Controls& controls, const client::MatchView* match,
+                            const std::vector<physics::Ball>& balls, const bot::TableView& view);
+
+}  // namespace pool::ui
