@@ -1,0 +1,86 @@
+// Cue placement: the physics' strike frame, the draw-back and the clearance search.
+#include "client/render/cue_pose.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "client/render/cue_profile.h"
+
+namespace pool::render {
+
+namespace {
+
+constexpr float kClearance = 0.002f;            // m kept between the cue and what it passes over
+constexpr float kStepRad = 0.00872665f;         // 0.5°
+constexpr float kMaxElevationRad = 1.5533430f;  // 89°
+constexpr float kSampleStep = 0.02f;            // m between the cue's checked points
+
+/// True when the cue's cross-section of radius `r` at `p` stays clear of the rails, cushions and
+/// balls.
+bool clearAt(const glm::vec3& p, float r, const CueObstacles& o) {
+  const float over_x = std::abs(p.x) - (o.half_length - r);
+  const float over_y = std::abs(p.y) - (o.half_width - r);
+  const bool over_rail = (over_x > 0.0f || over_y > 0.0f) &&
+                         std::abs(p.x) < o.half_length + o.rail_outer + r &&
+                         std::abs(p.y) < o.half_width + o.rail_outer + r;
+  if (over_rail && p.z - r < o.rail_top + kClearance) return false;
+  const float reach = o.ball_radius + r + kClearance;
+  return std::none_of(o.balls.begin(), o.balls.end(), [&](const glm::vec3& b) {
+    const glm::vec3 d = p - b;
+    return glm::dot(d, d) < reach * reach;
+  });
+}
+
+/// True when the whole cue, tip at `tip` and pointing along `forward`, is clear.
+bool cueClear(const glm::vec3& tip, const glm::vec3& forward, const CueObstacles& o) {
+  const float length = static_cast<float>(cueLength());
+  for (float s = 0.0f; s <= length; s += kSampleStep) {
+    const float r = static_cast<float>(cueRadiusAt(s));
+    if (!clearAt(tip - forward * s, r, o)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+glm::vec3 cueDirection(float yaw, float elevation) {
+  return {std::cos(elevation) * std::cos(yaw), std::cos(elevation) * std::sin(yaw),
+          -std::sin(elevation)};
+}
+
+glm::vec3 struckPoint(const CueAim& aim, float radius) {
+  const glm::vec3 d = cueDirection(aim.yaw, aim.elevation);
+  const glm::vec3 right(std::sin(aim.yaw), -std::cos(aim.yaw), 0.0f);
+  const glm::vec3 up = glm::cross(right, d);
+  const float a = aim.tip_side, b = aim.tip_height;
+  const float off2 = std::min(1.0f, a * a + b * b);
+  return aim.cue_ball + radius * (a * right + b * up - std::sqrt(1.0f - off2) * d);
+}
+
+CuePlacement placeCue(const CueAim& aim, const CueObstacles& obstacles) {
+  const glm::vec3 struck = struckPoint(aim, obstacles.ball_radius);
+  const float draw_back = std::clamp(aim.power, 0.0f, 1.0f) * kMaxDrawBack;
+  // Drawn back along its own (possibly raised) line, as a player's stroke is.
+  const auto at = [&](float elevation) {
+    CuePlacement p;
+    p.drawn_elevation = elevation;
+    p.forward = cueDirection(aim.yaw, elevation);
+    p.tip = struck - p.forward * draw_back;
+    p.butt = p.tip - p.forward * static_cast<float>(cueLength());
+    return p;
+  };
+  CuePlacement out = at(std::clamp(aim.elevation, 0.0f, kMaxElevationRad));
+  while (out.drawn_elevation < kMaxElevationRad && !cueClear(out.tip, out.forward, obstacles)) {
+    out = at(std::min(out.drawn_elevation + kStepRad, kMaxElevationRad));
+  }
+  return out;
+}
+
+float cueOpacity(const CuePlacement& cue, glm::vec3 eye) {
+  const glm::vec3 axis = cue.butt - cue.tip;
+  const float t = std::clamp(glm::dot(eye - cue.tip, axis) / glm::dot(axis, axis), 0.0f, 1.0f);
+  const float distance = glm::length(eye - (cue.tip + t * axis));
+  return std::clamp((distance - 0.03f) / 0.06f, 0.3f, 1.0f);
+}
+
+}  // namespace pool::render
