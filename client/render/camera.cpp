@@ -17,7 +17,7 @@ Camera overviewCamera(const pool::table::TableGeometry& geometry, float aspect) 
 }
 
 Camera topCamera(const pool::table::TableGeometry& geometry, float aspect) {
-  const float fov = 40.0f;
+  const float fov = 20.0f;  // narrow, from high up: close to a plan of the table
   const float half_y = std::tan(glm::radians(fov) * 0.5f);
   const float half_x = half_y * aspect;
   const float margin = 0.2f;  // m beyond the nose lines: the rails

@@ -13,13 +13,14 @@ namespace {
 constexpr float kClearance = 0.002f;            // m kept between the cue and what it passes over
 constexpr float kStepRad = 0.00872665f;         // 0.5°
 constexpr float kMaxElevationRad = 1.5533430f;  // 89°
-constexpr float kSampleStep = 0.02f;            // m between the cue's checked points
+constexpr float kSampleStep = 0.005f;           // m between the cue's checked points
 
 /// True when the cue's cross-section of radius `r` at `p` stays clear of the rails, cushions and
 /// balls.
 bool clearAt(const glm::vec3& p, float r, const CueObstacles& o) {
-  const float over_x = std::abs(p.x) - (o.half_length - r);
-  const float over_y = std::abs(p.y) - (o.half_width - r);
+  // The rail band widened by the step between samples, so no stretch of cue slips through.
+  const float over_x = std::abs(p.x) - (o.half_length - r - kSampleStep);
+  const float over_y = std::abs(p.y) - (o.half_width - r - kSampleStep);
   const bool over_rail = (over_x > 0.0f || over_y > 0.0f) &&
                          std::abs(p.x) < o.half_length + o.rail_outer + r &&
                          std::abs(p.y) < o.half_width + o.rail_outer + r;

@@ -15,8 +15,8 @@ namespace pool::render {
 /// real table).
 inline constexpr float kLampHeight = 0.95f;
 /// Spot cone: full light inside the inner half-angle, none beyond the outer one, degrees. On the
-/// felt: a full pool of 0.24 m radius fading out by 0.98 m under each lamp.
-inline constexpr float kSpotInnerDeg = 14.0f;
+/// felt: a full pool of 0.20 m radius fading out by 0.98 m under each lamp.
+inline constexpr float kSpotInnerDeg = 12.0f;
 inline constexpr float kSpotOuterDeg = 46.0f;
 /// A lamp's diffuse light on a surface facing it at its own height below it (share of albedo).
 inline constexpr float kLampGain = 0.62f;

@@ -21,7 +21,10 @@ namespace {
 constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
 constexpr float kDiamondLift = 0.0003f;  // diamonds sit this far above the rail top, m
 constexpr glm::vec3 kBackground(0.10f, 0.10f, 0.12f);
-constexpr float kTroughLight = 0.75f;                     // share of the albedo lit in the trough
+constexpr float kTroughLight = 0.75f;  // share of the albedo lit in the trough
+// The hall's light besides the lamps (walls and ceiling sending some back): the share of the
+// albedo lit outside the pools.
+constexpr float kHallLight = 0.30f;
 constexpr glm::vec3 kDiamondColour(0.86f, 0.84f, 0.76f);  // mother of pearl
 constexpr glm::vec3 kGhostColour(0.95f, 0.95f, 0.95f);
 constexpr int kGhostSegments = 48;
@@ -167,7 +170,7 @@ void Renderer::drawBalls() const {
     // The trough is lit by its own strip light under the rail, out of the lamps' cones.
     if (ball.pocketed) shading_.setAmbient(kTroughLight);
     shading_.drawBall(sphere_, model, ball.id);
-    if (ball.pocketed) shading_.setAmbient(SceneShading::kAmbient);
+    if (ball.pocketed) shading_.setAmbient(kHallLight);
   }
 }
 
@@ -240,6 +243,7 @@ void Renderer::draw(const Camera& camera, int width, int height) const {
       viewProjection(camera, static_cast<float>(width) / static_cast<float>(height));
   shading_.beginFrame(camera, width, height, kBackground, {lamps, kSpotInnerDeg, kSpotOuterDeg},
                       options_);
+  shading_.setAmbient(kHallLight);
   for (const Part& part : parts_) {
     shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
   }

@@ -1,7 +1,6 @@
 // The aim scene: the rack, the aiming camera, the cue and the ghost ball from the aim prediction.
 #include "client/ui/aim_screenshot.h"
 
-#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -16,7 +15,6 @@ namespace pool::ui {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kEyeOverCue = 10.0 * kDeg;  // the aiming view's least elevation over the cue's
 
 glm::vec3 vec(const Eigen::Vector3d& p) {
   return {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())};
@@ -69,10 +67,10 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
   // The eye stays above the cue's drawn line, as a player's over the cue.
   const render::CuePlacement placed =
       render::placeCue(cueAimOf(aim, cue), render::cueObstaclesOf(*scene, vec(cue)));
-  const double above_cue = placed.drawn_elevation + kEyeOverCue;
-  const double eye = options.aim.camera_elevation_deg ? *options.aim.camera_elevation_deg * kDeg
-                                                      : rig.aimingOrbit().elevation;
-  rig.raise(std::max(eye, above_cue) - rig.aimingOrbit().elevation);
+  if (options.aim.camera_elevation_deg) {
+    rig.raise(*options.aim.camera_elevation_deg * kDeg - rig.aimingOrbit().elevation);
+  }
+  rig.keepAimAbove(placed.drawn_elevation + app::kEyeOverCue);
   if (options.aim.camera_distance) {
     rig.zoom(*options.aim.camera_distance / rig.aimingOrbit().distance);
   }

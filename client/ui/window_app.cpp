@@ -31,6 +31,7 @@
 #include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
+#include "client/ui/aim_screenshot.h"
 #include "client/ui/eight_ball_room_ui.h"
 #include "client/ui/glfw_keys.h"
 #include "client/ui/hud.h"
@@ -339,19 +340,34 @@ class WindowApp {
     return balls;
   }
 
+  /// The 3-D cue at the aim, the ghost ball at the first contact (with the aim line), and the
+  /// aiming view kept above the cue's drawn line.
+  void showCue(const app::AimPrediction& prediction, bool ghost) {
+    renderer_.setCue(cueAimOf(controls_.aim(), controls_.cueBall()));
+    const Eigen::Vector2d c = prediction.contact;
+    renderer_.setGhost(ghost ? std::optional<glm::vec3>(glm::vec3(c.x(), c.y(), view_.radius()))
+                             : std::nullopt);
+    if (const auto& cue = renderer_.cue()) {
+      controls_.camera().keepAimAbove(cue->drawn_elevation + app::kEyeOverCue);
+    }
+  }
+
   std::vector<app::OverlaySegment> overlay(const std::vector<physics::Ball>& balls) {
     std::vector<app::OverlaySegment> lines;
     const app::Toggles& t = controls_.toggles();
     placement_problem_.clear();
+    renderer_.setCue(std::nullopt);
+    renderer_.setGhost(std::nullopt);
     if (controls_.mode() == app::ControlMode::Aiming && session_.view()) {
       const auto prediction =
           app::predictAim(controls_.cueBall().head<2>(), controls_.aim().yaw, balls, view_);
       controls_.suggestCall(
           app::autoCall(prediction, client::gameStateOf(*session_.view()), balls, view_));
       if (t.aim_line) {
-        const auto aim = app::aimOverlay(prediction, controls_.aim(), view_.radius());
+        const auto aim = app::aimOverlay(prediction, view_.radius());
         lines.insert(lines.end(), aim.begin(), aim.end());
       }
+      showCue(prediction, t.aim_line);
       if (t.vectors) {
         const auto cue = app::cueDirectionOverlay(controls_.cueBall(), controls_.aim().yaw);
         lines.insert(lines.end(), cue.begin(), cue.end());

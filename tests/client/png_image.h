@@ -38,9 +38,9 @@ inline Image loadPng(const std::string& path) {
   return image;
 }
 
-/// True when `p` is a lit shade of `colour`: same hue and saturation (direction in RGB), bright
-/// enough.
-inline bool shadeOf(const Rgb& p, const Rgb& colour) {
+/// True when `p` is a lit shade of `colour`: same hue and saturation (direction in RGB), its
+/// brightest channel at least `min_bright`.
+inline bool shadeOf(const Rgb& p, const Rgb& colour, double min_bright = 40.0) {
   double dot = 0, pp = 0, cc = 0;
   for (int i = 0; i < 3; ++i) {
     dot += p[i] * colour[i];
@@ -48,7 +48,7 @@ inline bool shadeOf(const Rgb& p, const Rgb& colour) {
     cc += colour[i] * colour[i];
   }
   const double brightest = std::max({p[0], p[1], p[2]});
-  return brightest >= 40.0 && dot / std::sqrt(pp * cc) > 0.997;
+  return brightest >= min_bright && dot / std::sqrt(pp * cc) > 0.997;
 }
 
 inline bool isWhite(const Rgb& p) {
