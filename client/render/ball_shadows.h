@@ -16,6 +16,7 @@ struct ShadowBlob {
   float half_along = 0.0f;      ///< m
   float half_across = 0.0f;     ///< m
   float darkness = 0.0f;        ///< share of the felt's light removed at the centre, 0–1
+  bool soft_ends = true;        ///< false: a piece of a strip, soft only across (the cue's shadow)
 };
 
 /// The ellipse where a ball of radius `radius` centred at `ball` hides a point light at `lamp`

@@ -10,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <stdexcept>
 
+#include "client/render/cue_shadow.h"
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/render/shaders.h"
@@ -24,7 +25,7 @@ constexpr glm::vec3 kBackground(0.10f, 0.10f, 0.12f);
 constexpr float kTroughLight = 0.75f;  // share of the albedo lit in the trough
 // The hall's light besides the lamps (walls and ceiling sending some back): the share of the
 // albedo lit outside the pools.
-constexpr float kHallLight = 0.30f;
+constexpr float kHallLight = 0.38f;
 constexpr glm::vec3 kDiamondColour(0.86f, 0.84f, 0.76f);  // mother of pearl
 constexpr glm::vec3 kGhostColour(0.95f, 0.95f, 0.95f);
 constexpr int kGhostSegments = 48;
@@ -94,7 +95,6 @@ Renderer::Renderer(const Scene& scene)
 void Renderer::setBalls(std::vector<SceneBall> balls) {
   scene_.balls = std::move(balls);
   trough_.update(scene_.balls);
-  updateShadows();
   placeCue();
 }
 
@@ -108,11 +108,10 @@ void Renderer::setCue(std::optional<CueAim> aim) {
 }
 
 void Renderer::placeCue() {
-  if (!cue_aim_) {
-    cue_.reset();
-    return;
-  }
-  cue_ = pool::render::placeCue(*cue_aim_, cueObstaclesOf(scene_, cue_aim_->cue_ball));
+  cue_.reset();
+  if (cue_aim_)
+    cue_ = pool::render::placeCue(*cue_aim_, cueObstaclesOf(scene_, cue_aim_->cue_ball));
+  updateShadows();
 }
 
 void Renderer::updateShadows() {

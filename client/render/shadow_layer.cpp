@@ -53,7 +53,7 @@ void ShadowLayer::set(const std::vector<ShadowBlob>& blobs) {
     const glm::vec2 v = glm::vec2(-b.along.y, b.along.x) * b.half_across;
     const auto corner = [&](float s, float t) {
       const glm::vec2 p = b.centre + s * u + t * v;
-      data.insert(data.end(), {p.x, p.y, kLift, s, t, b.darkness});
+      data.insert(data.end(), {p.x, p.y, kLift, b.soft_ends ? s : 0.0f, t, b.darkness});
     };
     corner(-1, -1), corner(1, -1), corner(1, 1);
     corner(-1, -1), corner(1, 1), corner(-1, 1);

@@ -108,4 +108,18 @@ inline bool ballColour(int id, const Rgb& p) {
   return shadeOf(p, kBallColours[static_cast<std::size_t>((id - 1) % 8)]);
 }
 
+/// A light neutral grey: white in dim light.
+inline bool isLightNeutral(const Rgb& p) {
+  return std::min({p[0], p[1], p[2]}) > 70.0 &&
+         std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) < 25.0;
+}
+
+/// As ballColour, for a ball that may lie outside the lamps' pools of light, in the hall's dim
+/// light: the cue ball a light neutral grey, the coloured balls their hue from a lower brightness.
+inline bool ballColourInAnyLight(int id, const Rgb& p) {
+  if (id == 0) return isLightNeutral(p);
+  if (id == 8) return isBlack(p);
+  return shadeOf(p, kBallColours[static_cast<std::size_t>((id - 1) % 8)], 24.0);
+}
+
 }  // namespace pool::client::test
