@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "client/render/cue_profile.h"
 
@@ -15,29 +16,50 @@ constexpr float kStepRad = 0.00872665f;         // 0.5°
 constexpr float kMaxElevationRad = 1.5533430f;  // 89°
 constexpr float kSampleStep = 0.005f;           // m between the cue's checked points
 
-/// True when the cue's cross-section of radius `r` at `p` stays clear of the rails, cushions and
-/// balls.
-bool clearAt(const glm::vec3& p, float r, const CueObstacles& o) {
+/// The cue's radius at each checked point s = i · kSampleStep from the tip, m (made once).
+const std::vector<float>& sampleRadii() {
+  static const std::vector<float> radii = [] {
+    std::vector<float> r;
+    for (double along = 0.0; along <= cueLength(); along += kSampleStep) {
+      r.push_back(static_cast<float>(cueRadiusAt(along)));
+    }
+    return r;
+  }();
+  return radii;
+}
+
+/// True when the cue's cross-section of radius `r` at `p` stays above the cushions and rails.
+bool clearOfRails(const glm::vec3& p, float r, const CueObstacles& o) {
   // The rail band widened by the step between samples, so no stretch of cue slips through.
   const float over_x = std::abs(p.x) - (o.half_length - r - kSampleStep);
   const float over_y = std::abs(p.y) - (o.half_width - r - kSampleStep);
   const bool over_rail = (over_x > 0.0f || over_y > 0.0f) &&
                          std::abs(p.x) < o.half_length + o.rail_outer + r &&
                          std::abs(p.y) < o.half_width + o.rail_outer + r;
-  if (over_rail && p.z - r < o.rail_top + kClearance) return false;
-  const float reach = o.ball_radius + r + kClearance;
+  return !over_rail || p.z - r >= o.rail_top + kClearance;
+}
+
+/// True when the cue's surface keeps clear of every ball: each ball against the nearest point of
+/// the cue's axis, with the cue's radius there.
+bool clearOfBalls(const glm::vec3& tip, const glm::vec3& forward, const CueObstacles& o) {
+  const auto& radii = sampleRadii();
+  const float length = kSampleStep * static_cast<float>(radii.size() - 1);
   return std::none_of(o.balls.begin(), o.balls.end(), [&](const glm::vec3& b) {
-    const glm::vec3 d = p - b;
+    const float s = std::clamp(glm::dot(tip - b, forward), 0.0f, length);
+    const float r = radii[static_cast<std::size_t>(std::lround(s / kSampleStep))];
+    const float reach = o.ball_radius + r + kClearance;
+    const glm::vec3 d = tip - forward * s - b;
     return glm::dot(d, d) < reach * reach;
   });
 }
 
 /// True when the whole cue, tip at `tip` and pointing along `forward`, is clear.
 bool cueClear(const glm::vec3& tip, const glm::vec3& forward, const CueObstacles& o) {
-  const float length = static_cast<float>(cueLength());
-  for (float s = 0.0f; s <= length; s += kSampleStep) {
-    const float r = static_cast<float>(cueRadiusAt(s));
-    if (!clearAt(tip - forward * s, r, o)) return false;
+  if (!clearOfBalls(tip, forward, o)) return false;
+  const auto& radii = sampleRadii();
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const float s = kSampleStep * static_cast<float>(i);
+    if (!clearOfRails(tip - forward * s, radii[i], o)) return false;
   }
   return true;
 }
