@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "client/render/cue_profile.h"
@@ -82,7 +83,7 @@ glm::vec3 struckPoint(const CueAim& aim, float radius) {
 
 CuePlacement placeCue(const CueAim& aim, const CueObstacles& obstacles) {
   const glm::vec3 struck = struckPoint(aim, obstacles.ball_radius);
-  const float draw_back = std::clamp(aim.power, 0.0f, 1.0f) * kMaxDrawBack;
+  const float draw_back = std::clamp(aim.power, kFollowThrough, 1.0f) * kMaxDrawBack;
   // Drawn back along its own (possibly raised) line, as a player's stroke is.
   const auto at = [&](float elevation) {
     CuePlacement p;
@@ -97,6 +98,13 @@ CuePlacement placeCue(const CueAim& aim, const CueObstacles& obstacles) {
     out = at(std::min(out.drawn_elevation + kStepRad, kMaxElevationRad));
   }
   return out;
+}
+
+float strokePower(float released, float seconds) {
+  if (!(seconds >= 0.0f) || seconds > kStrokeEnd) return std::numeric_limits<float>::quiet_NaN();
+  const float t = std::min(seconds / kStrokeForward, 1.0f);
+  // Accelerating through the ball, as a stroke does: the draw-back closes as 1 − t².
+  return released + (kFollowThrough - released) * t * t;
 }
 
 float cueOpacity(const CuePlacement& cue, glm::vec3 eye) {

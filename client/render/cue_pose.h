@@ -15,7 +15,8 @@ struct CueAim {
   float tip_side = 0.0f;     ///< a: offset right of centre seen from behind, fraction of R
   float tip_height = 0.0f;   ///< b: offset above centre, perpendicular to the cue, fraction of R
   float elevation = 0.0f;    ///< cue above horizontal, [0, 89°]
-  float power = 0.0f;        ///< 0–1: how far the cue is drawn back
+  float power = 0.0f;  ///< 0–1: how far the cue is drawn back; down to kFollowThrough: pushed
+                       ///< through past the struck point (the stroke after release)
 };
 
 /// What the cue must stay clear of (table frame, m).
@@ -38,6 +39,16 @@ struct CuePlacement {
 
 /// How far the cue is drawn back at full power, m.
 inline constexpr float kMaxDrawBack = 0.22f;
+/// The stroke's end: the tip this share of kMaxDrawBack past the struck point.
+inline constexpr float kFollowThrough = -0.15f;
+/// The stroke after release: the cue goes forward from the power at release to the follow-through
+/// in kStrokeForward seconds, stays there until kStrokeEnd, then is gone.
+inline constexpr float kStrokeForward = 0.10f;
+inline constexpr float kStrokeEnd = 0.35f;
+
+/// The cue's power (draw-back) `seconds` after a release at `released` (0–1); below 0 when
+/// pushed through; NaN once the stroke is over.
+float strokePower(float released, float seconds);
 
 /// The point where the physics' cue line first meets the cue ball of radius `radius` (m), and the
 /// cue's unit direction toward the ball (common/physics/cue_strike.cpp's frame).

@@ -11,6 +11,7 @@
 #include <stb_image_write.h>
 
 #include <chrono>
+#include <cmath>
 #include <deque>
 #include <iostream>
 #include <memory>
@@ -340,6 +341,35 @@ class WindowApp {
     return balls;
   }
 
+  /// The cue strokes through after a shot is sent (a re-rack's harmless stroke shows none).
+  void startStroke(const net::ShotRequest& shot, double now) {
+    if (shot.cue.speed_is_ball) return;
+    app::AimState aim;
+    aim.yaw = shot.cue.yaw;
+    aim.tip_side = shot.cue.tip_side;
+    aim.tip_height = shot.cue.tip_height;
+    aim.elevation = shot.cue.elevation;
+    const net::CommandLimits limits = limitsOf(view_);
+    aim.power = (shot.cue.speed - app::kMinCueSpeed) / (limits.max_speed - app::kMinCueSpeed);
+    Eigen::Vector3d ball = controls_.cueBall();
+    if (shot.cue_ball_at) ball = {shot.cue_ball_at->x(), shot.cue_ball_at->y(), view_.radius()};
+    stroke_ = Stroke{cueAimOf(aim, ball), now};
+  }
+
+  /// The stroke's cue at `now`, while it lasts.
+  void showStroke(double now) {
+    if (!stroke_) return;
+    const float power =
+        render::strokePower(stroke_->aim.power, static_cast<float>(now - stroke_->start));
+    if (std::isnan(power)) {
+      stroke_.reset();
+      return;
+    }
+    render::CueAim aim = stroke_->aim;
+    aim.power = power;
+    renderer_.setCue(aim);
+  }
+
   /// The 3-D cue at the aim, the ghost ball at the first contact (with the aim line), and the
   /// aiming view kept above the cue's drawn line.
   void showCue(const app::AimPrediction& prediction, bool ghost) {
@@ -394,6 +424,7 @@ class WindowApp {
     const auto shown = ballsWithPlacement(balls.value_or(std::vector<physics::Ball>{}));
     if (balls) renderer_.setBalls(sceneBalls(shown));
     renderer_.setOverlay(overlayLines(overlay(shown)));
+    if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
     const app::Toggles& t = controls_.toggles();
     renderer_.setOptions({t.wireframe, t.textures, t.lighting});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -488,7 +519,10 @@ class WindowApp {
     followTurn();
     applyScript();
     controls_.advance(dt);
-    if (auto shot = controls_.takeShot()) send(std::move(*shot));
+    if (auto shot = controls_.takeShot()) {
+      startStroke(*shot, now);
+      send(std::move(*shot));
+    }
     drawScene(now);
     sound_.update(session_.playTime());
     drawInterface();
@@ -498,6 +532,12 @@ class WindowApp {
   bot::TableView view_;
   GlfwWindow window_;
   render::Renderer renderer_;
+  /// The cue going through after a shot: its aim at release and when.
+  struct Stroke {
+    render::CueAim aim;
+    double start = 0.0;
+  };
+  std::optional<Stroke> stroke_;
   app::Controls controls_;
   app::MatchSession session_;
   SoundListener sound_;

@@ -96,5 +96,19 @@ TEST(CuePoseTest, CueFadesOnlyWhenTheEyeIsAtItsAxis) {
   EXPECT_LT(cueOpacity(cue, cue.tip - cue.forward * 0.7f + glm::vec3(0, 0, 0.02f)), 0.5f);
 }
 
+TEST(CuePoseTest, TheStrokeGoesThroughTheBallThenEnds) {
+  EXPECT_FLOAT_EQ(strokePower(0.8f, 0.0f), 0.8f);  // from where it was drawn back
+  // Forward all the way, accelerating: less than half the way in the first half of the time.
+  EXPECT_GT(strokePower(0.8f, kStrokeForward * 0.5f), 0.8f - 0.5f * (0.8f - kFollowThrough));
+  EXPECT_FLOAT_EQ(strokePower(0.8f, kStrokeForward), kFollowThrough);
+  EXPECT_FLOAT_EQ(strokePower(0.8f, kStrokeEnd - 0.01f), kFollowThrough);
+  EXPECT_TRUE(std::isnan(strokePower(0.8f, kStrokeEnd + 0.01f)));
+  // Pushed through, the tip is past the struck point along the line.
+  const CueAim aim{{0.0f, 0.0f, kR}, 0.0f, 0.0f, 0.0f, 0.0f, kFollowThrough};
+  const CuePlacement cue = placeCue(aim, table());
+  EXPECT_NEAR(glm::dot(cue.tip - struckPoint(aim, kR), cue.forward), -kFollowThrough * kMaxDrawBack,
+              1e-5f);
+}
+
 }  // namespace
 }  // namespace pool::render
