@@ -11,6 +11,7 @@
 #include "client/render/screenshot.h"
 #include "client/spectate/spectate_screenshot.h"
 #include "client/spectate/spectator.h"
+#include "client/ui/aim_screenshot.h"
 #include "client/ui/window_app.h"
 #include "net/dds_error.h"
 
@@ -84,8 +85,25 @@ int main(int argc, char** argv) {
                  "--screenshot: also write the camera and the balls drawn to this JSON file");
   app.add_option("--frames", flags.screenshot.frames, "frames to render with --screenshot")
       ->check(CLI::PositiveNumber);
-  app.add_option("--scene", flags.screenshot.scene, "scene for --screenshot (rack, eightball)")
-      ->check(CLI::IsMember({"rack", "eightball"}));
+  app.add_option("--scene", flags.screenshot.scene,
+                 "scene for --screenshot: rack (overview), aim (the aiming view of the rack), top "
+                 "(a few balls from above), eightball")
+      ->check(CLI::IsMember({"rack", "aim", "top", "eightball"}));
+  auto& aim = flags.screenshot.aim;
+  app.add_option("--aim", aim.yaw_deg, "--scene aim: cue heading, degrees (0 = toward the foot)");
+  app.add_option("--tip-side", aim.tip_side, "--scene aim: tip right of centre, fraction of R");
+  app.add_option("--tip-height", aim.tip_height, "--scene aim: tip above centre, fraction of R");
+  app.add_option("--elevation", aim.elevation_deg, "--scene aim: cue elevation, degrees")
+      ->check(CLI::Range(0.0, 89.0));
+  app.add_option("--power", aim.power, "--scene aim: power bar, 0-1 (draws the cue back)")
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--camera-distance", aim.camera_distance,
+                 "--scene aim: the aiming view this far from the cue ball, m")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--cue-at", aim.cue_at, "--scene aim: the cue ball's x y on the table, m")
+      ->expected(2);
+  app.add_option("--camera-elevation", aim.camera_elevation_deg,
+                 "--scene aim: the aiming view raised to this angle, degrees");
   app.add_option("--question", flags.screenshot.question,
                  "--scene eightball: the question the Magic Eight Ball answers");
   app.add_option("--seed", flags.screenshot.seed, "--scene eightball: the Magic Eight Ball's seed");
@@ -104,6 +122,9 @@ int main(int argc, char** argv) {
         flags.domain, flags.spectate, flags.timeout, [] { return g_stop.load(); }, {}};
     if (flags.json) config.emit = [](const std::string& line) { std::cout << line << '\n'; };
     return pool::client::runSpectateScreenshot(config, flags.screenshot);
+  }
+  if (!flags.screenshot.path.empty() && flags.screenshot.scene == "aim") {
+    return pool::ui::runAimScreenshot(flags.screenshot);
   }
   if (!flags.screenshot.path.empty()) return pool::render::runScreenshot(flags.screenshot);
 

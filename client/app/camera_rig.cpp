@@ -70,6 +70,11 @@ void CameraRig::raise(double d_elevation) {
   o.elevation = std::clamp(o.elevation + d_elevation, limits_.min_elevation, limits_.max_elevation);
 }
 
+void CameraRig::keepAimAbove(double elevation) {
+  aim_.elevation =
+      std::clamp(std::max(aim_.elevation, elevation), limits_.min_elevation, limits_.max_elevation);
+}
+
 void CameraRig::zoom(double factor) {
   if (!(factor > 0)) return;
   Orbit& o = active();

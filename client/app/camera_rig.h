@@ -25,6 +25,10 @@ struct Orbit {
   ViewPoint view(double fov_y_deg) const;
 };
 
+/// The aiming view's least elevation above the cue's drawn line, rad: the eye over the cue, as a
+/// player's.
+inline constexpr double kEyeOverCue = 0.1745329;  // 10°
+
 /// Limits and steps of the camera controls.
 struct CameraLimits {
   double min_elevation = 0.03;  ///< rad
@@ -49,6 +53,8 @@ class CameraRig {
   void orbit(double d_azimuth);
   /// Raises (+) or lowers the active camera (rad of elevation).
   void raise(double d_elevation);
+  /// Raises the aiming camera to at least `elevation` (rad), e.g. above the cue's line.
+  void keepAimAbove(double elevation);
   /// Multiplies the active camera's distance by `factor` (< 1 zooms in).
   void zoom(double factor);
   /// The watching camera back to the whole table.

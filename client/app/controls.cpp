@@ -29,6 +29,10 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   in_hand_ = in_hand;
   charging_ = false;
   aim_.power = 0.0;
+  // Each turn starts from a plain centre-ball stroke: spin and a raised cue are chosen per shot.
+  aim_.tip_side = 0.0;
+  aim_.tip_height = 0.0;
+  aim_.elevation = 0.0;
   aim_.call = ShotCall{};
   aim_.option = protocol::ShotOption::None;
   aim_.cue_ball_at.reset();

@@ -93,6 +93,7 @@ class Controls {
   Eigen::Vector3d cueBall() const;
   rules::BallInHand ballInHand() const { return in_hand_; }
   const CameraRig& camera() const { return camera_; }
+  CameraRig& camera() { return camera_; }
   const Toggles& toggles() const { return toggles_; }
   const protocol::CommandLimits& limits() const { return limits_; }
 

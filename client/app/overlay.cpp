@@ -1,4 +1,4 @@
-// Overlay segments from the aim and the balls' motion.
+// Overlay segments from the aim and the balls' motion (the cue itself is a 3-D model).
 #include "client/app/overlay.h"
 
 #include <cmath>
@@ -14,7 +14,6 @@ const Eigen::Vector3d kSpinColour(1.0, 0.3, 0.8);
 
 constexpr double kVelocitySeconds = 0.25;  // velocity arrows show this much travel
 constexpr double kSpinScale = 0.004;       // m per rad/s
-constexpr double kCueLength = 1.2;         // m of cue drawn
 constexpr double kObjectLine = 0.4;        // m of the object ball's heading drawn
 
 Eigen::Vector3d at(const Eigen::Vector2d& p, double z) {
@@ -23,8 +22,7 @@ Eigen::Vector3d at(const Eigen::Vector2d& p, double z) {
 
 }  // namespace
 
-std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, const AimState& state,
-                                       double radius) {
+std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, double radius) {
   std::vector<OverlaySegment> out;
   out.push_back({at(aim.from, radius), at(aim.contact, radius), kAimColour});
   if (aim.ball) {
@@ -32,12 +30,6 @@ std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, const AimState&
     out.push_back(
         {at(object, radius), at(object + kObjectLine * aim.object_dir, radius), kObjectColour});
   }
-  // The cue: behind the ball along the heading, raised by the elevation, drawn back with power.
-  const Eigen::Vector3d back(-std::cos(state.yaw) * std::cos(state.elevation),
-                             -std::sin(state.yaw) * std::cos(state.elevation),
-                             std::sin(state.elevation));
-  const Eigen::Vector3d tip = at(aim.from, radius) + back * (radius * (1.2 + 4 * state.power));
-  out.push_back({tip, tip + back * kCueLength, kCueColour});
   return out;
 }
 

@@ -1,5 +1,5 @@
 // The lines drawn over the table: the aim line to the first contact, the object ball's heading,
-// the cue, and the optional direction vectors (velocity, spin) of moving balls.
+// and the optional direction vectors (velocity, spin) of moving balls.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,9 +19,8 @@ struct OverlaySegment {
 };
 
 /// The aim line (cue ball to its first contact, then the object ball's heading) at ball-centre
-/// height `radius`, and the cue behind the ball (pulled back with the power).
-std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, const AimState& state,
-                                       double radius);
+/// height `radius`. The cue is drawn by the renderer (render::Renderer::setCue).
+std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, double radius);
 
 /// For each ball on the table that moves: its velocity (0.25 s of travel) and its spin axis
 /// (length ∝ |ω|).

@@ -1,20 +1,72 @@
-// Lamp placement and shade geometry.
+// Lamp placement, light, visibility and shade geometry.
 #include "client/render/lamps.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace pool::render {
+
+namespace {
+
+constexpr float kShadeHeight = 0.17f;     // m from rim to top
+constexpr float kShadeTopRadius = 0.07f;  // m
+constexpr float kEyeClearance = 0.10f;    // the eye stays this far under the rims, m
+constexpr float kEyeFade = 0.15f;         // m over which the lamps fade as the eye rises
+
+}  // namespace
 
 std::array<glm::vec3, 2> lampPositions(const pool::table::TableGeometry& geometry) {
   const float x = static_cast<float>(geometry.length) * 0.25f;
   return {glm::vec3(-x, 0.0f, kLampHeight), glm::vec3(x, 0.0f, kLampHeight)};
 }
 
+float lampLight(glm::vec3 lamp, glm::vec3 point, glm::vec3 normal) {
+  const glm::vec3 to_lamp = lamp - point;
+  const float distance2 = glm::dot(to_lamp, to_lamp);
+  if (distance2 <= 0.0f) return 0.0f;
+  const glm::vec3 l = to_lamp / std::sqrt(distance2);
+  const float c_in = std::cos(glm::radians(kSpotInnerDeg));
+  const float c_out = std::cos(glm::radians(kSpotOuterDeg));
+  const float t = std::clamp((l.z - c_out) / (c_in - c_out), 0.0f, 1.0f);
+  const float cone = t * t * (3.0f - 2.0f * t);
+  const float falloff = std::min(lamp.z * lamp.z / distance2, 1.3f);
+  return kLampGain * cone * std::max(glm::dot(normal, l), 0.0f) * falloff;
+}
+
+float shadeCoverage(const Camera& camera, int width, int height, glm::vec3 lamp) {
+  const glm::vec3 centre = lamp + glm::vec3(0.0f, 0.0f, kShadeHeight * 0.5f - kShadeRimBelow);
+  const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+  const float depth = glm::dot(centre - camera.eye, forward);
+  const float distance = glm::length(centre - camera.eye);
+  if (distance <= kShadeBound) return 1.0f;  // the eye is inside the shade's sphere
+  if (depth <= -kShadeBound) return 0.0f;
+  // The sphere's angular radius, as a radius on the image plane (at depth 1), in pixels.
+  const float half = std::asin(kShadeBound / distance);
+  const float focal =
+      static_cast<float>(height) * 0.5f / std::tan(glm::radians(camera.fov_y_deg) * 0.5f);
+  const float radius_px = focal * std::tan(half) / std::max(depth / distance, 0.05f);
+  const float area = 3.14159265f * radius_px * radius_px;
+  return std::min(area / (static_cast<float>(width) * static_cast<float>(height)), 1.0f);
+}
+
+float lampOpacity(const Camera& camera, int width, int height, glm::vec3 lamp) {
+  const float coverage = shadeCoverage(camera, width, height, lamp);
+  const float by_size = std::clamp((kFadeOut - coverage) / (kFadeOut - kFadeIn), 0.0f, 1.0f);
+  const float rim = lamp.z - kShadeRimBelow - kEyeClearance;
+  const float by_height = std::clamp((rim - camera.eye.z) / kEyeFade, 0.0f, 1.0f);
+  return std::min(by_size, by_height);
+}
+
 MeshData lampShade() {
-  // The shade's rim is a little below the bulb so the bulb is hidden from the side.
-  MeshData shade = openFrustum(0.16f, 0.05f, 0.13f, 40);
-  for (auto& p : shade.positions) p.z -= 0.03f;
-  MeshData rod = openFrustum(0.008f, 0.008f, 2.0f, 8);
-  for (auto& p : rod.positions) p.z += 0.14f;
-  append(shade, rod);
+  MeshData shade = openFrustum(kShadeRadius, kShadeTopRadius, kShadeHeight, 48);
+  MeshData top = unitDisc(24);
+  for (auto& p : top.positions) p = p * glm::vec3(kShadeTopRadius, kShadeTopRadius, 1.0f);
+  for (auto& p : top.positions) p.z += kShadeHeight;
+  append(shade, top);
+  MeshData cord = openFrustum(0.006f, 0.006f, 2.0f, 8);
+  for (auto& p : cord.positions) p.z += kShadeHeight;
+  append(shade, cord);
+  for (auto& p : shade.positions) p.z -= kShadeRimBelow;
   return shade;
 }
 

@@ -11,7 +11,7 @@ namespace {
 
 constexpr glm::vec3 kFelt(0.05f, 0.42f, 0.20f);
 constexpr glm::vec3 kCushion(0.04f, 0.36f, 0.17f);
-constexpr glm::vec3 kWood(0.34f, 0.17f, 0.07f);
+constexpr glm::vec3 kWood(0.42f, 0.21f, 0.086f);
 constexpr glm::vec3 kDark(0.02f, 0.02f, 0.02f);
 constexpr glm::vec3 kWhite(0.95f, 0.95f, 0.92f);
 
@@ -53,7 +53,7 @@ glm::vec3 woodColour() {
 }
 
 glm::vec3 shadeColour() {
-  return {0.06f, 0.30f, 0.14f};
+  return {0.42f, 0.07f, 0.06f};  // oxblood enamel
 }
 
 glm::vec3 bulbColour() {

@@ -1,11 +1,16 @@
-// Scene drawing: felt and wooden table parts, pocket holes, numbered balls turned by their
-// orientation, the lamps and the trough of pocketed balls, then the overlay lines on top.
+// Scene drawing: felt and wooden table parts, diamonds, pocket holes, the balls' shadows,
+// numbered balls turned by their orientation, the cue, the lamps and the trough of pocketed
+// balls, then the ghost ball's outline and the overlay lines on top.
 #include "client/render/renderer.h"
+
+#include <glad/gl.h>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <stdexcept>
 
+#include "client/render/cue_shadow.h"
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/render/shaders.h"
@@ -15,37 +20,55 @@ namespace pool::render {
 namespace {
 
 constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
+constexpr float kDiamondLift = 0.0003f;  // diamonds sit this far above the rail top, m
 constexpr glm::vec3 kBackground(0.10f, 0.10f, 0.12f);
 constexpr float kTroughLight = 0.75f;  // share of the albedo lit in the trough
+// The hall's light besides the lamps (walls and ceiling sending some back): the share of the
+// albedo lit outside the pools.
+constexpr float kHallLight = 0.38f;
+constexpr glm::vec3 kDiamondColour(0.86f, 0.84f, 0.76f);  // mother of pearl
+constexpr glm::vec3 kGhostColour(0.95f, 0.95f, 0.95f);
+constexpr int kGhostSegments = 48;
 
 glm::vec3 toGlm(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
 }
 
+std::vector<CueMeshPart> cueMeshOrThrow() {
+  auto parts = loadCueAsset();
+  if (!parts) throw std::runtime_error(parts.error());
+  return std::move(*parts);
+}
+
+/// The cue frame's model matrix: its +x (tip → butt) along −forward, its tip at `tip`.
+glm::mat4 cueModelMatrix(const CuePlacement& cue) {
+  const glm::vec3 x = -cue.forward;
+  const glm::vec3 side = glm::normalize(glm::cross(glm::vec3(0.0f, 0.0f, 1.0f), x));
+  const glm::vec3 up = glm::cross(x, side);
+  glm::mat4 m(1.0f);
+  m[0] = glm::vec4(x, 0.0f);
+  m[1] = glm::vec4(side, 0.0f);
+  m[2] = glm::vec4(up, 0.0f);
+  m[3] = glm::vec4(cue.tip, 1.0f);
+  return m;
+}
+
 }  // namespace
 
-Camera overviewCamera(const pool::table::TableGeometry& geometry, float aspect) {
-  const float half_length = static_cast<float>(geometry.length) * 0.5f + 0.25f;
-  const float fov = 40.0f;
-  const float half_fov_x = std::atan(std::tan(glm::radians(fov) * 0.5f) * aspect);
-  const float distance = half_length / std::tan(half_fov_x) * 1.3f;
-  const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, -0.55f, 1.0f));
-  return {glm::vec3(0.0f, 0.0f, 0.0f) + direction * distance, glm::vec3(0.0f, 0.0f, -0.05f), fov};
-}
-
-glm::mat4 viewProjection(const Camera& camera, float aspect) {
-  const glm::mat4 view = glm::lookAt(camera.eye, camera.target, glm::vec3(0.0f, 0.0f, 1.0f));
-  const glm::mat4 proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, 0.05f, 50.0f);
-  return proj * view;
-}
-
-glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3 p) {
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const glm::vec4 clip = viewProjection(camera, aspect) * glm::vec4(p, 1.0f);
-  if (clip.w <= 0.0f) return {0.0f, 0.0f, -1.0f};
-  const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-  return {(ndc.x * 0.5f + 0.5f) * static_cast<float>(width),
-          (0.5f - ndc.y * 0.5f) * static_cast<float>(height), ndc.z * 0.5f + 0.5f};
+CueObstacles cueObstaclesOf(const Scene& scene, glm::vec3 cue_ball) {
+  const RailExtent rails = railExtent(scene.geometry, static_cast<float>(scene.cushion_width));
+  CueObstacles obstacles{rails.half_length,
+                         rails.half_width,
+                         rails.cushion_width + rails.rail_width,
+                         rails.top,
+                         static_cast<float>(scene.ball_radius),
+                         {}};
+  for (const SceneBall& b : scene.balls) {
+    const glm::vec3 at = toGlm(b.pos);
+    if (b.pocketed || glm::length(at - cue_ball) < 1e-4f) continue;
+    obstacles.balls.push_back(at);
+  }
+  return obstacles;
 }
 
 Renderer::Renderer(const Scene& scene)
@@ -53,23 +76,52 @@ Renderer::Renderer(const Scene& scene)
       trough_(scene.geometry, scene.ball_radius),
       sphere_(unitSphere(16, 24)),
       disc_(unitDisc(40)),
-      shade_(lampShade()) {
+      shade_(lampShade()),
+      bulb_(unitSphere(8, 12)),
+      diamond_(diamondInlay()),
+      rails_(railExtent(scene.geometry, static_cast<float>(scene.cushion_width))),
+      cue_model_(cueMeshOrThrow()) {
   for (const auto& part : scene_.geometry.parts) {
     if (part.triangles.empty()) continue;
     const PartLook look = partLook(part.name);
     parts_.push_back({std::make_unique<GpuMesh>(meshFromPart(part)), look.colour, look.material});
   }
   parts_.push_back({std::make_unique<GpuMesh>(trough_.mesh()), woodColour(), shaders::kWood});
+  diamonds_ = diamondPositions(rails_);
   trough_.update(scene_.balls);
+  updateShadows();
 }
 
 void Renderer::setBalls(std::vector<SceneBall> balls) {
   scene_.balls = std::move(balls);
   trough_.update(scene_.balls);
+  placeCue();
 }
 
 void Renderer::setOverlay(std::vector<OverlayLine> lines) {
   overlay_.set(lines);
+}
+
+void Renderer::setCue(std::optional<CueAim> aim) {
+  cue_aim_ = aim;
+  placeCue();
+}
+
+void Renderer::placeCue() {
+  cue_.reset();
+  if (cue_aim_)
+    cue_ = pool::render::placeCue(*cue_aim_, cueObstaclesOf(scene_, cue_aim_->cue_ball));
+  updateShadows();
+}
+
+void Renderer::updateShadows() {
+  std::vector<glm::vec3> centres;
+  for (const SceneBall& b : scene_.balls) {
+    if (!b.pocketed) centres.push_back(toGlm(b.pos));
+  }
+  const auto lamps = lampPositions(scene_.geometry);
+  shadows_.set(
+      ballShadows(lamps, centres, static_cast<float>(scene_.ball_radius), SceneShading::kAmbient));
 }
 
 std::vector<SceneBall> Renderer::drawnBalls() const {
@@ -96,6 +148,16 @@ void Renderer::drawHoles() const {
   }
 }
 
+void Renderer::drawDiamonds() const {
+  for (const glm::vec3& at : diamonds_) {
+    // Long diagonal along the rail: x on the long rails, y on the end rails.
+    const bool end_rail = std::abs(at.x) > rails_.half_length;
+    glm::mat4 model = glm::translate(glm::mat4(1.0f), at + glm::vec3(0.0f, 0.0f, kDiamondLift));
+    if (end_rail) model = glm::rotate(model, glm::radians(90.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    shading_.draw(diamond_, model, kDiamondColour, shaders::kEmissive, 0.0f);
+  }
+}
+
 void Renderer::drawBalls() const {
   const auto r = static_cast<float>(scene_.ball_radius);
   for (const SceneBall& ball : drawnBalls()) {
@@ -107,31 +169,92 @@ void Renderer::drawBalls() const {
     // The trough is lit by its own strip light under the rail, out of the lamps' cones.
     if (ball.pocketed) shading_.setAmbient(kTroughLight);
     shading_.drawBall(sphere_, model, ball.id);
-    if (ball.pocketed) shading_.setAmbient(SceneShading::kAmbient);
+    if (ball.pocketed) shading_.setAmbient(kHallLight);
   }
 }
 
-void Renderer::drawLamps() const {
-  for (const glm::vec3& light : lampPositions(scene_.geometry)) {
-    const glm::mat4 at = glm::translate(glm::mat4(1.0f), light);
-    shading_.draw(shade_, at, shadeColour(), shaders::kEmissive, 0.0f);
-    const glm::mat4 bulb = glm::scale(at, glm::vec3(kBulbRadius, kBulbRadius, 1.0f));
-    shading_.draw(disc_, bulb, bulbColour(), shaders::kEmissive, 0.0f);
+void Renderer::drawCue(const Camera& camera) const {
+  if (!cue_) return;
+  const glm::mat4 model = cueModelMatrix(*cue_);
+  // A cue passing by the eye would fill the view: it turns translucent instead.
+  const float alpha = cueOpacity(*cue_, camera.eye);
+  if (alpha < 1.0f) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
   }
+  for (const CueModel::Part& part : cue_model_.parts()) {
+    if (alpha < 1.0f) {
+      shading_.drawFaded(*part.mesh, model, part.look.colour, part.look.material, alpha);
+    } else {
+      shading_.draw(*part.mesh, model, part.look.colour, part.look.material, part.look.specular);
+    }
+  }
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
+void Renderer::drawLamps(const Camera& camera, int width, int height) const {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (const glm::vec3& light : lampPositions(scene_.geometry)) {
+    const float alpha = lampOpacity(camera, width, height, light);
+    if (alpha <= 0.0f) continue;  // out of the way: the light still falls on the table
+    glDepthMask(alpha < 1.0f ? GL_FALSE : GL_TRUE);
+    const glm::mat4 at = glm::translate(glm::mat4(1.0f), light);
+    shading_.drawFaded(shade_, at, shadeColour(), shaders::kShade, alpha);
+    const glm::mat4 bulb = glm::scale(at, glm::vec3(kBulbRadius));
+    shading_.drawFaded(bulb_, bulb, bulbColour(), shaders::kEmissive, alpha);
+  }
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
+void Renderer::drawGhost(const Camera& camera, const glm::mat4& view_projection) const {
+  if (!ghost_) {
+    ghost_lines_.set({});
+    return;
+  }
+  // The ball's silhouette: a circle of radius R about its centre, across the line of sight; two
+  // rings a pixel or so apart for a visible outline.
+  const glm::vec3 sight = glm::normalize(*ghost_ - camera.eye);
+  const glm::vec3 right = glm::normalize(glm::cross(sight, camera.up));
+  const glm::vec3 up = glm::cross(right, sight);
+  std::vector<OverlayLine> lines;
+  const auto r = static_cast<float>(scene_.ball_radius);
+  for (const float scale : {1.0f, 0.96f}) {
+    for (int i = 0; i < kGhostSegments; ++i) {
+      const float a0 = 6.2831853f * static_cast<float>(i) / kGhostSegments;
+      const float a1 = 6.2831853f * static_cast<float>(i + 1) / kGhostSegments;
+      const auto at = [&](float a) {
+        return *ghost_ + scale * r * (std::cos(a) * right + std::sin(a) * up);
+      };
+      lines.push_back({at(a0), at(a1), kGhostColour});
+    }
+  }
+  ghost_lines_.set(lines);
+  ghost_lines_.draw(view_projection);
 }
 
 void Renderer::draw(const Camera& camera, int width, int height) const {
   const auto lamps = lampPositions(scene_.geometry);
+  const glm::mat4 view_projection =
+      viewProjection(camera, static_cast<float>(width) / static_cast<float>(height));
   shading_.beginFrame(camera, width, height, kBackground, {lamps, kSpotInnerDeg, kSpotOuterDeg},
                       options_);
+  shading_.setAmbient(kHallLight);
   for (const Part& part : parts_) {
     shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
   }
+  drawDiamonds();
   drawHoles();
+  if (options_.lighting && !options_.wireframe) shadows_.draw(view_projection);
   drawBalls();
-  drawLamps();
+  drawCue(camera);
+  drawLamps(camera, width, height);
   shading_.endFrame();
-  overlay_.draw(viewProjection(camera, static_cast<float>(width) / static_cast<float>(height)));
+  drawGhost(camera, view_projection);
+  overlay_.draw(view_projection);
 }
 
 }  // namespace pool::render

@@ -1,33 +1,25 @@
-// Draws a Scene (table, pockets, numbered balls, lamps, the pocketed-ball trough) with two
-// spotlights and Blinn-Phong shading, then the overlay lines.
+// Draws a Scene (table, diamonds, pockets, ball shadows, numbered balls, the cue, lamps, the
+// pocketed-ball trough) with two spotlights and Blinn-Phong shading, then the ghost ball and the
+// overlay lines.
 #pragma once
 
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "client/render/ball_trough.h"
+#include "client/render/camera.h"
+#include "client/render/cue_model.h"
+#include "client/render/cue_pose.h"
+#include "client/render/diamonds.h"
 #include "client/render/mesh.h"
 #include "client/render/overlay_lines.h"
 #include "client/render/scene.h"
 #include "client/render/scene_shading.h"
+#include "client/render/shadow_layer.h"
 
 namespace pool::render {
-
-/// A perspective camera (table frame, +z up).
-struct Camera {
-  glm::vec3 eye;
-  glm::vec3 target;
-  float fov_y_deg = 45.0f;
-};
-
-/// A camera above the long side that frames the whole table for the given aspect (w / h).
-Camera overviewCamera(const pool::table::TableGeometry& geometry, float aspect);
-/// The camera's projection × view matrix for the given aspect (w / h).
-glm::mat4 viewProjection(const Camera& camera, float aspect);
-/// Where table point `p` lands in a width × height image: pixels from the top-left corner, and
-/// its depth in [0, 1] as z (z < 0 when the point is behind the camera).
-glm::vec3 projectToPixels(const Camera& camera, int width, int height, glm::vec3 p);
 
 /// Switches of the drawing (the client's P, T and L keys).
 struct RenderOptions {
@@ -36,8 +28,12 @@ struct RenderOptions {
   bool lighting = true;    ///< spotlights (off: unlit colours)
 };
 
+/// What a cue aimed at the ball at `cue_ball` must clear on `scene`'s table: its rails and the
+/// other balls on the table.
+CueObstacles cueObstaclesOf(const Scene& scene, glm::vec3 cue_ball);
+
 /// GPU resources of one scene; needs a current OpenGL 3.3 core context. Throws
-/// std::runtime_error when a shader or the font cannot be loaded.
+/// std::runtime_error when a shader, the font or the cue mesh cannot be loaded.
 class Renderer {
  public:
   explicit Renderer(const Scene& scene);
@@ -48,9 +44,18 @@ class Renderer {
   const RenderOptions& options() const { return options_; }
   /// Replaces the overlay segments drawn after the scene.
   void setOverlay(std::vector<OverlayLine> lines);
+  /// Shows the cue for `aim` (its cue ball is the aim's), or hides it.
+  void setCue(std::optional<CueAim> aim);
+  /// Shows the outline of a ghost ball centred at `centre` (table frame, m), or hides it.
+  void setGhost(std::optional<glm::vec3> centre) { ghost_ = centre; }
 
   /// The balls as drawn: pocketed ones moved to their place in the trough, number to the viewer.
   std::vector<SceneBall> drawnBalls() const;
+  /// The cue as drawn (after clearing the rails and balls), if shown.
+  const std::optional<CuePlacement>& cue() const { return cue_; }
+  const std::optional<glm::vec3>& ghost() const { return ghost_; }
+  /// The diamonds' centres on the rail tops (table frame, m).
+  const std::vector<glm::vec3>& diamonds() const { return diamonds_; }
   /// Clears and draws the scene into the bound framebuffer of size width × height.
   void draw(const Camera& camera, int width, int height) const;
 
@@ -60,9 +65,14 @@ class Renderer {
     glm::vec3 colour;
     int material;
   };
+  void placeCue();
+  void updateShadows();
   void drawBalls() const;
   void drawHoles() const;
-  void drawLamps() const;
+  void drawDiamonds() const;
+  void drawCue(const Camera& camera) const;
+  void drawLamps(const Camera& camera, int width, int height) const;
+  void drawGhost(const Camera& camera, const glm::mat4& view_projection) const;
 
   Scene scene_;
   RenderOptions options_;
@@ -72,7 +82,17 @@ class Renderer {
   GpuMesh sphere_;
   GpuMesh disc_;
   GpuMesh shade_;
+  GpuMesh bulb_;
+  GpuMesh diamond_;
+  std::vector<glm::vec3> diamonds_;
+  RailExtent rails_;
+  CueModel cue_model_;
+  std::optional<CueAim> cue_aim_;
+  std::optional<CuePlacement> cue_;
+  std::optional<glm::vec3> ghost_;
+  ShadowLayer shadows_;
   OverlayLines overlay_;
+  mutable OverlayLines ghost_lines_;  ///< rebuilt each frame: the outline faces the camera
 };
 
 }  // namespace pool::render

@@ -24,6 +24,7 @@ Result<Scene> tableScene(const std::string& table) {
   Scene scene;
   scene.geometry = std::move(*geometry);
   scene.ball_radius = spec->params.ball_radius;
+  scene.cushion_width = spec->cushion_width;
   return Result<Scene>::ok(std::move(scene));
 }
 

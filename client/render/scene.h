@@ -24,6 +24,7 @@ struct SceneBall {
 struct Scene {
   pool::table::TableGeometry geometry;
   double ball_radius = 0.0;
+  double cushion_width = 0.05;  ///< nose to the back of the cushion (the spec's), m
   std::vector<SceneBall> balls;
 };
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "client/render/lamps.h"
 #include "client/render/noise_texture.h"
 #include "client/render/number_atlas.h"
 #include "client/render/palette.h"
@@ -55,6 +56,8 @@ void SceneShading::beginFrame(const Camera& camera, int width, int height, glm::
     p->set("uLighting", options.lighting ? 1 : 0);
     p->set("uNumbers", kNumbersUnit);
     p->set("uNoise", kNoiseUnit);
+    p->set("uLampGain", kLampGain);
+    p->set("uAlpha", 1.0f);
   }
   setAmbient(kAmbient);
 }
@@ -79,6 +82,15 @@ void SceneShading::draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 c
   p.set("uColour", colour);
   p.set("uSpecular", specular);
   mesh.draw();
+}
+
+void SceneShading::drawFaded(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour,
+                             int material, float alpha) const {
+  const ShaderProgram& p = *programs_[static_cast<std::size_t>(material)];
+  p.use();
+  p.set("uAlpha", alpha);
+  draw(mesh, model, colour, material, 0.0f);
+  p.set("uAlpha", 1.0f);
 }
 
 void SceneShading::drawBall(const GpuMesh& sphere, const glm::mat4& model, int id) const {

@@ -44,6 +44,9 @@ class SceneShading {
   /// Draws `mesh` with `model` (mesh → table frame) in a material (shaders::Material).
   void draw(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
             float specular) const;
+  /// Draws `mesh` with opacity `alpha` (blending is the caller's to enable).
+  void drawFaded(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
+                 float alpha) const;
   /// Draws a ball: `model` includes its orientation and radius; `id` picks colour and number.
   void drawBall(const GpuMesh& sphere, const glm::mat4& model, int id) const;
 

@@ -76,23 +76,42 @@ int guarded(const ScreenshotOptions& options, const std::function<FrameSource()>
 
 }  // namespace
 
-int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
-                     const FrameHook& before_frame) {
+int renderScreenshot(const ScreenshotOptions& options, const Scene& scene, const Camera& camera,
+                     const SceneSetup& setup, const FrameHook& before_frame) {
   std::shared_ptr<Renderer> renderer;
-  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-  const Camera camera = overviewCamera(scene.geometry, aspect);
   return guarded(options, [&] {
     renderer = std::make_shared<Renderer>(scene);
     renderer->setOptions(options.render);
+    if (setup) setup(*renderer);
     return FrameSource{[&](int frame) {
                          if (before_frame) before_frame(*renderer, frame);
                          renderer->draw(camera, options.width, options.height);
                        },
                        [&] {
-                         return screenshotInfoJson(camera, options.width, options.height,
-                                                   scene.ball_radius, renderer->drawnBalls());
+                         return screenshotInfoJson(camera, options.width, options.height, *renderer,
+                                                   scene.ball_radius, scene.geometry);
                        }};
   });
+}
+
+int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
+                     const FrameHook& before_frame) {
+  const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+  return renderScreenshot(options, scene, overviewCamera(scene.geometry, aspect), {}, before_frame);
+}
+
+Result<Scene> spreadScene(const std::string& table) {
+  auto scene = tableScene(table);
+  if (!scene) return scene;
+  const double r = scene->ball_radius;
+  // Between and beside the lamps (over x = ±L/4), none straight under one.
+  const double spots[][2] = {{0.0, 0.0}, {-0.3, 0.3}, {0.35, -0.3}, {-0.95, -0.35}, {1.0, 0.4}};
+  int id = 0;
+  for (const auto& spot : spots) {
+    scene->balls.push_back({id, Eigen::Vector3d(spot[0], spot[1], r), numberTowardViewer()});
+    id = id == 0 ? 2 : id + 2;
+  }
+  return scene;
 }
 
 int renderEightBallScreenshot(const ScreenshotOptions& options, const std::string& answer) {
@@ -114,14 +133,18 @@ int runScreenshot(const ScreenshotOptions& options) {
     }
     return renderEightBallScreenshot(options, *reply);
   }
-  if (options.scene != "rack") {
-    std::cerr << "unknown scene '" << options.scene << "' (known: rack, eightball)\n";
+  if (options.scene != "rack" && options.scene != "top") {
+    std::cerr << "unknown scene '" << options.scene << "' (known: rack, top, aim, eightball)\n";
     return 2;
   }
-  auto scene = rackScene();
+  auto scene = options.scene == "top" ? spreadScene() : rackScene();
   if (!scene) {
     std::cerr << "scene: " << scene.error() << '\n';
     return 1;
+  }
+  if (options.scene == "top") {
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+    return renderScreenshot(options, *scene, topCamera(scene->geometry, aspect), {});
   }
   return renderScreenshot(options, *scene);
 }

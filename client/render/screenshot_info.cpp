@@ -1,26 +1,68 @@
 // Writes the screenshot sidecar with nlohmann-json.
 #include "client/render/screenshot_info.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
+
+#include "client/render/lamps.h"
 
 namespace pool::render {
 
-std::string screenshotInfoJson(const Camera& camera, int width, int height, double ball_radius,
-                               const std::vector<SceneBall>& balls) {
-  using nlohmann::json;
-  const auto vec = [](glm::vec3 v) { return json::array({v.x, v.y, v.z}); };
-  json info{
-      {"width", width},
-      {"height", height},
-      {"ball_radius", ball_radius},
-      {"camera",
-       {{"eye", vec(camera.eye)}, {"target", vec(camera.target)}, {"fov_y_deg", camera.fov_y_deg}}},
-      {"balls", json::array()}};
-  for (const SceneBall& b : balls) {
+namespace {
+
+using nlohmann::json;
+
+json vec(glm::vec3 v) {
+  return json::array({v.x, v.y, v.z});
+}
+
+json matrix(const glm::mat4& m) {
+  json out = json::array();
+  const float* values = glm::value_ptr(m);
+  for (int i = 0; i < 16; ++i) out.push_back(values[i]);
+  return out;
+}
+
+}  // namespace
+
+std::string screenshotInfoJson(const Camera& camera, int width, int height,
+                               const Renderer& renderer, double ball_radius,
+                               const pool::table::TableGeometry& geometry) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const auto point = [&](glm::vec3 p) {
+    const glm::vec3 px = projectToPixels(camera, width, height, p);
+    return json{{"pos", vec(p)}, {"px", json::array({px.x, px.y})}};
+  };
+  json info{{"width", width},
+            {"height", height},
+            {"ball_radius", ball_radius},
+            {"camera",
+             {{"eye", vec(camera.eye)},
+              {"target", vec(camera.target)},
+              {"up", vec(camera.up)},
+              {"fov_y_deg", camera.fov_y_deg},
+              {"view", matrix(viewMatrix(camera))},
+              {"projection", matrix(projectionMatrix(camera, aspect))}}},
+            {"balls", json::array()},
+            {"lamps", json::array()},
+            {"diamonds", json::array()}};
+  for (const SceneBall& b : renderer.drawnBalls()) {
     info["balls"].push_back({{"id", b.id},
                              {"pos", json::array({b.pos.x(), b.pos.y(), b.pos.z()})},
                              {"pocketed", b.pocketed}});
   }
+  if (const auto& cue = renderer.cue()) {
+    info["cue"] = {{"tip", point(cue->tip)},
+                   {"butt", point(cue->butt)},
+                   {"drawn_elevation_deg", glm::degrees(cue->drawn_elevation)}};
+  }
+  if (const auto& ghost = renderer.ghost()) info["ghost"] = point(*ghost);
+  for (const glm::vec3& light : lampPositions(geometry)) {
+    info["lamps"].push_back({{"light", point(light)},
+                             {"pool", point(glm::vec3(light.x, light.y, 0.0f))},
+                             {"opacity", lampOpacity(camera, width, height, light)}});
+  }
+  for (const glm::vec3& d : renderer.diamonds()) info["diamonds"].push_back(point(d));
   return info.dump(2) + "\n";
 }
 

@@ -1,5 +1,6 @@
 // GLSL 3.30 sources: the scene shader (world-space Blinn-Phong from two spotlights, procedural
-// felt and wood, numbered balls) and the unlit overlay-line shader.
+// felt and wood, numbered balls, the cue's varnished wood, the lamp shades) and the unlit
+// overlay-line shader.
 #pragma once
 
 #include <string>
@@ -7,10 +8,19 @@
 namespace pool::render::shaders {
 
 /// Material codes of the scene shader's uMaterial.
-enum Material : int { kPlain = 0, kFelt = 1, kWood = 2, kBall = 3, kEmissive = 4, kMaterials = 5 };
+enum Material : int {
+  kPlain = 0,
+  kFelt = 1,
+  kWood = 2,
+  kBall = 3,
+  kEmissive = 4,
+  kCue = 5,    ///< varnished wood with grain along the model's x axis, glossy
+  kShade = 6,  ///< lamp shade: enamel outside (lit from the room), glowing inside
+  kMaterials = 7
+};
 
-/// Vertex stage: world position and normal, plus the object-space normal (ball markings turn
-/// with the ball's orientation).
+/// Vertex stage: world position and normal, plus the object-space normal and position (ball
+/// markings turn with the ball's orientation; the cue's grain runs along its own axis).
 inline constexpr const char* kSceneVertex = R"(#version 330 core
 layout(location = 0) in vec3 aPos;
 layout(location = 1) in vec3 aNormal;
@@ -20,11 +30,13 @@ uniform mat3 uNormalMatrix;
 out vec3 vWorldPos;
 out vec3 vNormal;
 out vec3 vLocalNormal;
+out vec3 vLocalPos;
 void main() {
   vec4 world = uModel * vec4(aPos, 1.0);
   vWorldPos = world.xyz;
   vNormal = uNormalMatrix * aNormal;
   vLocalNormal = aNormal;
+  vLocalPos = aPos;
   gl_Position = uViewProj * world;
 }
 )";
@@ -33,11 +45,14 @@ void main() {
 /// shader, so each material's program holds only its own work.
 /// Balls: solid colour, or white with a band |z| < 0.5 (stripes); a white circle with the number
 /// (atlas cell uBallCell) on the body's +x and -x sides. Felt and wood modulate brightness with a
-/// tiling noise texture, so their hue stays that of uColour. uLighting 0: albedo unlit.
+/// tiling noise texture, so their hue stays that of uColour. uLighting 0: albedo unlit. Lamp light
+/// falls off as (lamp height / distance)², so each lamp makes its own pool on the felt. uAlpha:
+/// the fragment's opacity (fading lamps).
 inline constexpr const char* kSceneFragment = R"(
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec3 vLocalNormal;
+in vec3 vLocalPos;
 uniform vec3 uColour;
 uniform int uStriped;
 uniform int uBallCell;
@@ -45,6 +60,8 @@ uniform int uTextures;
 uniform int uLighting;
 uniform float uSpecular;
 uniform float uAmbient;
+uniform float uAlpha;
+uniform float uLampGain;
 uniform sampler2D uNumbers;
 uniform sampler2D uNoise;
 uniform vec3 uEye;
@@ -75,36 +92,59 @@ vec3 albedo() {
   float across = vWorldPos.x + vWorldPos.y + vWorldPos.z;
   float grain = sin(across * 140.0 + texture(uNoise, vec2(along * 0.3, across * 1.2)).r * 6.0);
   return uColour * (0.88 + 0.12 * grain);
+#elif MATERIAL == 5
+  if (uTextures == 0) return uColour;
+  float around = atan(vLocalPos.z, vLocalPos.y);
+  float streak = texture(uNoise, vec2(vLocalPos.x * 0.7, around * 0.9)).r;
+  return uColour * (0.84 + 0.3 * streak);
 #else
   return uColour;
 #endif
 }
+const vec3 kGlow = vec3(1.0, 0.9, 0.7);  // a shade's inside, lit by its bulb
 void main() {
   vec3 base = albedo();
 #if MATERIAL == 4
-  fragColour = vec4(min(base, vec3(1.0)), 1.0);
+  fragColour = vec4(min(base, vec3(1.0)), uAlpha);
 #else
   if (uLighting == 0) {
-    fragColour = vec4(min(base, vec3(1.0)), 1.0);
+    fragColour = vec4(min(base, vec3(1.0)), uAlpha);
     return;
   }
   vec3 n = normalize(vNormal);
   vec3 v = normalize(uEye - vWorldPos);
-  if (dot(n, v) < 0.0) n = -n;
+  bool inside = dot(n, v) < 0.0;
+  if (inside) n = -n;
+#if MATERIAL == 6
+  // Inside: the bulb's glow, brightest toward the rim it spills from. Outside: enamel under the
+  // light the room sends back up from the table, with a sheen.
+  if (inside) {
+    fragColour = vec4(kGlow * (0.75 + 0.25 * smoothstep(0.0, 0.15, -vLocalPos.z + 0.14)), uAlpha);
+    return;
+  }
+  float fill = 0.35 + 0.45 * max(-n.z, 0.0) + 0.25 * max(n.z, 0.0);
+  float sheen = pow(max(dot(n, normalize(v + vec3(0.0, 0.0, -1.0))), 0.0), 24.0);
+  fragColour = vec4(min(base * (uAmbient + fill) + vec3(0.25 * sheen), vec3(1.0)), uAlpha);
+  return;
+#endif
   vec3 colour = uAmbient * base;
   for (int i = 0; i < 2; ++i) {
-    vec3 l = normalize(uLightPos[i] - vWorldPos);
+    vec3 to_light = uLightPos[i] - vWorldPos;
+    float dist2 = dot(to_light, to_light);
+    vec3 l = to_light * inversesqrt(dist2);
     float cone = smoothstep(uCosOuter, uCosInner, l.z);  // the lamps point straight down
+    float falloff = min(uLightPos[i].z * uLightPos[i].z / dist2, 1.3);
     float diffuse = max(dot(n, l), 0.0);
-    colour += cone * 0.62 * diffuse * base;
-#if MATERIAL == 3
-    // Only the balls are glossy enough for a highlight worth its cost: (n.h)^64 by squaring.
+    colour += cone * falloff * uLampGain * diffuse * base;
+#if MATERIAL == 3 || MATERIAL == 5
+    // Only the balls and the cue's varnish are glossy enough for a highlight worth its cost:
+    // (n.h)^64 by squaring.
     float s = max(dot(n, normalize(l + v)), 0.0);
     s *= s; s *= s; s *= s; s *= s; s *= s; s *= s;
     colour += cone * uSpecular * (diffuse > 0.0 ? s : 0.0);
 #endif
   }
-  fragColour = vec4(min(colour, vec3(1.0)), 1.0);
+  fragColour = vec4(min(colour, vec3(1.0)), uAlpha);
 #endif
 }
 )";

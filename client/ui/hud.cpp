@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "client/app/spoken.h"
 #include "client/bot/shot_command.h"
 
 namespace pool::ui {
@@ -21,8 +22,9 @@ void seatLine(const client::MatchView& view, int s, const std::vector<int>& loca
   const bool turn = view.shooter == s;
   ImGui::Text("%s %s%s%s", turn ? ">" : " ", seat.name.empty() ? "(free)" : seat.name.c_str(),
               here ? " (you)" : "", seat.connected || seat.name.empty() ? "" : " [away]");
-  ImGui::Text("    %s, %d left, %d fouls, %d racks", rules::toString(seat.group), seat.balls_left,
-              seat.fouls, seat.racks_won);
+  ImGui::Text("    %s, %d left, %d fouls, %d racks",
+              app::spoken(rules::toString(seat.group)).c_str(), seat.balls_left, seat.fouls,
+              seat.racks_won);
 }
 
 void matchPanel(const HudInput& in, HudActions& actions) {
@@ -35,18 +37,21 @@ void matchPanel(const HudInput& in, HudActions& actions) {
     return;
   }
   const auto& v = *in.view;
-  ImGui::Text("%s, rack %u, shot %u", client::toString(v.phase), v.rack, v.shot_number);
+  ImGui::Text("%s, rack %u, shot %u", app::spoken(client::toString(v.phase)).c_str(), v.rack,
+              v.shot_number);
   for (int s = 0; s < 2; ++s) seatLine(v, s, in.local_seats);
   if (v.ball_in_hand != rules::BallInHand::None) {
-    ImGui::Text("ball in hand: %s", rules::toString(v.ball_in_hand));
+    ImGui::Text("ball in hand: %s", app::spoken(rules::toString(v.ball_in_hand)).c_str());
   }
   if (v.shot_clock >= 0) ImGui::Text("shot clock: %.0f s", v.shot_clock);
   if (in.in_motion) ImGui::TextUnformatted("balls moving");
-  if (!in.last_verdict.empty()) ImGui::TextWrapped("last shot: %s", in.last_verdict.c_str());
+  if (!in.last_verdict.empty()) {
+    ImGui::TextWrapped("last shot: %s", app::spokenText(in.last_verdict).c_str());
+  }
   if (v.phase == client::MatchPhase::Over) {
     ImGui::Text("winner: %s (%s)",
                 v.winner >= 0 ? v.seats[static_cast<std::size_t>(v.winner)].name.c_str() : "-",
-                rules::toString(v.end));
+                app::spoken(rules::toString(v.end)).c_str());
     const bool won =
         std::find(in.local_seats.begin(), in.local_seats.end(), v.winner) != in.local_seats.end();
     if (won && ImGui::Button("Visit the Magic Eight Ball room")) actions.visit_room = true;
@@ -63,7 +68,7 @@ void choicePanel(const HudInput& in, HudActions& actions) {
   for (const rules::Choice c : in.view->options) {
     const protocol::ShotOption option = bot::optionOf(c);
     const bool on = chosen == option;
-    if (ImGui::RadioButton(rules::toString(c), on)) actions.option = option;
+    if (ImGui::RadioButton(app::spoken(rules::toString(c)).c_str(), on)) actions.option = option;
   }
   ImGui::TextUnformatted("play on / ball in hand: then shoot; a re-rack is sent at once");
   ImGui::End();
@@ -90,7 +95,8 @@ void shotPanel(const HudInput& in) {
   if (aim.call.safety) {
     ImGui::TextUnformatted("call: safety (K to drop it)");
   } else if (aim.call.ball) {
-    ImGui::Text("call: %d in %s%s (C: next pocket)", *aim.call.ball, aim.call.pocket.c_str(),
+    ImGui::Text("call: %d in the %s%s (C: next pocket)", *aim.call.ball,
+                app::spoken(aim.call.pocket).c_str(),
                 *aim.call.ball == rules::kEightBall ? "  <- the 8: check the pocket" : "");
   } else {
     ImGui::TextUnformatted("call: none (break)");
@@ -98,7 +104,8 @@ void shotPanel(const HudInput& in) {
   if (aim.cue_ball_at) {
     ImGui::Text("cue ball at (%.3f, %.3f): drag it", aim.cue_ball_at->x(), aim.cue_ball_at->y());
     if (!in.placement_problem.empty()) {
-      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "placement: %s", in.placement_problem.c_str());
+      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "placement: %s",
+                         app::spokenText(in.placement_problem).c_str());
     }
   }
   const app::Toggles& t = c.toggles();
@@ -116,9 +123,9 @@ void notesPanel(const HudInput& in) {
   ImGui::Begin("Messages", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   for (const auto& n : *in.notes) {
     if (n.problem) {
-      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", n.text.c_str());
+      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", app::spokenText(n.text).c_str());
     } else {
-      ImGui::TextUnformatted(n.text.c_str());
+      ImGui::TextUnformatted(app::spokenText(n.text).c_str());
     }
   }
   ImGui::End();

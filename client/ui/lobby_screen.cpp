@@ -3,6 +3,8 @@
 
 #include <imgui.h>
 
+#include "client/app/spoken.h"
+
 namespace pool::ui {
 namespace {
 
@@ -46,7 +48,7 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(e->table.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(client::toString(e->phase));
+      ImGui::TextUnformatted(app::spoken(client::toString(e->phase)).c_str());
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(playersOf(*e).c_str());
       ImGui::TableNextColumn();

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <deque>
 #include <iostream>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
+#include "client/ui/aim_screenshot.h"
 #include "client/ui/eight_ball_room_ui.h"
 #include "client/ui/hud.h"
 #include "client/ui/lobby_screen.h"
@@ -46,8 +48,8 @@ constexpr double kScriptStep = 1.0 / 60.0;  // s of input time per frame under a
 constexpr std::size_t kNotesShown = 6;
 constexpr std::chrono::microseconds kMinFrame(1000000 / 144);  // at most 144 frames a second
 
-net::CommandLimits limitsOf(const bot::TableView& view) {
-  net::CommandLimits limits;
+protocol::CommandLimits limitsOf(const bot::TableView& view) {
+  protocol::CommandLimits limits;
   limits.half_length = view.halfLength();
   limits.half_width = view.halfWidth();
   return limits;
@@ -136,14 +138,14 @@ class WindowApp {
       if (legal) controls_.moveCueBall(*legal);
     }
     for (const rules::Choice c : v->options) {
-      if (net::optionShoots(bot::optionOf(c))) {
+      if (protocol::optionShoots(bot::optionOf(c))) {
         controls_.setOption(bot::optionOf(c));
         break;
       }
     }
   }
 
-  void send(net::ShotRequest request) {
+  void send(protocol::ShotRequest request) {
     const int seat = aiming_seat_;
     aiming_seat_ = -1;
     auto sent = session_.shoot(seat, request);
@@ -160,13 +162,13 @@ class WindowApp {
     while (notes_.size() > kNotesShown) notes_.pop_front();
   }
 
-  void chooseOption(net::ShotOption option) {
-    if (net::optionShoots(option)) {
+  void chooseOption(protocol::ShotOption option) {
+    if (protocol::optionShoots(option)) {
       controls_.setOption(option);
       return;
     }
     // A re-rack carries no shot: sent at once with a harmless stroke the server does not play.
-    net::ShotRequest request;
+    protocol::ShotRequest request;
     request.cue.speed = 1.0;
     request.cue.speed_is_ball = true;
     request.option = option;
@@ -175,6 +177,47 @@ class WindowApp {
   }
 
   // ---- One frame ------------------------------------------------------------------------------
+  /// The cue strokes through after a shot is sent (a re-rack's harmless stroke shows none).
+  void startStroke(const protocol::ShotRequest& shot, double now) {
+    if (shot.cue.speed_is_ball) return;
+    app::AimState aim;
+    aim.yaw = shot.cue.yaw;
+    aim.tip_side = shot.cue.tip_side;
+    aim.tip_height = shot.cue.tip_height;
+    aim.elevation = shot.cue.elevation;
+    const protocol::CommandLimits limits = limitsOf(view_);
+    aim.power = (shot.cue.speed - app::kMinCueSpeed) / (limits.max_speed - app::kMinCueSpeed);
+    Eigen::Vector3d ball = controls_.cueBall();
+    if (shot.cue_ball_at) ball = {shot.cue_ball_at->x(), shot.cue_ball_at->y(), view_.radius()};
+    stroke_ = Stroke{cueAimOf(aim, ball), now};
+  }
+
+  /// The stroke's cue at `now`, while it lasts.
+  void showStroke(double now) {
+    if (!stroke_) return;
+    const float power =
+        render::strokePower(stroke_->aim.power, static_cast<float>(now - stroke_->start));
+    if (std::isnan(power)) {
+      stroke_.reset();
+      return;
+    }
+    render::CueAim aim = stroke_->aim;
+    aim.power = power;
+    renderer_.setCue(aim);
+  }
+
+  /// The 3-D cue at the aim, the ghost ball at the first contact (with the aim line), and the
+  /// aiming view kept above the cue's drawn line.
+  void showCue(const app::AimPrediction& prediction, bool ghost) {
+    renderer_.setCue(cueAimOf(controls_.aim(), controls_.cueBall()));
+    const Eigen::Vector2d c = prediction.contact;
+    renderer_.setGhost(ghost ? std::optional<glm::vec3>(glm::vec3(c.x(), c.y(), view_.radius()))
+                             : std::nullopt);
+    if (const auto& cue = renderer_.cue()) {
+      controls_.camera().keepAimAbove(cue->drawn_elevation + app::kEyeOverCue);
+    }
+  }
+
   void drawScene(double now) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
@@ -186,6 +229,10 @@ class WindowApp {
     auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
     placement_problem_ = std::move(overlay.placement_problem);
     renderer_.setOverlay(overlayLines(overlay.lines));
+    renderer_.setCue(std::nullopt);
+    renderer_.setGhost(std::nullopt);
+    if (overlay.aim) showCue(*overlay.aim, controls_.toggles().aim_line);
+    if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
     const app::Toggles& t = controls_.toggles();
     renderer_.setOptions({t.wireframe, t.textures, t.lighting});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -252,7 +299,10 @@ class WindowApp {
     followTurn();
     applyScript();
     controls_.advance(dt);
-    if (auto shot = controls_.takeShot()) send(std::move(*shot));
+    if (auto shot = controls_.takeShot()) {
+      startStroke(*shot, now);
+      send(std::move(*shot));
+    }
     drawScene(now);
     sound_.update(session_.playTime());
     drawInterface();
@@ -262,6 +312,12 @@ class WindowApp {
   bot::TableView view_;
   GlfwWindow window_;
   render::Renderer renderer_;
+  /// The cue going through after a shot: its aim at release and when.
+  struct Stroke {
+    render::CueAim aim;
+    double start = 0.0;
+  };
+  std::optional<Stroke> stroke_;
   app::Controls controls_;
   app::MatchSession session_;
   SoundListener sound_;

@@ -16,14 +16,14 @@ void printLine(const nlohmann::json& line) {
 }  // namespace
 
 void printShotLine(const std::string& match, int seat, std::uint32_t seq,
-                   const net::ShotRequest& request) {
+                   const protocol::ShotRequest& request) {
   nlohmann::json line = scenario::cueShotJson(request.cue);
   line["event"] = "shot";
   line["match"] = match;
   line["seat"] = seat;
   line["seq"] = seq;
   line["safety"] = request.safety;
-  line["option"] = net::toString(request.option);
+  line["option"] = protocol::toString(request.option);
   if (request.called_ball) {
     line["called_ball"] = *request.called_ball;
     line["called_pocket"] = request.called_pocket;

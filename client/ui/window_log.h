@@ -11,7 +11,7 @@ namespace pool::ui {
 
 /// Prints {"event": "shot", ...}: the shot `request` sent for `seat` of `match` as number `seq`.
 void printShotLine(const std::string& match, int seat, std::uint32_t seq,
-                   const net::ShotRequest& request);
+                   const protocol::ShotRequest& request);
 
 /// Prints {"event": "note", "text", "problem"}.
 void printNoteLine(const app::SessionNote& note);

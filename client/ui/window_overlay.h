@@ -1,6 +1,7 @@
 // The window's lines over the table: aim line, cue and motion vectors, and the cue ball in hand.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ namespace pool::ui {
 struct WindowOverlay {
   std::vector<app::OverlaySegment> lines;
   std::string placement_problem;
+  std::optional<app::AimPrediction> aim;  ///< while aiming: the predicted first contact
 };
 
 /// `balls` with the cue ball where the player holds it, at rest, while it is in hand.

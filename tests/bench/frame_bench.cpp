@@ -1,6 +1,8 @@
 // Frame time of the client's 3-D scene at 1280×720 on the offscreen context (Mesa llvmpipe under
 // Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (sixteen
-// balls rolling and turning, two pocketed, overlay lines, the window's Dear ImGui HUD). Prints
+// balls rolling and turning with their shadows, two pocketed, the lamps, the 3-D cue and the
+// ghost ball, overlay lines, the window's Dear ImGui HUD), from the overview and from the aiming
+// view behind the cue ball. Prints
 // median and p99 per frame and the ratio to the baseline; wall time, since llvmpipe renders on its
 // own threads, and the CPU time of the whole process (all threads) per frame, which a busy machine
 // does not inflate.
@@ -179,10 +181,20 @@ void BM_TableOnly(benchmark::State& state) {
   timeFrames(state, "table only", [&] { renderer.draw(bench()->camera, kWidth, kHeight); });
 }
 
-/// The full scene with the given switches (the client's P, T, L keys).
+/// The aiming view: behind the rack's cue ball on the head spot, looking at the apex ball (as the
+/// window's aiming camera: 0.75 m back, a little over 12° up).
+pool::render::Camera aimingCamera() {
+  const auto& cue = bench()->scene.balls.front().pos;
+  const glm::vec3 c(cue.x(), cue.y(), cue.z());
+  return {c + glm::vec3(-0.73f, 0.0f, 0.165f), c, 40.0f};
+}
+
+/// The full scene with the given switches (the client's P, T, L keys), from the overview or the
+/// aiming view.
 void fullScene(benchmark::State& state, const std::string& name,
-               const pool::render::RenderOptions& options) {
+               const pool::render::RenderOptions& options, bool aiming = false) {
   if (!bench()) return state.SkipWithError("no OpenGL context");
+  const pool::render::Camera camera = aiming ? aimingCamera() : bench()->camera;
   pool::render::Renderer renderer(bench()->scene);
   renderer.setOptions(options);
   Hud hud;
@@ -192,16 +204,24 @@ void fullScene(benchmark::State& state, const std::string& name,
     renderer.setBalls(movingBalls(bench()->scene, t));
     const auto& cue = bench()->scene.balls.front().pos;
     const glm::vec3 c(cue.x(), cue.y(), cue.z());
+    // The cue aimed at the apex, drawn back as the power charges; the ghost ball at the apex.
+    const float power = 0.5f + 0.5f * static_cast<float>(std::sin(t));
+    renderer.setCue(pool::render::CueAim{c, 0.0f, 0.1f, -0.2f, 0.05f, power});
+    renderer.setGhost(glm::vec3(0.58f, 0.0f, c.z));
     renderer.setOverlay({{c, c + glm::vec3(1.2f, 0.1f, 0.0f), {1.0f, 1.0f, 1.0f}},
                          {c - glm::vec3(0.9f, 0.05f, -0.05f), c, {0.8f, 0.6f, 0.3f}},
                          {c, c + glm::vec3(0.0f, 0.3f, 0.0f), {1.0f, 0.2f, 0.2f}}});
-    renderer.draw(bench()->camera, kWidth, kHeight);
+    renderer.draw(camera, kWidth, kHeight);
     hud.draw();
   });
 }
 
 void BM_FullScene(benchmark::State& state) {
   fullScene(state, "full scene + HUD (16 balls moving, overlay)", {});
+}
+
+void BM_FullSceneAimingView(benchmark::State& state) {
+  fullScene(state, "full scene + HUD, aiming view", {}, true);
 }
 
 void BM_FullSceneNoTextures(benchmark::State& state) {
@@ -215,6 +235,7 @@ void BM_FullSceneNoLighting(benchmark::State& state) {
 BENCHMARK(BM_BaselineClearOnly)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TableOnly)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullScene)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneAimingView)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoTextures)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoLighting)->UseManualTime()->Unit(benchmark::kMillisecond);
 

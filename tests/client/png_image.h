@@ -38,9 +38,9 @@ inline Image loadPng(const std::string& path) {
   return image;
 }
 
-/// True when `p` is a lit shade of `colour`: same hue and saturation (direction in RGB), bright
-/// enough.
-inline bool shadeOf(const Rgb& p, const Rgb& colour) {
+/// True when `p` is a lit shade of `colour`: same hue and saturation (direction in RGB), its
+/// brightest channel at least `min_bright`.
+inline bool shadeOf(const Rgb& p, const Rgb& colour, double min_bright = 40.0) {
   double dot = 0, pp = 0, cc = 0;
   for (int i = 0; i < 3; ++i) {
     dot += p[i] * colour[i];
@@ -48,7 +48,7 @@ inline bool shadeOf(const Rgb& p, const Rgb& colour) {
     cc += colour[i] * colour[i];
   }
   const double brightest = std::max({p[0], p[1], p[2]});
-  return brightest >= 40.0 && dot / std::sqrt(pp * cc) > 0.997;
+  return brightest >= min_bright && dot / std::sqrt(pp * cc) > 0.997;
 }
 
 inline bool isWhite(const Rgb& p) {
@@ -106,6 +106,20 @@ inline bool ballColour(int id, const Rgb& p) {
   if (id == 0) return isWhite(p);
   if (id == 8) return isBlack(p);
   return shadeOf(p, kBallColours[static_cast<std::size_t>((id - 1) % 8)]);
+}
+
+/// A light neutral grey: white in dim light.
+inline bool isLightNeutral(const Rgb& p) {
+  return std::min({p[0], p[1], p[2]}) > 70.0 &&
+         std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) < 25.0;
+}
+
+/// As ballColour, for a ball that may lie outside the lamps' pools of light, in the hall's dim
+/// light: the cue ball a light neutral grey, the coloured balls their hue from a lower brightness.
+inline bool ballColourInAnyLight(int id, const Rgb& p) {
+  if (id == 0) return isLightNeutral(p);
+  if (id == 8) return isBlack(p);
+  return shadeOf(p, kBallColours[static_cast<std::size_t>((id - 1) % 8)], 24.0);
 }
 
 }  // namespace pool::client::test

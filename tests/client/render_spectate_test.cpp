@@ -87,10 +87,11 @@ TEST_F(RenderSpectateTest, ASpectatorsScreenshotDrawsEachBallWhereTheServerPutsI
         const glm::vec3 e = render::projectToPixels(camera, image.width, image.height, p + side);
         const double radius = glm::length(glm::vec2(e) - glm::vec2(c));
         pocketed += b.at("pocketed").get<bool>() ? 1 : 0;
-        // The whole disc: a stripe seen end-on shows its band only near the rim.
-        EXPECT_GE(
-            countInDisc(image, c.x, c.y, radius, [&](const Rgb& px) { return ballColour(id, px); }),
-            3)
+        // The whole disc: a stripe seen end-on shows its band only near the rim. Balls may lie
+        // between the lamps' pools of light, in the hall's dimmer light.
+        EXPECT_GE(countInDisc(image, c.x, c.y, radius,
+                              [&](const Rgb& px) { return ballColourInAnyLight(id, px); }),
+                  3)
             << "ball " << id << (b.at("pocketed").get<bool>() ? " (in the trough)" : "") << " at "
             << c.x << ", " << c.y;
       }

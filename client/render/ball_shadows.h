@@ -1,0 +1,32 @@
+// The balls' shadows on the felt: for each ball and lamp, the ellipse where the ball hides the
+// lamp's light (the sphere's shadow cone cut by the slate), darker the more of the felt's light
+// that lamp gives; and a soft contact shadow right under each ball. Pure (no GL).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+namespace pool::render {
+
+/// A soft dark ellipse on the slate (table frame, m).
+struct ShadowBlob {
+  glm::vec2 centre{0.0f};
+  glm::vec2 along{1.0f, 0.0f};  ///< unit: the long axis, away from the lamp
+  float half_along = 0.0f;      ///< m
+  float half_across = 0.0f;     ///< m
+  float darkness = 0.0f;        ///< share of the felt's light removed at the centre, 0–1
+  bool soft_ends = true;        ///< false: a piece of a strip, soft only across (the cue's shadow)
+};
+
+/// The ellipse where a ball of radius `radius` centred at `ball` hides a point light at `lamp`
+/// from the slate (z = 0); darkness left 0.
+ShadowBlob castShadow(glm::vec3 lamp, glm::vec3 ball, float radius);
+
+/// Every shadow of the balls at `balls` (centres on the slate) under `lamps`: one per ball and
+/// lamp that lights the felt there, and one contact shadow per ball. `ambient`: the felt's light
+/// from elsewhere (share of the albedo).
+std::vector<ShadowBlob> ballShadows(std::span<const glm::vec3> lamps,
+                                    std::span<const glm::vec3> balls, float radius, float ambient);
+
+}  // namespace pool::render

@@ -1,0 +1,206 @@
+// The table's light and sights in real frames: a pool of light on the felt under each lamp with
+// darker felt between, the balls' shadows falling away from the nearest lamp, and the eighteen
+// diamonds on the rails. Positions come from the table spec and the lamps' placement; the
+// sidecar's camera projects them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "client/render/lamps.h"
+#include "client/render/screenshot.h"
+#include "png_image.h"
+#include "reported_camera.h"
+#include "screenshot_fixture.h"
+#include "table/table_spec.h"
+
+namespace pool::client::test {
+namespace {
+
+class LightTest : public ScreenshotTest {
+ protected:
+  void TearDown() override {
+    if (!std::getenv("POOL_KEEP_TEST_FILES")) std::remove(info().c_str());
+    ScreenshotTest::TearDown();
+  }
+  std::string info() const { return png_ + ".json"; }
+  Image view(const std::string& flags) {
+    const Image image = screenshot("--screenshot-info " + info() + " " + flags);
+    camera_ = reportedCamera(readInfo(info()));
+    return image;
+  }
+  ReportedCamera camera_;
+};
+
+table::TableSpec nineFoot() {
+  auto spec = table::loadTableSpec("wpa-9ft");
+  EXPECT_TRUE(static_cast<bool>(spec));
+  return *spec;
+}
+
+/// The lamps hang over the table's long axis, a quarter of the length from each end.
+std::array<double, 2> lampXs(const table::TableSpec& spec) {
+  return {-spec.length / 4, spec.length / 4};
+}
+
+/// Mean luminance of the 5 × 5 pixels around table point `p` on the felt.
+double feltLuminance(const Image& image, const ReportedCamera& cam, glm::vec3 p) {
+  const glm::vec3 px = cam.pixel(p);
+  double sum = 0;
+  for (int dy = -2; dy <= 2; ++dy) {
+    for (int dx = -2; dx <= 2; ++dx) sum += luminance(image.at(int(px.x) + dx, int(px.y) + dy));
+  }
+  return sum / 25.0;
+}
+
+/// Along the line y = `y` on the felt: a maximum within 0.12 m of under each lamp, clearly above
+/// the felt midway between them and toward the ends.
+void expectPoolUnderEachLamp(const Image& image, const ReportedCamera& cam,
+                             const table::TableSpec& spec, double y) {
+  const auto lamps = lampXs(spec);
+  const double half = spec.length / 2 - 0.12;
+  std::vector<std::pair<double, double>> profile;  // x, luminance
+  for (double x = -half; x <= half; x += 0.02) {
+    const glm::vec3 px = cam.pixel(glm::vec3(float(x), float(y), 0.0f));
+    ASSERT_TRUE(cam.inside(px, 3.0f)) << "x " << x;
+    profile.emplace_back(x, feltLuminance(image, cam, glm::vec3(float(x), float(y), 0.0f)));
+  }
+  const auto at = [&](double x) {
+    double best = 1e9, lum = 0;
+    for (const auto& [px, l] : profile) {
+      if (std::abs(px - x) < best) best = std::abs(px - x), lum = l;
+    }
+    return lum;
+  };
+  const double middle = at(0.0);
+  for (const double lamp : lamps) {
+    // The brightest felt on this lamp's half of the table.
+    double peak_x = 0, peak = -1;
+    for (const auto& [x, l] : profile) {
+      if (x * lamp > 0 && l > peak) peak = l, peak_x = x;
+    }
+    EXPECT_NEAR(peak_x, lamp, 0.12) << "the pool's brightest felt lies under the lamp";
+    EXPECT_GT(peak, middle * 1.2) << "darker felt between the lamps (y " << y << ")";
+    EXPECT_GT(peak, at(lamp > 0 ? half : -half) * 1.2) << "darker felt toward the end";
+  }
+}
+
+TEST_F(LightTest, FeltIsBrightestUnderEachLampSeenFromAbove) {
+  const Image image = view("--scene top");
+  ASSERT_EQ(image.width, camera_.width);
+  // Clear of the spread balls and their shadows.
+  expectPoolUnderEachLamp(image, camera_, nineFoot(), -0.15);
+  expectPoolUnderEachLamp(image, camera_, nineFoot(), 0.5);
+}
+
+TEST_F(LightTest, FeltIsBrightestUnderEachLampInTheOverview) {
+  const Image image = view("--scene rack");
+  ASSERT_EQ(image.width, camera_.width);
+  expectPoolUnderEachLamp(image, camera_, nineFoot(), 0.35);  // beside the rack
+}
+
+TEST_F(LightTest, BallShadowsFallAwayFromTheNearestLamp) {
+  const Image image = view("--scene top");
+  ASSERT_EQ(image.width, camera_.width);
+  auto scene = render::spreadScene();
+  ASSERT_TRUE(static_cast<bool>(scene));
+  const auto spec = nineFoot();
+  const double r = spec.params.ball_radius;
+  int checked = 0;
+  for (const auto& ball : scene->balls) {
+    const glm::dvec2 at(ball.pos.x(), ball.pos.y());
+    const auto lamps = lampXs(spec);
+    const double d0 = glm::length(at - glm::dvec2(lamps[0], 0.0));
+    const double d1 = glm::length(at - glm::dvec2(lamps[1], 0.0));
+    if (std::abs(d0 - d1) < 0.2) continue;  // about as near to both: shadows both ways
+    const glm::dvec2 lamp(d0 < d1 ? lamps[0] : lamps[1], 0.0);
+    const glm::dvec2 away = glm::normalize(at - lamp);
+    // Just outside the ball's outline as the camera sees it, the same distance out on the far and
+    // the near side: the first distance from 1.3 R where the eye's ray to the felt misses the ball.
+    const glm::dvec3 centre(ball.pos.x(), ball.pos.y(), ball.pos.z());
+    const auto seen = [&](double s) {
+      for (const double sign : {1.0, -1.0}) {
+        const glm::dvec3 q(at + sign * s * away, 0.0);
+        const glm::dvec3 ray = glm::normalize(q - glm::dvec3(camera_.eye));
+        const glm::dvec3 to_c = centre - glm::dvec3(camera_.eye);
+        const double miss = glm::length(to_c - ray * glm::dot(to_c, ray));
+        if (miss < 1.15 * r) return false;
+      }
+      return true;
+    };
+    double s = 1.3 * r;
+    while (!seen(s)) s += 0.05 * r;
+    const auto felt = [&](double sign) {
+      const glm::dvec2 p = at + sign * s * away;
+      return feltLuminance(image, camera_, glm::vec3(float(p.x), float(p.y), 0.0f));
+    };
+    const double far = felt(1.0), near = felt(-1.0);
+    EXPECT_LT(far, near * 0.85) << "ball " << ball.id << " at " << s / r << " R: far side " << far
+                                << ", near " << near;
+    ++checked;
+  }
+  EXPECT_GE(checked, 3);
+}
+
+/// Mother-of-pearl: bright and nearly grey.
+bool isPearl(const Rgb& p) {
+  return std::min({p[0], p[1], p[2]}) > 140 &&
+         std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) < 70;
+}
+
+/// The 18 diamonds on the rail tops: six on each long rail at the eighths of the length (not
+/// 0, 4, 8: the pockets), three on each end rail at the quarters of the width, across the middle
+/// of the wooden rail, which begins cushion_width behind the nose line.
+std::vector<glm::vec3> diamonds(const table::TableSpec& spec) {
+  const double top = spec.params.cushion_height + 0.005;  // the rail top over the nose
+  const double mid = spec.cushion_width + spec.rail_width / 2;
+  std::vector<glm::vec3> out;
+  for (const double side : {-1.0, 1.0}) {
+    for (const int k : {1, 2, 3, 5, 6, 7}) {
+      out.emplace_back(float(-spec.length / 2 + spec.length * k / 8),
+                       float(side * (spec.width / 2 + mid)), float(top));
+    }
+  }
+  for (const double end : {-1.0, 1.0}) {
+    for (const int k : {1, 2, 3}) {
+      out.emplace_back(float(end * (spec.length / 2 + mid)),
+                       float(-spec.width / 2 + spec.width * k / 4), float(top));
+    }
+  }
+  return out;
+}
+
+void expectDiamonds(const Image& image, const ReportedCamera& cam, const table::TableSpec& spec) {
+  const auto all = diamonds(spec);
+  ASSERT_EQ(all.size(), 18u);
+  int found = 0;
+  for (const glm::vec3& d : all) {
+    const glm::vec3 px = cam.pixel(d);
+    ASSERT_TRUE(cam.inside(px));
+    if (countInDisc(image, px.x, px.y, 2.5, isPearl) >= 2) ++found;
+    // A sixteenth of the length (or width) along the rail: bare wood.
+    const bool end_rail = std::abs(d.x) > spec.length / 2;
+    const glm::vec3 step = end_rail ? glm::vec3(0, float(spec.width / 8), 0)
+                                    : glm::vec3(float(spec.length / 16), 0, 0);
+    const glm::vec3 between = cam.pixel(d + step);
+    EXPECT_EQ(countInDisc(image, between.x, between.y, 2.5, isPearl), 0)
+        << "wood between the diamonds at (" << d.x << ", " << d.y << ")";
+  }
+  EXPECT_EQ(found, 18);
+}
+
+TEST_F(LightTest, EighteenDiamondsOnTheRailsSeenFromAbove) {
+  const Image image = view("--scene top");
+  ASSERT_EQ(image.width, camera_.width);
+  expectDiamonds(image, camera_, nineFoot());
+}
+
+TEST_F(LightTest, EighteenDiamondsOnTheRailsInTheOverview) {
+  const Image image = view("--scene rack");
+  ASSERT_EQ(image.width, camera_.width);
+  expectDiamonds(image, camera_, nineFoot());
+}
+
+}  // namespace
+}  // namespace pool::client::test
