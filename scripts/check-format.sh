@@ -5,6 +5,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 mapfile -t files < <(git ls-files '*.c' '*.cpp' '*.h' '*.hpp')
 bad=()
 for f in "${files[@]}"; do
+  [[ -f $f ]] || continue  # deleted in the work tree, not yet committed
   clang-format --dry-run --Werror "$f" >/dev/null 2>&1 || bad+=("$f")
 done
 if ((${#bad[@]})); then

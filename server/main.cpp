@@ -10,8 +10,8 @@
 #include "match/table_kit.h"
 #include "match/token_source.h"
 #include "net/dds_error.h"
-#include "net/messages.h"
-#include "server_bus.h"
+#include "net/server_transport.h"
+#include "protocol/protocol_version.h"
 #include "server_config.h"
 #include "server_loop.h"
 #include "store/match_store.h"
@@ -75,8 +75,8 @@ void serve(const pool::server::ServerConfig& config,
   MatchRegistry registry(options, std::move(kit));
   const int resumed = resume(registry, store);
   for (int i = 0; i < config.tables; ++i) registry.open();
-  ServerBus bus(config.domain);
-  ServerLoop loop(config, registry, bus, &store);
+  pool::net::ServerTransport transport(config.domain);
+  ServerLoop loop(config, registry, transport, &store);
   spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}", registry.serverId(),
                config.domain, config.tables, resumed, config.snapshot_hz,
                config.fast ? ", unpaced" : "", db_path);
@@ -108,8 +108,8 @@ int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStor
   TokenSource tokens(randomSeed());
   MatchReplay replay(*stored, std::move(commands), *target, {tokens.token(), tokens.token()},
                      config.fast ? 0.0 : 1.0);
-  ServerBus bus(config.domain);
-  ServerLoop loop(config, registry, bus);
+  pool::net::ServerTransport transport(config.domain);
+  ServerLoop loop(config, registry, transport);
   loop.replay(&replay);
   spdlog::info("server {} on domain {}: replaying {} ({} commands) as {}", registry.serverId(),
                config.domain, stored->id, count, target->id());

@@ -5,26 +5,15 @@
 
 #include <algorithm>
 
-#include "net/wire_fields.h"
-#include "wire_messages.h"
-#include "wire_requests.h"
+#include "match_publish.h"
 
 namespace pool::server {
 
-namespace {
-
-template <class T>
-void publish(const net::Writer<T>& writer, const T& sample, const char* what) {
-  if (auto status = writer.write(sample); !status) spdlog::warn("{}: {}", what, status.error);
-}
-
-}  // namespace
-
-ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus,
-                       store::MatchStore* store)
+ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry,
+                       net::ServerTransport& transport, store::MatchStore* store)
     : config_(config),
       registry_(registry),
-      bus_(bus),
+      transport_(transport),
       limits_(commandLimits(registry.table().spec)),
       store_(store),
       epoch_(std::chrono::steady_clock::now()) {}
@@ -37,7 +26,7 @@ void ServerLoop::run(const std::atomic<bool>& stop) {
   storeChanges({});
   publishChanges();
   while (!stop.load()) {
-    bus_.waitset.wait(waitTimeout(now()));
+    transport_.wait(waitTimeout(now()));
     step(now());
   }
 }
@@ -62,55 +51,62 @@ std::chrono::nanoseconds ServerLoop::waitTimeout(double now) const {
       kMaxWait, std::chrono::duration_cast<std::chrono::nanoseconds>(until));
 }
 
+void ServerLoop::warnIfFailed(const std::string& error, const char* what) const {
+  if (!error.empty()) spdlog::warn("{}: {}", what, error);
+}
+
 void ServerLoop::readJoins(double now) {
-  for (auto& sample : bus_.join_requests.takeWithNotices()) {
-    const pool_JoinRequest& r = *sample;
-    if (!sample.meta().valid) {
-      // The client's JoinRequest writer is gone (lease expired or deleted): it vanished.
-      if (sample.meta().instance != net::InstanceState::Alive) {
-        const std::string client(net::textOf(r.client));
-        spdlog::info("client {} is gone ({})", client, net::toString(sample.meta().instance));
-        registry_.clientGone(client, now);
-        pool_JoinReply key{};
-        net::setText(key.client, client);
-        bus_.join_replies.unregister(key);  // its last reply need not be kept any more
-      }
-      continue;
+  for (auto& event : transport_.takeJoins()) {
+    if (const auto* gone = std::get_if<net::ClientGone>(&event)) {
+      spdlog::info("client {} is gone ({})", gone->client, gone->why);
+      registry_.clientGone(gone->client, now);
+      transport_.forgetClient(gone->client);  // its last reply need not be kept any more
+    } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
+      spdlog::warn("unreadable join request: {}", bad->reason);
+      // The action itself may be what could not be read, so the reply does not echo it.
+      JoinCommand echo;
+      echo.client = bad->client;
+      echo.request = bad->request;
+      echo.match = bad->match;
+      warnIfFailed(
+          transport_.publish(replyTo(echo, JoinAnswer::refuse(JoinOutcome::NotAllowed, bad->reason),
+                                     registry_.serverId())),
+          "join reply");
+    } else {
+      answerJoin(std::get<JoinCommand>(event));
     }
-    auto command = joinCommand(r);
-    if (!command) {
-      spdlog::warn("unreadable join request: {}", command.error());
-      publish(bus_.join_replies, unreadableJoinReply(r, command.error(), registry_.serverId()),
-              "join reply");
-      continue;
-    }
-    const JoinAnswer answer = registry_.join(*command);
-    spdlog::info("join {} {} by {} ({}): {} {}", toString(command->action), command->match,
-                 command->client, command->name, toString(answer.outcome), answer.reason);
-    // A seat (and its token) is stored before the player hears of it: a crash right after the
-    // reply cannot take the seat away again.
-    storeChanges({});
-    publish(bus_.join_replies, joinReply(*command, answer, registry_.serverId()), "join reply");
   }
 }
 
+void ServerLoop::answerJoin(const JoinCommand& command) {
+  const JoinAnswer answer = registry_.join(command);
+  spdlog::info("join {} {} by {} ({}): {} {}", toString(command.action), command.match,
+               command.client, command.name, toString(answer.outcome), answer.reason);
+  // A seat (and its token) is stored before the player hears of it: a crash right after the
+  // reply cannot take the seat away again.
+  storeChanges({});
+  warnIfFailed(transport_.publish(replyTo(command, answer, registry_.serverId())), "join reply");
+}
+
 void ServerLoop::readCommands(double now) {
-  for (auto& sample : bus_.commands.take()) {
-    ReadCommand read = readCommand(*sample, limits_);
-    const std::string match(net::textOf(sample->match));
-    if (!read.refusal.accepted()) {
-      refused(match, read.refusal, now);
+  for (auto& in : transport_.takeCommands(limits_)) {
+    if (!in.request) {
+      CommandAnswer refusal;
+      refusal.seat = in.seat;
+      refusal.seq = in.seq;
+      refusal.rejection = {in.bad_signature ? Reject::BadSignature : Reject::Malformed, in.problem};
+      refused(in.match, refusal, now);
       continue;
     }
-    const CommandAnswer answer = registry_.shoot(read.request, now);
+    const CommandAnswer answer = registry_.shoot(*in.request, now);
     if (!answer.accepted()) {
-      refused(match, answer, now);
+      refused(in.match, answer, now);
       continue;
     }
-    storeShot(answer, match);
-    spdlog::info("command {} seat {} seq {}: accepted, shot {}", match, answer.seat, answer.seq,
+    storeShot(answer, in.match);
+    spdlog::info("command {} seat {} seq {}: accepted, shot {}", in.match, answer.seat, answer.seq,
                  answer.shot_number);
-    publishResult(match, answer);
+    publishResult(in.match, answer);
   }
   if (auto summary = rejections_.summary(now)) spdlog::info("{}", *summary);
 }
@@ -123,13 +119,11 @@ void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, 
 }
 
 void ServerLoop::publishResult(const std::string& match, const CommandAnswer& answer) {
-  const auto result = answer.done ? finalResult(match, *answer.done) : commandResult(match, answer);
-  publish(bus_.results, *result, "shot result");
+  const auto result = answer.done ? finalReport(match, *answer.done) : commandReport(match, answer);
   // A result keyed by a match or seat that does not exist is not kept for late readers: the
   // writer would otherwise hold one instance per made-up key for good.
-  if (!registry_.find(match) || (answer.seat != 0 && answer.seat != 1)) {
-    bus_.results.unregister(*result);
-  }
+  const bool keep = registry_.find(match) && (answer.seat == 0 || answer.seat == 1);
+  warnIfFailed(transport_.publish(result, keep), "shot result");
 }
 
 void ServerLoop::stepReplay(double now) {
@@ -182,12 +176,12 @@ void ServerLoop::publishFrames(double now) {
     const DueFrames due = m->takeDueFrames(now);
     for (std::size_t i = 0; i < due.frames.size(); ++i) {
       const auto frame = static_cast<std::uint32_t>(due.first + i);
-      publish(bus_.snapshots, *snapshot(m->id(), frame, due.shot_number, due.frames[i]),
-              "snapshot");
+      warnIfFailed(transport_.publish(frameOf(m->id(), frame, due.shot_number, due.frames[i])),
+                   "snapshot");
     }
     if (auto report = m->finishShot()) {
       spdlog::info("shot {} of {} done: {}", report->shot_number, m->id(), m->lastVerdict());
-      publish(bus_.results, *finalResult(m->id(), *report), "shot result");
+      warnIfFailed(transport_.publish(finalReport(m->id(), *report)), "shot result");
     }
   }
 }
@@ -197,25 +191,14 @@ void ServerLoop::publishChanges() {
     auto& published = published_[m->id()];
     if (published == m->revision()) continue;
     published = m->revision();
-    publish(bus_.match_info, matchInfo(*m, registry_.serverId()), "match info");
-    publish(bus_.states, *matchState(*m), "match state");
+    warnIfFailed(transport_.publish(lobbyEntryOf(*m, registry_.serverId())), "match info");
+    warnIfFailed(transport_.publish(matchViewOf(*m)), "match state");
   }
 }
 
 void ServerLoop::dispose(const std::string& match) {
   spdlog::info("match {} closed", match);
-  pool_MatchInfo info{};
-  net::setText(info.match, match);
-  bus_.match_info.dispose(info);
-  net::Sample<pool_MatchState> state;
-  net::setText(state->match, match);
-  bus_.states.dispose(*state);
-  for (const std::int16_t seat : {std::int16_t{0}, std::int16_t{1}}) {
-    net::Sample<pool_ShotResult> result;
-    net::setText(result->match, match);
-    result->seat = seat;
-    bus_.results.dispose(*result);
-  }
+  transport_.dispose(match);
   published_.erase(match);
 }
 

@@ -10,15 +10,15 @@
 
 #include "match/match_registry.h"
 #include "match/match_replay.h"
-#include "net/shot_command_check.h"
+#include "net/server_transport.h"
+#include "protocol/command_limits.h"
 #include "rejection_tally.h"
-#include "server_bus.h"
 #include "server_config.h"
 #include "store/match_store.h"
 
 namespace pool::server {
 
-/// Serves every match of `registry` over `bus` from one thread. Each pass reads the monotonic
+/// Serves every match of `registry` over `transport` from one thread. Each pass reads the monotonic
 /// clock once and hands that `now` to the match logic; nothing blocks on one match (frames in
 /// flight are published as their time comes, while other matches go on).
 ///
@@ -30,7 +30,7 @@ class ServerLoop {
  public:
   /// With a `store`, every accepted command is committed to it before its result is published,
   /// and every visible change of a match is saved before it is published.
-  ServerLoop(const ServerConfig& config, MatchRegistry& registry, ServerBus& bus,
+  ServerLoop(const ServerConfig& config, MatchRegistry& registry, net::ServerTransport& transport,
              store::MatchStore* store = nullptr);
 
   /// Plays `replay` on this loop: its commands are answered and published like players' ones.
@@ -54,6 +54,8 @@ class ServerLoop {
 
  private:
   void readJoins(double now);
+  void answerJoin(const JoinCommand& command);
+  void warnIfFailed(const std::string& error, const char* what) const;
   void readCommands(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
@@ -67,7 +69,7 @@ class ServerLoop {
 
   ServerConfig config_;
   MatchRegistry& registry_;
-  ServerBus& bus_;
+  net::ServerTransport& transport_;
   protocol::CommandLimits limits_;
   store::MatchStore* store_;
   MatchReplay* replay_ = nullptr;

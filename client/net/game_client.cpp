@@ -4,10 +4,6 @@
 #include <cstdio>
 #include <random>
 
-#include "client/net/client_endpoints.h"
-#include "client/net/wire_read.h"
-#include "net/convert.h"
-#include "net/wire_fields.h"
 #include "protocol/command_signature.h"
 #include "protocol/protocol_version.h"
 
@@ -24,7 +20,7 @@ std::string randomClientId() {
 GameClient::GameClient(ClientOptions options, std::optional<protocol::KeyPair> key)
     : options_(std::move(options)), key_(key ? *key : protocol::generateKeyPair()) {
   if (options_.client_id.empty()) options_.client_id = randomClientId();
-  endpoints_ = std::make_unique<ClientEndpoints>(options_.domain);
+  transport_ = std::make_unique<net::ClientTransport>(options_.domain);
 }
 
 GameClient::~GameClient() = default;
@@ -56,9 +52,7 @@ void GameClient::send(protocol::SeatRequest& r) {
     r.seq = ++last_seq_;
     protocol::signSeatRequest(r, key());
   }
-  if (auto status = endpoints_->join_requests.write(*toWire(r)); !status) {
-    last_problem_ = "join request: " + status.error;
-  }
+  if (auto error = transport_->send(r); !error.empty()) last_problem_ = "join request: " + error;
 }
 
 std::uint32_t GameClient::requestSeat(const std::string& match, int seat) {
@@ -94,9 +88,8 @@ Result<std::uint32_t> GameClient::shoot(protocol::ShotRequest request) {
   request.seat_token = seat_->token;
   request.seq = ++last_seq_;
   protocol::signCommand(request, key());
-  const auto sample = net::toWire(request);
-  if (auto status = endpoints_->commands.write(*sample); !status) {
-    return Result<std::uint32_t>::fail("shot command: " + status.error);
+  if (auto error = transport_->send(request); !error.empty()) {
+    return Result<std::uint32_t>::fail("shot command: " + error);
   }
   return Result<std::uint32_t>::ok(request.seq);
 }
@@ -106,7 +99,7 @@ void GameClient::noteSequence(std::uint32_t seq) {
 }
 
 void GameClient::wait(std::chrono::nanoseconds timeout) const {
-  endpoints_->wait(timeout);
+  transport_->wait(timeout);
 }
 
 std::vector<ClientEvent> GameClient::poll() {
@@ -125,21 +118,19 @@ const MatchView* GameClient::state(const std::string& match) const {
 }
 
 void GameClient::pollLobby(std::vector<ClientEvent>& out) {
-  for (auto& sample : endpoints_->match_info.takeWithNotices()) {
-    if (!sample.meta().valid) {
-      if (sample.meta().instance == net::InstanceState::Alive) continue;
-      const std::string match(net::textOf(sample->match));
-      lobby_.remove(match);
-      out.emplace_back(MatchGone{match, sample.meta().instance == net::InstanceState::Disposed});
+  for (auto& event : transport_->takeLobby()) {
+    if (!event) {
+      problem(event.error());
       continue;
     }
-    auto entry = fromWire(*sample);
-    if (!entry) {
-      problem(entry.error());
+    if (const auto* gone = std::get_if<MatchGone>(&*event)) {
+      lobby_.remove(gone->match);
+      out.emplace_back(*gone);
       continue;
     }
-    lobby_.update(*entry);
-    out.emplace_back(std::move(*entry));
+    const auto& entry = std::get<LobbyEntry>(*event);
+    lobby_.update(entry);
+    out.emplace_back(entry);
   }
 }
 
@@ -168,13 +159,12 @@ bool GameClient::accept(const JoinAnswer& answer) {
 }
 
 void GameClient::pollReplies(std::vector<ClientEvent>& out) {
-  for (auto& sample : endpoints_->join_replies.take()) {
-    if (net::textOf(sample->client) != options_.client_id) continue;
-    auto answer = fromWire(*sample);
+  for (auto& answer : transport_->takeReplies()) {
     if (!answer) {
       problem(answer.error());
       continue;
     }
+    if (answer->client != options_.client_id) continue;
     // Replies to requests of an earlier session with the same id, or repeated ones, are stale.
     if (!pending_.count(answer->request)) continue;
     if (accept(*answer)) out.emplace_back(std::move(*answer));
@@ -182,9 +172,7 @@ void GameClient::pollReplies(std::vector<ClientEvent>& out) {
 }
 
 void GameClient::pollStates(std::vector<ClientEvent>& out) {
-  for (auto& sample : endpoints_->states.takeWithNotices()) {
-    if (!sample.meta().valid) continue;  // the lobby entry reports a closed match
-    auto view = fromWire(*sample);
+  for (auto& view : transport_->takeStates()) {
     if (!view) {
       problem(view.error());
       continue;
@@ -195,8 +183,7 @@ void GameClient::pollStates(std::vector<ClientEvent>& out) {
 }
 
 void GameClient::pollResults(std::vector<ClientEvent>& out) {
-  for (auto& sample : endpoints_->results.take()) {
-    auto report = fromWire(*sample);
+  for (auto& report : transport_->takeResults()) {
     if (!report) {
       problem(report.error());
       continue;
@@ -215,8 +202,7 @@ void GameClient::pollResults(std::vector<ClientEvent>& out) {
 }
 
 void GameClient::pollFrames(std::vector<ClientEvent>& out) {
-  for (auto& sample : endpoints_->snapshots.take(kSnapshotDepth)) {
-    auto frame = fromWire(*sample);
+  for (auto& frame : transport_->takeFrames()) {
     if (!frame) {
       problem(frame.error());
       continue;

@@ -15,13 +15,12 @@
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
 #include "core/result.h"
+#include "net/client_transport.h"
 #include "protocol/key_pair.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
 
 namespace pool::client {
-
-struct ClientEndpoints;
 
 /// Something received, as poll() hands it out.
 using ClientEvent =
@@ -115,7 +114,7 @@ class GameClient {
 
   ClientOptions options_;
   protocol::KeyPair key_;
-  std::unique_ptr<ClientEndpoints> endpoints_;
+  std::unique_ptr<net::ClientTransport> transport_;
   std::uint32_t next_request_ = 1;
   std::map<std::uint32_t, PendingJoin> pending_;  ///< our requests not answered yet
   std::optional<SeatHolding> seat_;

@@ -1,6 +1,8 @@
 // Field checks of a received ShotCommand: representable, finite, in range.
 #include "net/shot_command_check.h"
 
+#include "net/convert.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -164,6 +166,23 @@ CommandCheck validateShotCommand(const pool_ShotCommand& command,
   if (!found) found = checkPlacement(command, limits);
   if (!found) found = checkSignature(command);
   return found.value_or(CommandCheck{});
+}
+
+IncomingCommand readCommand(const pool_ShotCommand& command,
+                            const protocol::CommandLimits& limits) {
+  IncomingCommand in;
+  in.match = std::string(textOf(command.match));
+  in.seat = command.seat;
+  in.seq = command.seq;
+  const CommandCheck check = validateShotCommand(command, limits);
+  auto request = check.ok() ? fromWire(command) : Result<protocol::ShotRequest>::fail(check.text);
+  if (request) {
+    in.request = std::move(*request);
+  } else {
+    in.bad_signature = check.problem == CommandProblem::BadSignature;
+    in.problem = request.error();
+  }
+  return in;
 }
 
 }  // namespace pool::net

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "net/incoming_command.h"
 #include "net/messages.h"
 #include "protocol/command_limits.h"
 
@@ -41,5 +42,9 @@ struct CommandCheck {
 /// range-checked only when the option answers with a shot; every number must be finite always.
 CommandCheck validateShotCommand(const pool_ShotCommand& command,
                                  const protocol::CommandLimits& limits = {});
+
+/// Reads `command` off the wire: its fields checked against `limits`, then converted.
+IncomingCommand readCommand(const pool_ShotCommand& command,
+                            const protocol::CommandLimits& limits = {});
 
 }  // namespace pool::net

@@ -27,21 +27,22 @@ enum class JoinOutcome : std::uint8_t {
   StaleSequence,  ///< seq not above the last one that key used
 };
 
-/// Why the server refused a shot command (RejectReason of pool.idl, whose values these keep).
+/// Why the server refused a shot command (RejectReason of pool.idl, in its order: the wire
+/// conversion relies on it, net/message_convert.cpp checks every value).
 enum class RejectReason : std::uint8_t {
   None,              ///< accepted
   Malformed,         ///< a field is non-finite, out of range or not a valid value
   NoSuchMatch,       ///< no match of that id on this server
   WrongSeat,         ///< nobody sits in that seat
   BadToken,          ///< the seat token does not match the seat's
-  MatchOver,         ///< the match has a winner (or was closed)
   NotYourTurn,       ///< the other seat is to shoot (or the match has not started)
   BallsMoving,       ///< a shot is still being published
   StaleSequence,     ///< seq not above the seat's last accepted one
+  IllegalPlacement,  ///< the cue ball cannot be placed there (or must be placed)
   OptionRequired,    ///< the rules offered a choice and none was made
   OptionNotOffered,  ///< a choice the rules did not offer
-  IllegalPlacement,  ///< the cue ball cannot be placed there (or must be placed)
   BadCall,           ///< the called ball or pocket is not allowed (or no call in standard play)
+  MatchOver,         ///< the match has a winner (or was closed)
   BadSignature,      ///< not the seat key's signature of the command's fields
   Unsigned,          ///< no signature at all
 };

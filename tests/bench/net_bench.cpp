@@ -20,8 +20,8 @@
 #include <thread>
 #include <vector>
 
-#include "client/net/wire_read.h"
 #include "net/convert.h"
+#include "net/message_convert.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
@@ -114,7 +114,7 @@ struct Table {
   std::string match;
   std::array<std::uint64_t, 2> tokens{0, 0};
   std::array<std::uint32_t, 2> seq{0, 0};
-  std::optional<client::MatchView> state;
+  std::optional<protocol::MatchView> state;
   // The shot in flight (client clock, s).
   std::uint32_t shot = 0;
   double sent = -1, accepted = -1, first_frame = -1;
@@ -180,19 +180,19 @@ class Driver {
         r.request = static_cast<std::uint32_t>(++request);
         r.protocol_version = protocol::kProtocolVersion;
         r.match = id;
-        r.action = client::JoinAction::Seat;
+        r.action = protocol::JoinAction::Seat;
         r.seat = seat;
         r.name = "p" + std::to_string(seat);
         r.seq = ++seq_;
         protocol::signSeatRequest(r, key_);
-        requests_.write(*client::toWire(r));
+        requests_.write(*net::toWire(r));
       }
     }
     std::size_t seated = 0;
     while (seated < 2 * tables_.size() && Clock::now() - t0 < timeout) {
       waitset_.wait(20ms);
       for (auto& s : replies_.take()) {
-        auto answer = client::fromWire(*s);
+        auto answer = net::fromWire(*s);
         if (!answer || !answer->accepted() || !tables_.count(answer->match)) continue;
         tables_[answer->match].tokens[static_cast<std::size_t>(answer->seat)] = answer->token;
         ++seated;
@@ -205,7 +205,7 @@ class Driver {
   /// Sends one shot on every table: the break (hard) or a gentle safety, from its state.
   void shootAll(bool hard) {
     for (auto& [id, t] : tables_) {
-      if (!t.state || !client::inPlay(t.state->phase)) continue;
+      if (!t.state || !protocol::inPlay(t.state->phase)) continue;
       send(t, hard);
     }
   }
@@ -246,7 +246,7 @@ class Driver {
     const auto t0 = Clock::now();
     auto ready = [&] {
       return std::all_of(tables_.begin(), tables_.end(), [](const auto& kv) {
-        return kv.second.state && client::inPlay(kv.second.state->phase);
+        return kv.second.state && protocol::inPlay(kv.second.state->phase);
       });
     };
     while (!ready() && Clock::now() - t0 < timeout) {
@@ -264,7 +264,7 @@ class Driver {
   }
 
   void send(Table& t, bool hard) {
-    const client::MatchView& s = *t.state;
+    const protocol::MatchView& s = *t.state;
     const auto seat = static_cast<std::size_t>(s.shooter < 0 ? 0 : s.shooter);
     protocol::ShotRequest r;
     r.match = t.match;
@@ -282,7 +282,7 @@ class Driver {
       if (r.option == protocol::ShotOption::BallInHand)
         in_hand = rules::BallInHand::BehindHeadString;
     }
-    if (hard && s.phase == client::MatchPhase::Break) {
+    if (hard && s.phase == protocol::MatchPhase::Break) {
       // The break: full on the apex from just behind the head string.
       r.cue_ball_at = Eigen::Vector2d(-0.645, 0.0);
       r.cue.yaw = 0.0;
@@ -292,7 +292,7 @@ class Driver {
       if (in_hand != rules::BallInHand::None) r.cue_ball_at = Eigen::Vector2d(-0.9, 0.3);
       r.cue.yaw = M_PI;
       r.cue.speed = 0.2;
-      r.safety = s.phase != client::MatchPhase::Break;
+      r.safety = s.phase != protocol::MatchPhase::Break;
     }
     t.sent = now();
     t.accepted = t.first_frame = t.last_frame = t.accepted_at_server = -1;
@@ -305,7 +305,7 @@ class Driver {
 
   void pollStates() {
     for (auto& s : states_.take()) {
-      auto view = client::fromWire(*s);
+      auto view = net::fromWire(*s);
       if (view && tables_.count(view->match)) tables_[view->match].state = std::move(*view);
     }
   }

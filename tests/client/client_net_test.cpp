@@ -4,7 +4,7 @@
 
 #include "client/net/lobby.h"
 #include "client/net/snapshot_buffer.h"
-#include "client/net/wire_read.h"
+#include "net/message_convert.h"
 #include "net/wire_fields.h"
 
 namespace pool::client::test {
@@ -68,7 +68,7 @@ TEST(WireReadTest, StateBecomesTheRulesView) {
   wire.seats[1].group = pool_GROUP_SOLIDS;
   wire.ball_in_hand = pool_IN_HAND_ANYWHERE;
   wire.winner = -1;
-  auto view = fromWire(wire);
+  auto view = net::fromWire(wire);
   ASSERT_TRUE(view) << view.error();
   const rules::GameState game = gameStateOf(*view);
   EXPECT_EQ(game.phase, rules::Phase::Assigned);
@@ -80,16 +80,16 @@ TEST(WireReadTest, StateBecomesTheRulesView) {
 TEST(WireReadTest, OutOfRangeValuesAreFailuresNotCrashes) {
   pool_MatchState state{};
   net::setRawValue(state.phase, 99);
-  EXPECT_FALSE(fromWire(state));
+  EXPECT_FALSE(net::fromWire(state));
   pool_ShotResult result{};
   net::setRawValue(result.end, -3);
-  EXPECT_FALSE(fromWire(result));
+  EXPECT_FALSE(net::fromWire(result));
   pool_JoinReply reply{};
   net::setRawValue(reply.outcome, 1234);
-  EXPECT_FALSE(fromWire(reply));
+  EXPECT_FALSE(net::fromWire(reply));
   pool_MatchInfo info{};
   std::memset(info.match, 'x', sizeof info.match);  // unterminated: read up to the bound
-  auto entry = fromWire(info);
+  auto entry = net::fromWire(info);
   ASSERT_TRUE(entry);
   EXPECT_EQ(entry->match.size(), sizeof info.match);
 }

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "client/net/game_client.h"
-#include "client/net/wire_read.h"
 #include "net/convert.h"
+#include "net/message_convert.h"
 #include "net/participant.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
@@ -113,7 +113,7 @@ class MatchRecorder {
       if (auto* report = std::get_if<ShotReport>(&event)) reports_.push_back(std::move(*report));
     }
     for (auto& sample : all_states_.take()) {
-      if (auto view = fromWire(*sample)) states_.push_back(std::move(*view));
+      if (auto view = net::fromWire(*sample)) states_.push_back(std::move(*view));
     }
     for (auto& sample : commands_.take()) {
       auto request = net::fromWire(*sample);

@@ -1,13 +1,15 @@
-// Requests off the wire: field checks become refusals, good ones become domain commands.
+// Requests off the wire become domain commands or refusals; what the server publishes of a match
+// crosses the wire intact.
 #include <gtest/gtest.h>
 
 #include <limits>
 
 #include "match_fixture.h"
+#include "match_publish.h"
 #include "net/convert.h"
+#include "net/message_convert.h"
+#include "net/shot_command_check.h"
 #include "net/wire_fields.h"
-#include "wire_messages.h"
-#include "wire_requests.h"
 
 namespace pool::server {
 namespace {
@@ -20,41 +22,43 @@ protocol::CommandLimits nineFootLimits() {
 
 TEST(ReadCommand, AGoodCommandBecomesAShotRequest) {
   const auto wire = net::toWire(breakShot(3));
-  const ReadCommand read = readCommand(*wire, nineFootLimits());
-  ASSERT_TRUE(read.refusal.accepted()) << read.refusal.rejection.text;
-  EXPECT_EQ(read.request.match, "srv-1");
-  EXPECT_EQ(read.request.seq, 3u);
-  EXPECT_EQ(read.request.cue.speed, 8.0);
+  const net::IncomingCommand read = net::readCommand(*wire, nineFootLimits());
+  ASSERT_TRUE(read.request) << read.problem;
+  EXPECT_EQ(read.request->match, "srv-1");
+  EXPECT_EQ(read.request->seq, 3u);
+  EXPECT_EQ(read.request->cue.speed, 8.0);
   // The signature crosses unchanged and still verifies against the signer's key.
-  EXPECT_EQ(read.request.signature, breakShot(3).signature);
-  EXPECT_EQ(protocol::verifyCommand(read.request, publicKeyOf("a")),
+  EXPECT_EQ(read.request->signature, breakShot(3).signature);
+  EXPECT_EQ(protocol::verifyCommand(*read.request, publicKeyOf("a")),
             protocol::SignatureCheck::Valid);
 }
 
 TEST(ReadCommand, UnreadableFieldsAreMalformedWithTheSeatAndSeqEchoed) {
   auto unknown_option = net::toWire(breakShot(4));
   net::setRawValue(unknown_option->option, 42);
-  ReadCommand read = readCommand(*unknown_option, nineFootLimits());
-  EXPECT_EQ(read.refusal.rejection.reason, Reject::Malformed);
-  EXPECT_EQ(read.refusal.seq, 4u);
-  EXPECT_NE(read.refusal.rejection.text.find("option"), std::string::npos);
+  net::IncomingCommand read = net::readCommand(*unknown_option, nineFootLimits());
+  EXPECT_FALSE(read.request);
+  EXPECT_FALSE(read.bad_signature);
+  EXPECT_EQ(read.seq, 4u);
+  EXPECT_NE(read.problem.find("option"), std::string::npos);
 
   auto nan = net::toWire(breakShot(5));
   nan->yaw = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(readCommand(*nan, nineFootLimits()).refusal.rejection.reason, Reject::Malformed);
+  EXPECT_FALSE(net::readCommand(*nan, nineFootLimits()).request);
 
   auto off_table = net::toWire(breakShot(6));
   off_table->has_cue_ball_placement = true;
   off_table->cue_ball_x = 3.0;
-  EXPECT_EQ(readCommand(*off_table, nineFootLimits()).refusal.rejection.reason, Reject::Malformed);
+  EXPECT_FALSE(net::readCommand(*off_table, nineFootLimits()).request);
 }
 
 TEST(ReadCommand, AnOversizedSignatureIsABadSignature) {
   auto signed_too_much = net::toWire(breakShot(7));
   signed_too_much->signature._length = 65;
-  const ReadCommand read = readCommand(*signed_too_much, nineFootLimits());
+  const net::IncomingCommand read = net::readCommand(*signed_too_much, nineFootLimits());
   signed_too_much->signature._length = 0;
-  EXPECT_EQ(read.refusal.rejection.reason, Reject::BadSignature);
+  EXPECT_FALSE(read.request);
+  EXPECT_TRUE(read.bad_signature);
 }
 
 TEST(JoinCommandFromWire, UnknownActionsAreRefused) {
@@ -63,15 +67,12 @@ TEST(JoinCommandFromWire, UnknownActionsAreRefused) {
   net::setText(r.match, "srv-1");
   r.action = pool_JOIN_REJOIN;
   r.seat_token = 77;
-  const auto command = joinCommand(r);
+  const auto command = net::fromWire(r);
   ASSERT_TRUE(command);
   EXPECT_EQ(command->action, JoinAction::Rejoin);
   EXPECT_EQ(command->token, 77u);
   net::setRawValue(r.action, 9);
-  EXPECT_FALSE(joinCommand(r));
-  const pool_JoinReply reply = unreadableJoinReply(r, "bad", "srv");
-  EXPECT_EQ(reply.outcome, pool_JOIN_NOT_ALLOWED);
-  EXPECT_EQ(net::textOf(reply.client), "c1");
+  EXPECT_FALSE(net::fromWire(r));
 }
 
 TEST(JoinCommandFromWire, ThePublicKeyIsCarriedOver) {
@@ -80,20 +81,20 @@ TEST(JoinCommandFromWire, ThePublicKeyIsCarriedOver) {
   net::setText(r.client, "c1");
   net::setText(r.match, "srv-1");
   r.action = pool_JOIN_SEAT;
-  const auto none = joinCommand(r);
+  const auto none = net::fromWire(r);
   ASSERT_TRUE(none);
   EXPECT_TRUE(none->public_key.empty());
   const auto key = publicKeyOf("c1");
   auto field = net::resizeSequence(r.public_key, static_cast<std::uint32_t>(key.size()));
   std::copy(key.begin(), key.end(), field.begin());
-  const auto command = joinCommand(r);
+  const auto command = net::fromWire(r);
   ASSERT_TRUE(command);
   EXPECT_EQ(command->public_key, key);
 }
 
-TEST(WireMessages, MatchStateShowsSeatsTurnAndLayout) {
+TEST(MatchPublish, MatchStateShowsSeatsTurnAndLayout) {
   auto m = seatedMatch();
-  const auto st = matchState(*m);
+  const auto st = net::toWire(matchViewOf(*m));
   EXPECT_EQ(net::textOf(st->match), "srv-1");
   EXPECT_EQ(st->phase, pool_PHASE_BREAK);
   EXPECT_EQ(net::textOf(st->seats[0].name), "Ada");
@@ -104,23 +105,23 @@ TEST(WireMessages, MatchStateShowsSeatsTurnAndLayout) {
   EXPECT_EQ(st->balls._length, 16u);
   EXPECT_LT(st->shot_clock, 0.0);
   EXPECT_EQ(st->winner, -1);
-  const pool_MatchInfo info = matchInfo(*m, "srv");
+  const pool_MatchInfo info = net::toWire(lobbyEntryOf(*m, "srv"));
   EXPECT_EQ(info.seats_taken, 2);
   EXPECT_EQ(net::textOf(info.table), "wpa-9ft");
 }
 
-TEST(WireMessages, AFinalResultCarriesEventsAndVerdict) {
+TEST(MatchPublish, AFinalResultCarriesEventsAndVerdict) {
   MatchOptions fast;
   fast.unpaced = true;
   auto m = seatedMatch(fast);
   const CommandAnswer answer = m->handleShot(breakShot(1), 0.0);
-  const auto first = commandResult(m->id(), answer);
+  const auto first = net::toWire(commandReport(m->id(), answer));
   EXPECT_TRUE(first->accepted);
   EXPECT_EQ(first->events._length, 0u);
   EXPECT_EQ(first->verdict_text[0], '\0');
   const auto report = finishNow(*m);
   ASSERT_TRUE(report);
-  const auto last = finalResult(m->id(), *report);
+  const auto last = net::toWire(finalReport(m->id(), *report));
   EXPECT_EQ(last->events._length, report->events.size());
   EXPECT_EQ(last->shot_number, 1u);
   EXPECT_NE(last->verdict_text[0], '\0');

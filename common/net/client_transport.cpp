@@ -1,0 +1,127 @@
+// The client's participant, topics, readers, writers and waitset, and the conversions at their
+// edge.
+#include "net/client_transport.h"
+
+#include "net/convert.h"
+#include "net/message_convert.h"
+#include "net/participant.h"
+#include "net/protocol_topics.h"
+#include "net/qos_profiles.h"
+#include "net/reader.h"
+#include "net/topic.h"
+#include "net/waitset.h"
+#include "net/wire_fields.h"
+#include "net/writer.h"
+
+namespace pool::net {
+namespace {
+
+QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
+  profile.history_depth = depth;
+  return profile;
+}
+
+enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates };
+
+template <class T>
+std::string written(const Writer<T>& writer, const T& sample) {
+  auto status = writer.write(sample);
+  return status ? std::string() : status.error;
+}
+
+/// Every valid sample of `samples` read with fromWire.
+template <class Domain, class Samples>
+std::vector<Result<Domain>> readAll(Samples samples) {
+  std::vector<Result<Domain>> out;
+  for (auto& sample : samples) {
+    if constexpr (requires { sample.meta(); }) {
+      if (!sample.meta().valid) continue;
+    }
+    out.push_back(fromWire(*sample));
+  }
+  return out;
+}
+
+}  // namespace
+
+struct ClientTransport::Endpoints : ProtocolTopics {
+  explicit Endpoints(std::uint32_t domain)
+      : ProtocolTopics(domain),
+        match_info(participant, match_info_topic, qos::lobby()),
+        join_replies(participant, join_reply_topic, qos::joinReply()),
+        results(participant, result_topic, deeper(qos::result())),
+        snapshots(participant, snapshot_topic, deeper(qos::snapshot(), kSnapshotDepth)),
+        states(participant, state_topic, deeper(qos::state())),
+        join_requests(participant, join_request_topic, qos::joinRequest()),
+        commands(participant, command_topic, qos::command()),
+        waitset(participant) {
+    waitset.attachData(match_info, kLobby);
+    waitset.attachData(join_replies, kReplies);
+    waitset.attachData(results, kResults);
+    waitset.attachData(snapshots, kSnapshots);
+    waitset.attachData(states, kStates);
+  }
+
+  Reader<pool_MatchInfo> match_info;
+  Reader<pool_JoinReply> join_replies;
+  Reader<pool_ShotResult> results;
+  Reader<pool_TableSnapshot> snapshots;
+  Reader<pool_MatchState> states;
+  Writer<pool_JoinRequest> join_requests;
+  Writer<pool_ShotCommand> commands;
+  WaitSet waitset;
+};
+
+ClientTransport::ClientTransport(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {}
+
+ClientTransport::~ClientTransport() = default;
+
+void ClientTransport::wait(std::chrono::nanoseconds timeout) const {
+  e_->waitset.wait(timeout);
+}
+
+std::string ClientTransport::send(const protocol::SeatRequest& request) {
+  return written(e_->join_requests, *toWire(request));
+}
+
+std::string ClientTransport::send(const protocol::ShotRequest& command) {
+  return written(e_->commands, *toWire(command));
+}
+
+std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
+  std::vector<Result<LobbyEvent>> out;
+  for (auto& sample : e_->match_info.takeWithNotices()) {
+    if (!sample.meta().valid) {
+      if (sample.meta().instance == InstanceState::Alive) continue;
+      const bool disposed = sample.meta().instance == InstanceState::Disposed;
+      out.push_back(Result<LobbyEvent>::ok(
+          protocol::MatchGone{std::string(textOf(sample->match)), disposed}));
+      continue;
+    }
+    auto entry = fromWire(*sample);
+    if (!entry) {
+      out.push_back(Result<LobbyEvent>::fail(entry.error()));
+    } else {
+      out.push_back(Result<LobbyEvent>::ok(std::move(*entry)));
+    }
+  }
+  return out;
+}
+
+std::vector<Result<protocol::JoinAnswer>> ClientTransport::takeReplies() {
+  return readAll<protocol::JoinAnswer>(e_->join_replies.take());
+}
+
+std::vector<Result<protocol::MatchView>> ClientTransport::takeStates() {
+  return readAll<protocol::MatchView>(e_->states.takeWithNotices());
+}
+
+std::vector<Result<protocol::ShotReport>> ClientTransport::takeResults() {
+  return readAll<protocol::ShotReport>(e_->results.take());
+}
+
+std::vector<Result<protocol::TableFrame>> ClientTransport::takeFrames() {
+  return readAll<protocol::TableFrame>(e_->snapshots.take(kSnapshotDepth));
+}
+
+}  // namespace pool::net

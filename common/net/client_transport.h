@@ -1,0 +1,59 @@
+// A player's or spectator's side of the wire: the protocol's topics read and written in domain
+// types (clients never see a DDS or generated type).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/result.h"
+#include "protocol/match_messages.h"
+#include "protocol/seat_request.h"
+#include "protocol/shot_request.h"
+
+namespace pool::net {
+
+/// How deep the client's readers keep results and states per instance, so that a slow poll does
+/// not lose the acceptance of a shot behind its final report, or a state behind the next one.
+inline constexpr std::uint32_t kReaderDepth = 16;
+/// Snapshots kept per match between polls: an unpaced server (--fast) sends a shot's frames in a
+/// burst, and a spectator counting them should see most of them.
+inline constexpr std::uint32_t kSnapshotDepth = 512;
+
+/// A lobby entry, or the news that one went away.
+using LobbyEvent = std::variant<protocol::LobbyEntry, protocol::MatchGone>;
+
+/// One participant with every reader and writer a client needs, and a waitset over the readers.
+/// Throws DdsError from the constructor only. Each take returns what arrived since the last one,
+/// a sample that could not be read as a failure naming why.
+class ClientTransport {
+ public:
+  explicit ClientTransport(std::uint32_t domain);
+  ~ClientTransport();
+  ClientTransport(const ClientTransport&) = delete;
+  ClientTransport& operator=(const ClientTransport&) = delete;
+
+  /// Blocks until some reader has data or `timeout` passes.
+  void wait(std::chrono::nanoseconds timeout) const;
+
+  /// Writes a join request (the writer stays for the whole session: its liveliness tells the
+  /// server we are here). Empty when written, else why not.
+  std::string send(const protocol::SeatRequest& request);
+  std::string send(const protocol::ShotRequest& command);
+
+  std::vector<Result<LobbyEvent>> takeLobby();
+  std::vector<Result<protocol::JoinAnswer>> takeReplies();
+  /// Match states; a disposed one is skipped (the lobby reports the match gone).
+  std::vector<Result<protocol::MatchView>> takeStates();
+  std::vector<Result<protocol::ShotReport>> takeResults();
+  std::vector<Result<protocol::TableFrame>> takeFrames();
+
+ private:
+  struct Endpoints;
+  std::unique_ptr<Endpoints> e_;
+};
+
+}  // namespace pool::net

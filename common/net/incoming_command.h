@@ -1,0 +1,24 @@
+// A shot command as the server reads it off the wire, in domain terms: the request, or why its
+// fields cannot be read.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "protocol/shot_request.h"
+
+namespace pool::net {
+
+/// A shot command off the wire: its request once its fields pass validateShotCommand, else the
+/// problem (the match, seat and seq are echoed in the refusal either way).
+struct IncomingCommand {
+  std::string match;
+  int seat = 0;
+  std::uint32_t seq = 0;
+  std::optional<protocol::ShotRequest> request;
+  bool bad_signature = false;  ///< the signature field itself is malformed (not 64 bytes)
+  std::string problem;         ///< "<field>: <reason>" when `request` is empty
+};
+
+}  // namespace pool::net

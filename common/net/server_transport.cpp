@@ -1,0 +1,135 @@
+// The server's topics, readers, writers and waitset, and the conversions at their edge.
+#include "net/server_transport.h"
+
+#include "net/message_convert.h"
+#include "net/participant.h"
+#include "net/protocol_topics.h"
+#include "net/qos_profiles.h"
+#include "net/reader.h"
+#include "net/shot_command_check.h"
+#include "net/topic.h"
+#include "net/waitset.h"
+#include "net/wire_fields.h"
+#include "net/writer.h"
+
+namespace pool::net {
+
+namespace {
+
+enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2 };
+
+template <class T>
+std::string written(const Writer<T>& writer, const T& sample) {
+  auto status = writer.write(sample);
+  return status ? std::string() : status.error;
+}
+
+}  // namespace
+
+struct ServerTransport::Endpoints : ProtocolTopics {
+  explicit Endpoints(std::uint32_t domain)
+      : ProtocolTopics(domain),
+        join_requests(participant, join_request_topic, qos::joinRequest()),
+        commands(participant, command_topic, qos::command()),
+        match_info(participant, match_info_topic, qos::lobby()),
+        join_replies(participant, join_reply_topic, qos::joinReply()),
+        results(participant, result_topic, qos::result()),
+        snapshots(participant, snapshot_topic, qos::snapshot()),
+        states(participant, state_topic, qos::state()),
+        waitset(participant) {
+    waitset.attachData(join_requests, kJoinTag);
+    waitset.attachData(commands, kCommandTag);
+  }
+
+  Reader<pool_JoinRequest> join_requests;
+  Reader<pool_ShotCommand> commands;
+  Writer<pool_MatchInfo> match_info;
+  Writer<pool_JoinReply> join_replies;
+  Writer<pool_ShotResult> results;
+  Writer<pool_TableSnapshot> snapshots;
+  Writer<pool_MatchState> states;
+  WaitSet waitset;
+};
+
+ServerTransport::ServerTransport(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {}
+
+ServerTransport::~ServerTransport() = default;
+
+void ServerTransport::wait(std::chrono::nanoseconds timeout) const {
+  e_->waitset.wait(timeout);
+}
+
+std::vector<JoinEvent> ServerTransport::takeJoins() {
+  std::vector<JoinEvent> out;
+  for (auto& sample : e_->join_requests.takeWithNotices()) {
+    const pool_JoinRequest& r = *sample;
+    const std::string client(textOf(r.client));
+    if (!sample.meta().valid) {
+      // The client's JoinRequest writer is gone (lease expired or deleted): it vanished.
+      if (sample.meta().instance != InstanceState::Alive) {
+        out.emplace_back(ClientGone{client, toString(sample.meta().instance)});
+      }
+      continue;
+    }
+    auto request = fromWire(r);
+    if (!request) {
+      out.emplace_back(
+          UnreadableJoin{client, r.request, std::string(textOf(r.match)), request.error()});
+      continue;
+    }
+    out.emplace_back(std::move(*request));
+  }
+  return out;
+}
+
+std::vector<IncomingCommand> ServerTransport::takeCommands(const protocol::CommandLimits& limits) {
+  std::vector<IncomingCommand> out;
+  for (auto& sample : e_->commands.take()) out.push_back(readCommand(*sample, limits));
+  return out;
+}
+
+std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {
+  return written(e_->match_info, toWire(entry));
+}
+
+std::string ServerTransport::publish(const protocol::MatchView& view) {
+  return written(e_->states, *toWire(view));
+}
+
+std::string ServerTransport::publish(const protocol::JoinAnswer& answer) {
+  return written(e_->join_replies, toWire(answer));
+}
+
+std::string ServerTransport::publish(const protocol::ShotReport& report, bool keep) {
+  const auto sample = toWire(report);
+  std::string error = written(e_->results, *sample);
+  if (!keep) e_->results.unregister(*sample);
+  return error;
+}
+
+std::string ServerTransport::publish(const protocol::TableFrame& frame) {
+  return written(e_->snapshots, *toWire(frame));
+}
+
+void ServerTransport::forgetClient(const std::string& client) {
+  pool_JoinReply key{};
+  setText(key.client, client);
+  e_->join_replies.unregister(key);
+}
+
+void ServerTransport::dispose(const std::string& match) {
+  pool_MatchInfo info{};
+  setText(info.match, match);
+  e_->match_info.dispose(info);
+  Sample<pool_MatchState> state;
+  setText(state->match, match);
+  e_->states.dispose(*state);
+  for (const std::int16_t seat : {std::int16_t{0}, std::int16_t{1}}) {
+    Sample<pool_ShotResult> result;
+    setText(result->match, match);
+    result->seat = seat;
+    e_->results.dispose(*result);
+  }
+}
+
+}  // namespace pool::net

@@ -1,0 +1,73 @@
+// The server's side of the wire: every topic as the server uses it, read and written in the
+// protocol's domain types (the server itself never sees a DDS or generated type).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "net/incoming_command.h"
+#include "protocol/command_limits.h"
+#include "protocol/match_messages.h"
+#include "protocol/seat_request.h"
+#include "protocol/shot_request.h"
+
+namespace pool::net {
+
+/// A join request that could not be read (an unknown action, text past its bound): the server
+/// answers it with a refusal.
+struct UnreadableJoin {
+  std::string client;
+  std::uint32_t request = 0;
+  std::string match;
+  std::string reason;
+};
+
+/// A client whose JoinRequest writer went away (its liveliness lease ran out, or it exited).
+struct ClientGone {
+  std::string client;
+  std::string why;  ///< "no_writers" or "disposed"
+};
+
+/// What the join-request topic delivered.
+using JoinEvent = std::variant<protocol::SeatRequest, UnreadableJoin, ClientGone>;
+
+/// The server's participant, its readers of requests and commands and its writers of lobby
+/// entries, replies, results, frames and states (QoS from qos_profiles.h). Throws DdsError from
+/// the constructor only; a failed write is returned as text (empty: written).
+class ServerTransport {
+ public:
+  explicit ServerTransport(std::uint32_t domain);
+  ~ServerTransport();
+  ServerTransport(const ServerTransport&) = delete;
+  ServerTransport& operator=(const ServerTransport&) = delete;
+
+  /// Blocks until a join request or command arrives (or a writer is gone), or `timeout` passes.
+  void wait(std::chrono::nanoseconds timeout) const;
+
+  std::vector<JoinEvent> takeJoins();
+  std::vector<IncomingCommand> takeCommands(const protocol::CommandLimits& limits);
+
+  std::string publish(const protocol::LobbyEntry& entry);
+  std::string publish(const protocol::MatchView& view);
+  std::string publish(const protocol::JoinAnswer& answer);
+  /// With `keep` false the result is not kept for late readers (a made-up match or seat: the
+  /// writer would otherwise hold one instance per key for good).
+  std::string publish(const protocol::ShotReport& report, bool keep = true);
+  std::string publish(const protocol::TableFrame& frame);
+
+  /// Drops the last reply kept for `client` (it is gone).
+  void forgetClient(const std::string& client);
+  /// Disposes `match`'s lobby entry, state and results: readers see it gone.
+  void dispose(const std::string& match);
+
+ private:
+  struct Endpoints;
+  std::unique_ptr<Endpoints> e_;
+};
+
+}  // namespace pool::net

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Fails when a file includes what its folder may not (docs/ARCHITECTURE.md): DDS and the generated
+# wire types outside common/net, ODE outside common/physics, OpenGL outside client/render and
+# client/ui, assimp outside common/table and client/render, or a lower module reaching up.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+status=0
+# fence NAME INCLUDED EXEMPT ALLOWED...: a tracked C/C++ file outside the ALLOWED folders whose
+# #include names a path matching INCLUDED (and not EXEMPT) breaks the fence NAME.
+fence() {
+  local name=$1 included=$2 exempt=$3
+  shift 3
+  local file line path prefix allowed
+  while IFS=: read -r file line path; do
+    [[ -z $file ]] && continue
+    allowed=0
+    for prefix in "$@"; do
+      [[ $file == "$prefix"* ]] && allowed=1
+    done
+    [[ -n $exempt && $path =~ ^($exempt)$ ]] && allowed=1
+    if ((!allowed)); then
+      echo "fence '$name': $file:$line includes $path" >&2
+      status=1
+    fi
+  done < <(git grep -nE "^[[:space:]]*#[[:space:]]*include[[:space:]]*[<\"]($included)" \
+             -- '*.c' '*.cpp' '*.h' '*.hpp' |
+           sed -E 's/^([^:]*):([0-9]*):[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]([^>"]*)[>"].*$/\1:\2:\3/')
+}
+
+# The net headers anyone may include: they show the protocol's domain types only.
+net_public='net/(client_transport|server_transport|incoming_command|dds_error)\.h'
+
+fence dds 'dds/|pool\.h|net/' "$net_public" common/net/ tests/
+fence opengl 'glad/|GLFW/|EGL/|GL/|backends/imgui_impl' '' client/render/ client/ui/ tests/
+fence ode 'ode/' '' common/physics/ tests/physics/
+fence assimp 'assimp/' '' common/table/ client/render/ tests/
+# One way: the shared modules never reach up into the protocol, the transport, the server or
+# the clients; the protocol never reaches into the transport.
+fence shared-modules 'protocol/|net/|client/|match/|store/' '' common/protocol/ common/net/ \
+  server/ client/ tests/
+fence protocol 'net/|client/|match/|store/' "$net_public" common/net/ server/ client/ tests/
+
+if ((status)); then
+  echo "check-fences: includes outside their allowed folders (docs/ARCHITECTURE.md)" >&2
+  exit 1
+fi
+echo "fences hold: DDS only in common/net, ODE only in common/physics, OpenGL only in" \
+  "client/render and client/ui, assimp only in common/table and client/render, modules one way"

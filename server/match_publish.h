@@ -1,0 +1,42 @@
+// What the server publishes of a match, as the protocol's messages: lobby entry, state, command
+// answers, frames and join replies (server/ never builds a wire sample itself).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "match/join.h"
+#include "match/match.h"
+#include "match/match_types.h"
+#include "physics/simulation.h"
+#include "protocol/command_limits.h"
+#include "protocol/match_messages.h"
+#include "table/table_spec.h"
+
+namespace pool::server {
+
+/// The lobby entry of `match`, run by server `server_id`.
+protocol::LobbyEntry lobbyEntryOf(const Match& match, const std::string& server_id);
+
+/// The state of `match` between shots, with its balls at rest.
+protocol::MatchView matchViewOf(const Match& match);
+
+/// The answer to a command as soon as it is judged: a refusal (with its reason), or an accepted
+/// shot whose motion is about to be published (no events or verdict yet; verdict_text empty).
+protocol::ShotReport commandReport(const std::string& match, const CommandAnswer& answer);
+
+/// The final answer to an accepted command: its events and the verdict (verdict_text set).
+protocol::ShotReport finalReport(const std::string& match, const ShotReport& report);
+
+/// Frame `frame` of shot `shot_number` of `match`.
+protocol::TableFrame frameOf(const std::string& match, std::uint32_t frame,
+                             std::uint32_t shot_number, const physics::Sample& at);
+
+/// The reply to `command`.
+protocol::JoinAnswer replyTo(const JoinCommand& command, const JoinAnswer& answer,
+                             const std::string& server_id);
+
+/// The wire limits of a command on `spec`'s table (speed, elevation, miscue, playing surface).
+protocol::CommandLimits commandLimits(const table::TableSpec& spec);
+
+}  // namespace pool::server
