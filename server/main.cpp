@@ -5,16 +5,16 @@
 
 #include <atomic>
 
-#include "match/match_registry.h"
-#include "match/match_replay.h"
-#include "match/table_kit.h"
-#include "match/token_source.h"
 #include "net/dds_error.h"
 #include "net/server_transport.h"
 #include "protocol/protocol_version.h"
-#include "server_config.h"
-#include "server_loop.h"
-#include "store/match_store.h"
+#include "server/match/match_registry.h"
+#include "server/match/match_replay.h"
+#include "server/match/table_kit.h"
+#include "server/match/token_source.h"
+#include "server/server_config.h"
+#include "server/server_loop.h"
+#include "server/store/match_store.h"
 
 namespace {
 

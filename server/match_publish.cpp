@@ -1,5 +1,5 @@
 // The match logic's state and answers as the protocol's published messages.
-#include "match_publish.h"
+#include "server/match_publish.h"
 
 #include <algorithm>
 

@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <string>
 
-#include "match/join.h"
-#include "match/match.h"
-#include "match/match_types.h"
 #include "physics/simulation.h"
 #include "protocol/command_limits.h"
 #include "protocol/match_messages.h"
+#include "server/match/join.h"
+#include "server/match/match.h"
+#include "server/match/match_types.h"
 #include "table/table_spec.h"
 
 namespace pool::server {

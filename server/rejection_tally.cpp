@@ -1,5 +1,5 @@
 // The per-period count of refused shot commands.
-#include "rejection_tally.h"
+#include "server/rejection_tally.h"
 
 #include <cstdio>
 

@@ -1,5 +1,5 @@
 // Flags over file over defaults, with CLI11 and nlohmann-json.
-#include "server_config.h"
+#include "server/server_config.h"
 
 #include <CLI/CLI.hpp>
 #include <fstream>

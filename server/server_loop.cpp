@@ -1,11 +1,11 @@
 // One pass of the server: requests in, answers, frames and state out.
-#include "server_loop.h"
+#include "server/server_loop.h"
 
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 
-#include "match_publish.h"
+#include "server/match_publish.h"
 
 namespace pool::server {
 

@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "match/match_registry.h"
-#include "match/match_replay.h"
 #include "net/server_transport.h"
 #include "protocol/command_limits.h"
-#include "rejection_tally.h"
-#include "server_config.h"
-#include "store/match_store.h"
+#include "server/match/match_registry.h"
+#include "server/match/match_replay.h"
+#include "server/rejection_tally.h"
+#include "server/server_config.h"
+#include "server/store/match_store.h"
 
 namespace pool::server {
 

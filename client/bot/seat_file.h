@@ -1,6 +1,6 @@
 // The bot's identity on disk: the seat it holds (match, seat, token) and the last sequence
 // number it used, so a restarted bot can rejoin with its token (pool-bot --token-file); its
-// signing key is kept beside it (net/key_pair.h).
+// signing key is kept beside it (protocol/key_pair.h).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The signed form of a shot command: the envelope (net/envelope.h) with tag Shot, then every
+// The signed form of a shot command: the envelope (protocol/envelope.h) with tag Shot, then every
 // field that matters, signed by the seat's player with Ed25519 and checked by the server.
 #pragma once
 

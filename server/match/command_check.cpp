@@ -1,13 +1,13 @@
 // The ordered checks of a shot command, each a small function that refuses or passes.
-#include "match/command_check.h"
+#include "server/match/command_check.h"
 
 #include <algorithm>
 #include <string>
 
-#include "match/match.h"
 #include "protocol/command_signature.h"
 #include "rules/eight_ball.h"
 #include "rules/placement.h"
+#include "server/match/match.h"
 
 namespace pool::server {
 

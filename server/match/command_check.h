@@ -4,12 +4,12 @@
 #include <optional>
 #include <vector>
 
-#include "match/reject.h"
 #include "physics/ball.h"
 #include "protocol/shot_request.h"
 #include "rules/game_state.h"
 #include "rules/shot.h"
 #include "rules/verdict.h"
+#include "server/match/reject.h"
 
 namespace pool::server {
 

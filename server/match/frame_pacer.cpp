@@ -1,5 +1,5 @@
 // Frame pacing: the wall clock catching up with simulated time.
-#include "match/frame_pacer.h"
+#include "server/match/frame_pacer.h"
 
 namespace pool::server {
 

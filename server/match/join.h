@@ -15,7 +15,8 @@ using protocol::JoinOutcome;  ///< its outcome
 
 using protocol::kNewMatch;  ///< the match id that asks for a new match
 
-/// A client's request (a JoinRequest in domain terms; net/seat_request.h says which are signed).
+/// A client's request (a JoinRequest in domain terms; protocol/seat_request.h says which are
+/// signed).
 using JoinCommand = protocol::SeatRequest;
 
 /// The server's answer.

@@ -1,11 +1,11 @@
 // A match's seats, its shots from command to committed verdict, and the frames in between.
-#include "match/match.h"
+#include "server/match/match.h"
 
 #include <algorithm>
 
-#include "match/command_check.h"
 #include "rules/eight_ball.h"
 #include "rules/shot.h"
+#include "server/match/command_check.h"
 
 namespace pool::server {
 

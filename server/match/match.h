@@ -10,16 +10,16 @@
 #include <string>
 #include <vector>
 
-#include "match/frame_pacer.h"
-#include "match/join.h"
-#include "match/match_snapshot.h"
-#include "match/match_types.h"
-#include "match/seat.h"
-#include "match/shot_runner.h"
 #include "physics/simulation.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
 #include "rules/game_state.h"
+#include "server/match/frame_pacer.h"
+#include "server/match/join.h"
+#include "server/match/match_snapshot.h"
+#include "server/match/match_types.h"
+#include "server/match/seat.h"
+#include "server/match/shot_runner.h"
 
 namespace pool::server {
 

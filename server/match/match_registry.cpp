@@ -1,5 +1,5 @@
 // The lobby's bookkeeping: opening and finding matches, routing joins and commands, presence.
-#include "match/match_registry.h"
+#include "server/match/match_registry.h"
 
 #include <algorithm>
 #include <cstdlib>

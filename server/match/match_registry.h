@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "core/result.h"
-#include "match/join.h"
-#include "match/match.h"
-#include "match/match_types.h"
-#include "match/shot_runner.h"
-#include "match/token_source.h"
 #include "protocol/shot_request.h"
+#include "server/match/join.h"
+#include "server/match/match.h"
+#include "server/match/match_types.h"
+#include "server/match/shot_runner.h"
+#include "server/match/token_source.h"
 
 namespace pool::server {
 

@@ -1,9 +1,9 @@
 // Replaying: seats, rematches between racks, the stored commands re-addressed to the replay match.
-#include "match/match_replay.h"
+#include "server/match/match_replay.h"
 
 #include "protocol/command_signature.h"
 
-#include "match/shot_runner.h"
+#include "server/match/shot_runner.h"
 
 namespace pool::server {
 

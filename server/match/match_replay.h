@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "match/match.h"
-#include "match/match_snapshot.h"
-#include "match/shot_record.h"
 #include "protocol/key_pair.h"
 #include "protocol/seat_request.h"
+#include "server/match/match.h"
+#include "server/match/match_snapshot.h"
+#include "server/match/shot_record.h"
 
 namespace pool::server {
 

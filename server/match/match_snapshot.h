@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "match/seat.h"
 #include "physics/ball.h"
 #include "rules/game_state.h"
+#include "server/match/seat.h"
 
 namespace pool::server {
 

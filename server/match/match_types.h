@@ -5,12 +5,12 @@
 #include <optional>
 #include <string>
 
-#include "match/reject.h"
-#include "match/shot_record.h"
 #include "physics/events.h"
 #include "protocol/protocol_enums.h"
 #include "rules/eight_ball.h"
 #include "rules/verdict.h"
+#include "server/match/reject.h"
+#include "server/match/shot_record.h"
 
 namespace pool::server {
 

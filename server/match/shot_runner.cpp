@@ -1,5 +1,5 @@
 // One shot through the physics: on-table balls simulated, the rest carried over.
-#include "match/shot_runner.h"
+#include "server/match/shot_runner.h"
 
 #include <algorithm>
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "core/result.h"
-#include "match/table_kit.h"
 #include "physics/simulation.h"
+#include "server/match/table_kit.h"
 
 namespace pool::server {
 

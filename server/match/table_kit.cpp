@@ -1,5 +1,5 @@
 // Loading a table for matches and laying out a fresh rack.
-#include "match/table_kit.h"
+#include "server/match/table_kit.h"
 
 #include <algorithm>
 

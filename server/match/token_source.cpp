@@ -1,5 +1,5 @@
 // Seat tokens, seeds and hex ids.
-#include "match/token_source.h"
+#include "server/match/token_source.h"
 
 namespace pool::server {
 

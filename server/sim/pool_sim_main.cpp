@@ -11,7 +11,7 @@
 
 #include "scenario/json_document.h"
 #include "scenario/scenario.h"
-#include "sim/stored_shot.h"
+#include "server/sim/stored_shot.h"
 
 namespace {
 

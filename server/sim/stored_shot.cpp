@@ -1,10 +1,10 @@
 // Reads the stored shot and builds the scenario ShotRunner ran: only balls on the table go in.
-#include "sim/stored_shot.h"
+#include "server/sim/stored_shot.h"
 
 #include <filesystem>
 
-#include "match/table_kit.h"
-#include "store/match_store.h"
+#include "server/match/table_kit.h"
+#include "server/store/match_store.h"
 
 namespace pool::sim {
 

@@ -1,7 +1,7 @@
 // The audit: the stored log judged again, compared field by field through its stored JSON form.
-#include "store/match_audit.h"
+#include "server/store/match_audit.h"
 
-#include "store/record_json.h"
+#include "server/store/record_json.h"
 
 namespace pool::store {
 

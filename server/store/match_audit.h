@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "match/table_kit.h"
 #include "rules/eight_ball.h"
-#include "store/match_store.h"
+#include "server/match/table_kit.h"
+#include "server/store/match_store.h"
 
 namespace pool::store {
 

@@ -1,11 +1,11 @@
 // Reading and writing matches, seats and commands; one transaction per change.
-#include "store/match_store.h"
+#include "server/store/match_store.h"
 
 #include <cstdlib>
 #include <filesystem>
 
-#include "store/record_json.h"
-#include "store/schema.h"
+#include "server/store/record_json.h"
+#include "server/store/schema.h"
 
 namespace pool::store {
 

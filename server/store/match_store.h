@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "core/result.h"
-#include "match/match_snapshot.h"
-#include "match/shot_record.h"
-#include "store/sqlite_db.h"
+#include "server/match/match_snapshot.h"
+#include "server/match/shot_record.h"
+#include "server/store/sqlite_db.h"
 
 namespace pool::store {
 

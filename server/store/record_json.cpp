@@ -1,10 +1,10 @@
 // Field-by-field JSON with nlohmann-json; enums as their numbers, vectors as arrays.
-#include "store/record_json.h"
+#include "server/store/record_json.h"
 
 #include <nlohmann/json.hpp>
 
 #include "scenario/cue_shot_json.h"
-#include "store/sqlite_db.h"
+#include "server/store/sqlite_db.h"
 
 namespace pool::store {
 

@@ -1,5 +1,5 @@
 // Schema version 1 (matches, seats, shots) and 2 (seats' public keys), and the refusals.
-#include "store/schema.h"
+#include "server/store/schema.h"
 
 #include <array>
 #include <filesystem>

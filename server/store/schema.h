@@ -5,7 +5,7 @@
 #include <span>
 #include <string>
 
-#include "store/sqlite_db.h"
+#include "server/store/sqlite_db.h"
 
 namespace pool::store {
 

@@ -1,5 +1,5 @@
 // SQLite calls with their errors turned into StoreError or a one-line Result reason.
-#include "store/sqlite_db.h"
+#include "server/store/sqlite_db.h"
 
 #include <sqlite3.h>
 

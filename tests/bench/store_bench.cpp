@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <string>
 
-#include "match/match.h"
-#include "match/table_kit.h"
 #include "protocol/command_signature.h"
 #include "protocol/key_pair.h"
 #include "ratio_reporter.h"
-#include "store/match_store.h"
-#include "store/record_json.h"
+#include "server/match/match.h"
+#include "server/match/table_kit.h"
+#include "server/store/match_store.h"
+#include "server/store/record_json.h"
 
 namespace {
 

@@ -11,9 +11,9 @@
 #include <tuple>
 
 #include "client_fixture.h"
-#include "match/table_kit.h"
-#include "store/match_audit.h"
-#include "store/match_store.h"
+#include "server/match/table_kit.h"
+#include "server/store/match_audit.h"
+#include "server/store/match_store.h"
 
 namespace pool::client::test {
 namespace {

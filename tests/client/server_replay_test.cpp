@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "client_fixture.h"
-#include "store/match_store.h"
+#include "server/store/match_store.h"
 
 namespace pool::client::test {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <limits>
 
-#include "match/command_check.h"
 #include "match_fixture.h"
+#include "server/match/command_check.h"
 
 namespace pool::server {
 namespace {

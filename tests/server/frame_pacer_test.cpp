@@ -1,7 +1,7 @@
 // Frames come out when the clock reaches their simulated time, or all at once unpaced.
 #include <gtest/gtest.h>
 
-#include "match/frame_pacer.h"
+#include "server/match/frame_pacer.h"
 
 namespace pool::server {
 namespace {

@@ -9,14 +9,14 @@
 #include <numbers>
 #include <string>
 
-#include "match/match.h"
-#include "match/match_registry.h"
-#include "match/table_kit.h"
 #include "protocol/command_signature.h"
 #include "protocol/key_pair.h"
 #include "protocol/protocol_version.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
+#include "server/match/match.h"
+#include "server/match/match_registry.h"
+#include "server/match/table_kit.h"
 
 namespace pool::server::test {
 

@@ -5,11 +5,11 @@
 #include <limits>
 
 #include "match_fixture.h"
-#include "match_publish.h"
 #include "net/convert.h"
 #include "net/message_convert.h"
 #include "net/shot_command_check.h"
 #include "net/wire_fields.h"
+#include "server/match_publish.h"
 
 namespace pool::server {
 namespace {

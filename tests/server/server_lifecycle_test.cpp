@@ -3,7 +3,7 @@
 
 #include <fstream>
 
-#include "server_config.h"
+#include "server/server_config.h"
 #include "server_fixture.h"
 
 namespace pool::server::test {

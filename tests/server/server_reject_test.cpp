@@ -58,7 +58,7 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   fast.cue.speed = 50.0;
   EXPECT_EQ(answerTo(a, a, fast), pool_REJECT_MALFORMED);
   // (An enum value outside pool.idl's cannot be sent: Cyclone refuses to serialize it. The server's
-  // check of it is in wire_requests_test.cpp.) Malformed fields that do cross the wire:
+  // check of it is in match_publish_test.cpp.) Malformed fields that do cross the wire:
   protocol::ShotRequest half_call = breakShot(s, 0, 1);
   half_call.called_pocket = "foot_left_corner";  // a pocket without a ball
   EXPECT_EQ(answerTo(a, a, half_call), pool_REJECT_MALFORMED);

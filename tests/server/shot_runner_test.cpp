@@ -1,9 +1,9 @@
 // Shots through the physics: balls already down are carried through untouched, frames on the grid.
 #include <gtest/gtest.h>
 
-#include "match/shot_runner.h"
 #include "match_fixture.h"
 #include "physics/simulation.h"
+#include "server/match/shot_runner.h"
 
 namespace pool::server {
 namespace {

@@ -2,7 +2,7 @@
 // stored table and events; a stored log that says otherwise is reported.
 #include <gtest/gtest.h>
 
-#include "match/match_replay.h"
+#include "server/match/match_replay.h"
 #include "stored_break.h"
 
 namespace pool::store::test {

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "server/match_fixture.h"
-#include "store/match_audit.h"
-#include "store/match_store.h"
-#include "store/record_json.h"
+#include "server/store/match_audit.h"
+#include "server/store/match_store.h"
+#include "server/store/record_json.h"
 #include "store_fixture.h"
 #include "stored_break.h"
 

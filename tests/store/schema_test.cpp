@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "server/server_process.h"
-#include "store/match_store.h"
-#include "store/schema.h"
+#include "server/store/match_store.h"
+#include "server/store/schema.h"
 #include "store_fixture.h"
 
 namespace pool::store::test {

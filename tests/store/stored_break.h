@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "server/match_fixture.h"
-#include "store/match_store.h"
+#include "server/store/match_store.h"
 
 namespace pool::store::test {
 

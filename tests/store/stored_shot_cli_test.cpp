@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/process_runner.h"
-#include "store/match_store.h"
+#include "server/store/match_store.h"
 #include "store_fixture.h"
 #include "stored_break.h"
 
