@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "client/render/renderer.h"
-#include "client_fixture.h"
-#include "png_image.h"
+#include "support/client_fixture.h"
+#include "support/png_image.h"
 
 namespace pool::client::test {
 namespace {

@@ -8,8 +8,8 @@
 #include "client/render/offscreen.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
-#include "display_check.h"
-#include "png_image.h"
+#include "support/display_check.h"
+#include "support/png_image.h"
 
 namespace pool::client::test {
 namespace {

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "display_check.h"
-#include "png_image.h"
+#include "support/display_check.h"
+#include "support/png_image.h"
 
 namespace pool::client::test {
 

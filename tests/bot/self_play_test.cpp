@@ -3,11 +3,11 @@
 // accepts as the next shot's input, and skill noise does not stop that.
 #include <gtest/gtest.h>
 
-#include "ai_fixture.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "client/bot/ai/skill_noise.h"
 #include "physics/simulation.h"
 #include "rules/eight_ball.h"
+#include "support/ai_fixture.h"
 #include "table/rack.h"
 
 namespace pool::bot::test {

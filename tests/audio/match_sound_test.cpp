@@ -7,7 +7,7 @@
 
 #include "client/audio/sound_board.h"
 #include "client/net/game_client.h"
-#include "client_fixture.h"
+#include "support/client_fixture.h"
 
 namespace pool::client::test {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "client/render/eight_ball_room.h"
 #include "client/room/magic_eight_ball.h"
-#include "screenshot_fixture.h"
+#include "support/screenshot_fixture.h"
 
 namespace pool::client::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <set>
 #include <sstream>
 
-#include "client_fixture.h"
+#include "support/client_fixture.h"
 
 namespace pool::client::test {
 namespace {

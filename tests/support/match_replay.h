@@ -10,8 +10,8 @@
 
 #include "client/bot/ai/shot_verifier.h"
 #include "client/bot/ai/table_view.h"
-#include "match_recorder.h"
 #include "rules/eight_ball.h"
+#include "support/match_recorder.h"
 
 namespace pool::client::test {
 

@@ -2,10 +2,10 @@
 // when it is on, safeties when nothing is, the break.
 #include <gtest/gtest.h>
 
-#include "ai_fixture.h"
 #include "client/bot/ai/ghost_ball.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "rules/eight_ball.h"
+#include "support/ai_fixture.h"
 
 namespace pool::bot::test {
 namespace {

@@ -15,9 +15,9 @@
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/render/scene.h"
-#include "png_image.h"
-#include "reported_camera.h"
-#include "screenshot_fixture.h"
+#include "support/png_image.h"
+#include "support/reported_camera.h"
+#include "support/screenshot_fixture.h"
 #include "table/rack.h"
 #include "table/table_spec.h"
 

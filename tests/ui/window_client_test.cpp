@@ -12,8 +12,8 @@
 
 #include "client/app/aim.h"
 #include "client/app/controls.h"
-#include "client_fixture.h"
-#include "display_check.h"
+#include "support/client_fixture.h"
+#include "support/display_check.h"
 
 namespace pool::client::test {
 namespace {

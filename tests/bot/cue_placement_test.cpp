@@ -2,9 +2,9 @@
 // string stays strictly behind it.
 #include <gtest/gtest.h>
 
-#include "ai_fixture.h"
 #include "client/bot/ai/cue_placement.h"
 #include "rules/placement.h"
+#include "support/ai_fixture.h"
 
 namespace pool::bot::test {
 namespace {

@@ -10,10 +10,10 @@
 #include <set>
 #include <tuple>
 
-#include "client_fixture.h"
 #include "server/match/table_kit.h"
 #include "server/store/match_audit.h"
 #include "server/store/match_store.h"
+#include "support/client_fixture.h"
 
 namespace pool::client::test {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "child_process.h"
-#include "match_recorder.h"
+#include "support/child_process.h"
+#include "support/match_recorder.h"
 
 namespace pool::client::test {
 

@@ -9,8 +9,8 @@
 
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
-#include "png_image.h"
-#include "screenshot_fixture.h"
+#include "support/png_image.h"
+#include "support/screenshot_fixture.h"
 
 namespace pool::client::test {
 namespace {

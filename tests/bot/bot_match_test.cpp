@@ -2,8 +2,8 @@
 // shots, replayed through the rules engine, give the same winner.
 #include <gtest/gtest.h>
 
-#include "client_fixture.h"
-#include "match_replay.h"
+#include "support/client_fixture.h"
+#include "support/match_replay.h"
 
 namespace pool::client::test {
 namespace {

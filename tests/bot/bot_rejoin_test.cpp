@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "client/bot/seat_file.h"
-#include "client_fixture.h"
+#include "support/client_fixture.h"
 
 namespace pool::client::test {
 namespace {

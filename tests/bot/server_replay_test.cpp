@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "client_fixture.h"
 #include "server/store/match_store.h"
+#include "support/client_fixture.h"
 
 namespace pool::client::test {
 namespace {
