@@ -1,7 +1,10 @@
 // Flags over file over defaults, with CLI11 and nlohmann-json.
 #include "server/server_config.h"
 
+#include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -32,6 +35,14 @@ void take(const Json& doc, const std::string& key, T& into) {
       throw std::runtime_error(key + ": wrong type");
     }
   }
+}
+
+bool validServerId(const std::string& id) {
+  if (id.empty()) return true;  // drawn at random
+  return id.size() <= kMaxServerIdLength && std::all_of(id.begin(), id.end(), [](char ch) {
+           return std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '_' ||
+                  ch == '-';
+         });
 }
 
 std::string readFile(const std::string& path, bool& ok) {
@@ -69,6 +80,15 @@ std::string checkConfig(const ServerConfig& c) {
   if (c.tables < 0 || c.tables > 10000) return "tables: must be 0-10000";
   if (!(c.snapshot_hz > 0.0 && c.snapshot_hz <= 1000.0)) return "snapshot-hz: must be in (0, 1000]";
   if (!(c.grace >= 0.0)) return "grace: must be >= 0";
+  if (!validServerId(c.server_id)) {
+    return "server-id: 1-" + std::to_string(kMaxServerIdLength) +
+           " letters, digits, '.', '_' or '-' (match ids are \"<server id>-<n>\" in 39 bytes)";
+  }
+  if (spdlog::level::from_str(c.log_level) == spdlog::level::off && c.log_level != "off") {
+    return "log-level: '" + c.log_level +
+           "' is not one of trace, debug, info, warn, error, "
+           "critical, off";
+  }
   return {};
 }
 
@@ -81,11 +101,12 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   app.add_option("--snapshot-hz", flags.snapshot_hz, "frames per simulated second");
   app.add_flag("--fast", flags.fast, "publish frames unpaced (tests)");
   app.add_option("--config", config_file, "JSON file with the same keys; flags win");
-  app.add_option("--server-id", flags.server_id, "prefix of match ids (default: random hex)");
+  app.add_option("--server-id", flags.server_id,
+                 "prefix of match ids, 1-24 of [A-Za-z0-9._-] (default: random hex)");
   app.add_option("--grace", flags.grace, "seconds a vanished player's seat is kept");
   app.add_option("--name", flags.name, "this server's name in logs");
   app.add_option("--table", flags.table, "table spec name or path");
-  app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error");
+  app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error, critical, off");
   app.add_option("--db", flags.db,
                  "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)");
   app.add_option("--replay", flags.replay,

@@ -1,6 +1,8 @@
 // pool-server's settings: command-line flags, an optional JSON file with the same keys, defaults.
 #pragma once
 
+#include <cstddef>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -9,6 +11,9 @@
 namespace pool::server {
 
 /// Everything pool-server can be told.
+/// The longest --server-id: "<id>-<n>" must fit a match id's 39 bytes for any n the server reaches.
+inline constexpr std::size_t kMaxServerIdLength = 24;
+
 struct ServerConfig {
   std::uint32_t domain = 0;          ///< DDS domain id, 0–232
   int tables = 0;                    ///< empty matches opened at start

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "core/text.h"
 #include "server/match_publish.h"
 
 namespace pool::server {
@@ -58,11 +59,11 @@ void ServerLoop::warnIfFailed(const std::string& error, const char* what) const 
 void ServerLoop::readJoins(double now) {
   for (auto& event : transport_.takeJoins()) {
     if (const auto* gone = std::get_if<net::ClientGone>(&event)) {
-      spdlog::info("client {} is gone ({})", gone->client, gone->why);
+      spdlog::info("client {} is gone ({})", escapedForLog(gone->client), gone->why);
       registry_.clientGone(gone->client, now);
       transport_.forgetClient(gone->client);  // its last reply need not be kept any more
     } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
-      spdlog::warn("unreadable join request: {}", bad->reason);
+      spdlog::warn("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
@@ -80,8 +81,9 @@ void ServerLoop::readJoins(double now) {
 
 void ServerLoop::answerJoin(const JoinCommand& command) {
   const JoinAnswer answer = registry_.join(command);
-  spdlog::info("join {} {} by {} ({}): {} {}", toString(command.action), command.match,
-               command.client, command.name, toString(answer.outcome), answer.reason);
+  spdlog::info("join {} {} by {} ({}): {} {}", toString(command.action),
+               escapedForLog(command.match), escapedForLog(command.client),
+               escapedForLog(command.name), toString(answer.outcome), escapedForLog(answer.reason));
   // A seat (and its token) is stored before the player hears of it: a crash right after the
   // reply cannot take the seat away again.
   storeChanges({});
@@ -95,7 +97,7 @@ void ServerLoop::readCommands(double now) {
       refusal.seat = in.seat;
       refusal.seq = in.seq;
       refusal.rejection = {in.bad_signature ? Reject::BadSignature : Reject::Malformed, in.problem};
-      refused(in.match, refusal, now);
+      refused(in.match, refusal, now);  // logged escaped
       continue;
     }
     const CommandAnswer answer = registry_.shoot(*in.request, now);
@@ -112,8 +114,8 @@ void ServerLoop::readCommands(double now) {
 }
 
 void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, double now) {
-  spdlog::debug("command {} seat {} seq {}: {} ({})", match, answer.seat, answer.seq,
-                toString(answer.rejection.reason), answer.rejection.text);
+  spdlog::debug("command {} seat {} seq {}: {} ({})", escapedForLog(match), answer.seat, answer.seq,
+                toString(answer.rejection.reason), escapedForLog(answer.rejection.text));
   rejections_.add(answer.rejection.reason, now);
   publishResult(match, answer);
 }
@@ -128,6 +130,13 @@ void ServerLoop::publishResult(const std::string& match, const CommandAnswer& an
 
 void ServerLoop::stepReplay(double now) {
   if (!replay_ || replay_reported_) return;
+  // A replay is for spectators: it starts once someone reads its results, so that nobody who
+  // was there from the start misses its first shots to discovery.
+  if (!replay_started_) {
+    if (transport_.resultReaders() == 0) return;
+    replay_started_ = true;
+    spdlog::info("replay {}: a spectator is here, starting", replay_->matchId());
+  }
   if (auto answer = replay_->step(now)) {
     spdlog::info("replay {}: seat {} seq {} {}", replay_->matchId(), answer->seat, answer->seq,
                  answer->accepted() ? "replayed" : answer->rejection.text);

@@ -74,6 +74,7 @@ class ServerLoop {
   store::MatchStore* store_;
   MatchReplay* replay_ = nullptr;
   bool replay_reported_ = false;
+  bool replay_started_ = false;                     ///< a spectator has been seen: the replay runs
   std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
   std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug

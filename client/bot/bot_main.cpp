@@ -11,6 +11,7 @@
 
 #include "client/bot/bot_player.h"
 #include "client/net/game_client.h"
+#include "core/text.h"
 #include "net/dds_error.h"
 
 namespace {
@@ -97,7 +98,19 @@ int main(int argc, char** argv) {
   // Logs go to stderr: stdout carries only the result line.
   spdlog::set_default_logger(spdlog::stderr_color_mt("pool-bot"));
   spdlog::set_level(spdlog::level::from_str(flags.log_level));
-  spdlog::set_pattern("[%H:%M:%S.%e] [" + flags.name + "] [%l] %v");
+  if (!pool::isCleanUtf8(flags.name, 31)) {
+    std::cerr << "--name: 1-31 bytes of UTF-8 without control characters\n";
+    return 2;
+  }
+  if (spdlog::level::from_str(flags.log_level) == spdlog::level::off && flags.log_level != "off") {
+    std::cerr << "--log-level: '" << flags.log_level
+              << "' is not one of trace, debug, info, warn, error, critical, off\n";
+    return 2;
+  }
+  // The name goes into the log pattern: a '%' in it must not be read as a pattern flag.
+  std::string name;
+  for (char ch : flags.name) name += ch == '%' ? std::string("%%") : std::string(1, ch);
+  spdlog::set_pattern("[%H:%M:%S.%e] [" + name + "] [%l] %v");
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
   try {

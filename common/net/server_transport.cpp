@@ -111,6 +111,10 @@ std::string ServerTransport::publish(const protocol::TableFrame& frame) {
   return written(e_->snapshots, *toWire(frame));
 }
 
+std::uint32_t ServerTransport::resultReaders() const {
+  return e_->results.publicationMatched().current;
+}
+
 void ServerTransport::forgetClient(const std::string& client) {
   pool_JoinReply key{};
   setText(key.client, client);

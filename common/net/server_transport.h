@@ -60,6 +60,9 @@ class ServerTransport {
   std::string publish(const protocol::ShotReport& report, bool keep = true);
   std::string publish(const protocol::TableFrame& frame);
 
+  /// Readers of shot results matched now (someone is watching).
+  std::uint32_t resultReaders() const;
+
   /// Drops the last reply kept for `client` (it is gone).
   void forgetClient(const std::string& client);
   /// Disposes `match`'s lobby entry, state and results: readers see it gone.

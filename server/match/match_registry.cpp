@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "core/text.h"
 #include "protocol/key_pair.h"
 
 namespace pool::server {
@@ -25,8 +26,7 @@ JoinAnswer about(JoinAnswer answer, const std::string& match) {
 }  // namespace
 
 bool validPlayerName(std::string_view name) {
-  return !name.empty() && name.size() <= 31 &&
-         std::all_of(name.begin(), name.end(), [](char c) { return c >= ' ' && c != 127; });
+  return isCleanUtf8(name, 31);
 }
 
 MatchRegistry::MatchRegistry(RegistryOptions options, std::shared_ptr<const TableKit> kit)
@@ -101,7 +101,8 @@ JoinAnswer MatchRegistry::join(const JoinCommand& c) {
 
 JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
   if (!validPlayerName(c.name)) {
-    return JoinAnswer::refuse(JoinOutcome::BadName, "a name is 1-31 printable characters");
+    return JoinAnswer::refuse(JoinOutcome::BadName,
+                              "a name is 1-31 bytes of UTF-8 without control characters");
   }
   if (c.seat < -1 || c.seat > 1) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "seat: must be 0, 1 or -1 (any)");

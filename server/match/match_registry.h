@@ -99,7 +99,7 @@ class MatchRegistry {
   std::map<std::vector<std::uint8_t>, std::uint32_t> key_seq_;
 };
 
-/// A player name is 1–31 printable characters (no control characters).
+/// A player name is 1–31 bytes of well-formed UTF-8 without control characters ("Zoë" is one).
 bool validPlayerName(std::string_view name);
 
 }  // namespace pool::server

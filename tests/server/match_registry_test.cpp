@@ -68,8 +68,8 @@ TEST(MatchRegistry, SeatsGetDistinctNonZeroTokens) {
   MatchRegistry r(fixedOptions(), nineFoot());
   r.open();
   const JoinAnswer a = r.join(seatRequest("a", "srv-1", "Ada"));
-  const JoinAnswer b = r.join(seatRequest("b", "srv-1", "Bob"));
-  ASSERT_TRUE(a.accepted() && b.accepted());
+  const JoinAnswer b = r.join(seatRequest("b", "srv-1", "Zo\xC3\xAB"));  // "Zoë" in UTF-8
+  ASSERT_TRUE(a.accepted() && b.accepted()) << a.reason << b.reason;
   EXPECT_EQ(a.match, "srv-1");
   EXPECT_NE(a.token, 0u);
   EXPECT_NE(b.token, 0u);
@@ -84,6 +84,8 @@ TEST(MatchRegistry, RefusalsCarryTheirOutcome) {
   EXPECT_EQ(r.join(seatRequest("a", "srv-9", "Ada")).outcome, JoinOutcome::NoSuchMatch);
   EXPECT_EQ(r.join(seatRequest("a", "srv-1", "")).outcome, JoinOutcome::BadName);
   EXPECT_EQ(r.join(seatRequest("a", "srv-1", "A\nda")).outcome, JoinOutcome::BadName);
+  EXPECT_EQ(r.join(seatRequest("a", "srv-1", "\x1B[2JAda")).outcome, JoinOutcome::BadName);
+  EXPECT_EQ(r.join(seatRequest("a", "srv-1", "Zo\xEB")).outcome, JoinOutcome::BadName);  // Latin-1
   EXPECT_EQ(r.join(seatRequest("a", "srv-1", "Ada", 2)).outcome, JoinOutcome::NotAllowed);
   JoinCommand old = seatRequest("a", "srv-1", "Ada");
   old.protocol_version = 0;

@@ -66,5 +66,23 @@ TEST(ServerConfig, BadValuesAreRefusedWithTheirKey) {
   EXPECT_EQ(parseConfig(3, argv).exit_code, 2);
 }
 
+TEST(ServerConfig, AnUnknownLogLevelOrAServerIdThatCutsMatchIdsIsRefused) {
+  ServerConfig c;
+  c.log_level = "bogus";  // spdlog would quietly read it as "off"
+  EXPECT_NE(checkConfig(c).find("log-level"), std::string::npos);
+  c.log_level = "off";
+  EXPECT_EQ(checkConfig(c), "");
+  // A 39-byte id leaves no room for "-<n>" in a 39-byte match id.
+  c.server_id = std::string(39, 'a');
+  EXPECT_NE(checkConfig(c).find("server-id"), std::string::npos);
+  c.server_id = std::string(kMaxServerIdLength, 'a');
+  EXPECT_EQ(checkConfig(c), "");
+  EXPECT_LE(c.server_id.size() + 1 + 14, 39u);  // "-" and n up to 14 digits
+  c.server_id = "lab\n2";
+  EXPECT_NE(checkConfig(c).find("server-id"), std::string::npos);
+  const char* argv[] = {"pool-server", "--log-level", "verbose"};
+  EXPECT_EQ(parseConfig(3, argv).exit_code, 2);
+}
+
 }  // namespace
 }  // namespace pool::server::test
