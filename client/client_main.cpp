@@ -71,6 +71,10 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
   app.add_option("--name", flags.window.name, "the player's name (window)");
   app.add_flag("--hotseat", flags.window.hotseat, "two players on this screen (window)");
+  bool fresh_identity = false;
+  app.add_flag("--fresh-identity", fresh_identity,
+               "play with a new key, keeping nothing (default: each player's key and seat are kept "
+               "in $XDG_CONFIG_HOME/pool/players, so a restarted window takes its seat back)");
   app.add_flag("--mute", flags.window.mute, "no sound (window)");
   app.add_flag("--play", flags.window.play, "take a seat at once, skipping the lobby (window)");
   app.add_option("--match", flags.window.match, "with --play: the match to join");
@@ -112,6 +116,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-textures", no_textures, "--screenshot: flat colours, no numbers or grain");
   app.add_flag("--no-lighting", no_lighting, "--screenshot: unlit colours");
   CLI11_PARSE(app, argc, argv);
+  flags.window.keep_identity = !fresh_identity;
   flags.screenshot.render.textures = !no_textures;
   flags.screenshot.render.lighting = !no_lighting;
 

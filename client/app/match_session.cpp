@@ -20,10 +20,26 @@ MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)
   for (int i = 0; i < count; ++i) {
     const std::string name =
         options_.hotseat ? options_.name + " " + std::to_string(i + 1) : options_.name;
-    clients_.push_back(
-        std::make_unique<client::GameClient>(client::ClientOptions{options_.domain, "", name}));
+    std::optional<protocol::KeyPair> key;
+    std::optional<client::PlayerIdentity> identity;
+    if (!options_.identity_dir.empty()) {
+      identity.emplace(options_.identity_dir, name);
+      auto kept = identity->key();
+      if (kept) {
+        key = *kept;
+      } else {
+        note("player key: " + kept.error() + " (playing with a new key)", true);
+        identity.reset();
+      }
+    }
+    clients_.push_back(std::make_unique<client::GameClient>(
+        client::ClientOptions{options_.domain, "", name}, key));
+    saved_.push_back(identity ? identity->seat() : std::nullopt);
+    if (saved_.back()) clients_.back()->noteSequence(saved_.back()->last_seq);
+    identities_.push_back(std::move(identity));
   }
   awaiting_.assign(clients_.size(), false);
+  away_revision_.assign(clients_.size(), 0);
 }
 
 MatchSession::~MatchSession() = default;
@@ -81,7 +97,10 @@ bool MatchSession::joining() const {
 }
 
 void MatchSession::sendJoin(std::size_t i) {
-  if (want_ == Want::Play) {
+  if (want_ == Want::Play && saved_[i]) {
+    // A seat this player held when the window last ran: take it back first.
+    clients_[i]->requestRejoin(saved_[i]->match, saved_[i]->token, saved_[i]->seat);
+  } else if (want_ == Want::Play) {
     clients_[i]->requestSeat(wanted_match_);
   } else {
     clients_[i]->requestSpectate(wanted_match_);
@@ -93,7 +112,8 @@ void MatchSession::sendJoin(std::size_t i) {
 void MatchSession::startPending() {
   // Requests go out once the lobby names a match to send them to.
   if (want_ == Want::None || joining() || !match_.empty()) return;
-  if (wanted_match_.empty()) {
+  const bool rejoin = want_ == Want::Play && saved_.front().has_value();
+  if (wanted_match_.empty() && !rejoin) {
     const auto found = want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
     if (!found) return;
     wanted_match_ = *found;
@@ -110,10 +130,56 @@ void MatchSession::retryJoins() {
   }
 }
 
+void MatchSession::keepSeat(std::size_t from) {
+  const auto& seat = clients_[from]->seat();
+  if (!identities_[from] || !seat) return;
+  const client::SeatRecord record{seat->match, seat->seat, seat->token,
+                                  clients_[from]->lastSequence()};
+  if (auto error = identities_[from]->keepSeat(record); !error.empty()) {
+    note("cannot keep the seat for a restart: " + error, true);
+  }
+}
+
+bool MatchSession::onRejoinAnswer(const client::JoinAnswer& answer, std::size_t from) {
+  if (answer.accepted()) {
+    note("took back seat " + std::to_string(answer.seat + 1) + " in " + answer.match);
+    keepSeat(from);
+    saved_[from].reset();
+    return false;  // the common path below follows the match
+  }
+  if (!saved_[from]) return true;  // a rejoin after being shown away, refused: nothing to undo
+  note("seat in " + saved_[from]->match + " is gone (" + client::toString(answer.outcome) +
+           "): finding a table",
+       true);
+  saved_[from].reset();
+  if (identities_[from]) identities_[from]->forgetSeat();
+  awaiting_[from] = false;
+  startPending();  // a free table, as if no seat had been kept
+  return true;
+}
+
+void MatchSession::rejoinIfAway(const client::MatchView& view) {
+  for (std::size_t i = 0; i < clients_.size(); ++i) {
+    const auto& seat = clients_[i]->seat();
+    if (!seat || seat->match != view.match) continue;
+    const auto& shown = view.seats[static_cast<std::size_t>(seat->seat)];
+    if (shown.connected || away_revision_[i] == view.revision) continue;
+    // The server takes us for gone (it restarted, or our lease ran out while we were starved).
+    away_revision_[i] = view.revision;
+    note("the server shows seat " + std::to_string(seat->seat + 1) + " away: taking it back");
+    clients_[i]->requestRejoin(seat->match, seat->token, seat->seat);
+  }
+}
+
 void MatchSession::onAnswer(const client::JoinAnswer& answer, std::size_t from) {
+  if (answer.action == client::JoinAction::Leave && answer.accepted() && identities_[from]) {
+    identities_[from]->forgetSeat();
+  }
   if (answer.action == client::JoinAction::Leave || answer.action == client::JoinAction::Rematch) {
     return;
   }
+  if (answer.action == client::JoinAction::Rejoin && onRejoinAnswer(answer, from)) return;
+  if (answer.action == client::JoinAction::Seat && answer.accepted()) keepSeat(from);
   // A repeated request's second answer changes nothing.
   if (!awaiting_[from]) return;
   awaiting_[from] = false;
@@ -172,6 +238,7 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
     playback_.push(std::move(*frame), now);
   } else if (auto* view = std::get_if<client::MatchView>(&event)) {
     if (view->match != match_) return;
+    if (stage_ == SessionStage::Playing) rejoinIfAway(*view);
     // A state that counts a new shot may overtake the shot's frames: wait a little for them.
     const auto playing = playback_.shot();
     if (view->shot_number > shots_seen_ && (!playing || *playing < view->shot_number)) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "client/app/playback_clock.h"
 #include "client/net/game_client.h"
+#include "client/net/player_identity.h"
 #include "core/result.h"
 #include "protocol/shot_request.h"
 
@@ -20,6 +22,9 @@ struct SessionOptions {
   std::uint32_t domain = 0;
   std::string name = "Player";
   bool hotseat = false;  ///< take both seats of the match: two players on one screen
+  /// Where each player's key pair and held seat are kept (client/net/player_identity.h), so a
+  /// restarted window takes its seat back; empty: a fresh key each run, nothing kept.
+  std::filesystem::path identity_dir;
 };
 
 /// What the session is doing.
@@ -96,6 +101,9 @@ class MatchSession {
  private:
   void handle(client::ClientEvent& event, std::size_t from, double now);
   void onAnswer(const client::JoinAnswer& answer, std::size_t from);
+  bool onRejoinAnswer(const client::JoinAnswer& answer, std::size_t from);
+  void keepSeat(std::size_t from);
+  void rejoinIfAway(const client::MatchView& view);
   bool joining() const;
   void sendJoin(std::size_t client);
   void retryJoins();
@@ -110,6 +118,9 @@ class MatchSession {
   std::string wanted_match_;
   std::string match_;
   std::vector<bool> awaiting_;  ///< per client: a join request not answered yet
+  std::vector<std::optional<client::PlayerIdentity>> identities_;  ///< per client, if kept
+  std::vector<std::optional<client::SeatRecord>> saved_;  ///< per client: a seat to take back
+  std::vector<std::uint32_t> away_revision_;  ///< per client: the state that showed it away
   double join_sent_at_ = 0.0;
   PlaybackClock playback_;
   std::optional<std::uint32_t> unanswered_;  ///< a shot sent, no state or rejection for it yet

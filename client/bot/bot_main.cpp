@@ -32,9 +32,9 @@ struct Flags {
 
 int run(const Flags& flags) {
   using namespace pool;
-  std::optional<bot::SeatRecord> saved;
+  std::optional<client::SeatRecord> saved;
   if (!flags.bot.seat_file.empty()) {
-    auto read = bot::readSeatFile(flags.bot.seat_file);
+    auto read = client::readSeatFile(flags.bot.seat_file);
     if (!read) spdlog::warn("ignoring seat file: {}", read.error());
     if (read && *read) saved = **read;
   }
@@ -42,7 +42,7 @@ int run(const Flags& flags) {
   // its seat with the same key.
   std::optional<protocol::KeyPair> key;
   if (!flags.bot.seat_file.empty()) {
-    auto loaded = protocol::loadOrCreateKeyFile(bot::keyFileFor(flags.bot.seat_file));
+    auto loaded = protocol::loadOrCreateKeyFile(client::keyFileFor(flags.bot.seat_file));
     if (!loaded) {
       spdlog::error("key file: {}", loaded.error());
       return 2;

@@ -34,7 +34,8 @@ const char* toString(BotStage stage) {
   return "unknown";
 }
 
-BotPlayer::BotPlayer(client::GameClient& client, BotConfig config, std::optional<SeatRecord> saved)
+BotPlayer::BotPlayer(client::GameClient& client, BotConfig config,
+                     std::optional<client::SeatRecord> saved)
     : client_(client),
       config_(std::move(config)),
       saved_(std::move(saved)),
@@ -128,7 +129,8 @@ void BotPlayer::onGone(const client::MatchGone& gone, double now) {
 void BotPlayer::loseSeat(double now, const std::string& why) {
   spdlog::warn("lost seat in {}: {}", target_, why);
   const auto& seat = client_.seat();
-  if (seat) saved_ = SeatRecord{seat->match, seat->seat, seat->token, client_.lastSequence()};
+  if (seat)
+    saved_ = client::SeatRecord{seat->match, seat->seat, seat->token, client_.lastSequence()};
   stage_ = BotStage::SeatLost;
   lost_at_ = now;
   pending_seq_.reset();
@@ -179,8 +181,8 @@ void BotPlayer::sendJoin(double now) {
 void BotPlayer::saveSeat() {
   const auto& seat = client_.seat();
   if (config_.seat_file.empty() || !seat) return;
-  const SeatRecord record{seat->match, seat->seat, seat->token, client_.lastSequence()};
-  if (auto error = writeSeatFile(config_.seat_file, record); !error.empty()) {
+  const client::SeatRecord record{seat->match, seat->seat, seat->token, client_.lastSequence()};
+  if (auto error = client::writeSeatFile(config_.seat_file, record); !error.empty()) {
     spdlog::warn("seat file: {}", error);
   }
 }

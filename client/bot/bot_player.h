@@ -12,8 +12,8 @@
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/ai/skill_noise.h"
 #include "client/bot/ai/table_view.h"
-#include "client/bot/seat_file.h"
 #include "client/net/game_client.h"
+#include "client/net/seat_file.h"
 
 namespace pool::bot {
 
@@ -44,7 +44,7 @@ const char* toString(BotStage stage);
 /// Plays one match through `client`. Time is passed in (s on any monotonic clock).
 class BotPlayer {
  public:
-  BotPlayer(client::GameClient& client, BotConfig config, std::optional<SeatRecord> saved);
+  BotPlayer(client::GameClient& client, BotConfig config, std::optional<client::SeatRecord> saved);
 
   /// Handles what arrived since the last step and acts on it.
   void step(double now);
@@ -75,7 +75,8 @@ class BotPlayer {
 
   client::GameClient& client_;
   BotConfig config_;
-  std::optional<SeatRecord> saved_;  ///< the seat to take back (from a file or a lost server)
+  std::optional<client::SeatRecord>
+      saved_;  ///< the seat to take back (from a file or a lost server)
   BotStage stage_ = BotStage::FindingMatch;
   std::string target_;  ///< the match being joined or played
   std::optional<std::uint32_t> join_request_;

@@ -69,7 +69,8 @@ class WindowApp {
         controls_(limitsOf(view_), areaOf(view_),
                   app::CameraRig(view_.spec.length, view_.spec.width,
                                  static_cast<double>(options.width) / options.height)),
-        session_({options.domain, options.name, options.hotseat}),
+        session_({options.domain, options.name, options.hotseat,
+                  options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
         sound_(options.mute) {
     session_.setListener(&sound_);
     installInput(window_.get(), controls_);

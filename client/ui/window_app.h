@@ -13,6 +13,9 @@ struct WindowOptions {
   std::uint32_t domain = 0;
   std::string name = "Player";
   bool hotseat = false;  ///< two seats on this screen
+  /// Keep each player's key and seat in the config folder, so a restarted window takes its seat
+  /// back (false: a fresh key each run).
+  bool keep_identity = true;
   bool mute = false;     ///< no sound (without an audio device it is silent anyway)
   bool play = false;     ///< take a seat at once (in `match`, or the first free table)
   std::string spectate;  ///< watch this match at once ("any": the first in play)

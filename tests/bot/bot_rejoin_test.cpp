@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "client/bot/seat_file.h"
+#include "client/net/seat_file.h"
 #include "support/client_fixture.h"
 
 namespace pool::client::test {
@@ -55,7 +55,7 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
                                     : "no turn of alice to interrupt\n" + logs());
 
   // Killed while it is alice's turn: the seat file holds the token, the server marks her away.
-  auto saved = bot::readSeatFile(file("alice.json"));
+  auto saved = client::readSeatFile(file("alice.json"));
   ASSERT_TRUE(saved && *saved) << "no seat file";
   alice->kill(SIGKILL);
   ASSERT_TRUE(untilConnected(recorder, "alice", false, 20s)) << "the server never noticed";

@@ -24,6 +24,7 @@ enum Domain : std::uint32_t {
   kReplay = 121,
   kWindowShot = 210,
   kWindowSpectate = 211,
+  kWindowRestart = 212,
   kStarved = 136,  ///< 135–149: the signing, flood and presence tests
   kSpectateScreenshot = 204,
 };
@@ -38,6 +39,7 @@ class ClientIntegrationTest : public ::testing::Test {
     scratch_ = std::make_unique<ScratchDir>(tag);
     // The servers' default database goes to the scratch folder, never the real home.
     ::setenv("XDG_DATA_HOME", scratch_->file("data").c_str(), 1);
+    ::setenv("XDG_CONFIG_HOME", scratch_->file("config").c_str(), 1);  // windows keep keys there
   }
 
   ChildProcess& startServer(const std::vector<std::string>& extra) {

@@ -171,5 +171,68 @@ TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
   }
 }
 
+// A player whose window dies (SIGKILL) mid-match starts it again: the window finds its key and seat
+// in the config folder, takes the seat back before the grace runs out, and plays on.
+TEST_F(WindowClientTest, AWindowKilledMidMatchTakesItsSeatBackAndPlaysOn) {
+  open(kWindowRestart, "window-restart");
+  MatchRecorder recorder(kWindowRestart);
+  startServer({"--grace", "60"});
+  // The first window sits down and waits (it never shoots); then a bot takes the other seat.
+  startWindow({"--play", "--name", "Wendy"}, "frames 100000\n");
+  ASSERT_TRUE(recorder.pump(60s,
+                            [&] {
+                              const MatchView* v = recorder.latest(recorder.firstMatch());
+                              return v && v->seats[0].name == "Wendy";
+                            }))
+      << windowErr() << logs();
+  const std::string match = recorder.firstMatch();
+  ChildProcess& bot = startBot("bert", 5);
+  ASSERT_TRUE(recorder.pump(30s,
+                            [&] {
+                              const MatchView* v = recorder.latest(match);
+                              return v && v->phase == MatchPhase::Break && v->shooter == 0;
+                            }))
+      << "the rack did not start with Wendy to break\n"
+      << logs();
+  std::ifstream kept(file("config") + "/pool/players/Wendy.seat");
+  ASSERT_TRUE(kept.good()) << "the window kept no seat file";
+
+  // Killed: the server shows her away once her lease runs out.
+  const std::string window = "^" + std::string(POOL_BIN_DIR) + "/pool-client --domain " +
+                             std::to_string(domain_) + " ";  // the program, not xvfb-run
+  ASSERT_EQ(std::system(("pkill -KILL -f '" + window + "'").c_str()), 0);
+  windowExit();
+  ASSERT_TRUE(recorder.pump(30s,
+                            [&] {
+                              const MatchView* v = recorder.latest(match);
+                              return v && !v->seats[0].connected;
+                            }))
+      << "the server never showed the killed window away\n"
+      << logs();
+
+  // Started again with the same config folder: the seat comes back and the break is played.
+  startWindow({"--play", "--name", "Wendy"},
+              "wait aiming\ndown SPACE\nframes 40\nup SPACE\nframes 30\nquit\n");
+  const bool back = recorder.pump(60s, [&] {
+    const MatchView* v = recorder.latest(match);
+    return v && v->seats[0].connected;
+  });
+  const bool played = back && recorder.pump(60s, [&] {
+    return recorder.finals(match).size() >= 1 && recorder.nthCommand(match, 0, 1) != nullptr;
+  });
+  const int status = windowExit();
+  ASSERT_TRUE(back) << "the restarted window did not take its seat back\n" << windowErr() << logs();
+  ASSERT_TRUE(played) << "the restarted window did not break\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  bool said = false;
+  for (const auto& note : windowLines("note")) {
+    said = said || note.value("text", "").find("took back seat 1 in " + match) != std::string::npos;
+  }
+  EXPECT_TRUE(said) << "the window did not say it took its seat back";
+  EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
+  EXPECT_EQ(recorder.latest(match)->seats[0].name, "Wendy");
+  bot.kill(SIGTERM);
+}
+
 }  // namespace
 }  // namespace pool::client::test

@@ -1,5 +1,5 @@
-// The bot's identity on disk: the seat it holds (match, seat, token) and the last sequence
-// number it used, so a restarted bot can rejoin with its token (pool-bot --token-file); its
+// A player's identity on disk: the seat it holds (match, seat, token) and the last sequence
+// number it used, so a restarted bot or window can rejoin with its token; its
 // signing key is kept beside it (protocol/key_pair.h).
 #pragma once
 
@@ -10,9 +10,9 @@
 
 #include "core/result.h"
 
-namespace pool::bot {
+namespace pool::client {
 
-/// What a bot remembers of its seat.
+/// What a player remembers of its seat.
 struct SeatRecord {
   std::string match;
   int seat = -1;
@@ -30,4 +30,4 @@ std::filesystem::path keyFileFor(const std::filesystem::path& seat_file);
 /// Writes it atomically (a temporary file renamed over it). Empty string on success, else why.
 std::string writeSeatFile(const std::filesystem::path& path, const SeatRecord& record);
 
-}  // namespace pool::bot
+}  // namespace pool::client

@@ -1,12 +1,12 @@
 // JSON seat files, written atomically.
-#include "client/bot/seat_file.h"
+#include "client/net/seat_file.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
 
-namespace pool::bot {
+namespace pool::client {
 
 Result<std::optional<SeatRecord>> readSeatFile(const std::filesystem::path& path) {
   using Out = Result<std::optional<SeatRecord>>;
@@ -50,4 +50,4 @@ std::string writeSeatFile(const std::filesystem::path& path, const SeatRecord& r
   return ec ? "cannot rename to " + path.string() + ": " + ec.message() : std::string();
 }
 
-}  // namespace pool::bot
+}  // namespace pool::client
