@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/text.h"
+
 namespace pool::scenario {
 
 using nlohmann::json;
@@ -45,7 +47,8 @@ std::string ObjectReader::fieldPath(std::string_view key) const {
 }
 
 void ObjectReader::fail(std::string_view key, std::string_view reason) {
-  if (error_.empty()) error_ = fieldPath(key) + ": " + std::string(reason);
+  // Keys come from the file: escaped, so a refusal stays one line whatever they hold.
+  if (error_.empty()) error_ = fieldPath(escapedForLog(key)) + ": " + std::string(reason);
 }
 
 void ObjectReader::onlyKnown(std::initializer_list<std::string_view> known) {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/text.h"
+
 namespace pool::table {
 namespace {
 
@@ -62,7 +64,7 @@ std::string setModel(ContactModels& models, std::string_view pair, std::string_v
   const PairModels* p = find(pair);
   if (!p) return "unknown contact pair (known: " + joined(contactPairs()) + ")";
   if (std::find(p->models.begin(), p->models.end(), name) == p->models.end()) {
-    return "unknown model '" + std::string(name) + "' (known: " + joined(p->models) + ")";
+    return "unknown model '" + escapedForLog(name) + "' (known: " + joined(p->models) + ")";
   }
   models.*(p->field) = std::string(name);
   return "";

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/text.h"
 #include "table/assets.h"
 #include "table/table_layout.h"
 
@@ -57,7 +58,7 @@ std::string readFields(const json& obj, const std::string& prefix,
     bool known = false;
     for (const NumberField& f : fields) known = known || key == f.key;
     for (const char* k : other_known) known = known || key == k;
-    if (!known) return prefix + key + ": unknown field";
+    if (!known) return prefix + escapedForLog(key) + ": unknown field";
   }
   return "";
 }
@@ -80,7 +81,7 @@ std::string readParams(const json& root, PhysicsParams& params) {
   if (it == root.end()) return "";
   if (!it->is_object()) return "params: must be an object";
   for (const auto& [key, value] : it->items()) {
-    const std::string where = "params." + key + ": ";
+    const std::string where = "params." + escapedForLog(key) + ": ";
     if (key == "u_b" && value.is_null()) {
       params.u_b.reset();
       continue;
@@ -98,9 +99,9 @@ std::string readModels(const json& root, ContactModels& models) {
   if (it == root.end()) return "";
   if (!it->is_object()) return "models: must be an object";
   for (const auto& [key, value] : it->items()) {
-    if (!value.is_string()) return "models." + key + ": must be a string";
+    if (!value.is_string()) return "models." + escapedForLog(key) + ": must be a string";
     const std::string reason = setModel(models, key, value.get<std::string>());
-    if (!reason.empty()) return "models." + key + ": " + reason;
+    if (!reason.empty()) return "models." + escapedForLog(key) + ": " + reason;
   }
   return "";
 }

@@ -337,5 +337,20 @@ TEST(PhysicsParams, ValidateChecksRangesAndConsistency) {
   EXPECT_EQ(validate(q), "cue_end_mass: must not exceed cue_mass");
 }
 
+// Found by fuzz_table_spec: a key holding a newline (or any control character) is named in the
+// refusal escaped, so the refusal stays one line (a log line nobody can forge).
+TEST(TableSpec, AnUnknownKeyWithControlCharactersIsRefusedInOneLine) {
+  for (const char* parent : {"", "params", "models", "corner"}) {
+    json doc = shippedJson("wpa-8ft");
+    json& where = std::string(parent).empty() ? doc : doc[parent];
+    where["r\nder_mesh\x1B"] = std::string(parent) == "models" ? json("han2005") : json(1.0);
+    const auto spec = parseTableSpec(doc.dump(), "fuzz.json", kTablesDir.string(), "fuzz");
+    ASSERT_FALSE(spec) << parent;
+    EXPECT_EQ(spec.error().find('\n'), std::string::npos) << spec.error();
+    EXPECT_EQ(spec.error().find('\x1B'), std::string::npos) << spec.error();
+    EXPECT_NE(spec.error().find("r\\x0Ader_mesh\\x1B"), std::string::npos) << spec.error();
+  }
+}
+
 }  // namespace
 }  // namespace pool::table
