@@ -33,6 +33,15 @@ void ServerLoop::run(const std::atomic<bool>& stop) {
 }
 
 void ServerLoop::step(double now) {
+  // The loop wakes every kMaxWait at most: a much longer gap means the process was stopped or
+  // suspended (SIGSTOP, a closed laptop lid, a stalled VM). That time counts against nobody.
+  if (last_step_ && now - *last_step_ > kStall) {
+    const double stalled = now - *last_step_ - kMaxWait.count() / 1000.0;
+    spdlog::warn("the server was not running for {:.1f} s: grace periods and frames resume",
+                 stalled);
+    registry_.pause(stalled);
+  }
+  last_step_ = now;
   readJoins(now);
   readCommands(now);
   stepReplay(now);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,9 @@ class ServerLoop {
   std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   std::chrono::steady_clock::time_point epoch_;
+  std::optional<double> last_step_;  ///< when the previous pass ran, s
+  /// A pass later than this after the previous one means the server was not running.
+  static constexpr double kStall = 1.0;
 };
 
 }  // namespace pool::server

@@ -29,6 +29,9 @@ class FramePacer {
 
   /// When the next frame not yet handed out is due (s); empty once all were handed out.
   std::optional<double> nextDue() const;
+  /// The server was not running for `seconds`: the frames still to come are due that much later
+  /// (they are not sent in one burst).
+  void delay(double seconds) { start_ += seconds; }
 
   /// True once every frame was handed out.
   bool done() const { return next_ == times_.size(); }

@@ -179,6 +179,13 @@ bool Match::removeSpectator(const std::string& client) {
   return true;
 }
 
+void Match::pause(double seconds) {
+  for (Seat& s : seats_) {
+    if (s.away_since) *s.away_since += seconds;
+  }
+  if (flight_) flight_->pacer.delay(seconds);
+}
+
 void Match::clientGone(const std::string& client, double now) {
   for (Seat& s : seats_) {
     if (s.taken() && s.client == client && !s.away_since) {

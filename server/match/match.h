@@ -64,6 +64,9 @@ class Match {
   /// `client` stops watching; false when it was not.
   bool removeSpectator(const std::string& client);
 
+  /// The server was not running (stopped, suspended) for `seconds`: that time counts against
+  /// nobody. Away seats' grace and the frames in flight are pushed back by it.
+  void pause(double seconds);
   /// `client` vanished at `now`: its seats wait for it (away), it stops watching.
   void clientGone(const std::string& client, double now);
   /// Forfeits a game in play to the other seat when a seat's player has been away `grace` s or

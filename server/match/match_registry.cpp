@@ -190,6 +190,10 @@ void MatchRegistry::clientGone(const std::string& client, double now) {
   for (auto& m : matches_) m->clientGone(client, now);
 }
 
+void MatchRegistry::pause(double seconds) {
+  for (auto& m : matches_) m->pause(seconds);
+}
+
 void MatchRegistry::expireAway(double now, double grace) {
   for (auto& m : matches_) {
     while (m->expireAway(now, grace)) {

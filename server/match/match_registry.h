@@ -69,6 +69,8 @@ class MatchRegistry {
 
   /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching.
   void clientGone(const std::string& client, double now);
+  /// The server was not running for `seconds` (see Match::pause).
+  void pause(double seconds);
   /// Applies grace expiries due by `now` (forfeits, freed lobby seats).
   void expireAway(double now, double grace);
   /// Closes matches that clients created once nobody sits in or watches them; returns their ids.

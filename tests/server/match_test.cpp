@@ -227,6 +227,29 @@ TEST(MatchPresence, ReadingTokenAndKeyOffTheWireTakesNothing) {
   EXPECT_EQ(m->phase(), MatchPhase::Break);
 }
 
+TEST(MatchPresence, TimeTheServerWasNotRunningCountsAgainstNobody) {
+  auto m = seatedMatch();
+  m->clientGone("b", 10.0);
+  m->pause(25.0);  // stopped from 12 s to 37 s, say
+  EXPECT_FALSE(m->expireAway(64.9, 30.0)) << "the 25 s the server was stopped counted";
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
+  EXPECT_TRUE(m->expireAway(65.0, 30.0));
+  EXPECT_EQ(m->phase(), MatchPhase::Over);
+}
+
+TEST(MatchPresence, FramesDueDuringAStallAreNotSentInOneBurst) {
+  auto m = seatedMatch();
+  ASSERT_TRUE(m->handleShot(breakShot(), 0.0).accepted());
+  const auto first = m->takeDueFrames(0.5);
+  ASSERT_FALSE(first.frames.empty());
+  m->pause(20.0);
+  // Half a second of frames after the resume, not twenty.
+  const auto after = m->takeDueFrames(21.0);
+  EXPECT_LE(after.frames.size(), first.frames.size() + 2);
+  ASSERT_TRUE(m->nextFrameDue());
+  EXPECT_GT(*m->nextFrameDue(), 21.0);
+}
+
 TEST(MatchPresence, PastTheGracePeriodTheGameIsForfeited) {
   auto m = seatedMatch();
   m->clientGone("a", 10.0);
