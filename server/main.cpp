@@ -74,11 +74,11 @@ void serve(const pool::server::ServerConfig& config,
   if (options.server_id.empty()) options.server_id = store.serverId();
   MatchRegistry registry(options, std::move(kit));
   const int resumed = resume(registry, store);
-  for (int i = 0; i < config.tables; ++i) registry.open();
+  const int opened = registry.keepFreeTables(config.tables);
   pool::net::ServerTransport transport(config.domain);
   ServerLoop loop(config, registry, transport, &store);
-  spdlog::info("server {} on domain {}: {} tables, {} resumed, {} Hz{}, db {}", registry.serverId(),
-               config.domain, config.tables, resumed, config.snapshot_hz,
+  spdlog::info("server {} on domain {}: {} free tables opened, {} resumed, {} Hz{}, db {}",
+               registry.serverId(), config.domain, opened, resumed, config.snapshot_hz,
                config.fast ? ", unpaced" : "", db_path);
   loop.run(g_stop);
   spdlog::info("shutting down");

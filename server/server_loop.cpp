@@ -49,6 +49,10 @@ void ServerLoop::step(double now) {
   registry_.expireAway(now, config_.grace);
   const auto closed = registry_.sweepEmpty();
   for (const auto& id : closed) dispose(id);
+  // A table is always free for the next players (two asking at once meet there).
+  if (const int opened = registry_.keepFreeTables(config_.tables); opened > 0) {
+    spdlog::info("opened {} free table{}", opened, opened == 1 ? "" : "s");
+  }
   storeChanges(closed);
   publishChanges();
 }

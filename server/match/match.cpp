@@ -204,8 +204,9 @@ bool Match::expireAway(double now, double grace) {
       forfeitSeat(seat, "did not come back");
       return true;
     }
-    if (phase() == MatchPhase::Lobby) {
-      // Nobody to forfeit to yet: the seat is simply free again.
+    if (phase() == MatchPhase::Lobby || (phase() == MatchPhase::Over && !pending_forfeit_)) {
+      // Nobody to forfeit to yet, or the game is decided: the seat is simply free again (a
+      // finished match nobody came back to closes once it is empty).
       s = Seat{};
       touch();
       return true;

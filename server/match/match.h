@@ -70,8 +70,8 @@ class Match {
   /// `client` vanished at `now`: its seats wait for it (away), it stops watching.
   void clientGone(const std::string& client, double now);
   /// Forfeits a game in play to the other seat when a seat's player has been away `grace` s or
-  /// more by `now` (once the shot in motion, if any, is done); in the lobby such a seat is freed.
-  /// A match that is over keeps the seat (its player may still rejoin). True when it acted.
+  /// more by `now` (once the shot in motion, if any, is done); in the lobby, or once the match is
+  /// over, such a seat is freed. True when it acted.
   bool expireAway(double now, double grace);
 
   // ---- Shots ----------------------------------------------------------------------------------

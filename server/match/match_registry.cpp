@@ -204,7 +204,8 @@ void MatchRegistry::expireAway(double now, double grace) {
 std::vector<std::string> MatchRegistry::sweepEmpty() {
   std::vector<std::string> closed;
   for (auto& m : matches_) {
-    if (client_made_.count(m->id()) && m->empty() && !m->inMotion()) {
+    const bool closes = client_made_.count(m->id()) || m->phase() == MatchPhase::Over;
+    if (closes && m->empty() && !m->inMotion()) {
       m->close();
       closed.push_back(m->id());
       client_made_.erase(m->id());
@@ -212,6 +213,21 @@ std::vector<std::string> MatchRegistry::sweepEmpty() {
   }
   std::erase_if(matches_, [](const auto& m) { return m->closed(); });
   return closed;
+}
+
+int MatchRegistry::keepFreeTables(int count) {
+  int free = 0;
+  for (const auto& m : matches_) {
+    if (!m->closed() && m->phase() == MatchPhase::Lobby && !m->seats()[0].taken() &&
+        !m->seats()[1].taken()) {
+      ++free;
+    }
+  }
+  int opened = 0;
+  for (; free < count; ++free, ++opened) {
+    if (!open()) break;  // the server is full
+  }
+  return opened;
 }
 
 std::optional<double> MatchRegistry::nextFrameDue() const {

@@ -73,9 +73,13 @@ class MatchRegistry {
   void pause(double seconds);
   /// Applies grace expiries due by `now` (forfeits, freed lobby seats).
   void expireAway(double now, double grace);
-  /// Closes matches that clients created once nobody sits in or watches them; returns their ids.
-  /// The matches opened by open() without a client stay.
+  /// Closes matches that clients created, and finished ones, once nobody sits in or watches them;
+  /// returns their ids. Empty tables opened by open() stay.
+
   std::vector<std::string> sweepEmpty();
+  /// Opens matches until `count` tables are free (in the lobby, nobody seated), as far as
+  /// max_matches allows; returns how many it opened.
+  int keepFreeTables(int count);
 
   /// The earliest frame due among the matches in motion (s), or empty.
   std::optional<double> nextFrameDue() const;

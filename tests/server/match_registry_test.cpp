@@ -117,6 +117,28 @@ TEST(MatchRegistry, CreatedMatchesCloseWhenEveryoneLeft) {
   EXPECT_EQ(r.join(seatRequest("b", "new", "Bob")).match, "srv-3");  // ids are never reused
 }
 
+TEST(MatchRegistry, AFreeTableIsAlwaysOpenAndFinishedMatchesCloseOnceEmpty) {
+  MatchRegistry r(fixedOptions(), nineFoot());  // room for 4 matches
+  EXPECT_EQ(r.keepFreeTables(1), 1);
+  EXPECT_EQ(r.keepFreeTables(1), 0);
+  const JoinAnswer a = r.join(seatRequest("a", "srv-1", "Ada"));
+  ASSERT_TRUE(a.accepted());
+  EXPECT_EQ(r.keepFreeTables(1), 1) << "Ada's table is no longer free: another opens";
+  ASSERT_TRUE(r.join(seatRequest("b", "srv-1", "Bob")).accepted());
+  // Bob vanishes and forfeits; nobody comes back to the finished match, which then closes.
+  r.clientGone("b", 10.0);
+  r.expireAway(41.0, 30.0);
+  ASSERT_EQ(r.find("srv-1")->phase(), MatchPhase::Over);
+  r.clientGone("a", 50.0);
+  EXPECT_TRUE(r.sweepEmpty().empty()) << "closed while Ada may still come back";
+  r.expireAway(81.0, 30.0);
+  EXPECT_EQ(r.sweepEmpty(), std::vector<std::string>{"srv-1"});
+  EXPECT_EQ(r.keepFreeTables(1), 0) << "srv-2 is still free";
+  // The cap holds: never more than max_matches open, whatever is asked.
+  EXPECT_EQ(r.keepFreeTables(10), 3);
+  EXPECT_EQ(r.matches().size(), 4u);
+}
+
 TEST(MatchRegistry, SpectatorsJoinAndLeave) {
   MatchRegistry r(fixedOptions(), nineFoot());
   r.open();

@@ -194,8 +194,10 @@ TEST_F(WindowClientTest, AWindowKilledMidMatchTakesItsSeatBackAndPlaysOn) {
                             }))
       << "the rack did not start with Wendy to break\n"
       << logs();
-  std::ifstream kept(file("config") + "/pool/players/Wendy.seat");
-  ASSERT_TRUE(kept.good()) << "the window kept no seat file";
+  // The window writes it when it reads the server's reply, which may be after the bot sat down.
+  const std::string kept = file("config") + "/pool/players/Wendy.seat";
+  ASSERT_TRUE(recorder.pump(10s, [&] { return std::ifstream(kept).good(); }))
+      << "the window kept no seat file";
 
   // Killed: the server shows her away once her lease runs out.
   const std::string window = "^" + std::string(POOL_BIN_DIR) + "/pool-client --domain " +
