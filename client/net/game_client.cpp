@@ -41,9 +41,10 @@ std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, 
   r.seat = seat;
   r.name = options_.name;
   r.token = token;
-  pending_[r.request] = PendingJoin{std::move(r), false};
-  send(pending_[next_request_ - 1].request);
-  return next_request_ - 1;
+  const std::uint32_t number = r.request;
+  send(r);
+  pending_[number] = PendingJoin{std::move(r), false};
+  return number;
 }
 
 void GameClient::send(protocol::SeatRequest& r) {

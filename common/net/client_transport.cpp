@@ -23,21 +23,12 @@ QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
 
 enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates };
 
-template <class T>
-std::string written(const Writer<T>& writer, const T& sample) {
-  auto status = writer.write(sample);
-  return status ? std::string() : status.error;
-}
-
 /// Every valid sample of `samples` read with fromWire.
 template <class Domain, class Samples>
 std::vector<Result<Domain>> readAll(Samples samples) {
   std::vector<Result<Domain>> out;
   for (auto& sample : samples) {
-    if constexpr (requires { sample.meta(); }) {
-      if (!sample.meta().valid) continue;
-    }
-    out.push_back(fromWire(*sample));
+    if (sample.meta().valid) out.push_back(fromWire(*sample));  // skips disposal notices
   }
   return out;
 }
@@ -81,11 +72,11 @@ void ClientTransport::wait(std::chrono::nanoseconds timeout) const {
 }
 
 std::string ClientTransport::send(const protocol::SeatRequest& request) {
-  return written(e_->join_requests, *toWire(request));
+  return e_->join_requests.writeOrWhy(*toWire(request));
 }
 
 std::string ClientTransport::send(const protocol::ShotRequest& command) {
-  return written(e_->commands, *toWire(command));
+  return e_->commands.writeOrWhy(*toWire(command));
 }
 
 std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {

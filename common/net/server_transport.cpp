@@ -18,12 +18,6 @@ namespace {
 
 enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2 };
 
-template <class T>
-std::string written(const Writer<T>& writer, const T& sample) {
-  auto status = writer.write(sample);
-  return status ? std::string() : status.error;
-}
-
 }  // namespace
 
 struct ServerTransport::Endpoints : ProtocolTopics {
@@ -89,26 +83,26 @@ std::vector<IncomingCommand> ServerTransport::takeCommands(const protocol::Comma
 }
 
 std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {
-  return written(e_->match_info, toWire(entry));
+  return e_->match_info.writeOrWhy(toWire(entry));
 }
 
 std::string ServerTransport::publish(const protocol::MatchView& view) {
-  return written(e_->states, *toWire(view));
+  return e_->states.writeOrWhy(*toWire(view));
 }
 
 std::string ServerTransport::publish(const protocol::JoinAnswer& answer) {
-  return written(e_->join_replies, toWire(answer));
+  return e_->join_replies.writeOrWhy(toWire(answer));
 }
 
 std::string ServerTransport::publish(const protocol::ShotReport& report, bool keep) {
   const auto sample = toWire(report);
-  std::string error = written(e_->results, *sample);
+  std::string error = e_->results.writeOrWhy(*sample);
   if (!keep) e_->results.unregister(*sample);
   return error;
 }
 
 std::string ServerTransport::publish(const protocol::TableFrame& frame) {
-  return written(e_->snapshots, *toWire(frame));
+  return e_->snapshots.writeOrWhy(*toWire(frame));
 }
 
 std::uint32_t ServerTransport::resultReaders() const {

@@ -1,6 +1,8 @@
 // A typed DDS data writer with a named QoS profile.
 #pragma once
 
+#include <string>
+
 #include <chrono>
 #include <cstdint>
 
@@ -25,6 +27,12 @@ class Writer {
 
   /// Tells readers the instance of `key` (only its @key fields are read) no longer exists.
   Status dispose(const T& key) const { return detail::dispose(handle(), &key); }
+
+  /// Writes `sample`; empty when written, else why not (for callers that report, not branch).
+  std::string writeOrWhy(const T& sample) const {
+    auto status = write(sample);
+    return status ? std::string() : status.error;
+  }
 
   /// Stops writing the instance of `key` without disposing it.
   Status unregister(const T& key) const { return detail::unregister(handle(), &key); }
