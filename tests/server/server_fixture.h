@@ -10,11 +10,13 @@
 #include <vector>
 
 #include "server_process.h"
+#include "support/domain_claim.h"
 #include "test_client.h"
 
 namespace pool::server::test {
 
-/// Server integration tests use DDS domains 100–119, one per test (ctest runs them in parallel).
+/// Server integration tests use DDS domains 100–119, one per test, never shared (ctest runs them
+/// in parallel, and two servers with one id on one domain answer each other's clients).
 enum Domain : std::uint32_t {
   kBreakFlow = 100,
   kRejections,
@@ -27,6 +29,7 @@ enum Domain : std::uint32_t {
   kNewMatch,
   kSideBySide,
   kSeatAttacks,
+  kOtherVersion,
 };
 
 /// The flood tests' domain (135–149 are theirs).
@@ -49,6 +52,9 @@ class ServerTest : public ::testing::Test {
   /// Starts the server on `domain` with server id "t", `args` and `log_level`.
   void start(std::uint32_t domain, std::vector<std::string> args,
              const std::string& log_level = "debug") {
+    claim_ = std::make_unique<pool::test::DomainClaim>(domain);
+    ASSERT_TRUE(claim_->claimed()) << "domain " << domain << " is in use by another test ("
+                                   << claim_->path() << "): give each test a domain of its own";
     args.insert(args.end(), {"--server-id", "t", "--log-level", log_level});
     server_ = std::make_unique<ServerProcess>(domain, args);
     ASSERT_GT(server_->pid(), 0);
@@ -67,6 +73,7 @@ class ServerTest : public ::testing::Test {
     return s;
   }
 
+  std::unique_ptr<pool::test::DomainClaim> claim_;  // released after the server stops
   std::unique_ptr<ServerProcess> server_;
 };
 

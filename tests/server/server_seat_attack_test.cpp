@@ -107,8 +107,8 @@ TEST_F(ServerSeatAttacks, StolenTokensAndKeysLeaveRejoinAndRematchNothing) {
 }
 
 TEST_F(ServerSeatAttacks, AClientOfAnotherProtocolVersionIsToldSo) {
-  start(kSeatAttacks, {"--tables", "1"});
-  TestClient old(kSeatAttacks, "old");
+  start(kOtherVersion, {"--tables", "1"});
+  TestClient old(kOtherVersion, "old");
   ASSERT_TRUE(old.waitForServer());
   const auto reply = old.join(pool_JOIN_SEAT, "t-1", "Ada", -1, 0, 2);
   ASSERT_TRUE(reply.has_value());

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "support/child_process.h"
+#include "support/domain_claim.h"
 #include "support/match_recorder.h"
 
 namespace pool::client::test {
@@ -36,6 +37,9 @@ class ClientIntegrationTest : public ::testing::Test {
 
   void open(Domain domain, const std::string& tag) {
     domain_ = domain;
+    claim_ = std::make_unique<pool::test::DomainClaim>(domain);
+    ASSERT_TRUE(claim_->claimed()) << "domain " << domain << " is in use by another test ("
+                                   << claim_->path() << "): give each test a domain of its own";
     scratch_ = std::make_unique<ScratchDir>(tag);
     // The servers' default database goes to the scratch folder, never the real home.
     ::setenv("XDG_DATA_HOME", scratch_->file("data").c_str(), 1);
@@ -115,6 +119,7 @@ class ClientIntegrationTest : public ::testing::Test {
   }
 
   Domain domain_ = kFullMatch;
+  std::unique_ptr<pool::test::DomainClaim> claim_;
   std::unique_ptr<ScratchDir> scratch_;
   std::vector<std::unique_ptr<ChildProcess>> processes_;  // destroyed first: children killed
   int runs_ = 0;

@@ -1,0 +1,45 @@
+// Claims a DDS domain for one test while it runs, so two tests that share a domain fail at once
+// with a clear message instead of answering each other's clients now and then.
+#pragma once
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+namespace pool::test {
+
+/// Holds an exclusive lock on /tmp/pool-test-domain-<netns>-<port base>-<domain>.lock (the
+/// network namespace and port base are part of the name: tests in another namespace or on
+/// another port base do not meet). claimed() is false when another test holds the domain.
+class DomainClaim {
+ public:
+  explicit DomainClaim(std::uint32_t domain) {
+    struct stat ns {};
+    const auto netns = ::stat("/proc/self/ns/net", &ns) == 0 ? ns.st_ino : 0;
+    const char* base = std::getenv("POOL_DDS_PORT_BASE");
+    path_ = "/tmp/pool-test-domain-" + std::to_string(netns) + "-" + (base ? base : "7400") + "-" +
+            std::to_string(domain) + ".lock";
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    claimed_ = fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) == 0;
+  }
+  ~DomainClaim() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+  }
+  DomainClaim(const DomainClaim&) = delete;
+  DomainClaim& operator=(const DomainClaim&) = delete;
+
+  bool claimed() const { return claimed_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  bool claimed_ = false;
+};
+
+}  // namespace pool::test
