@@ -25,7 +25,7 @@ double ServerLoop::now() const {
 
 void ServerLoop::run(const std::atomic<bool>& stop) {
   storeChanges({});
-  publishChanges();
+  publishChanges(now());
   while (!stop.load()) {
     transport_.wait(waitTimeout(now()));
     step(now());
@@ -54,7 +54,7 @@ void ServerLoop::step(double now) {
     spdlog::info("opened {} free table{}", opened, opened == 1 ? "" : "s");
   }
   storeChanges(closed);
-  publishChanges();
+  publishChanges(now);
 }
 
 std::chrono::nanoseconds ServerLoop::waitTimeout(double now) const {
@@ -72,11 +72,18 @@ void ServerLoop::warnIfFailed(const std::string& error, const char* what) const 
 void ServerLoop::readJoins(double now) {
   for (auto& event : transport_.takeJoins()) {
     if (const auto* gone = std::get_if<net::ClientGone>(&event)) {
-      spdlog::info("client {} is gone ({})", escapedForLog(gone->client), gone->why);
-      registry_.clientGone(gone->client, now);
+      // A seated player's going matters to an operator; a spectator's is counted.
+      if (registry_.clientGone(gone->client, now)) {
+        spdlog::info("client {} is gone ({})", escapedForLog(gone->client), gone->why);
+      } else {
+        spdlog::debug("client {} is gone ({})", escapedForLog(gone->client), gone->why);
+        joins_.add("gone", now);
+      }
       transport_.forgetClient(gone->client);  // its last reply need not be kept any more
+      rate_.forget(gone->client);
     } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
-      spdlog::warn("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
+      spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
+      joins_.add("unreadable", now);
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
@@ -87,18 +94,44 @@ void ServerLoop::readJoins(double now) {
                                      registry_.serverId())),
           "join reply");
     } else {
-      answerJoin(std::get<JoinCommand>(event));
+      answerJoin(std::get<JoinCommand>(event), now);
     }
+  }
+  if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
+    spdlog::info("{}", *summary);
   }
 }
 
-void ServerLoop::answerJoin(const JoinCommand& command) {
+std::size_t ServerLoop::trackedClients() const {
+  return transport_.keptReplies() + rate_.tracked();
+}
+
+void ServerLoop::answerJoin(const JoinCommand& command, double now) {
+  if (!rate_.allow(command.client, now)) {
+    joins_.add("over the per-client limit", now);
+    const auto refusal = JoinAnswer::refuse(
+        JoinOutcome::NotAllowed, "too many join requests: at most " +
+                                     std::to_string(static_cast<int>(JoinRateLimit::kPerSecond)) +
+                                     " a second per client");
+    warnIfFailed(transport_.publish(replyTo(command, refusal, registry_.serverId())), "join reply");
+    return;
+  }
   const JoinAnswer answer = registry_.join(command);
-  spdlog::info("join {} {} by {} ({}): {} {}", toString(command.action),
-               escapedForLog(command.match), escapedForLog(command.client),
-               escapedForLog(command.name), toString(answer.outcome), escapedForLog(answer.reason));
+  const auto line = [&] {
+    return fmt::format("join {} {} by {} ({}): {} {}", toString(command.action),
+                       escapedForLog(command.match), escapedForLog(command.client),
+                       escapedForLog(command.name), toString(answer.outcome),
+                       escapedForLog(answer.reason));
+  };
+  if (answer.accepted() && protocol::changesSeat(command)) {
+    spdlog::info("{}", line());
+  } else {
+    // Spectators and refusals cost one summary line a second, however many there are.
+    spdlog::debug("{}", line());
+    joins_.add(std::string(toString(command.action)) + " " + toString(answer.outcome), now);
+  }
   // A seat (and its token) is stored before the player hears of it: a crash right after the
-  // reply cannot take the seat away again.
+  // reply cannot take the seat away again. Spectators change nothing stored.
   storeChanges({});
   warnIfFailed(transport_.publish(replyTo(command, answer, registry_.serverId())), "join reply");
 }
@@ -208,13 +241,19 @@ void ServerLoop::publishFrames(double now) {
   }
 }
 
-void ServerLoop::publishChanges() {
+void ServerLoop::publishChanges(double now) {
   for (Match* m : registry_.matches()) {
     auto& published = published_[m->id()];
-    if (published == m->revision()) continue;
-    published = m->revision();
+    if (published.revision != m->revision()) {
+      published.revision = m->revision();
+      warnIfFailed(transport_.publish(matchViewOf(*m)), "match state");
+    } else if (published.spectators == m->spectators() ||
+               now - published.info_at < kSpectatorCountPeriod) {
+      continue;  // at most one lobby entry a period for spectators coming and going
+    }
+    published.spectators = m->spectators();
+    published.info_at = now;
     warnIfFailed(transport_.publish(lobbyEntryOf(*m, registry_.serverId())), "match info");
-    warnIfFailed(transport_.publish(matchViewOf(*m)), "match state");
   }
 }
 

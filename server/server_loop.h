@@ -11,6 +11,8 @@
 
 #include "net/server_transport.h"
 #include "protocol/command_limits.h"
+#include "server/join_tally.h"
+#include "server/match/join_rate_limit.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
 #include "server/rejection_tally.h"
@@ -55,13 +57,17 @@ class ServerLoop {
 
  private:
   void readJoins(double now);
-  void answerJoin(const JoinCommand& command);
+  void answerJoin(const JoinCommand& command, double now);
+  /// Clients the server holds something for: kept replies and join-rate buckets.
+  std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
   void readCommands(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
   void refused(const std::string& match, const CommandAnswer& answer, double now);
-  void publishChanges();
+  /// Publishes the state and lobby entry of every match that changed, and the lobby entry of
+  /// one whose spectators changed (at most once a kSpectatorCountPeriod).
+  void publishChanges(double now);
   void storeShot(const CommandAnswer& answer, const std::string& match);
   void stepReplay(double now);
   void storeChanges(const std::vector<std::string>& closed);
@@ -75,14 +81,24 @@ class ServerLoop {
   store::MatchStore* store_;
   MatchReplay* replay_ = nullptr;
   bool replay_reported_ = false;
-  bool replay_started_ = false;                     ///< a spectator has been seen: the replay runs
-  std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
-  std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
+  bool replay_started_ = false;  ///< a spectator has been seen: the replay runs
+  /// What was last published of a match.
+  struct Published {
+    std::uint64_t revision = 0;
+    std::size_t spectators = 0;
+    double info_at = -1e9;  ///< when its lobby entry went out
+  };
+  std::map<std::string, Published> published_;   ///< by match id
+  std::map<std::string, std::uint64_t> stored_;  ///< match id -> revision last stored
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
+  JoinTally joins_;            ///< spectators and refused joins: likewise
+  JoinRateLimit rate_;         ///< join requests per client
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
   /// A pass later than this after the previous one means the server was not running.
   static constexpr double kStall = 1.0;
+  /// A lobby entry whose only change is its spectator count goes out at most this often, s.
+  static constexpr double kSpectatorCountPeriod = 1.0;
 };
 
 }  // namespace pool::server

@@ -1,6 +1,8 @@
 // The server's topics, readers, writers and waitset, and the conversions at their edge.
 #include "net/server_transport.h"
 
+#include <unordered_set>
+
 #include "net/message_convert.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
@@ -43,6 +45,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   Writer<pool_TableSnapshot> snapshots;
   Writer<pool_MatchState> states;
   WaitSet waitset;
+  std::unordered_set<std::string> replied;  ///< clients whose last reply is kept
 };
 
 ServerTransport::ServerTransport(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {}
@@ -69,9 +72,14 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
     if (!request) {
       out.emplace_back(
           UnreadableJoin{client, r.request, std::string(textOf(r.match)), request.error()});
-      continue;
+    } else {
+      out.emplace_back(std::move(*request));
     }
-    out.emplace_back(std::move(*request));
+    // Its writer went away before the request was read: no separate notice follows, so the
+    // client is gone right after its request (joined or not, it is noticed).
+    if (sample.meta().instance != InstanceState::Alive) {
+      out.emplace_back(ClientGone{client, toString(sample.meta().instance)});
+    }
   }
   return out;
 }
@@ -91,6 +99,7 @@ std::string ServerTransport::publish(const protocol::MatchView& view) {
 }
 
 std::string ServerTransport::publish(const protocol::JoinAnswer& answer) {
+  e_->replied.insert(answer.client);
   return e_->join_replies.writeOrWhy(toWire(answer));
 }
 
@@ -109,10 +118,15 @@ std::uint32_t ServerTransport::resultReaders() const {
   return e_->results.publicationMatched().current;
 }
 
+std::size_t ServerTransport::keptReplies() const {
+  return e_->replied.size();
+}
+
 void ServerTransport::forgetClient(const std::string& client) {
   pool_JoinReply key{};
   setText(key.client, client);
   e_->join_replies.unregister(key);
+  e_->replied.erase(client);
 }
 
 void ServerTransport::dispose(const std::string& match) {

@@ -63,6 +63,8 @@ class ServerTransport {
   /// Readers of shot results matched now (someone is watching).
   std::uint32_t resultReaders() const;
 
+  /// Clients whose last join reply is kept for late readers (until forgetClient).
+  std::size_t keptReplies() const;
   /// Drops the last reply kept for `client` (it is gone).
   void forgetClient(const std::string& client);
   /// Disposes `match`'s lobby entry, state and results: readers see it gone.

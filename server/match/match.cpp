@@ -169,14 +169,12 @@ JoinAnswer Match::rematchSeat(int seat) {
 }
 
 JoinAnswer Match::addSpectator(const std::string& client) {
-  if (spectators_.insert(client).second) touch();
+  spectators_.insert(client);  // not a change of the match: nothing to store, no new state
   return {JoinOutcome::Accepted, {}, id_, -1, 0};
 }
 
 bool Match::removeSpectator(const std::string& client) {
-  if (spectators_.erase(client) == 0) return false;
-  touch();
-  return true;
+  return spectators_.erase(client) != 0;
 }
 
 void Match::pause(double seconds) {
@@ -186,14 +184,18 @@ void Match::pause(double seconds) {
   if (flight_) flight_->pacer.delay(seconds);
 }
 
-void Match::clientGone(const std::string& client, double now) {
+bool Match::clientGone(const std::string& client, double now) {
+  bool seated = false;
   for (Seat& s : seats_) {
-    if (s.taken() && s.client == client && !s.away_since) {
+    if (!s.taken() || s.client != client) continue;
+    seated = true;
+    if (!s.away_since) {
       s.away_since = now;
       touch();
     }
   }
   removeSpectator(client);
+  return seated;
 }
 
 bool Match::expireAway(double now, double grace) {

@@ -67,8 +67,9 @@ class Match {
   /// The server was not running (stopped, suspended) for `seconds`: that time counts against
   /// nobody. Away seats' grace and the frames in flight are pushed back by it.
   void pause(double seconds);
-  /// `client` vanished at `now`: its seats wait for it (away), it stops watching.
-  void clientGone(const std::string& client, double now);
+  /// `client` vanished at `now`: its seats wait for it (away), it stops watching. True when it
+  /// held a seat here.
+  bool clientGone(const std::string& client, double now);
   /// Forfeits a game in play to the other seat when a seat's player has been away `grace` s or
   /// more by `now` (once the shot in motion, if any, is done); in the lobby, or once the match is
   /// over, such a seat is freed. True when it acted.
@@ -108,7 +109,8 @@ class Match {
   std::uint32_t rack() const { return rack_; }
   const std::string& lastVerdict() const { return last_verdict_; }
   const MatchOptions& options() const { return options_; }
-  /// Increases with every change anyone could see (state, seats, spectators).
+  /// Increases with every change of the match itself (state, seats, presence), each stored and
+  /// published; spectators coming and going are not changes of the match (see spectators()).
   std::uint64_t revision() const { return revision_; }
   /// True while a rack is in play (not lobby, not over).
   bool inPlay() const;

@@ -186,8 +186,16 @@ CommandAnswer MatchRegistry::shoot(const protocol::ShotRequest& command, double 
   return answer;
 }
 
-void MatchRegistry::clientGone(const std::string& client, double now) {
-  for (auto& m : matches_) m->clientGone(client, now);
+bool MatchRegistry::clientGone(const std::string& client, double now) {
+  bool seated = false;
+  for (auto& m : matches_) seated = m->clientGone(client, now) || seated;
+  return seated;
+}
+
+std::size_t MatchRegistry::spectators() const {
+  std::size_t n = 0;
+  for (const auto& m : matches_) n += m->spectators();
+  return n;
 }
 
 void MatchRegistry::pause(double seconds) {

@@ -67,8 +67,11 @@ class MatchRegistry {
   /// fields were checked before (net's validateShotCommand).
   CommandAnswer shoot(const protocol::ShotRequest& command, double now);
 
-  /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching.
-  void clientGone(const std::string& client, double now);
+  /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching. True when it
+  /// held a seat anywhere.
+  bool clientGone(const std::string& client, double now);
+  /// Spectators over every match (a client watching two matches counts twice).
+  std::size_t spectators() const;
   /// The server was not running for `seconds` (see Match::pause).
   void pause(double seconds);
   /// Applies grace expiries due by `now` (forfeits, freed lobby seats).

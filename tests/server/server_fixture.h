@@ -34,6 +34,8 @@ enum Domain : std::uint32_t {
 
 /// The flood tests' domain (135–149 are theirs).
 inline constexpr std::uint32_t kFlood = 135;
+inline constexpr std::uint32_t kJoinFlood = 137;  ///< 136 is a client test's
+inline constexpr std::uint32_t kJoinRate = 138;
 
 /// Two players seated in one match.
 struct Seated {

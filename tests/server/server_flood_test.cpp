@@ -1,17 +1,23 @@
-// A participant flooding the server with bad commands is refused each time, with its reasons,
-// while two other matches in motion keep their snapshot rate.
+// A participant flooding the server with bad commands, or with spectators that come and vanish,
+// is answered each time, while other matches in motion keep their snapshot rate, the store is not
+// written, the log stays short and the server's memory of clients goes back to where it was.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <fstream>
 #include <regex>
 #include <set>
+
 #include <thread>
 
+#include "net/protocol_topics.h"
 #include "net/wire_fields.h"
 #include "protocol/command_signature.h"
 #include "server_fixture.h"
+#include "support/child_process.h"
 
 namespace pool::server::test {
 namespace {
@@ -235,6 +241,233 @@ TEST_F(ServerFlood, EveryBadCommandIsRefusedAndOtherMatchesKeepTheirSnapshotRate
   // 60 frames a second are paced to the wall clock; a 10 % margin absorbs the scheduling noise
   // of a loaded machine, not a server that falls behind.
   EXPECT_GE(flooded, 0.9 * base);
+}
+
+/// Spectators that each ask to watch `match` once and vanish at once (their JoinRequest instance
+/// unregistered right after the request: the server may read the request after it is gone), as
+/// fast as `per_second` allows, each with a client id of its own.
+class SpectatorFlooder {
+ public:
+  SpectatorFlooder(std::uint32_t domain, std::string match)
+      : bus_(domain),
+        writer_(bus_.participant, bus_.join_request_topic, net::qos::joinRequest()),
+        match_(std::move(match)) {}
+
+  bool waitForServer() { return writer_.waitForReaders(1, 15s); }
+
+  /// Sends `count` spectators at `per_second`; returns the seconds it took.
+  double flood(std::uint32_t count, double per_second) {
+    const auto t0 = Clock::now();
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const auto due = t0 + std::chrono::duration<double>(i / per_second);
+      if (Clock::now() < due) std::this_thread::sleep_until(due);
+      pool_JoinRequest w{};
+      net::setText(w.client, "watcher-" + std::to_string(next_++));
+      w.request = 1;
+      w.protocol_version = protocol::kProtocolVersion;
+      net::setText(w.match, match_);
+      w.action = pool_JOIN_SPECTATE;
+      w.seat = -1;
+      EXPECT_TRUE(writer_.write(w));
+      writer_.unregister(w);
+    }
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+
+ private:
+  net::ProtocolTopics bus_;
+  net::Writer<pool_JoinRequest> writer_;
+  std::string match_;
+  std::uint32_t next_ = 0;
+};
+
+/// The server's last summary of joins: spectators accepted in all summaries so far, and the
+/// watching and tracked counts of the last one (-1 before any).
+struct JoinSummaries {
+  std::uint64_t spectators = 0;
+  long watching = -1;
+  long tracked = -1;
+  std::size_t lines = 0;
+};
+
+JoinSummaries joinSummaries(const std::string& log) {
+  JoinSummaries out;
+  const std::regex line(
+      R"(joins and leaves in [0-9.]+ s: (.*) \((\d+) watching, (\d+) clients tracked\))");
+  const std::regex accepted(R"(spectate accepted (\d+))");
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator();
+       ++it) {
+    ++out.lines;
+    const std::string what = (*it)[1];
+    std::smatch n;
+    if (std::regex_search(what, n, accepted)) out.spectators += std::stoull(n[1]);
+    out.watching = std::stol((*it)[2]);
+    out.tracked = std::stol((*it)[3]);
+  }
+  return out;
+}
+
+/// The resident memory of process `pid` in MB (0 when unreadable).
+double residentMb(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return 0.0;
+}
+
+/// Size and modification time of every file of the database (the file, its journal or WAL).
+std::string storeFiles(const std::string& db) {
+  std::string out;
+  for (const char* suffix : {"", "-wal", "-journal", "-shm"}) {
+    struct stat st {};
+    if (::stat((db + suffix).c_str(), &st) != 0) continue;
+    out += db + suffix + " " + std::to_string(st.st_size) + " " +
+           std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec) + "\n";
+  }
+  return out;
+}
+
+TEST_F(ServerFlood, SpectatorsFloodingInAndVanishingCostNoStoreNoLogAndLeaveNothingBehind) {
+  pool::client::test::ScratchDir scratch("join-flood");
+  const std::string db = scratch.file("pool.db");
+  start(kJoinFlood, {"--tables", "2", "--snapshot-hz", "60", "--db", db}, "info");
+  TestClient a(kJoinFlood, "a"), b(kJoinFlood, "b");
+  ASSERT_TRUE(a.waitForServer(2, 30s));
+  ASSERT_TRUE(b.waitForServer(2, 30s));
+  SpectatorFlooder flooder(kJoinFlood, "t-2");  // the other table: the one being played is t-1
+  ASSERT_TRUE(flooder.waitForServer());
+  const Seated one = seat(a, b, "t-1");
+
+  // Without the flood: the break (shot 1). A few spectators set the baseline of what is tracked.
+  a.send(breakShot(one, 0, 1));
+  ASSERT_NE(a.waitFinal("t-1", 0, 1, 60s), nullptr);
+  const auto settled = [&](std::uint64_t spectators) {
+    JoinSummaries s;
+    a.waitUntil(
+        [&] {
+          s = joinSummaries(server_->log());
+          return s.spectators >= spectators && s.watching == 0;
+        },
+        60s);
+    return s;
+  };
+  flooder.flood(10, 100.0);
+  const JoinSummaries baseline = settled(10);
+  ASSERT_EQ(baseline.watching, 0) << "ten spectators came and went";
+  const double rss_before = residentMb(server_->pid());
+  const std::size_t log_before = server_->log().size();
+
+  // Three floods of 2 000 spectators a second; shot 2 of t-1 moves during the first.
+  constexpr std::uint32_t kPerFlood = 6000;
+  constexpr double kRate = 2000.0;
+  std::uint64_t expected = 10;
+  std::printf("server RSS %.1f MB before the floods; %ld clients tracked\n", rss_before,
+              baseline.tracked);
+  double seconds = 0.0;
+  {
+    std::thread shot([&] { shootNext(a, b, one, 1, 2); });
+    seconds = flooder.flood(kPerFlood, kRate);
+    shot.join();
+  }
+  std::string stored;  // the store's files once shot 2 is stored and at rest
+  for (int n = 1; n <= 3; ++n) {
+    if (n == 2) {
+      ASSERT_TRUE(a.waitUntil([&] {
+        const auto* st = a.latestState("t-1");
+        return st && st->shot_number >= 2;
+      }));
+      a.waitUntil([] { return false; }, 200ms);  // the state is stored before it is published
+      stored = storeFiles(db);
+    }
+    if (n > 1) seconds = flooder.flood(kPerFlood, kRate);
+    expected += kPerFlood;
+    const JoinSummaries after = settled(expected);
+    std::printf(
+        "flood %d: %u spectators in %.2f s (%.0f/s); the server counted %llu in all, %ld watching "
+        "and %ld clients tracked after it; RSS %.1f MB\n",
+        n, kPerFlood, seconds, kPerFlood / seconds,
+        static_cast<unsigned long long>(after.spectators), after.watching, after.tracked,
+        residentMb(server_->pid()));
+    EXPECT_EQ(after.spectators, expected) << "every spectator is answered and counted";
+    EXPECT_EQ(after.watching, 0) << "every spectator that vanished is noticed";
+    EXPECT_LE(after.tracked, baseline.tracked) << "the server still holds clients of the flood";
+  }
+
+  // Nothing durable changed for spectators in floods 2 and 3, and the log grew by summaries, not
+  // a line each.
+  EXPECT_EQ(storeFiles(db), stored) << "spectators were written to the store";
+  const std::string log = server_->log().substr(log_before);
+  const auto lines = std::count(log.begin(), log.end(), '\n');
+  std::printf("the floods added %ld log lines for %u spectators\n", static_cast<long>(lines),
+              3 * kPerFlood);
+  EXPECT_LT(lines, 200) << log.substr(0, 2000);
+
+  // The match in play went on: shot 2 moved at its paced rate during the first flood.
+  const ShotFrames calm = framesOf(a, "t-1", 1);
+  const ShotFrames busy = framesOf(a, "t-1", 2);
+  std::printf("t-1's frame rate: %.1f/s without, %.1f/s during the join flood (%.0f %%)\n",
+              calm.rate(), busy.rate(), 100.0 * busy.rate() / calm.rate());
+  ASSERT_GT(calm.span, 0.5) << "the break moved too briefly to measure";
+  if (busy.span > 0.3) {
+    EXPECT_GE(busy.rate(), 0.5 * calm.rate()) << "a generous bound";
+  }
+}
+
+TEST_F(ServerFlood, AClientAskingTooOftenIsToldToWaitAndOthersAreNot) {
+  start(kJoinRate, {"--tables", "1", "--fast"});
+  TestClient eager(kJoinRate, "eager"), calm(kJoinRate, "calm");
+  ASSERT_TRUE(eager.waitForServer());
+  ASSERT_TRUE(calm.waitForServer());
+  // Sixty requests at once: the burst of twenty (and what refills while they arrive) is
+  // answered, the rest are told to wait. Replies to one client replace each other on the wire
+  // (keep-last 1), so only the last is sure to arrive; every one that does is counted.
+  std::size_t accepted = 0, limited = 0;
+  const std::size_t from = eager.replies.size();
+  std::uint32_t last = 0;
+  const auto t0 = Clock::now();
+  for (int i = 0; i < 60; ++i) {
+    const protocol::SeatRequest r = eager.request(pool_JOIN_SPECTATE, "t-1");
+    pool_JoinRequest w{};
+    net::setText(w.client, r.client);
+    w.request = last = r.request;
+    w.protocol_version = r.protocol_version;
+    net::setText(w.match, r.match);
+    w.action = pool_JOIN_SPECTATE;
+    w.seat = -1;
+    eager.writeJoin(w);
+  }
+  const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+  ASSERT_TRUE(eager.waitUntil([&] {
+    for (std::size_t i = from; i < eager.replies.size(); ++i) {
+      if (eager.replies[i]->request == last) return true;
+    }
+    return false;
+  })) << "the last request was not answered";
+  for (std::size_t i = from; i < eager.replies.size(); ++i) {
+    const auto& r = eager.replies[i];
+    if (net::textOf(r->client) != "eager") continue;
+    if (r->outcome == pool_JOIN_ACCEPTED) ++accepted;
+    if (r->outcome == pool_JOIN_NOT_ALLOWED &&
+        std::string(net::textOf(r->reason)).find("too many join requests") != std::string::npos) {
+      ++limited;
+    }
+  }
+  std::printf("60 requests in %.3f s: %zu answered, %zu told to wait\n", elapsed, accepted,
+              limited);
+  // Twenty at once, ten a second after that; the server reads them at most 0.5 s later.
+  EXPECT_LE(static_cast<double>(accepted), 20.0 + 10.0 * (elapsed + 0.5));
+  EXPECT_GE(limited, 20u) << "sixty at once is far over ten a second";
+  // Another client is not held back by the eager one.
+  const auto reply = calm.join(pool_JOIN_SPECTATE, "t-1");
+  ASSERT_TRUE(reply.has_value());
+  EXPECT_EQ(reply->outcome, pool_JOIN_ACCEPTED);
+  // Once its bucket has refilled, the eager client is answered again.
+  std::this_thread::sleep_for(1s);
+  const auto later = eager.join(pool_JOIN_SPECTATE, "t-1");
+  ASSERT_TRUE(later.has_value());
+  EXPECT_EQ(later->outcome, pool_JOIN_ACCEPTED);
 }
 
 }  // namespace

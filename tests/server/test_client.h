@@ -149,6 +149,9 @@ class TestClient {
   std::uint32_t seq() const { return seq_; }
   void setSeq(std::uint32_t seq) { seq_ = seq; }
 
+  /// Writes a join request as given, without waiting for its reply.
+  void writeJoin(const pool_JoinRequest& request) { EXPECT_TRUE(join_writer_.write(request)); }
+
   /// Writes a shot command as given.
   void send(const pool_ShotCommand& command) { EXPECT_TRUE(command_writer_.write(command)); }
   void sendAsIs(const protocol::ShotRequest& request) {

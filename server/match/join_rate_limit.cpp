@@ -1,0 +1,30 @@
+// The per-client token buckets of join requests.
+#include "server/match/join_rate_limit.h"
+
+#include <algorithm>
+
+namespace pool::server {
+
+bool JoinRateLimit::allow(const std::string& client, double now) {
+  sweep(now);
+  auto [it, fresh] = buckets_.try_emplace(client, Bucket{burst_, now});
+  Bucket& b = it->second;
+  if (!fresh) {
+    b.tokens = std::min(burst_, b.tokens + std::max(0.0, now - b.at) * per_second_);
+    b.at = now;
+  }
+  if (b.tokens < 1.0) return false;
+  b.tokens -= 1.0;
+  return true;
+}
+
+void JoinRateLimit::sweep(double now) {
+  if (now - swept_ < 1.0) return;
+  swept_ = now;
+  std::erase_if(buckets_, [&](const auto& entry) {
+    const Bucket& b = entry.second;
+    return b.tokens + (now - b.at) * per_second_ >= burst_;
+  });
+}
+
+}  // namespace pool::server

@@ -1,0 +1,43 @@
+// How often one client may ask the server for a seat or to watch: a token bucket per client.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <unordered_map>
+
+namespace pool::server {
+
+/// A client may send `burst` join requests at once and `per_second` a second after that; the
+/// rest are refused unread. Only clients that asked within the last burst / per_second seconds
+/// are tracked (a full bucket holds nothing worth keeping), so a flood from many client ids
+/// leaves nothing behind once it stops. Time is passed in (s, monotonic).
+class JoinRateLimit {
+ public:
+  explicit JoinRateLimit(double per_second = kPerSecond, double burst = kBurst)
+      : per_second_(per_second), burst_(burst) {}
+
+  /// Takes one request of `client` at `now` from its bucket; false when the bucket is empty.
+  bool allow(const std::string& client, double now);
+  /// `client` is gone: its bucket goes too.
+  void forget(const std::string& client) { buckets_.erase(client); }
+  /// Clients tracked now.
+  std::size_t tracked() const { return buckets_.size(); }
+
+  static constexpr double kPerSecond = 10.0;
+  static constexpr double kBurst = 20.0;
+
+ private:
+  struct Bucket {
+    double tokens = 0.0;
+    double at = 0.0;  ///< when `tokens` was last brought up to date
+  };
+  /// Drops the buckets that have filled up again by `now` (at most once a second).
+  void sweep(double now);
+
+  double per_second_;
+  double burst_;
+  std::unordered_map<std::string, Bucket> buckets_;
+  double swept_ = 0.0;
+};
+
+}  // namespace pool::server
