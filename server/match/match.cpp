@@ -203,7 +203,16 @@ bool Match::expireAway(double now, double grace) {
     Seat& s = seats_[static_cast<std::size_t>(seat)];
     if (!s.away_since || now - *s.away_since < grace) continue;
     if (inPlay() && !pending_forfeit_) {
-      forfeitSeat(seat, "did not come back");
+      const Seat& other = seats_[static_cast<std::size_t>(1 - seat)];
+      if (!other.away_since) {
+        forfeitSeat(seat, "did not come back");
+        return true;
+      }
+      // Both players are gone: nobody wins a game nobody is there to play. Once both graces
+      // have run out, the game is abandoned without a result (both seats free: it closes).
+      if (now - *other.away_since < grace) continue;
+      seats_ = {};
+      touch();
       return true;
     }
     if (phase() == MatchPhase::Lobby || (phase() == MatchPhase::Over && !pending_forfeit_)) {

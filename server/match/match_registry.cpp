@@ -212,7 +212,9 @@ void MatchRegistry::expireAway(double now, double grace) {
 std::vector<std::string> MatchRegistry::sweepEmpty() {
   std::vector<std::string> closed;
   for (auto& m : matches_) {
-    const bool closes = client_made_.count(m->id()) || m->phase() == MatchPhase::Over;
+    // A game in play that both players abandoned closes too (see Match::expireAway).
+    const bool closes =
+        client_made_.count(m->id()) || m->phase() == MatchPhase::Over || m->inPlay();
     if (closes && m->empty() && !m->inMotion()) {
       m->close();
       closed.push_back(m->id());

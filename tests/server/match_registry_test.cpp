@@ -139,6 +139,37 @@ TEST(MatchRegistry, AFreeTableIsAlwaysOpenAndFinishedMatchesCloseOnceEmpty) {
   EXPECT_EQ(r.matches().size(), 4u);
 }
 
+TEST(MatchRegistry, AGameBothPlayersLeftIsAbandonedWithoutAResultAndCloses) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  ASSERT_TRUE(r.join(seatRequest("a", "new", "Ada")).accepted());
+  ASSERT_TRUE(r.join(seatRequest("b", "srv-1", "Bob")).accepted());
+  ASSERT_TRUE(r.find("srv-1")->inPlay());
+  // Both vanish (a server restarted with nobody coming back looks the same): Ada's grace runs
+  // out first, while Bob is away too, so nobody wins by her forfeit.
+  r.clientGone("a", 10.0);
+  r.clientGone("b", 20.0);
+  r.expireAway(41.0, 30.0);
+  EXPECT_TRUE(r.find("srv-1")->inPlay()) << "Bob may still come back";
+  EXPECT_TRUE(r.sweepEmpty().empty());
+  r.expireAway(51.0, 30.0);
+  const Match* m = r.find("srv-1");
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->game().winner, -1) << "no result for a game nobody finished";
+  EXPECT_FALSE(m->seats()[0].taken());
+  EXPECT_FALSE(m->seats()[1].taken());
+  EXPECT_EQ(r.sweepEmpty(), std::vector<std::string>{"srv-1"});
+}
+
+TEST(MatchRegistry, OnePlayerGoneAndTheOtherBackIsAForfeitAsBefore) {
+  MatchRegistry r(fixedOptions(), nineFoot());
+  ASSERT_TRUE(r.join(seatRequest("a", "new", "Ada")).accepted());
+  ASSERT_TRUE(r.join(seatRequest("b", "srv-1", "Bob")).accepted());
+  r.clientGone("a", 10.0);
+  r.expireAway(41.0, 30.0);
+  EXPECT_EQ(r.find("srv-1")->phase(), MatchPhase::Over);
+  EXPECT_EQ(r.find("srv-1")->game().winner, 1);
+}
+
 TEST(MatchRegistry, SpectatorsJoinAndLeave) {
   MatchRegistry r(fixedOptions(), nineFoot());
   r.open();
