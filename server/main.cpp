@@ -42,6 +42,7 @@ pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& 
   pool::server::RegistryOptions options;
   options.server_id = config.server_id;
   options.table = config.table;
+  options.max_matches = static_cast<std::size_t>(config.max_matches);
   options.match.snapshot_hz = config.snapshot_hz;
   options.match.unpaced = config.fast;
   options.protocol_version = pool::protocol::kProtocolVersion;

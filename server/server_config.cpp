@@ -61,6 +61,7 @@ std::string applyConfigJson(const std::string& text, ServerConfig& c) {
   try {
     take(doc, "domain", c.domain);
     take(doc, "tables", c.tables);
+    take(doc, "max-matches", c.max_matches);
     take(doc, "snapshot-hz", c.snapshot_hz);
     take(doc, "fast", c.fast);
     take(doc, "server-id", c.server_id);
@@ -77,7 +78,10 @@ std::string applyConfigJson(const std::string& text, ServerConfig& c) {
 
 std::string checkConfig(const ServerConfig& c) {
   if (c.domain > 232) return "domain: must be 0-232";
-  if (c.tables < 0 || c.tables > 10000) return "tables: must be 0-10000";
+  if (c.max_matches < 1 || c.max_matches > 10000) return "max-matches: must be 1-10000";
+  if (c.tables < 0 || c.tables > c.max_matches) {
+    return "tables: must be 0-" + std::to_string(c.max_matches) + " (at most max-matches)";
+  }
   if (!(c.snapshot_hz > 0.0 && c.snapshot_hz <= 1000.0)) return "snapshot-hz: must be in (0, 1000]";
   if (!(c.grace >= 0.0)) return "grace: must be >= 0";
   if (!validServerId(c.server_id)) {
@@ -97,7 +101,9 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   ServerConfig flags;
   std::string config_file;
   app.add_option("--domain", flags.domain, "DDS domain id (0-232)");
-  app.add_option("--tables", flags.tables, "empty matches to open at start");
+  app.add_option("--tables", flags.tables, "free tables kept open at all times");
+  app.add_option("--max-matches", flags.max_matches,
+                 "matches open at once, at most, free tables included (default 256)");
   app.add_option("--snapshot-hz", flags.snapshot_hz, "frames per simulated second");
   app.add_flag("--fast", flags.fast, "publish frames unpaced (tests)");
   app.add_option("--config", config_file, "JSON file with the same keys; flags win");
@@ -132,6 +138,7 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   ServerConfig& c = out.config;
   if (app.count("--domain")) c.domain = flags.domain;
   if (app.count("--tables")) c.tables = flags.tables;
+  if (app.count("--max-matches")) c.max_matches = flags.max_matches;
   if (app.count("--snapshot-hz")) c.snapshot_hz = flags.snapshot_hz;
   if (app.count("--fast")) c.fast = flags.fast;
   if (app.count("--server-id")) c.server_id = flags.server_id;

@@ -16,7 +16,8 @@ inline constexpr std::size_t kMaxServerIdLength = 24;
 
 struct ServerConfig {
   std::uint32_t domain = 0;          ///< DDS domain id, 0–232
-  int tables = 0;                    ///< empty matches opened at start
+  int tables = 0;                    ///< free tables kept open at all times
+  int max_matches = 256;             ///< matches open at once, at most (free tables included)
   double snapshot_hz = 60.0;         ///< frames per simulated second, (0, 1000]
   bool fast = false;                 ///< publish frames unpaced
   std::string server_id;             ///< prefix of match ids; empty: random hex
@@ -35,7 +36,8 @@ struct ConfigOutcome {
   std::optional<int> exit_code;
 };
 
-/// Reads flags (--domain, --tables, --snapshot-hz, --fast, --config FILE, --server-id, --grace,
+/// Reads flags (--domain, --tables, --max-matches, --snapshot-hz, --fast, --config FILE,
+/// --server-id, --grace,
 /// --name, --table, --log-level, --db,
 /// --replay). A --config JSON file gives values under the flags' names
 /// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.

@@ -26,7 +26,7 @@ TEST_F(ServerLifecycle, SigtermEndsTheServerCleanlyAndQuickly) {
 }
 
 TEST_F(ServerLifecycle, NewMatchesAreOpenedOnRequestAndSigintEndsTheServer) {
-  start(kNewMatch, {});
+  start(kNewMatch, {"--max-matches", "2"});
   TestClient a(kNewMatch, "a");
   ASSERT_TRUE(a.waitForServer(0));
   const auto created = a.join(pool_JOIN_SEAT, "new", "Ada");
@@ -34,6 +34,16 @@ TEST_F(ServerLifecycle, NewMatchesAreOpenedOnRequestAndSigintEndsTheServer) {
   EXPECT_EQ(created->outcome, pool_JOIN_ACCEPTED);
   EXPECT_STREQ(created->match, "t-1");
   EXPECT_TRUE(a.waitUntil([&] { return a.liveInfos() == 1; }));
+  // --max-matches: a client cannot make the server open tables without limit.
+  TestClient b(kNewMatch, "b"), c(kNewMatch, "c");
+  ASSERT_TRUE(b.waitForServer(1));
+  ASSERT_TRUE(c.waitForServer(1));
+  const auto second = b.join(pool_JOIN_SEAT, "new", "Bob");
+  ASSERT_TRUE(second);
+  EXPECT_EQ(second->outcome, pool_JOIN_ACCEPTED);
+  const auto third = c.join(pool_JOIN_SEAT, "new", "Cy");
+  ASSERT_TRUE(third);
+  EXPECT_EQ(third->outcome, pool_JOIN_SERVER_FULL) << net::textOf(third->reason);
   server_->signal(SIGINT);
   const auto code = server_->waitExit(5s);
   ASSERT_TRUE(code);
@@ -64,6 +74,14 @@ TEST(ServerConfig, BadValuesAreRefusedWithTheirKey) {
   EXPECT_NE(checkConfig(c).find("snapshot-hz"), std::string::npos);
   const char* argv[] = {"pool-server", "--domain", "500"};
   EXPECT_EQ(parseConfig(3, argv).exit_code, 2);
+  ServerConfig capped;
+  capped.max_matches = 0;
+  EXPECT_NE(checkConfig(capped).find("max-matches"), std::string::npos);
+  capped.max_matches = 3;
+  capped.tables = 4;
+  EXPECT_NE(checkConfig(capped).find("at most max-matches"), std::string::npos);
+  const char* more_tables_than_matches[] = {"pool-server", "--tables", "5", "--max-matches", "2"};
+  EXPECT_EQ(parseConfig(5, more_tables_than_matches).exit_code, 2);
 }
 
 TEST(ServerConfig, AnUnknownLogLevelOrAServerIdThatCutsMatchIdsIsRefused) {
