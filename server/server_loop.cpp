@@ -55,6 +55,35 @@ void ServerLoop::step(double now) {
   }
   storeChanges(closed);
   publishChanges();
+  serveAdmin();
+}
+
+void ServerLoop::serveAdmin() {
+  if (!admin_ || !desk_) return;
+  const auto lines = admin_->poll();
+  if (lines.empty()) return;
+  for (const auto& in : lines) {
+    ++counters_.admin_requests;
+    const AdminDesk::Reply reply = desk_->answer(in.line);
+    if (!reply.ok) {
+      ++counters_.admin_refused;
+      spdlog::warn("admin request refused: {}", escapedForLog(reply.line));
+    }
+    admin_->reply(in.connection, reply.line);
+  }
+  // A closed match is stored and its players read its last state before the next pass drops it.
+  storeChanges({});
+  publishChanges();
+}
+
+template <class Write>
+double ServerLoop::timedCommit(Write&& write) {
+  const auto start = std::chrono::steady_clock::now();
+  write();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  counters_.commit(ms);
+  return ms;
 }
 
 std::chrono::nanoseconds ServerLoop::waitTimeout(double now) const {
@@ -77,6 +106,7 @@ void ServerLoop::readJoins(double now) {
       transport_.forgetClient(gone->client);  // its last reply need not be kept any more
     } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
       spdlog::warn("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
+      ++counters_.joins_refused;
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
@@ -94,6 +124,7 @@ void ServerLoop::readJoins(double now) {
 
 void ServerLoop::answerJoin(const JoinCommand& command) {
   const JoinAnswer answer = registry_.join(command);
+  ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
   spdlog::info("join {} {} by {} ({}): {} {}", toString(command.action),
                escapedForLog(command.match), escapedForLog(command.client),
                escapedForLog(command.name), toString(answer.outcome), escapedForLog(answer.reason));
@@ -118,6 +149,7 @@ void ServerLoop::readCommands(double now) {
       refused(in.match, answer, now);
       continue;
     }
+    ++counters_.commands_accepted;
     storeShot(answer, in.match);
     spdlog::info("command {} seat {} seq {}: accepted, shot {}", in.match, answer.seat, answer.seq,
                  answer.shot_number);
@@ -130,6 +162,7 @@ void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, 
   spdlog::debug("command {} seat {} seq {}: {} ({})", escapedForLog(match), answer.seat, answer.seq,
                 toString(answer.rejection.reason), escapedForLog(answer.rejection.text));
   rejections_.add(answer.rejection.reason, now);
+  ++counters_.commands_refused;
   publishResult(match, answer);
 }
 
@@ -167,11 +200,10 @@ void ServerLoop::stepReplay(double now) {
 void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match) {
   const Match* m = registry_.find(match);
   if (!store_ || !answer.record || !m) return;
-  const auto start = std::chrono::steady_clock::now();
-  store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
-                     registry_.snapshotOf(*m));
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = timedCommit([&] {
+    store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
+                       registry_.snapshotOf(*m));
+  });
   spdlog::info("stored shot {} of {} (seat {} seq {}) in {:.2f} ms", answer.record->shot_number,
                match, answer.seat, answer.seq, ms);
 }
@@ -187,9 +219,11 @@ void ServerLoop::storeChanges(const std::vector<std::string>& closed) {
   }
   for (const auto& id : closed) {
     stored_.erase(id);
-    store_->closeMatch(id);
+    timedCommit([&] { store_->closeMatch(id); });
   }
-  if (!changed.empty()) store_->saveMatches(registry_.serverId(), registry_.opened(), changed);
+  if (!changed.empty()) {
+    timedCommit([&] { store_->saveMatches(registry_.serverId(), registry_.opened(), changed); });
+  }
 }
 
 void ServerLoop::publishFrames(double now) {

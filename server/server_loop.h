@@ -11,10 +11,13 @@
 
 #include "net/server_transport.h"
 #include "protocol/command_limits.h"
+#include "server/admin/admin_listener.h"
+#include "server/admin_desk.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
 #include "server/rejection_tally.h"
 #include "server/server_config.h"
+#include "server/server_counters.h"
 #include "server/store/match_store.h"
 
 namespace pool::server {
@@ -36,6 +39,16 @@ class ServerLoop {
 
   /// Plays `replay` on this loop: its commands are answered and published like players' ones.
   void replay(MatchReplay* replay) { replay_ = replay; }
+
+  /// Serves the operator: each pass ends by answering the requests `listener` received through
+  /// `desk`, then stores and publishes what they changed.
+  void admin(admin::AdminListener* listener, AdminDesk* desk) {
+    admin_ = listener;
+    desk_ = desk;
+  }
+
+  /// What the loop has counted so far.
+  const ServerCounters& counters() const { return counters_; }
 
   /// Runs passes until `stop` is set (checked at least every kMaxWait).
   void run(const std::atomic<bool>& stop);
@@ -66,6 +79,10 @@ class ServerLoop {
   void stepReplay(double now);
   void storeChanges(const std::vector<std::string>& closed);
   void dispose(const std::string& match);
+  void serveAdmin();
+  /// Runs `write` (one transaction) and counts the time it took.
+  template <class Write>
+  double timedCommit(Write&& write);
   std::chrono::nanoseconds waitTimeout(double now) const;
 
   ServerConfig config_;
@@ -78,6 +95,9 @@ class ServerLoop {
   bool replay_started_ = false;                     ///< a spectator has been seen: the replay runs
   std::map<std::string, std::uint64_t> published_;  ///< match id -> revision last published
   std::map<std::string, std::uint64_t> stored_;     ///< match id -> revision last stored
+  admin::AdminListener* admin_ = nullptr;
+  AdminDesk* desk_ = nullptr;
+  ServerCounters counters_;
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s

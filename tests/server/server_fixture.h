@@ -27,6 +27,8 @@ enum Domain : std::uint32_t {
   kNewMatch,
   kSideBySide,
   kSeatAttacks,
+  kAdmin,
+  kAdminBackup,
 };
 
 /// The flood tests' domain (135–149 are theirs).
