@@ -117,7 +117,7 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
                  "admin --help");
   app.footer(
       "Operating a running server: pool-server status | pool-server admin VERB ... "
-      "[--db PATH | --socket PATH] (pool-server admin --help)");
+      "[--db PATH | --socket PATH] (pool-server admin --help)\n");
   ConfigOutcome out;
   try {
     app.parse(argc, argv);

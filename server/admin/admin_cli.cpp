@@ -86,11 +86,17 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
                    "status | list | close MATCH REASON... | ban KEY REASON... | unban KEY | "
                    "bans | backup PATH")
       ->required();
-  for (auto* sub : {status, admin}) sub->fallthrough();
+  for (auto* sub : {status, admin}) {
+    sub->fallthrough();
+    sub->footer(
+        "Also: --db PATH (the server's database; its socket is PATH.sock), --socket PATH, --json "
+        "(docs/OPERATING.md)\n");
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;  // help, or a bad command line
   }
   Json doc;
   if (status->parsed()) {
