@@ -33,7 +33,7 @@ Result<BackupDone> backupTo(Database& db, const std::string& path) {
     return Result<BackupDone>::fail(path + ": " + why);
   const std::string partial = path + ".partial";
   sqlite3* out = nullptr;
-  const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_EXCLUSIVE;
+  const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOFOLLOW;
   std::string error;
   if (sqlite3_open_v2(partial.c_str(), &out, flags, nullptr) != SQLITE_OK) {
     error = out ? sqlite3_errmsg(out) : "cannot open";
