@@ -40,6 +40,13 @@ fence assimp 'assimp/' '' common/table/ client/render/ tests/
 fence shared-modules 'protocol/|net/|client/|server/' '' common/protocol/ common/net/ \
   server/ client/ tests/
 fence protocol 'net/|client/|server/' "$net_public" common/net/ server/ client/ tests/
+# The admin channel (server/admin) knows nothing of matches, the store, the server or DDS: the
+# server's desk uses it, never the other way.
+while IFS= read -r hit; do
+  echo "fence 'admin-channel': $hit" >&2
+  status=1
+done < <(git grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*"(server/(match|store|sim)/|server/[a-z_]+\.h|net/|dds/)' \
+           -- 'server/admin/*' || true)
 
 if ((status)); then
   echo "check-fences: includes outside their allowed folders (docs/ARCHITECTURE.md)" >&2

@@ -76,7 +76,8 @@ run_installed() {
 }
 
 # 5. A short match from the installed binaries: pool-server and two bots over loopback DDS on a
-#    domain of its own; a winner within the bound, then a clean stop of the server on SIGTERM.
+#    domain of its own; a winner within the bound, the server's status and an online backup
+#    through its admin socket, then a clean stop of the server on SIGTERM.
 bot_match() {
   cd "$work"
   export CYCLONEDDS_URI=file:///usr/share/pool/cyclone-lo.xml
@@ -97,6 +98,13 @@ bot_match() {
   ((status == 0)) || { echo "a bot failed (exit $status)" >&2; return 1; }
   grep -q '^result: win' Ada.out Bert.out
   grep -q '^result: loss' Ada.out Bert.out
+  # The operator's commands on the installed server: its counters, and an online backup.
+  pool-server status --db "$work/pool.db" > status.txt
+  cat status.txt
+  grep -q '^health: ok$' status.txt
+  if grep -q '^commands_accepted: 0$' status.txt; then echo "no command counted" >&2; return 1; fi
+  pool-server admin --db "$work/pool.db" backup "$work/copy.db"
+  [[ -s $work/copy.db ]]
   kill -TERM "$server"
   status=0
   wait "$server" || status=$?

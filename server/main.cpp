@@ -8,6 +8,9 @@
 #include "net/dds_error.h"
 #include "net/server_transport.h"
 #include "protocol/protocol_version.h"
+#include "server/admin/admin_cli.h"
+#include "server/admin/admin_listener.h"
+#include "server/admin_desk.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
 #include "server/match/table_kit.h"
@@ -64,11 +67,21 @@ int resume(pool::server::MatchRegistry& registry, pool::store::MatchStore& store
   return resumed;
 }
 
-/// Serves matches, resuming those of `store` and keeping every change in it.
-void serve(const pool::server::ServerConfig& config,
-           std::shared_ptr<const pool::server::TableKit> kit, pool::store::MatchStore& store,
-           const std::string& db_path) {
+/// Serves matches, resuming those of `store` and keeping every change in it, and the operator on
+/// the admin socket. Returns the exit code.
+int serve(const pool::server::ServerConfig& config,
+          std::shared_ptr<const pool::server::TableKit> kit, pool::store::MatchStore& store,
+          const std::string& db_path) {
   using namespace pool::server;
+  const std::string socket_path =
+      config.admin_socket.empty() ? pool::admin::socketPathFor(db_path) : config.admin_socket;
+  auto listener = pool::admin::AdminListener::open(socket_path);
+  if (!listener && !config.admin_socket.empty()) {
+    spdlog::error("--admin-socket {}", listener.error());
+    return 1;
+  }
+  // The default socket beside the database may not fit (a long path): the games go on without.
+  if (!listener) spdlog::warn("no admin socket: {} (set --admin-socket)", listener.error());
   store.setTable(config.table);
   RegistryOptions options = registryOptions(config);
   // The file keeps the server's id, so match ids go on where they stopped.
@@ -78,12 +91,17 @@ void serve(const pool::server::ServerConfig& config,
   const int opened = registry.keepFreeTables(config.tables);
   pool::net::ServerTransport transport(config.domain);
   ServerLoop loop(config, registry, transport, &store);
-  spdlog::info("server {} on domain {}: {} free tables opened, {} resumed, {} Hz{}, db {}",
-               registry.serverId(), config.domain, opened, resumed, config.snapshot_hz,
-               config.fast ? ", unpaced" : "", db_path);
+  AdminDesk desk(registry, store, loop.counters(), db_path);
+  desk.loadBans();
+  if (listener) loop.admin(listener->get(), &desk);
+  spdlog::info(
+      "server {} on domain {}: {} free tables opened, {} resumed, {} Hz{}, db {}, admin {}",
+      registry.serverId(), config.domain, opened, resumed, config.snapshot_hz,
+      config.fast ? ", unpaced" : "", db_path, listener ? socket_path : "none");
   loop.run(g_stop);
   spdlog::info("shutting down");
   loop.disposeAll();
+  return 0;
 }
 
 /// Plays stored match config.replay again as a new match (beside --tables empty ones); writes
@@ -124,6 +142,9 @@ int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStor
 
 int main(int argc, char** argv) {
   using namespace pool::server;
+  if (pool::admin::isAdminCommand(argc, argv)) {
+    return pool::admin::runAdminCommand(argc, argv, pool::store::defaultDbPath());
+  }
   const ConfigOutcome parsed = parseConfig(argc, argv);
   if (parsed.exit_code) return *parsed.exit_code;
   const ServerConfig& config = parsed.config;
@@ -143,7 +164,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (!config.replay.empty()) return replayMatch(config, **store);
-    serve(config, *kit, **store, db_path);
+    return serve(config, *kit, **store, db_path);
   } catch (const pool::net::DdsError& e) {
     spdlog::error("DDS: {}", e.what());
     return 1;

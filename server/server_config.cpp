@@ -70,6 +70,7 @@ std::string applyConfigJson(const std::string& text, ServerConfig& c) {
     take(doc, "table", c.table);
     take(doc, "log-level", c.log_level);
     take(doc, "db", c.db);
+    take(doc, "admin-socket", c.admin_socket);
   } catch (const std::runtime_error& e) {
     return e.what();
   }
@@ -117,6 +118,12 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
                  "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)");
   app.add_option("--replay", flags.replay,
                  "play stored match MATCH again as a new match for spectators (stores nothing)");
+  app.add_option("--admin-socket", flags.admin_socket,
+                 "the operator's Unix socket, owner-only (default <db>.sock); see pool-server "
+                 "admin --help");
+  app.footer(
+      "Operating a running server: pool-server status | pool-server admin VERB ... "
+      "[--db PATH | --socket PATH] (pool-server admin --help)\n");
   ConfigOutcome out;
   try {
     app.parse(argc, argv);
@@ -148,6 +155,7 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   if (app.count("--log-level")) c.log_level = flags.log_level;
   if (app.count("--db")) c.db = flags.db;
   if (app.count("--replay")) c.replay = flags.replay;
+  if (app.count("--admin-socket")) c.admin_socket = flags.admin_socket;
   if (auto error = checkConfig(c); !error.empty()) {
     std::cerr << error << "\n";
     out.exit_code = 2;

@@ -27,6 +27,7 @@ struct ServerConfig {
   std::string log_level = "info";    ///< spdlog level name
   std::string db;      ///< the SQLite file matches are kept in; empty: store::defaultDbPath()
   std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
+  std::string admin_socket;  ///< the operator's Unix socket; empty: "<db>.sock"
 };
 
 /// The outcome of reading the command line: run with `config`, or exit with `exit_code` (help,
@@ -39,7 +40,7 @@ struct ConfigOutcome {
 /// Reads flags (--domain, --tables, --max-matches, --snapshot-hz, --fast, --config FILE,
 /// --server-id, --grace,
 /// --name, --table, --log-level, --db,
-/// --replay). A --config JSON file gives values under the flags' names
+/// --replay, --admin-socket). A --config JSON file gives values under the flags' names
 /// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.
 ConfigOutcome parseConfig(int argc, const char* const* argv);
 

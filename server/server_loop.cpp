@@ -55,6 +55,35 @@ void ServerLoop::step(double now) {
   }
   storeChanges(closed);
   publishChanges(now);
+  serveAdmin(now);
+}
+
+void ServerLoop::serveAdmin(double now) {
+  if (!admin_ || !desk_) return;
+  const auto lines = admin_->poll();
+  if (lines.empty()) return;
+  for (const auto& in : lines) {
+    ++counters_.admin_requests;
+    const AdminDesk::Reply reply = desk_->answer(in.line);
+    if (!reply.ok) {
+      ++counters_.admin_refused;
+      spdlog::warn("admin request refused: {}", escapedForLog(reply.line));
+    }
+    admin_->reply(in.connection, reply.line);
+  }
+  // A closed match is stored and its players read its last state before the next pass drops it.
+  storeChanges({});
+  publishChanges(now);
+}
+
+template <class Write>
+double ServerLoop::timedCommit(Write&& write) {
+  const auto start = std::chrono::steady_clock::now();
+  write();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  counters_.commit(ms);
+  return ms;
 }
 
 std::chrono::nanoseconds ServerLoop::waitTimeout(double now) const {
@@ -84,6 +113,7 @@ void ServerLoop::readJoins(double now) {
     } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
       spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
       joins_.add("unreadable", now);
+      ++counters_.joins_refused;
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
@@ -109,6 +139,7 @@ std::size_t ServerLoop::trackedClients() const {
 void ServerLoop::answerJoin(const JoinCommand& command, double now) {
   if (!rate_.allow(command.client, now)) {
     joins_.add("over the per-client limit", now);
+    ++counters_.joins_refused;
     const auto refusal = JoinAnswer::refuse(
         JoinOutcome::NotAllowed, "too many join requests: at most " +
                                      std::to_string(static_cast<int>(JoinRateLimit::kPerSecond)) +
@@ -117,6 +148,7 @@ void ServerLoop::answerJoin(const JoinCommand& command, double now) {
     return;
   }
   const JoinAnswer answer = registry_.join(command);
+  ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
   const auto line = [&] {
     return fmt::format("join {} {} by {} ({}): {} {}", toString(command.action),
                        escapedForLog(command.match), escapedForLog(command.client),
@@ -151,6 +183,7 @@ void ServerLoop::readCommands(double now) {
       refused(in.match, answer, now);
       continue;
     }
+    ++counters_.commands_accepted;
     storeShot(answer, in.match);
     spdlog::info("command {} seat {} seq {}: accepted, shot {}", in.match, answer.seat, answer.seq,
                  answer.shot_number);
@@ -163,6 +196,7 @@ void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, 
   spdlog::debug("command {} seat {} seq {}: {} ({})", escapedForLog(match), answer.seat, answer.seq,
                 toString(answer.rejection.reason), escapedForLog(answer.rejection.text));
   rejections_.add(answer.rejection.reason, now);
+  ++counters_.commands_refused;
   publishResult(match, answer);
 }
 
@@ -200,11 +234,10 @@ void ServerLoop::stepReplay(double now) {
 void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match) {
   const Match* m = registry_.find(match);
   if (!store_ || !answer.record || !m) return;
-  const auto start = std::chrono::steady_clock::now();
-  store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
-                     registry_.snapshotOf(*m));
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = timedCommit([&] {
+    store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
+                       registry_.snapshotOf(*m));
+  });
   spdlog::info("stored shot {} of {} (seat {} seq {}) in {:.2f} ms", answer.record->shot_number,
                match, answer.seat, answer.seq, ms);
 }
@@ -220,9 +253,11 @@ void ServerLoop::storeChanges(const std::vector<std::string>& closed) {
   }
   for (const auto& id : closed) {
     stored_.erase(id);
-    store_->closeMatch(id);
+    timedCommit([&] { store_->closeMatch(id); });
   }
-  if (!changed.empty()) store_->saveMatches(registry_.serverId(), registry_.opened(), changed);
+  if (!changed.empty()) {
+    timedCommit([&] { store_->saveMatches(registry_.serverId(), registry_.opened(), changed); });
+  }
 }
 
 void ServerLoop::publishFrames(double now) {

@@ -11,12 +11,15 @@
 
 #include "net/server_transport.h"
 #include "protocol/command_limits.h"
+#include "server/admin/admin_listener.h"
+#include "server/admin_desk.h"
 #include "server/join_tally.h"
 #include "server/match/join_rate_limit.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
 #include "server/rejection_tally.h"
 #include "server/server_config.h"
+#include "server/server_counters.h"
 #include "server/store/match_store.h"
 
 namespace pool::server {
@@ -38,6 +41,16 @@ class ServerLoop {
 
   /// Plays `replay` on this loop: its commands are answered and published like players' ones.
   void replay(MatchReplay* replay) { replay_ = replay; }
+
+  /// Serves the operator: each pass ends by answering the requests `listener` received through
+  /// `desk`, then stores and publishes what they changed.
+  void admin(admin::AdminListener* listener, AdminDesk* desk) {
+    admin_ = listener;
+    desk_ = desk;
+  }
+
+  /// What the loop has counted so far.
+  const ServerCounters& counters() const { return counters_; }
 
   /// Runs passes until `stop` is set (checked at least every kMaxWait).
   void run(const std::atomic<bool>& stop);
@@ -72,6 +85,10 @@ class ServerLoop {
   void stepReplay(double now);
   void storeChanges(const std::vector<std::string>& closed);
   void dispose(const std::string& match);
+  void serveAdmin(double now);
+  /// Runs `write` (one transaction) and counts the time it took.
+  template <class Write>
+  double timedCommit(Write&& write);
   std::chrono::nanoseconds waitTimeout(double now) const;
 
   ServerConfig config_;
@@ -90,6 +107,9 @@ class ServerLoop {
   };
   std::map<std::string, Published> published_;   ///< by match id
   std::map<std::string, std::uint64_t> stored_;  ///< match id -> revision last stored
+  admin::AdminListener* admin_ = nullptr;
+  AdminDesk* desk_ = nullptr;
+  ServerCounters counters_;
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   JoinTally joins_;            ///< spectators and refused joins: likewise
   JoinRateLimit rate_;         ///< join requests per client

@@ -361,8 +361,9 @@ bool Match::setPosition(const rules::GameState& state, std::vector<physics::Ball
   return true;
 }
 
-void Match::close() {
+void Match::close(std::string why) {
   closed_ = true;
+  if (!why.empty()) last_verdict_ = std::move(why);
   flight_.reset();
   touch();
 }

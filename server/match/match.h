@@ -119,8 +119,9 @@ class Match {
   /// Replaces the rack's rules state and balls at rest (a restored match, a test position). Only
   /// between shots of a started match; false otherwise.
   bool setPosition(const rules::GameState& state, std::vector<physics::Ball> balls);
-  /// Marks the match closed (no more commands or joins).
-  void close();
+  /// Marks the match closed (no more commands or joins); a non-empty `why` becomes the last
+  /// verdict its players read (an operator's close).
+  void close(std::string why = {});
   /// True when nobody sits or watches.
   bool empty() const;
   /// The match as plain data, as it stands once the shot in motion (if any) is done.

@@ -92,6 +92,9 @@ JoinAnswer MatchRegistry::join(const JoinCommand& c) {
   }
   if (c.action == JoinAction::Spectate) return match->addSpectator(c.client);
   if (!protocol::changesSeat(c)) return about(leave(c), c.match);  // a spectator's leave
+  if (c.action != JoinAction::Leave) {
+    if (auto refusal = bannedSeat(c)) return about(std::move(*refusal), c.match);
+  }
   JoinAnswer answer = match->seatRequest(c);
   if (answer.outcome != JoinOutcome::StaleSequence && answer.last_seq != 0) {
     useKeySeq(c.public_key, answer.last_seq);  // the key's signature checked out
@@ -111,6 +114,7 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed,
                               "public_key: a seat needs the 32-byte Ed25519 key of its commands");
   }
+  if (auto refusal = bannedSeat(c)) return std::move(*refusal);
   if (c.signature.empty()) {
     return JoinAnswer::refuse(JoinOutcome::Unsigned, "signature: seat requests must be signed");
   }
@@ -138,6 +142,12 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
   JoinAnswer answer = match->takeSeat(c.seat, c.name, c.client, random_.token(), c.public_key);
   answer.last_seq = c.seq;
   return answer;
+}
+
+std::optional<JoinAnswer> MatchRegistry::bannedSeat(const JoinCommand& c) const {
+  const std::string* why = banReason(c.public_key);
+  if (!why) return std::nullopt;
+  return JoinAnswer::refuse(JoinOutcome::NotAllowed, "this key is banned from the server: " + *why);
 }
 
 JoinAnswer MatchRegistry::leave(const JoinCommand& c) {
@@ -171,6 +181,18 @@ void MatchRegistry::useKeySeq(const std::vector<std::uint8_t>& key, std::uint32_
 
 CommandAnswer MatchRegistry::shoot(const protocol::ShotRequest& command, double now) {
   Match* match = find(command.match);
+  if (match && (command.seat == 0 || command.seat == 1)) {
+    const Seat& seat = match->seats()[static_cast<std::size_t>(command.seat)];
+    if (const std::string* why = seat.taken() ? banReason(seat.public_key) : nullptr) {
+      // Before the signature check: nothing is used up, nothing changes.
+      CommandAnswer answer;
+      answer.seat = command.seat;
+      answer.seq = command.seq;
+      answer.rejection = {Reject::MatchOver, "seat " + std::to_string(command.seat) +
+                                                 "'s key is banned from the server: " + *why};
+      return answer;
+    }
+  }
   if (match) {
     CommandAnswer answer = match->handleShot(command, now);
     if (command.seat == 0 || command.seat == 1) {
@@ -209,9 +231,34 @@ void MatchRegistry::expireAway(double now, double grace) {
   }
 }
 
+bool MatchRegistry::closeMatch(std::string_view id, const std::string& why) {
+  Match* match = find(id);
+  if (!match) return false;
+  match->close(why);
+  client_made_.erase(match->id());
+  return true;
+}
+
+void MatchRegistry::ban(const std::vector<std::uint8_t>& key, const std::string& reason) {
+  banned_.emplace(key, reason);
+}
+
+bool MatchRegistry::unban(const std::vector<std::uint8_t>& key) {
+  return banned_.erase(key) > 0;
+}
+
+const std::string* MatchRegistry::banReason(const std::vector<std::uint8_t>& key) const {
+  const auto it = banned_.find(key);
+  return it == banned_.end() ? nullptr : &it->second;
+}
+
 std::vector<std::string> MatchRegistry::sweepEmpty() {
   std::vector<std::string> closed;
   for (auto& m : matches_) {
+    if (m->closed()) {
+      closed.push_back(m->id());  // closed by closeMatch
+      continue;
+    }
     // A game in play that both players abandoned closes too (see Match::expireAway).
     const bool closes =
         client_made_.count(m->id()) || m->phase() == MatchPhase::Over || m->inPlay();

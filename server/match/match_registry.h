@@ -76,13 +76,25 @@ class MatchRegistry {
   void pause(double seconds);
   /// Applies grace expiries due by `now` (forfeits, freed lobby seats).
   void expireAway(double now, double grace);
-  /// Closes matches that clients created, and finished ones, once nobody sits in or watches them;
-  /// returns their ids. Empty tables opened by open() stay.
-
+  /// Closes matches that clients created, and finished ones, once nobody sits in or watches them,
+  /// and drops those closed otherwise (closeMatch); returns their ids. Empty tables opened by
+  /// open() stay.
   std::vector<std::string> sweepEmpty();
   /// Opens matches until `count` tables are free (in the lobby, nobody seated), as far as
   /// max_matches allows; returns how many it opened.
   int keepFreeTables(int count);
+
+  /// Closes open match `id` at once (an operator's order): a shot in motion stops, its players
+  /// read `why` as the last verdict; the next sweepEmpty drops it. False when no such match.
+  bool closeMatch(std::string_view id, const std::string& why);
+
+  /// Bans `key`: its seat requests (but a leave) and its seat's shot commands are refused with
+  /// `reason`. A key banned already keeps its first reason.
+  void ban(const std::vector<std::uint8_t>& key, const std::string& reason);
+  /// Lifts the ban of `key`; false when it was not banned.
+  bool unban(const std::vector<std::uint8_t>& key);
+  /// The reason `key` is banned, or null.
+  const std::string* banReason(const std::vector<std::uint8_t>& key) const;
 
   /// The earliest frame due among the matches in motion (s), or empty.
   std::optional<double> nextFrameDue() const;
@@ -91,6 +103,8 @@ class MatchRegistry {
   JoinAnswer seat(const JoinCommand& command);
   JoinAnswer spectate(const JoinCommand& command);
   JoinAnswer leave(const JoinCommand& command);
+  /// The refusal of a seat request signed with a banned key, or empty.
+  std::optional<JoinAnswer> bannedSeat(const JoinCommand& command) const;
   /// The last seq `key` used on this server (0: none seen).
   std::uint32_t keyFloor(const std::vector<std::uint8_t>& key) const;
   /// Records that `key` used `seq` (the floor only rises).
@@ -106,6 +120,7 @@ class MatchRegistry {
   /// Per public key, the last seq it used here: a seat request replayed after its player left
   /// cannot seat them again. Seeded from the seats of resumed matches.
   std::map<std::vector<std::uint8_t>, std::uint32_t> key_seq_;
+  std::map<std::vector<std::uint8_t>, std::string> banned_;  ///< key -> the operator's reason
 };
 
 /// A player name is 1–31 bytes of well-formed UTF-8 without control characters ("Zoë" is one).

@@ -30,6 +30,8 @@ enum Domain : std::uint32_t {
   kSideBySide,
   kSeatAttacks,
   kOtherVersion,
+  kAdmin,
+  kAdminBackup,
 };
 
 /// The flood tests' domain (135–149 are theirs).
@@ -54,7 +56,10 @@ class ServerTest : public ::testing::Test {
   /// Starts the server on `domain` with server id "t", `args` and `log_level`.
   void start(std::uint32_t domain, std::vector<std::string> args,
              const std::string& log_level = "debug") {
-    claim_ = std::make_unique<pool::test::DomainClaim>(domain);
+    if (!claim_ || claim_->domain() != domain) {  // a restart in the same test keeps its claim
+      claim_.reset();
+      claim_ = std::make_unique<pool::test::DomainClaim>(domain);
+    }
     ASSERT_TRUE(claim_->claimed()) << "domain " << domain << " is in use by another test ("
                                    << claim_->path() << "): give each test a domain of its own";
     args.insert(args.end(), {"--server-id", "t", "--log-level", log_level});

@@ -38,7 +38,10 @@ class ClientIntegrationTest : public ::testing::Test {
 
   void open(Domain domain, const std::string& tag) {
     domain_ = domain;
-    claim_ = std::make_unique<pool::test::DomainClaim>(domain);
+    if (!claim_ || claim_->domain() != domain) {  // a restart in the same test keeps its claim
+      claim_.reset();
+      claim_ = std::make_unique<pool::test::DomainClaim>(domain);
+    }
     ASSERT_TRUE(claim_->claimed()) << "domain " << domain << " is in use by another test ("
                                    << claim_->path() << "): give each test a domain of its own";
     scratch_ = std::make_unique<ScratchDir>(tag);

@@ -18,7 +18,7 @@ namespace pool::test {
 /// another port base do not meet). claimed() is false when another test holds the domain.
 class DomainClaim {
  public:
-  explicit DomainClaim(std::uint32_t domain) {
+  explicit DomainClaim(std::uint32_t domain) : domain_(domain) {
     struct stat ns {};
     const auto netns = ::stat("/proc/self/ns/net", &ns) == 0 ? ns.st_ino : 0;
     const char* base = std::getenv("POOL_DDS_PORT_BASE");
@@ -34,9 +34,11 @@ class DomainClaim {
   DomainClaim& operator=(const DomainClaim&) = delete;
 
   bool claimed() const { return claimed_; }
+  std::uint32_t domain() const { return domain_; }
   const std::string& path() const { return path_; }
 
  private:
+  std::uint32_t domain_;
   std::string path_;
   int fd_ = -1;
   bool claimed_ = false;
