@@ -60,7 +60,10 @@ int OdeWorld::addBall(const Ball& ball) {
   dMass m;
   dMassSetSphereTotal(&m, mass_, radius_);
   dBodySetMass(body, &m);
-  dBodySetFiniteRotationMode(body, 1);
+  // ODE's own rotation is overwritten after every step (integrateOrientation, exact for a fixed
+  // axis), so its cheap infinitesimal mode is enough; velocities and positions do not depend on it
+  // (a sphere's inertia is the same in every frame).
+  dBodySetFiniteRotationMode(body, 0);
   dBodySetGravityMode(body, 0);
   bodies_.push_back(body);
   moving_.push_back(false);
