@@ -222,42 +222,56 @@ bool reportVariedBreaks(double baseline_ms, int rounds) {
                 base / mean);
   }
 
-  // The split by part: each part's share of the profiled runs' time (wall-clock, so preemption
-  // on a loaded machine spreads over the parts), applied to the unprofiled CPU time per break.
-  auto printSplit = [](const char* what, const physics::PartTimes& sum, double cpu_ms) {
+  // The split by part, from profiled runs: each part's median over the runs (a run preempted on a
+  // loaded machine, its wall-clock time charged to whichever part was running, is an outlier the
+  // median leaves out), as a share of the medians' sum, applied to the unprofiled CPU time.
+  auto printSplit = [](const char* what, const std::vector<physics::PartTimes>& runs, double cpu_ms,
+                       int profiled) {
+    physics::PartTimes median{};
     double total = 0.0;
-    for (double s : sum) total += s;
-    std::printf("\ntime by part, %s (shares of profiled runs, of %.3f ms CPU per break):\n", what,
-                cpu_ms);
     for (size_t p = 0; p < physics::kPartCount; ++p) {
-      const double share = total > 0 ? sum[p] / total : 0.0;
+      std::vector<double> t;
+      for (const auto& r : runs) t.push_back(r[p]);
+      std::sort(t.begin(), t.end());
+      median[p] = t[t.size() / 2];
+      total += median[p];
+    }
+    std::printf("\ntime by part, %s (median shares of %d profiled runs, of %.3f ms CPU):\n", what,
+                profiled, cpu_ms);
+    for (size_t p = 0; p < physics::kPartCount; ++p) {
+      const double share = total > 0 ? median[p] / total : 0.0;
       std::printf("  %-14s %5.1f %%  %8.4f ms\n", physics::partName(static_cast<physics::Part>(p)),
                   100.0 * share, share * cpu_ms);
     }
   };
-  physics::PartTimes standard{};
+  std::vector<physics::PartTimes> standard;
   const int standard_runs = 20 * rounds;
   std::vector<double> standard_times;
   for (int r = 0; r < standard_runs; ++r) {
     const double t0 = threadCpuSeconds();
     benchmark::DoNotOptimize(runShot(breakScene()));
     standard_times.push_back(1e3 * (threadCpuSeconds() - t0));
-    const auto out = runShot(breakScene(), true);
-    for (size_t p = 0; p < physics::kPartCount; ++p) standard[p] += out->stats.seconds[p];
+    standard.push_back(runShot(breakScene(), true)->stats.seconds);
   }
   std::sort(standard_times.begin(), standard_times.end());
   const double standard_ms = standard_times[standard_times.size() / 2];
   std::printf("\nthe standard break: %.3f ms CPU (median of %d runs)\n", standard_ms,
               standard_runs);
-  printSplit("the standard break", standard, standard_ms);
-  physics::PartTimes varied{};
-  for (int r = 0; r < rounds; ++r) {
-    for (const auto& s : all) {
-      const auto out = runShot(s, true);
-      for (size_t p = 0; p < physics::kPartCount; ++p) varied[p] += out->stats.seconds[p];
+  printSplit("the standard break", standard, standard_ms, standard_runs);
+  // The varied breaks differ from each other: each part's median over the rounds of each break,
+  // summed over the breaks.
+  physics::PartTimes varied_sum{};
+  for (const auto& s : all) {
+    std::vector<physics::PartTimes> of_break;
+    for (int r = 0; r < rounds; ++r) of_break.push_back(runShot(s, true)->stats.seconds);
+    for (size_t p = 0; p < physics::kPartCount; ++p) {
+      std::vector<double> t;
+      for (const auto& b : of_break) t.push_back(b[p]);
+      std::sort(t.begin(), t.end());
+      varied_sum[p] += t[t.size() / 2];
     }
   }
-  printSplit("the 100 varied breaks", varied, mean);
+  printSplit("the 100 varied breaks", {varied_sum}, mean, rounds * kVaried);
 
   // A generous bound (sanitizers, a loaded machine): a break costs well under 50 ms.
   constexpr double kBoundMs = 50.0;
