@@ -60,7 +60,10 @@ int OdeWorld::addBall(const Ball& ball) {
   dMass m;
   dMassSetSphereTotal(&m, mass_, radius_);
   dBodySetMass(body, &m);
-  dBodySetFiniteRotationMode(body, 1);
+  // ODE's own rotation is overwritten after every step (integrateOrientation, exact for a fixed
+  // axis), so its cheap infinitesimal mode is enough; velocities and positions do not depend on it
+  // (a sphere's inertia is the same in every frame).
+  dBodySetFiniteRotationMode(body, 0);
   dBodySetGravityMode(body, 0);
   bodies_.push_back(body);
   moving_.push_back(false);
@@ -70,6 +73,7 @@ int OdeWorld::addBall(const Ball& ball) {
 }
 
 void OdeWorld::setBall(int i, const Ball& ball, bool moving) {
+  PartScope scope(*profiler_, Part::Ode);
   dBodyID body = bodies_[static_cast<size_t>(i)];
   dBodySetPosition(body, ball.pos.x(), ball.pos.y(), ball.pos.z());
   const dReal q[4] = {ball.orient.w(), ball.orient.x(), ball.orient.y(), ball.orient.z()};
@@ -87,6 +91,7 @@ void OdeWorld::setBall(int i, const Ball& ball, bool moving) {
 void OdeWorld::step(double dt, const std::vector<Vec3>& acc, const std::vector<Vec3>& ang_acc,
                     std::vector<Ball>& balls) {
   if (!(dt > 0.0)) return;
+  PartScope integration(*profiler_, Part::Integration);
   const double inertia = 0.4 * mass_ * radius_ * radius_;
   for (size_t i = 0; i < bodies_.size(); ++i) {
     if (!moving_[i]) continue;
@@ -95,7 +100,10 @@ void OdeWorld::step(double dt, const std::vector<Vec3>& acc, const std::vector<V
     dBodyAddForce(bodies_[i], f.x(), f.y(), f.z());
     dBodyAddTorque(bodies_[i], tq.x(), tq.y(), tq.z());
   }
-  dWorldStep(world_, dt);
+  {
+    PartScope ode(*profiler_, Part::Ode);
+    dWorldStep(world_, dt);
+  }
   for (size_t i = 0; i < bodies_.size(); ++i) {
     if (!moving_[i]) continue;
     Ball& b = balls[i];

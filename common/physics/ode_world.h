@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "physics/ball.h"
+#include "physics/profile.h"
 
 struct dxWorld;
 struct dxBody;
@@ -32,12 +33,17 @@ class OdeWorld {
 
   std::size_t bodyCount() const { return bodies_.size(); }
 
+  /// Charges ODE's own work to Part::Ode and ours to Part::Integration (null: no profile).
+  void setProfiler(Profiler* profiler) { profiler_ = profiler ? profiler : &idle_; }
+
  private:
   dxWorld* world_ = nullptr;
   std::vector<dxBody*> bodies_;
   std::vector<bool> moving_;
   double mass_;
   double radius_;
+  Profiler idle_;  ///< never started: switches cost one branch
+  Profiler* profiler_ = &idle_;
 };
 
 /// Initialises ODE once per process and its per-thread data once per thread.

@@ -72,6 +72,7 @@ struct Simulation::Impl {
   ShotOutcome out;
   SimOptions options;
   std::uint64_t next_sample = 0;
+  Profiler profiler;  ///< started by options.profile
 
   Impl(const table::TableSpec& s, const table::TableGeometry& g)
       : spec(s), geometry(g), p(s.params), features(TableFeatures::from(g)) {
@@ -146,6 +147,7 @@ struct Simulation::Impl {
     acc[i] = tr.motion.acc;
     ang_acc[i] = tr.motion.ang_acc;
     world->setBall(static_cast<int>(i), b, active(b.state));
+    PartScope prediction(profiler, Part::Prediction);
     predictTable(i);
     for (size_t j = 0; j < n(); ++j) {
       if (j < i) predictPair(j, i);
@@ -173,10 +175,14 @@ struct Simulation::Impl {
 
   void recordSamples(double until) {
     if (options.sample_hz <= 0.0) return;
+    PartScope integration(profiler, Part::Integration);
     while (true) {
       const double ts = static_cast<double>(next_sample) / options.sample_hz;
       if (ts > until) break;
-      if (pockets) pockets->advanceTo(ts);
+      if (pockets) {
+        PartScope pocket_time(profiler, Part::Pockets);
+        pockets->advanceTo(ts);
+      }
       Sample s;
       s.t = ts;
       s.balls.reserve(n());
@@ -192,7 +198,10 @@ struct Simulation::Impl {
       world->step(t - now, acc, ang_acc, balls);
       ++out.stats.steps;
       now = t;
-      if (pockets) pockets->advanceTo(t);
+      if (pockets) {
+        PartScope pocket_time(profiler, Part::Pockets);
+        pockets->advanceTo(t);
+      }
     }
   }
 
@@ -219,7 +228,11 @@ struct Simulation::Impl {
   void pocket(size_t i, const TableFeatures::Hole& hole) {
     Ball& b = balls[i];
     emit(EventType::Pocket, i, -1, hole.name);
-    if (!pockets) pockets = std::make_unique<PocketWorld>(geometry, p);
+    if (!pockets) {
+      PartScope setup(profiler, Part::PocketSetup);
+      pockets = std::make_unique<PocketWorld>(geometry, p);
+    }
+    PartScope pocket_time(profiler, Part::Pockets);
     dropped = true;
     pockets->drop(b, hole.c, now);
     b.state = MotionState::Pocketed;
@@ -406,7 +419,11 @@ struct Simulation::Impl {
     while (true) {
       double t;
       size_t i = 0, j = 0;
-      const Next next = findNext(t, i, j);
+      Next next;
+      {
+        PartScope prediction(profiler, Part::Prediction);
+        next = findNext(t, i, j);
+      }
       if (next == Next::None) break;
       if (t > options.max_time) {
         advanceTo(options.max_time);
@@ -419,6 +436,7 @@ struct Simulation::Impl {
       }
       advanceTo(std::max(t, now));
       ++out.stats.events;
+      PartScope resolution(profiler, Part::Resolution);
       switch (next) {
         case Next::Transition:
           transition(i);
@@ -432,9 +450,12 @@ struct Simulation::Impl {
         case Next::None:
           break;
       }
-      for (const auto& fix : checkBalls(balls, features, p)) {
-        applyFix(fix);
+      std::vector<WatchdogFix> fixes;
+      {
+        PartScope watchdog(profiler, Part::Watchdog);
+        fixes = checkBalls(balls, features, p);
       }
+      for (const auto& fix : fixes) applyFix(fix);
     }
   }
 
@@ -485,6 +506,7 @@ struct Simulation::Impl {
     }
     recordSamples(now);
     if (pockets) {
+      PartScope pocket_time(profiler, Part::Pockets);
       pockets->settle();
       for (Ball& b : balls) {
         if (b.state == MotionState::Pocketed) pockets->read(b.id, b);
@@ -492,6 +514,7 @@ struct Simulation::Impl {
       out.stats.pocket_steps = pockets->steps();
     }
     out.balls = balls;
+    out.stats.seconds = profiler.stop();
     return std::move(out);
   }
 
@@ -502,6 +525,7 @@ struct Simulation::Impl {
     options = o;
     now = 0.0;
     next_sample = 0;
+    if (o.profile) profiler.start();
   }
 
   void startTracks() {
@@ -565,6 +589,7 @@ Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
   std::sort(s.balls.begin(), s.balls.end(),
             [](const Ball& a, const Ball& b) { return a.id < b.id; });
   s.world = std::make_unique<OdeWorld>(s.p.ball_mass, s.R());
+  s.world->setProfiler(&s.profiler);
   for (Ball& b : s.balls) {
     if (onTable(b.state) && b.state != MotionState::Airborne) {
       b.pos.z() = s.R();

@@ -11,6 +11,7 @@
 #include "physics/ball.h"
 #include "physics/cue_strike.h"
 #include "physics/events.h"
+#include "physics/profile.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
 
@@ -20,6 +21,7 @@ namespace pool::physics {
 struct SimOptions {
   double max_time = 60.0;  ///< bound on simulated time, s
   double sample_hz = 0.0;  ///< > 0: record every ball at exactly t = k / sample_hz
+  bool profile = false;    ///< time the engine's parts into SimStats::seconds (benchmarks)
 };
 
 /// Every ball at one instant.
@@ -33,6 +35,7 @@ struct SimStats {
   std::uint64_t steps = 0;         ///< ODE world steps taken (table)
   std::uint64_t pocket_steps = 0;  ///< ODE steps of balls falling in the pockets and trough
   std::uint64_t events = 0;
+  PartTimes seconds{};  ///< CPU-side time by part (Part), when SimOptions::profile is set
 };
 
 /// What a shot did.

@@ -28,6 +28,12 @@ class RatioReporter : public benchmark::ConsoleReporter {
     }
   }
 
+  /// The median (ms) of the benchmark named `name`; 0 if it did not run.
+  double median(const std::string& name) const {
+    const auto it = medians_.find(name);
+    return it == medians_.end() ? 0.0 : it->second;
+  }
+
   void Finalize() override {
     ConsoleReporter::Finalize();
     double base = 0;

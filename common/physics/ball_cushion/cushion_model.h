@@ -38,10 +38,16 @@ constexpr int kMathavanSteps = 16;
 std::unique_ptr<CushionModel> makeCushionMathavan2010(const table::PhysicsParams& params,
                                                       int steps = kMathavanSteps);
 
-/// Stronge's compliant impact (pooltool's default cushion model): normal and tangential springs
-/// at the contact (frequency ratio 1.7), Coulomb friction u_c, unloading stiffness k/e² so the
-/// rebound returns e² of the stored energy. As in pooltool, the contact is taken at the ball's
-/// equator against the horizontal normal, so the two engines compare like for like.
-std::unique_ptr<CushionModel> makeCushionStrongeCompliant(const table::PhysicsParams& params);
+/// pooltool 0.6's default ratio of the tangential to the normal vibration frequency of the
+/// contact in Stronge's model (its resolver's setting; the model needs it in (1, 2)).
+constexpr double kStrongeFrequencyRatio = 1.8;
+
+/// Stronge's compliant impact (pooltool 0.6's default cushion model): normal and tangential
+/// springs at the contact (`frequency_ratio` ω_t/ω_n), Coulomb friction u_c, unloading stiffness
+/// k/e² so the rebound returns e² of the stored energy. As in pooltool 0.6, the contact is at the
+/// nose, along the 3-D normal, and a ball on the slate keeps no vertical speed, so the two
+/// engines compare like for like.
+std::unique_ptr<CushionModel> makeCushionStrongeCompliant(
+    const table::PhysicsParams& params, double frequency_ratio = kStrongeFrequencyRatio);
 
 }  // namespace pool::physics

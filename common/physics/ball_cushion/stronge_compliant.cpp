@@ -13,9 +13,6 @@ namespace {
 // (beta_n = 1), a tangential one its tangential velocity by (1 + mR²/I)·P/m = 3.5·P/m.
 constexpr double kBetaN = 1.0;
 constexpr double kBetaT = 3.5;
-// Tangential over normal vibration frequency of the contact (pooltool's setting; Stronge's
-// model needs it in (1, 2)). The normal stiffness itself drops out of the result.
-constexpr double kFrequencyRatio = 1.7;
 // Time steps through the compression (the restitution takes as many per unit of time).
 constexpr int kSteps = 400;
 
@@ -30,13 +27,15 @@ struct Contact {
 
 class CushionStrongeCompliant final : public CushionModel {
  public:
-  explicit CushionStrongeCompliant(const table::PhysicsParams& p)
-      : R_(p.ball_radius), m_(p.ball_mass), mu_(p.u_c) {}
+  CushionStrongeCompliant(const table::PhysicsParams& p, double frequency_ratio)
+      : R_(p.ball_radius), m_(p.ball_mass), mu_(p.u_c), ratio_(frequency_ratio) {}
 
   double resolve(Vec3& vel, Vec3& ang_vel, const Vec3& normal, double restitution,
-                 bool /*on_slate*/) const override {
-    // As pooltool does: the horizontal normal, the contact at the ball's equator.
-    const Vec3 n = Vec3(normal.x(), normal.y(), 0.0).normalized();
+                 bool on_slate) const override {
+    // As pooltool 0.6 does: the contact at the nose, along the 3-D normal from the nose line to
+    // the ball's centre. A sphere's response is the same in every tangential direction, so the
+    // slip keeps its initial direction and the impact is one-dimensional along it.
+    const Vec3& n = normal;
     const Vec3 r = -R_ * n;
     const Vec3 u = vel + ang_vel.cross(r);
     const double un = u.dot(n);
@@ -48,7 +47,8 @@ class CushionStrongeCompliant final : public CushionModel {
     const Vec3 impulse = m_ * (c.pn * n + c.pt * t);
     vel += impulse / m_;
     ang_vel += r.cross(impulse) / (0.4 * m_ * R_ * R_);
-    vel.z() = 0.0;  // the cushion does not lift the ball (pooltool's planar model)
+    // On the slate, the slate takes the vertical part (pooltool's planar model drops it too).
+    if (on_slate) vel.z() = 0.0;
     return -un;
   }
 
@@ -57,7 +57,7 @@ class CushionStrongeCompliant final : public CushionModel {
   /// k_n/e², so restitution returns e² of the stored energy); the tangential spring sticks until
   /// its force reaches μ times the normal force, then slips.
   Contact impact(Contact c, double e) const {
-    const double kt = kFrequencyRatio * kFrequencyRatio / kBetaT;  // k_t / k_n (per β_t)
+    const double kt = ratio_ * ratio_ / kBetaT;  // k_t / k_n (per β_t)
     const double dt = 0.5 * std::numbers::pi / kSteps;
     bool compressing = true;
     double delta_max = 0.0;
@@ -84,13 +84,14 @@ class CushionStrongeCompliant final : public CushionModel {
     return c;
   }
 
-  double R_, m_, mu_;
+  double R_, m_, mu_, ratio_;
 };
 
 }  // namespace
 
-std::unique_ptr<CushionModel> makeCushionStrongeCompliant(const table::PhysicsParams& params) {
-  return std::make_unique<CushionStrongeCompliant>(params);
+std::unique_ptr<CushionModel> makeCushionStrongeCompliant(const table::PhysicsParams& params,
+                                                          double frequency_ratio) {
+  return std::make_unique<CushionStrongeCompliant>(params, frequency_ratio);
 }
 
 }  // namespace pool::physics
