@@ -18,20 +18,7 @@
 namespace pool::client::test {
 namespace {
 
-class LightTest : public ScreenshotTest {
- protected:
-  void TearDown() override {
-    if (!std::getenv("POOL_KEEP_TEST_FILES")) std::remove(info().c_str());
-    ScreenshotTest::TearDown();
-  }
-  std::string info() const { return png_ + ".json"; }
-  Image view(const std::string& flags) {
-    const Image image = screenshot("--screenshot-info " + info() + " " + flags);
-    camera_ = reportedCamera(readInfo(info()));
-    return image;
-  }
-  ReportedCamera camera_;
-};
+using LightTest = ScreenshotInfoTest;
 
 table::TableSpec nineFoot() {
   auto spec = table::loadTableSpec("wpa-9ft");
