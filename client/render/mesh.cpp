@@ -1,7 +1,11 @@
 // Mesh upload into vertex arrays and drawing.
+#include "client/render/mesh.h"
+
 #include <glad/gl.h>
 
-#include "client/render/mesh.h"
+#include <array>
+#include <cstdint>
+#include <map>
 
 namespace pool::render {
 
@@ -19,27 +23,40 @@ void createVec3PairArray(unsigned& vao, unsigned& vbo) {
 }
 
 GpuMesh::GpuMesh(const MeshData& data) : count_(static_cast<int>(data.positions.size())) {
+  // Indexed, each distinct vertex once: a software renderer shades a shared vertex once per
+  // batch instead of once per triangle.
   std::vector<float> interleaved;
-  interleaved.reserve(data.positions.size() * 6);
+  std::vector<std::uint32_t> indices;
+  indices.reserve(data.positions.size());
+  std::map<std::array<float, 6>, std::uint32_t> index_of;
   for (std::size_t i = 0; i < data.positions.size(); ++i) {
     const glm::vec3& p = data.positions[i];
     const glm::vec3& n = data.normals[i];
-    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    const std::array<float, 6> vertex{p.x, p.y, p.z, n.x, n.y, n.z};
+    const auto [it, added] = index_of.emplace(vertex, static_cast<std::uint32_t>(index_of.size()));
+    if (added) interleaved.insert(interleaved.end(), vertex.begin(), vertex.end());
+    indices.push_back(it->second);
   }
   createVec3PairArray(vao_, vbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
                interleaved.data(), GL_STATIC_DRAW);
+  glGenBuffers(1, &ebo_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);  // recorded in the vertex array
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+               GL_STATIC_DRAW);
   glBindVertexArray(0);
 }
 
 GpuMesh::~GpuMesh() {
+  glDeleteBuffers(1, &ebo_);
   glDeleteBuffers(1, &vbo_);
   glDeleteVertexArrays(1, &vao_);
 }
 
 void GpuMesh::draw() const {
   glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, count_);
+  glDrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
 }
 
 }  // namespace pool::render

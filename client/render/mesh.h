@@ -44,7 +44,8 @@ void append(MeshData& mesh, const MeshData& more);
 /// of each pair, attribute 1 the second), leaving both bound; fill the buffer with glBufferData.
 void createVec3PairArray(unsigned& vao, unsigned& vbo);
 
-/// The mesh in a vertex array object (location 0: position, 1: normal).
+/// The mesh in a vertex array object (location 0: position, 1: normal), indexed: identical
+/// vertices (position and normal) are stored once.
 class GpuMesh {
  public:
   explicit GpuMesh(const MeshData& data);
@@ -58,7 +59,8 @@ class GpuMesh {
  private:
   unsigned vao_ = 0;
   unsigned vbo_ = 0;
-  int count_ = 0;
+  unsigned ebo_ = 0;
+  int count_ = 0;  ///< indices
 };
 
 }  // namespace pool::render

@@ -1,9 +1,9 @@
 // Mesh builders on the CPU (flat-shaded table parts, UV spheres, discs, boxes, frustums): no GL,
 // so the asset generators build with them too.
+#include "client/render/mesh.h"
+
 #include <cmath>
 #include <numbers>
-
-#include "client/render/mesh.h"
 
 namespace pool::render {
 

@@ -21,7 +21,7 @@ struct RenderOptions {
 /// Quality presets: `full` draws everything at full resolution; `light` draws the same scene at
 /// kLightScale of the resolution, which keeps a software renderer within its frame budget.
 enum class Quality { Full, Light };
-inline constexpr float kLightScale = 0.7f;
+inline constexpr float kLightScale = 0.6f;
 
 /// `options` with the preset's settings (the switches stay).
 RenderOptions withQuality(RenderOptions options, Quality quality);
