@@ -9,7 +9,7 @@ namespace pool::render {
 
 namespace {
 
-constexpr float kLift = 0.0004f;  // m above the slate, under the pocket discs
+constexpr float kLift = 0.0004f;  // m above the slate
 
 constexpr const char* kVertex = R"(#version 330 core
 layout(location = 0) in vec3 aPos;
