@@ -146,8 +146,21 @@ void Renderer::updateShadows() {
     if (!b.pocketed) centres.push_back(toGlm(b.pos));
   }
   const auto lamps = lampPositions(scene_.geometry);
-  shadows_.set(
-      ballShadows(lamps, centres, static_cast<float>(scene_.ball_radius), SceneShading::kAmbient));
+  auto blobs =
+      ballShadows(lamps, centres, static_cast<float>(scene_.ball_radius), SceneShading::kAmbient);
+  if (cue_) {
+    for (const auto& piece :
+         cueShadow(lamps, *cue_, rails_.half_length, rails_.half_width, SceneShading::kAmbient)) {
+      blobs.push_back(piece);
+    }
+    for (const auto& piece : cueShadowOnRails(lamps, *cue_, rails_, SceneShading::kAmbient)) {
+      blobs.push_back(piece);
+    }
+  }
+  const float outer = rails_.cushion_width + rails_.rail_width;
+  shadows_.setTableExtent({rails_.half_length, rails_.half_width},
+                          {rails_.half_length + outer, rails_.half_width + outer});
+  shadows_.set(blobs);
 }
 
 std::vector<SceneBall> Renderer::drawnBalls() const {
