@@ -111,6 +111,11 @@ int main(int argc, char** argv) {
   app.add_option("--question", flags.screenshot.question,
                  "--scene eightball: the question the Magic Eight Ball answers");
   app.add_option("--seed", flags.screenshot.seed, "--scene eightball: the Magic Eight Ball's seed");
+  std::string quality;
+  app.add_option("--quality", quality,
+                 "drawing preset: full, light (the 3-D scene at lower resolution) or auto (light "
+                 "under software OpenGL); default auto in the window, full for --screenshot")
+      ->check(CLI::IsMember({"auto", "full", "light"}));
   app.add_flag("--wireframe", flags.screenshot.render.wireframe, "--screenshot: polygons as lines");
   bool no_textures = false, no_lighting = false;
   app.add_flag("--no-textures", no_textures, "--screenshot: flat colours, no numbers or grain");
@@ -118,6 +123,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   flags.window.keep_identity = !fresh_identity;
   flags.screenshot.render.textures = !no_textures;
+  if (!quality.empty()) flags.window.quality = quality;
+  if (quality == "light") {
+    flags.screenshot.render = withQuality(flags.screenshot.render, pool::render::Quality::Light);
+  }
   flags.screenshot.render.lighting = !no_lighting;
 
   std::signal(SIGINT, onSignal);

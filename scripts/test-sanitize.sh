@@ -22,7 +22,7 @@ cd "$build"
 # render with Mesa, whose driver is dlclose'd at exit: its leaks show no frame but an unknown
 # module, so no library-named suppression can match them. They run with ASan and UBSan but
 # without LeakSanitizer; everything else runs with it.
-gl_tests='^((Render[A-Za-z]*Test|RendererTest|WindowClientTest|AimViewTest|LightTest)\.|frame_bench_smoke$)'
+gl_tests='^((Render[A-Za-z]*Test|RendererTest|WindowClientTest|AimViewTest|LightTest|HallTest)\.|frame_bench_smoke$)'
 ctest --output-on-failure -j "$(nproc)" -E "$gl_tests"
 ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -R "$gl_tests"
 

@@ -9,7 +9,7 @@
 
 namespace pool::render {
 
-/// A soft dark ellipse on the slate (table frame, m).
+/// A soft dark ellipse on the slate, or on the rails' and cushions' tops (table frame, m).
 struct ShadowBlob {
   glm::vec2 centre{0.0f};
   glm::vec2 along{1.0f, 0.0f};  ///< unit: the long axis, away from the lamp
@@ -17,6 +17,9 @@ struct ShadowBlob {
   float half_across = 0.0f;     ///< m
   float darkness = 0.0f;        ///< share of the felt's light removed at the centre, 0–1
   bool soft_ends = true;        ///< false: a piece of a strip, soft only across (the cue's shadow)
+  /// The surface's height above the slate: 0 the felt; above it, the rails' top, where the
+  /// shadow layer draws it only outside the playing surface and inside the table's edge.
+  float z = 0.0f;
 };
 
 /// The ellipse where a ball of radius `radius` centred at `ball` hides a point light at `lamp`

@@ -1,61 +1,13 @@
 // Cue mesh import (assimp) and part looks.
 #include "client/render/cue_model.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
-#include <assimp/Importer.hpp>
-
+#include "client/render/mesh_asset.h"
 #include "client/render/shaders.h"
-#include "table/assets.h"
 
 namespace pool::render {
 
-namespace {
-
-glm::vec3 toGlm(const aiVector3D& v) {
-  return {v.x, v.y, v.z};
-}
-
-void readNode(std::vector<CueMeshPart>& out, const aiScene& scene, const aiNode& node) {
-  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
-    if (!mesh.HasNormals()) continue;
-    CueMeshPart part{node.mName.C_Str(), {}};
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-      const aiFace& face = mesh.mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      for (unsigned k = 0; k < 3; ++k) {
-        part.mesh.positions.push_back(toGlm(mesh.mVertices[face.mIndices[k]]));
-        part.mesh.normals.push_back(toGlm(mesh.mNormals[face.mIndices[k]]));
-      }
-    }
-    out.push_back(std::move(part));
-  }
-  for (unsigned i = 0; i < node.mNumChildren; ++i) readNode(out, scene, *node.mChildren[i]);
-}
-
-}  // namespace
-
-Result<std::vector<CueMeshPart>> loadCueMesh(const std::string& path) {
-  using R = Result<std::vector<CueMeshPart>>;
-  Assimp::Importer importer;
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
-  if (scene == nullptr || scene->mRootNode == nullptr) {
-    return R::fail("cue mesh: " + path + ": " + importer.GetErrorString());
-  }
-  std::vector<CueMeshPart> parts;
-  readNode(parts, *scene, *scene->mRootNode);
-  if (parts.empty()) return R::fail("cue mesh: " + path + ": no parts with normals");
-  return R::ok(std::move(parts));
-}
-
 Result<std::vector<CueMeshPart>> loadCueAsset() {
-  const auto path = pool::table::findAsset("cue/cue.obj");
-  if (!path)
-    return Result<std::vector<CueMeshPart>>::fail("cue mesh: assets/cue/cue.obj not found");
-  return loadCueMesh(path->string());
+  return loadMeshAsset("cue/cue.obj");
 }
 
 CuePartLook cuePartLook(const std::string& name) {

@@ -13,15 +13,9 @@ namespace pool::render {
 
 /// One named part of the cue mesh (tip, ferrule, shaft, joint, forearm, wrap, sleeve, bumper), in
 /// the cue's frame: tip at the origin, axis along +x toward the butt, metres.
-struct CueMeshPart {
-  std::string name;
-  MeshData mesh;
-};
+using CueMeshPart = NamedMesh;
 
-/// Reads the OBJ at `path` (assimp; normals as written). Fails with a one-line reason.
-Result<std::vector<CueMeshPart>> loadCueMesh(const std::string& path);
-
-/// Reads assets/cue/cue.obj from the assets folder.
+/// Reads assets/cue/cue.obj from the assets folder (mesh_asset.h).
 Result<std::vector<CueMeshPart>> loadCueAsset();
 
 /// How a cue part looks: its colour and the scene shader's material (shaders::Material).

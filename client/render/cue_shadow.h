@@ -1,5 +1,6 @@
-// The cue's shadow on the felt: its axis projected from each lamp that lights the felt under it
-// onto the slate, as a strip of pieces as wide as the cue's shadow there. Pure (no GL).
+// The cue's shadow on the felt and on the cushions and rails: its axis projected from each lamp
+// that lights the surface under it, as a strip of pieces as wide as the cue's shadow there. Pure
+// (no GL).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -8,6 +9,7 @@
 
 #include "client/render/ball_shadows.h"
 #include "client/render/cue_pose.h"
+#include "client/render/diamonds.h"
 
 namespace pool::render {
 
@@ -15,5 +17,11 @@ namespace pool::render {
 /// |y| ≤ half_width); `ambient` as for ballShadows.
 std::vector<ShadowBlob> cueShadow(std::span<const glm::vec3> lamps, const CuePlacement& cue,
                                   float half_length, float half_width, float ambient);
+
+/// The pieces that fall on the cushions and rails round the playing surface: the axis projected
+/// onto the plane of the rails' top (z = rails.top, the blobs' z), where that lies between the
+/// nose lines and the table's outer edge.
+std::vector<ShadowBlob> cueShadowOnRails(std::span<const glm::vec3> lamps, const CuePlacement& cue,
+                                         const RailExtent& rails, float ambient);
 
 }  // namespace pool::render

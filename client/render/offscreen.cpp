@@ -5,8 +5,8 @@
 #include <glad/gl.h>
 
 #include <cstring>
-#include <stdexcept>
-#include <string>
+
+#include "client/render/framebuffer.h"
 
 namespace pool::render {
 
@@ -25,17 +25,8 @@ void OffscreenContext::createFramebuffer() {
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glGenRenderbuffers(1, &colour_);
-  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
   glGenRenderbuffers(1, &depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error("framebuffer incomplete: " + std::to_string(status));
-  }
+  attachColourAndDepth(colour_, depth_, width_, height_);
 }
 
 void OffscreenContext::bind() const {

@@ -60,8 +60,43 @@ glm::vec3 bulbColour() {
   return {1.0f, 0.96f, 0.85f};
 }
 
-glm::vec3 holeColour() {
-  return kDark;
+PartLook hallPartLook(const std::string& name) {
+  struct Entry {
+    const char* name;
+    PartLook look;
+  };
+  static const Entry kLooks[] = {
+      // The table's dressing.
+      {"rail_top", {kWood, shaders::kWood}},
+      {"rail_edge", {kWood, shaders::kWood}},
+      {"apron", {kWood, shaders::kWood}},
+      {"leg", {kWood, shaders::kWood}},
+      {"underside", {{0.05f, 0.04f, 0.03f}, shaders::kRoomPlain}},
+      {"pocket_liner", {{0.11f, 0.065f, 0.04f}, shaders::kLiner}},
+      {"pocket_rim", {{0.05f, 0.035f, 0.025f}, shaders::kPlain}},
+      // The hall.
+      {"floor", {{0.40f, 0.23f, 0.11f}, shaders::kFloor}},
+      {"ceiling", {{0.16f, 0.13f, 0.11f}, shaders::kRoomPlain}},
+      {"wainscot", {{0.34f, 0.17f, 0.08f}, shaders::kRoomWood}},
+      {"moulding", {{0.24f, 0.11f, 0.05f}, shaders::kRoomWood}},
+      {"wallpaper", {{0.55f, 0.15f, 0.12f}, shaders::kWall}},
+      {"stool_seat", {{0.50f, 0.06f, 0.05f}, shaders::kRoomPlain}},
+      {"chrome", {{0.72f, 0.72f, 0.75f}, shaders::kRoomPlain}},
+      {"rack_wood", {{0.38f, 0.19f, 0.08f}, shaders::kRoomWood}},
+      {"rack_cue_shaft", {{0.86f, 0.69f, 0.45f}, shaders::kRoomPlain}},
+      {"rack_cue_butt", {{0.30f, 0.09f, 0.04f}, shaders::kRoomPlain}},
+      {"board", {{0.14f, 0.08f, 0.04f}, shaders::kRoomWood}},
+      {"brass", {{0.80f, 0.66f, 0.30f}, shaders::kRoomPlain}},
+      {"bead_light", {{0.92f, 0.88f, 0.76f}, shaders::kRoomPlain}},
+      {"bead_dark", {{0.10f, 0.08f, 0.07f}, shaders::kRoomPlain}},
+      {"gilt", {{0.74f, 0.57f, 0.24f}, shaders::kRoomPlain}},
+      {"canvas_sky", {{0.55f, 0.63f, 0.72f}, shaders::kRoomPlain}},
+      {"canvas_land", {{0.24f, 0.38f, 0.17f}, shaders::kRoomPlain}},
+  };
+  for (const Entry& e : kLooks) {
+    if (name == e.name) return e.look;
+  }
+  return {{0.5f, 0.5f, 0.5f}, shaders::kRoomPlain};
 }
 
 }  // namespace pool::render

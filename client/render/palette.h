@@ -1,4 +1,4 @@
-// Colours of the table's materials and of the balls (linear RGB, 0..1).
+// Colours of the table's and the hall's materials and of the balls (linear RGB, 0..1).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -25,13 +25,14 @@ struct PartLook {
 /// the cabinet under the slate, wooden).
 PartLook partLook(const std::string& part_name);
 
+/// The look of a part of the hall (hall_room.h) or of a table's dressing (table_dressing.h) by
+/// its name; an unknown name is drawn a neutral grey.
+PartLook hallPartLook(const std::string& part_name);
+
 /// The wood of the rails and cabinet.
 glm::vec3 woodColour();
 /// Lamp shades (enamel, seen lit from inside) and bulbs.
 glm::vec3 shadeColour();
 glm::vec3 bulbColour();
-
-/// The colour drawn in the pocket holes.
-glm::vec3 holeColour();
 
 }  // namespace pool::render

@@ -5,22 +5,26 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <stdexcept>
 
 #include "client/render/cue_shadow.h"
+#include "client/render/hall_assets.h"
+#include "client/render/hall_room.h"
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/render/shaders.h"
+#include "client/render/table_dressing.h"
 
 namespace pool::render {
 
 namespace {
 
-constexpr float kSurfaceLift = 0.0005f;  // pocket discs sit this far above the slate, m
-constexpr float kDiamondLift = 0.0003f;  // diamonds sit this far above the rail top, m
+// Diamonds sit this far above the collision rails' top: over the dressing's rail top and rims.
+constexpr float kDiamondLift = 3.0f * kRailCapLift;
 constexpr glm::vec3 kBackground(0.10f, 0.10f, 0.12f);
 constexpr float kTroughLight = 0.75f;  // share of the albedo lit in the trough
 // The hall's light besides the lamps (walls and ceiling sending some back): the share of the
@@ -32,6 +36,19 @@ constexpr int kGhostSegments = 48;
 
 glm::vec3 toGlm(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+std::vector<NamedMesh> roomOrThrow() {
+  auto parts = loadRoom();
+  if (!parts) throw std::runtime_error(parts.error());
+  return std::move(*parts);
+}
+
+/// Collision parts the dressing draws instead: the rails (its rail tops, rounded edge and apron),
+/// the pockets' cylinders (its liners) and the channel under the slate (inside the apron, seen
+/// only through a pocket, where the liner's cup is).
+bool dressedOver(const std::string& part) {
+  return part.rfind("rail_", 0) == 0 || part.rfind("pocket_", 0) == 0 || part == "trough";
 }
 
 std::vector<CueMeshPart> cueMeshOrThrow() {
@@ -75,18 +92,27 @@ Renderer::Renderer(const Scene& scene)
     : scene_(scene),
       trough_(scene.geometry, scene.ball_radius),
       sphere_(unitSphere(16, 24)),
-      disc_(unitDisc(40)),
       shade_(lampShade()),
       bulb_(unitSphere(8, 12)),
       diamond_(diamondInlay()),
       rails_(railExtent(scene.geometry, static_cast<float>(scene.cushion_width))),
       cue_model_(cueMeshOrThrow()) {
   for (const auto& part : scene_.geometry.parts) {
-    if (part.triangles.empty()) continue;
+    if (part.triangles.empty() || dressedOver(part.name)) continue;
     const PartLook look = partLook(part.name);
     parts_.push_back({std::make_unique<GpuMesh>(meshFromPart(part)), look.colour, look.material});
   }
   parts_.push_back({std::make_unique<GpuMesh>(trough_.mesh()), woodColour(), shaders::kWood});
+  for (const NamedMesh& part :
+       loadDressing(scene_.geometry, static_cast<float>(scene_.cushion_width))) {
+    const PartLook look = hallPartLook(part.name);
+    parts_.push_back({std::make_unique<GpuMesh>(part.mesh), look.colour, look.material});
+  }
+  for (const NamedMesh& part : roomOrThrow()) {
+    const PartLook look = hallPartLook(part.name);
+    room_.push_back(
+        {std::make_unique<GpuMesh>(part.mesh), look.colour, look.material, isHallShell(part.name)});
+  }
   diamonds_ = diamondPositions(rails_);
   trough_.update(scene_.balls);
   updateShadows();
@@ -120,8 +146,21 @@ void Renderer::updateShadows() {
     if (!b.pocketed) centres.push_back(toGlm(b.pos));
   }
   const auto lamps = lampPositions(scene_.geometry);
-  shadows_.set(
-      ballShadows(lamps, centres, static_cast<float>(scene_.ball_radius), SceneShading::kAmbient));
+  auto blobs =
+      ballShadows(lamps, centres, static_cast<float>(scene_.ball_radius), SceneShading::kAmbient);
+  if (cue_) {
+    for (const auto& piece :
+         cueShadow(lamps, *cue_, rails_.half_length, rails_.half_width, SceneShading::kAmbient)) {
+      blobs.push_back(piece);
+    }
+    for (const auto& piece : cueShadowOnRails(lamps, *cue_, rails_, SceneShading::kAmbient)) {
+      blobs.push_back(piece);
+    }
+  }
+  const float outer = rails_.cushion_width + rails_.rail_width;
+  shadows_.setTableExtent({rails_.half_length, rails_.half_width},
+                          {rails_.half_length + outer, rails_.half_width + outer});
+  shadows_.set(blobs);
 }
 
 std::vector<SceneBall> Renderer::drawnBalls() const {
@@ -135,17 +174,6 @@ std::vector<SceneBall> Renderer::drawnBalls() const {
     }
   }
   return drawn;
-}
-
-void Renderer::drawHoles() const {
-  for (const auto& hole : scene_.geometry.holes) {
-    const glm::vec3 centre(static_cast<float>(hole.centre.x()), static_cast<float>(hole.centre.y()),
-                           kSurfaceLift);
-    const auto r = static_cast<float>(hole.radius);
-    const glm::mat4 model =
-        glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(r, r, 1.0f));
-    shading_.draw(disc_, model, holeColour(), shaders::kPlain, 0.0f);
-  }
 }
 
 void Renderer::drawDiamonds() const {
@@ -237,6 +265,19 @@ void Renderer::drawGhost(const Camera& camera, const glm::mat4& view_projection)
 }
 
 void Renderer::draw(const Camera& camera, int width, int height) const {
+  if (options_.scale >= 1.0f || options_.scale <= 0.0f) {
+    drawScene(camera, width, height);
+    return;
+  }
+  const auto scaled = [&](int n) {
+    return std::max(1, static_cast<int>(std::lround(static_cast<float>(n) * options_.scale)));
+  };
+  scaled_.begin(scaled(width), scaled(height));
+  drawScene(camera, scaled(width), scaled(height));
+  scaled_.end(width, height);
+}
+
+void Renderer::drawScene(const Camera& camera, int width, int height) const {
   const auto lamps = lampPositions(scene_.geometry);
   const glm::mat4 view_projection =
       viewProjection(camera, static_cast<float>(width) / static_cast<float>(height));
@@ -247,10 +288,20 @@ void Renderer::draw(const Camera& camera, int width, int height) const {
     shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
   }
   drawDiamonds();
-  drawHoles();
   if (options_.lighting && !options_.wireframe) shadows_.draw(view_projection);
   drawBalls();
   drawCue(camera);
+  // The hall last among the opaque things: the table and balls in front of it hide most of it
+  // from the fragment shader.
+  if (options_.room) {
+    for (const Part& part : room_) {
+      // The shell (floor, walls, ceiling) is seen from inside only: a camera zoomed out beyond
+      // a wall or over the ceiling looks through it, as into a doll's house.
+      if (part.shell) glEnable(GL_CULL_FACE);
+      shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.0f);
+      glDisable(GL_CULL_FACE);
+    }
+  }
   drawLamps(camera, width, height);
   shading_.endFrame();
   drawGhost(camera, view_projection);

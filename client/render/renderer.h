@@ -1,6 +1,6 @@
-// Draws a Scene (table, diamonds, pockets, ball shadows, numbered balls, the cue, lamps, the
-// pocketed-ball trough) with two spotlights and Blinn-Phong shading, then the ghost ball and the
-// overlay lines.
+// Draws a Scene (the table and its dressing, diamonds, pocket liners, ball shadows, numbered
+// balls, the cue, the pool hall round the table, lamps, the pocketed-ball trough) with two
+// spotlights and Blinn-Phong shading, then the ghost ball and the overlay lines.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -15,18 +15,13 @@
 #include "client/render/diamonds.h"
 #include "client/render/mesh.h"
 #include "client/render/overlay_lines.h"
+#include "client/render/render_options.h"
+#include "client/render/scaled_target.h"
 #include "client/render/scene.h"
 #include "client/render/scene_shading.h"
 #include "client/render/shadow_layer.h"
 
 namespace pool::render {
-
-/// Switches of the drawing (the client's P, T and L keys).
-struct RenderOptions {
-  bool wireframe = false;  ///< polygons as lines
-  bool textures = true;    ///< ball numbers, felt and wood grain (off: flat colours)
-  bool lighting = true;    ///< spotlights (off: unlit colours)
-};
 
 /// What a cue aimed at the ball at `cue_ball` must clear on `scene`'s table: its rails and the
 /// other balls on the table.
@@ -56,7 +51,8 @@ class Renderer {
   const std::optional<glm::vec3>& ghost() const { return ghost_; }
   /// The diamonds' centres on the rail tops (table frame, m).
   const std::vector<glm::vec3>& diamonds() const { return diamonds_; }
-  /// Clears and draws the scene into the bound framebuffer of size width × height.
+  /// Clears and draws the scene into the bound framebuffer of size width × height (through a
+  /// smaller target stretched onto it when options().scale < 1).
   void draw(const Camera& camera, int width, int height) const;
 
  private:
@@ -64,23 +60,24 @@ class Renderer {
     std::unique_ptr<GpuMesh> mesh;
     glm::vec3 colour;
     int material;
+    bool shell = false;  ///< drawn from its front only (the hall's floor, walls and ceiling)
   };
   void placeCue();
   void updateShadows();
   void drawBalls() const;
-  void drawHoles() const;
   void drawDiamonds() const;
   void drawCue(const Camera& camera) const;
   void drawLamps(const Camera& camera, int width, int height) const;
   void drawGhost(const Camera& camera, const glm::mat4& view_projection) const;
+  void drawScene(const Camera& camera, int width, int height) const;
 
   Scene scene_;
   RenderOptions options_;
   BallTrough trough_;
   SceneShading shading_;
-  std::vector<Part> parts_;
+  std::vector<Part> parts_;  ///< the table: collision parts, trough, dressing
+  std::vector<Part> room_;   ///< the hall round it
   GpuMesh sphere_;
-  GpuMesh disc_;
   GpuMesh shade_;
   GpuMesh bulb_;
   GpuMesh diamond_;
@@ -92,7 +89,9 @@ class Renderer {
   std::optional<glm::vec3> ghost_;
   ShadowLayer shadows_;
   OverlayLines overlay_;
-  mutable OverlayLines ghost_lines_;  ///< rebuilt each frame: the outline faces the camera
+  mutable OverlayLines ghost_lines_;
+  mutable ScaledTarget scaled_;  ///< the scene at options_.scale of the framebuffer's size  ///<
+                                 ///< rebuilt each frame: the outline faces the camera
 };
 
 }  // namespace pool::render

@@ -16,7 +16,14 @@ enum Material : int {
   kEmissive = 4,
   kCue = 5,    ///< varnished wood with grain along the model's x axis, glossy
   kShade = 6,  ///< lamp shade: enamel outside (lit from the room), glowing inside
-  kMaterials = 7
+  // The hall's materials: lit by the room's light alone (the table and the walls sending the
+  // lamps' light back), no spotlight work per fragment.
+  kFloor = 7,       ///< oak planks along x, staggered joints
+  kWall = 8,        ///< striped wallpaper
+  kRoomWood = 9,    ///< panelling and furniture: the table's grain
+  kRoomPlain = 10,  ///< flat colour
+  kLiner = 11,      ///< a pocket's leather, darker the deeper inside
+  kMaterials = 12
 };
 
 /// Vertex stage: world position and normal, plus the object-space normal and position (ball
@@ -86,7 +93,7 @@ vec3 albedo() {
   float fibre = texture(uNoise, vWorldPos.xy * 6.0).r * 0.08;
   float broad = texture(uNoise, vWorldPos.xy * 0.35).r * 0.06;
   return uColour * (0.93 + fibre + broad);
-#elif MATERIAL == 2
+#elif MATERIAL == 2 || MATERIAL == 9
   if (uTextures == 0) return uColour;
   float along = abs(vNormal.x) > abs(vNormal.y) ? vWorldPos.y : vWorldPos.x;
   float across = vWorldPos.x + vWorldPos.y + vWorldPos.z;
@@ -97,9 +104,34 @@ vec3 albedo() {
   float around = atan(vLocalPos.z, vLocalPos.y);
   float streak = texture(uNoise, vec2(vLocalPos.x * 0.7, around * 0.9)).r;
   return uColour * (0.84 + 0.3 * streak);
+#elif MATERIAL == 7
+  if (uTextures == 0) return uColour;
+  const float kPlank = 0.14, kRun = 1.8;
+  float plank = floor(vWorldPos.y / kPlank);
+  float shift = fract(plank * 0.37) * kRun;  // joints staggered from plank to plank
+  float run = (vWorldPos.x + shift) / kRun;
+  float tone = fract(sin(plank * 12.9898 + floor(run) * 78.233) * 43758.5453);
+  float grain = texture(uNoise, vec2(vWorldPos.x * 0.12, vWorldPos.y * 2.5 + plank * 0.3)).r;
+  float fy = fract(vWorldPos.y / kPlank), fx = fract(run);
+  float seam = smoothstep(0.0, 0.04, fy) * smoothstep(1.0, 0.96, fy) *
+               smoothstep(0.0, 0.003, fx) * smoothstep(1.0, 0.997, fx);
+  return uColour * (0.75 + 0.35 * tone) * (0.82 + 0.3 * grain) * (0.45 + 0.55 * seam);
+#elif MATERIAL == 8
+  if (uTextures == 0) return uColour;
+  float s = fract((vWorldPos.x + vWorldPos.y) / 0.16);
+  float line = smoothstep(0.025, 0.0, abs(s - 0.5));
+  return mix(uColour * (s < 0.5 ? 1.0 : 0.8), vec3(0.55, 0.44, 0.2), 0.6 * line);
+#elif MATERIAL == 11
+  return uColour * mix(0.12, 1.0, smoothstep(-0.09, 0.0, vWorldPos.z));
 #else
   return uColour;
 #endif
+}
+// The hall's light: the room's ambient, more on faces turned up, and the lamps' light sent back
+// by the table, falling off away from it.
+vec3 roomLit(vec3 base, vec3 n) {
+  float near = clamp(1.0 - length(vWorldPos.xy) / 6.5, 0.0, 1.0);
+  return base * (uAmbient * (0.9 + 0.4 * max(n.z, 0.0)) + 0.5 * near);
 }
 const vec3 kGlow = vec3(1.0, 0.9, 0.7);  // a shade's inside, lit by its bulb
 void main() {
@@ -115,6 +147,10 @@ void main() {
   vec3 v = normalize(uEye - vWorldPos);
   bool inside = dot(n, v) < 0.0;
   if (inside) n = -n;
+#if MATERIAL >= 7
+  fragColour = vec4(min(roomLit(base, n), vec3(1.0)), uAlpha);
+  return;
+#endif
 #if MATERIAL == 6
   // Inside: the bulb's glow, brightest toward the rim it spills from. Outside: enamel under the
   // light the room sends back up from the table, with a sheen.

@@ -22,12 +22,20 @@ class ShadowLayer {
   /// Multiplies the framebuffer under each blob by (1 − darkness · edge falloff), depth-tested
   /// against what is drawn, without writing depth.
   void draw(const glm::mat4& view_projection) const;
+  /// The half-extents of the playing surface and of the table's outer edge: raised shadows
+  /// (on the rails) show only between them.
+  void setTableExtent(glm::vec2 playing, glm::vec2 edge) {
+    playing_ = playing;
+    edge_ = edge;
+  }
 
  private:
   ShaderProgram program_;
   unsigned vao_ = 0;
   unsigned vbo_ = 0;
   int vertices_ = 0;
+  glm::vec2 playing_{0.0f};
+  glm::vec2 edge_{0.0f};
 };
 
 }  // namespace pool::render

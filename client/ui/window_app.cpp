@@ -73,6 +73,11 @@ class WindowApp {
                   options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
         sound_(options.mute) {
     session_.setListener(&sound_);
+    // Under a software renderer the light preset keeps the frame budget (--quality overrides).
+    const GLubyte* gl_renderer = glGetString(GL_RENDERER);
+    quality_ = render::resolveQuality(
+        render::parseQualitySetting(options.quality).value_or(render::QualitySetting::Auto),
+        gl_renderer ? reinterpret_cast<const char*>(gl_renderer) : "");
     installInput(window_.get(), controls_);
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
@@ -235,7 +240,7 @@ class WindowApp {
     if (overlay.aim) showCue(*overlay.aim, controls_.toggles().aim_line);
     if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
     const app::Toggles& t = controls_.toggles();
-    renderer_.setOptions({t.wireframe, t.textures, t.lighting});
+    renderer_.setOptions(render::withQuality({t.wireframe, t.textures, t.lighting}, quality_));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     if (in_room_) {
@@ -313,6 +318,7 @@ class WindowApp {
   bot::TableView view_;
   GlfwWindow window_;
   render::Renderer renderer_;
+  render::Quality quality_ = render::Quality::Full;
   /// The cue going through after a shot: its aim at release and when.
   struct Stroke {
     render::CueAim aim;

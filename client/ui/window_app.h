@@ -27,6 +27,7 @@ struct WindowOptions {
   std::string table = "wpa-9ft";
   int width = 1280;
   int height = 720;
+  std::string quality = "auto";  ///< drawing preset: auto, full or light (render_options.h)
 };
 
 /// Runs the window until it is closed, the script quits or `stop` is set. Returns the exit code:

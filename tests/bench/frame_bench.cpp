@@ -1,8 +1,9 @@
 // Frame time of the client's 3-D scene at 1280×720 on the offscreen context (Mesa llvmpipe under
-// Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (sixteen
-// balls rolling and turning with their shadows, two pocketed, the lamps, the 3-D cue and the
-// ghost ball, overlay lines, the window's Dear ImGui HUD), from the overview and from the aiming
-// view behind the cue ball. Prints
+// Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (the pool
+// hall round the table, sixteen balls rolling and turning with their shadows, two pocketed, the
+// lamps, the 3-D cue and the ghost ball, overlay lines, the window's Dear ImGui HUD), from the
+// overview and from the aiming view behind the cue ball, in the full and the light preset, and
+// without the hall. Prints
 // median and p99 per frame and the ratio to the baseline; wall time, since llvmpipe renders on its
 // own threads, and the CPU time of the whole process (all threads) per frame, which a busy machine
 // does not inflate.
@@ -224,6 +225,21 @@ void BM_FullSceneAimingView(benchmark::State& state) {
   fullScene(state, "full scene + HUD, aiming view", {}, true);
 }
 
+void BM_FullSceneLight(benchmark::State& state) {
+  fullScene(state, "full scene + HUD, light preset", withQuality({}, pool::render::Quality::Light));
+}
+
+void BM_FullSceneAimingViewLight(benchmark::State& state) {
+  fullScene(state, "full scene + HUD, aiming view, light",
+            withQuality({}, pool::render::Quality::Light), true);
+}
+
+void BM_FullSceneNoRoom(benchmark::State& state) {
+  pool::render::RenderOptions options;
+  options.room = false;
+  fullScene(state, "full scene + HUD, no hall", options);
+}
+
 void BM_FullSceneNoTextures(benchmark::State& state) {
   fullScene(state, "full scene, textures off", {false, false, true});
 }
@@ -236,6 +252,9 @@ BENCHMARK(BM_BaselineClearOnly)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TableOnly)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullScene)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneAimingView)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneLight)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneAimingViewLight)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneNoRoom)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoTextures)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoLighting)->UseManualTime()->Unit(benchmark::kMillisecond);
 

@@ -32,5 +32,31 @@ TEST(CueShadowTest, StripFollowsTheCuesAxisProjectedFromTheLamp) {
   }
 }
 
+TEST(CueShadowTest, OverTheRailsTheStripLiesOnTheRailTopBetweenTheNoseAndTheEdge) {
+  const std::array<glm::vec3, 1> lamp{glm::vec3(-0.635f, 0.0f, 0.95f)};
+  // The cue over the long rail: aimed along −y from beyond the table, raised 10 cm.
+  CuePlacement cue;
+  cue.forward = {0.0f, -1.0f, 0.0f};
+  cue.tip = {-0.5f, 0.4f, 0.1f};
+  cue.butt = cue.tip - cue.forward * 1.47f;
+  const RailExtent rails{1.27f, 0.635f, 0.05f, 0.1f, 0.0413f};
+  const auto strip = cueShadowOnRails(lamp, cue, rails, 0.38f);
+  ASSERT_FALSE(strip.empty());
+  const float h = cue.tip.z, top = rails.top;
+  for (const ShadowBlob& piece : strip) {
+    EXPECT_EQ(piece.z, top);
+    EXPECT_GT(std::abs(piece.centre.y), 0.635f);  // beyond the nose line
+    EXPECT_LE(std::abs(piece.centre.y), 0.785f);  // not past the table's edge
+    // Projected onto the plane z = top: x = lamp.x + (cue.x − lamp.x) · (H − top) / (H − h).
+    const float x = -0.635f + (cue.tip.x + 0.635f) * (0.95f - top) / (0.95f - h);
+    EXPECT_NEAR(piece.centre.x, x, 2e-3f);
+  }
+  // None of it over the felt, which cueShadow covers.
+  for (const ShadowBlob& piece : cueShadow(lamp, cue, 1.27f, 0.635f, 0.38f)) {
+    EXPECT_EQ(piece.z, 0.0f);
+    EXPECT_LE(std::abs(piece.centre.y), 0.635f);
+  }
+}
+
 }  // namespace
 }  // namespace pool::render

@@ -26,20 +26,10 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-class AimViewTest : public ScreenshotTest {
+class AimViewTest : public ScreenshotInfoTest {
  protected:
-  void TearDown() override {
-    if (!std::getenv("POOL_KEEP_TEST_FILES")) std::remove(info().c_str());
-    ScreenshotTest::TearDown();
-  }
-  std::string info() const { return png_ + ".json"; }
   /// Renders the aim scene with `flags` and reads its sidecar.
-  Image aimView(const std::string& flags) {
-    const Image image = screenshot("--scene aim --screenshot-info " + info() + " " + flags);
-    camera_ = reportedCamera(readInfo(info()));
-    return image;
-  }
-  ReportedCamera camera_;
+  Image aimView(const std::string& flags) { return view("--scene aim " + flags); }
 };
 
 struct Table {

@@ -18,20 +18,7 @@
 namespace pool::client::test {
 namespace {
 
-class LightTest : public ScreenshotTest {
- protected:
-  void TearDown() override {
-    if (!std::getenv("POOL_KEEP_TEST_FILES")) std::remove(info().c_str());
-    ScreenshotTest::TearDown();
-  }
-  std::string info() const { return png_ + ".json"; }
-  Image view(const std::string& flags) {
-    const Image image = screenshot("--screenshot-info " + info() + " " + flags);
-    camera_ = reportedCamera(readInfo(info()));
-    return image;
-  }
-  ReportedCamera camera_;
-};
+using LightTest = ScreenshotInfoTest;
 
 table::TableSpec nineFoot() {
   auto spec = table::loadTableSpec("wpa-9ft");
@@ -200,6 +187,45 @@ TEST_F(LightTest, EighteenDiamondsOnTheRailsInTheOverview) {
   const Image image = view("--scene rack");
   ASSERT_EQ(image.width, camera_.width);
   expectDiamonds(image, camera_, nineFoot());
+}
+
+glm::vec3 posOf(const nlohmann::json& point) {
+  const auto& p = point.at("pos");
+  return {p[0], p[1], p[2]};
+}
+
+TEST_F(LightTest, TheCueCastsAShadowOnTheFeltAwayFromTheLamp) {
+  // The cue beside the head lamp (which hangs over y = 0), aimed up the table, seen from above
+  // and behind: its shadow falls on the felt on its side away from the lamp.
+  const Image image =
+      view("--scene aim --cue-at -0.6 0.35 --aim 10 --camera-elevation 55 --camera-distance 1.1");
+  const auto info = readInfo(this->info());
+  ASSERT_TRUE(info.contains("cue"));
+  const glm::vec3 tip = posOf(info.at("cue").at("tip"));
+  const glm::vec3 butt = posOf(info.at("cue").at("butt"));
+  glm::vec3 lamp = posOf(info.at("lamps")[0].at("light"));
+  for (const auto& l : info.at("lamps")) {
+    if (glm::length(posOf(l.at("light")) - tip) < glm::length(lamp - tip)) {
+      lamp = posOf(l.at("light"));
+    }
+  }
+  double shadowed = 0, beside = 0;
+  int samples = 0;
+  for (float s = 0.1f; s <= 0.28f; s += 0.01f) {
+    const glm::vec3 p = tip + (butt - tip) * (s / glm::length(butt - tip));
+    // The ray from the lamp through the cue's axis meets the slate here...
+    const glm::vec3 shadow = lamp + (p - lamp) * (lamp.z / (lamp.z - p.z));
+    // ...and the felt as far on the other side of the cue (toward the lamp) is lit.
+    const glm::vec3 under(p.x, p.y, 0.0f);
+    const glm::vec3 lit = under + (under - shadow);
+    const glm::vec3 a = camera_.pixel(shadow), b = camera_.pixel(lit);
+    ASSERT_TRUE(camera_.inside(a) && camera_.inside(b)) << "at " << s;
+    shadowed += luminance(image.at(int(a.x), int(a.y)));
+    beside += luminance(image.at(int(b.x), int(b.y)));
+    ++samples;
+  }
+  EXPECT_LT(shadowed / samples + 8.0, beside / samples)
+      << "shadow " << shadowed / samples << ", lit felt " << beside / samples;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "support/display_check.h"
 #include "support/png_image.h"
+#include "support/reported_camera.h"
 
 namespace pool::client::test {
 
@@ -33,6 +34,23 @@ class ScreenshotTest : public ::testing::Test {
     return loadPng(png_);
   }
   std::string png_;
+};
+
+/// A screenshot test that also reads the sidecar (--screenshot-info) for the camera.
+class ScreenshotInfoTest : public ScreenshotTest {
+ protected:
+  void TearDown() override {
+    if (!std::getenv("POOL_KEEP_TEST_FILES")) std::remove(info().c_str());
+    ScreenshotTest::TearDown();
+  }
+  std::string info() const { return png_ + ".json"; }
+  /// Renders with `flags` and keeps the reported camera in camera_.
+  Image view(const std::string& flags) {
+    const Image image = screenshot("--screenshot-info " + info() + " " + flags);
+    camera_ = reportedCamera(readInfo(info()));
+    return image;
+  }
+  ReportedCamera camera_;
 };
 
 }  // namespace pool::client::test

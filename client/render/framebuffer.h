@@ -1,0 +1,10 @@
+// Storage for a framebuffer's colour and depth renderbuffers, attached and checked.
+#pragma once
+
+namespace pool::render {
+
+/// Gives the bound framebuffer `colour` (RGBA8) and `depth` (24-bit) renderbuffers of width ×
+/// height and attaches them; throws std::runtime_error when the framebuffer is incomplete.
+void attachColourAndDepth(unsigned colour, unsigned depth, int width, int height);
+
+}  // namespace pool::render
