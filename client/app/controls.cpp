@@ -37,8 +37,18 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   aim_.option = protocol::ShotOption::None;
   aim_.cue_ball_at.reset();
   if (in_hand != rules::BallInHand::None) placeCueBall(cue_ball.head<2>());
+  if (drag_ != Drag::None) camera_.hold(false);
+  drag_ = Drag::None;
   camera_.setAiming(true);
+  camera_.behindCue();
   followCue();
+}
+
+void Controls::setYaw(double yaw) {
+  if (!std::isfinite(yaw)) return;
+  aim_.yaw = yaw;
+  clampAim(aim_, limits_);
+  if (mode_ == ControlMode::Aiming) followCue();
 }
 
 void Controls::moveCueBall(const Eigen::Vector2d& at) {
@@ -51,6 +61,7 @@ void Controls::stopAiming() {
   mode_ = ControlMode::Watching;
   charging_ = false;
   aim_.power = 0.0;
+  if (drag_ == Drag::CueBall) camera_.hold(false);
   if (drag_ == Drag::Cue || drag_ == Drag::CueBall) drag_ = Drag::None;
   camera_.setAiming(false);
 }
@@ -76,9 +87,34 @@ void Controls::placeCueBall(const Eigen::Vector2d& at) {
 }
 
 void Controls::keyDown(Key key, Mods mods) {
-  held_[key] = mods;
+  held_[key] = Held{mods};
   const bool aiming = mode_ == ControlMode::Aiming;
   switch (key) {
+    case Key::Left:
+    case Key::Right:
+      // A press turns the cue one step at once, however short it is.
+      if (aiming && !mods.ctrl && !mods.shift) {
+        const double step = mods.alt ? rates_.fine_yaw_step : rates_.yaw_step;
+        aim_.yaw += key == Key::Left ? step : -step;
+        clampAim(aim_, limits_);
+        followCue();
+      }
+      break;
+    case Key::B:
+      if (aiming) {
+        camera_.behindCue();
+        followCue();
+      } else {
+        camera_.setOverhead(false);
+        camera_.resetOverview();
+      }
+      break;
+    case Key::O:
+      camera_.setOverhead(!camera_.overhead());
+      break;
+    case Key::F1:
+      toggles_.help = !toggles_.help;
+      break;
     case Key::Space:
       if (aiming && !charging_) {
         charging_ = true;
@@ -151,11 +187,16 @@ void Controls::suggestCall(const ShotCall& call) {
 
 void Controls::advance(double dt) {
   if (!(dt > 0)) return;
+  for (auto& [key, h] : held_) {
+    h.before = h.time;
+    h.time += dt;
+  }
+  camera_.update(dt);
   const int side = axis(held(Key::Left), held(Key::Right));
   const int updown = axis(held(Key::Down), held(Key::Up));
   Mods mods;
   for (Key k : {Key::Left, Key::Right, Key::Up, Key::Down}) {
-    if (const auto it = held_.find(k); it != held_.end()) mods = it->second;
+    if (const auto it = held_.find(k); it != held_.end()) mods = it->second.mods;
   }
   if (mode_ == ControlMode::Aiming) {
     advanceAim(dt, side, updown, mods);
@@ -164,7 +205,25 @@ void Controls::advance(double dt) {
   }
   const int zoom = axis(held(Key::S), held(Key::X));
   if (zoom != 0) camera_.zoom(std::pow(rates_.zoom, zoom * dt));
-  if (mode_ == ControlMode::Aiming) followCue();
+  if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
+}
+
+double Controls::repeatTime(Key key) const {
+  const auto it = held_.find(key);
+  if (it == held_.end()) return 0.0;
+  const double delay = rates_.repeat_delay;
+  return std::max(0.0, it->second.time - delay) - std::max(0.0, it->second.before - delay);
+}
+
+double Controls::heldTurn() const {
+  double turn = 0.0;
+  for (const Key k : {Key::Left, Key::Right}) {
+    const auto it = held_.find(k);
+    if (it == held_.end() || it->second.mods.ctrl || it->second.mods.shift) continue;
+    const double rate = it->second.mods.alt ? rates_.fine_yaw : rates_.yaw;
+    turn += (k == Key::Left ? 1.0 : -1.0) * rate * repeatTime(k);
+  }
+  return turn;
 }
 
 void Controls::advanceAim(double dt, int side, int updown, Mods mods) {
@@ -175,7 +234,7 @@ void Controls::advanceAim(double dt, int side, int updown, Mods mods) {
     advanceCamera(dt, side, updown);
   } else {
     // Right turns the cue clockwise seen from above, as it looks from behind the cue.
-    aim_.yaw -= side * rates_.yaw * dt;
+    aim_.yaw += heldTurn();
     camera_.raise(updown * rates_.raise * dt);
   }
   aim_.elevation += axis(held(Key::Z), held(Key::A)) * rates_.elevation * dt;
@@ -188,12 +247,18 @@ void Controls::advanceCamera(double dt, int side, int updown) {
   camera_.raise(updown * rates_.raise * dt);
 }
 
-void Controls::mouseButton(MouseButton button, bool down, double x, double y) {
+void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mods mods) {
   mouse_ = {x, y};
   if (!down) {
+    if (drag_ == Drag::CueBall) {
+      // The view glides from where it held to behind the ball's new spot.
+      camera_.hold(false);
+      followCue();
+    }
     drag_ = Drag::None;
     return;
   }
+  fine_drag_ = mods.alt;
   if (button == MouseButton::Right || mode_ != ControlMode::Aiming) {
     drag_ = Drag::View;
     return;
@@ -202,7 +267,11 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y) {
   drag_ = Drag::Cue;
   if (in_hand_ == rules::BallInHand::None) return;
   const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
-  if (hit && (*hit - cueBall().head<2>()).norm() < 2.5 * area_.ball_radius) drag_ = Drag::CueBall;
+  if (hit && (*hit - cueBall().head<2>()).norm() < 2.5 * area_.ball_radius) {
+    // The camera holds still while the ball is dragged, so the ball stays under the cursor.
+    drag_ = Drag::CueBall;
+    camera_.hold(true);
+  }
 }
 
 void Controls::mouseMove(double x, double y) {
@@ -216,11 +285,11 @@ void Controls::mouseMove(double x, double y) {
       camera_.raise(delta.y() * rates_.mouse_orbit);
       break;
     case Drag::Cue:
-      aim_.yaw -= delta.x() * rates_.mouse_yaw;
+      aim_.yaw -= delta.x() * (fine_drag_ ? rates_.fine_mouse_yaw : rates_.mouse_yaw);
       clampAim(aim_, limits_);
       break;
     case Drag::CueBall:
-      // The camera follows the ball: take the ray from the view the press was seen in.
+      // The view is held, so the ray under the cursor is the one drawn.
       if (const auto hit =
               pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius)) {
         placeCueBall(*hit);

@@ -1,6 +1,7 @@
 // Script parsing and frame-by-frame playback.
 #include "client/app/input_script.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -22,6 +23,8 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
         step.mods.shift = true;
       } else if (mod == "ctrl") {
         step.mods.ctrl = true;
+      } else if (mod == "alt") {
+        step.mods.alt = true;
       } else {
         return R::fail("unknown modifier '" + mod + "'");
       }
@@ -45,6 +48,23 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
       return R::ok(step);
     }
     return R::fail("wait needs 'aiming' or 'shot N'");
+  }
+  if (verb == "mouse") {
+    std::string what;
+    words >> what;
+    if (what == "press") {
+      step.kind = ScriptStep::Kind::MousePress;
+    } else if (what == "move") {
+      step.kind = ScriptStep::Kind::MouseMove;
+    } else if (what == "release") {
+      step.kind = ScriptStep::Kind::MouseRelease;
+    } else {
+      return R::fail("mouse needs 'press', 'move' or 'release'");
+    }
+    if (!(words >> step.x >> step.y) || !std::isfinite(step.x) || !std::isfinite(step.y)) {
+      return R::fail("mouse " + what + " needs X Y in pixels");
+    }
+    return R::ok(step);
   }
   if (verb == "quit") {
     step.kind = ScriptStep::Kind::Quit;

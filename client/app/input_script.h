@@ -14,21 +14,27 @@ namespace pool::app {
 /// One line of a script.
 struct ScriptStep {
   enum class Kind : std::uint8_t {
-    Down,        ///< press `key` with `mods`
-    Up,          ///< release `key`
-    Frames,      ///< let `count` frames pass
-    WaitAiming,  ///< wait until this screen may aim
-    WaitShot,    ///< wait until the match's shot number reaches `count`
-    Quit,        ///< close the client
+    Down,          ///< press `key` with `mods`
+    Up,            ///< release `key`
+    Frames,        ///< let `count` frames pass
+    WaitAiming,    ///< wait until this screen may aim
+    WaitShot,      ///< wait until the match's shot number reaches `count`
+    Quit,          ///< close the client
+    MousePress,    ///< press the left button at (`x`, `y`) (pixels from the top-left corner)
+    MouseMove,     ///< move the mouse to (`x`, `y`)
+    MouseRelease,  ///< release the left button at (`x`, `y`)
   };
   Kind kind = Kind::Frames;
   Key key = Key::Space;
   Mods mods;
   int count = 0;
+  double x = 0.0;
+  double y = 0.0;
 };
 
 /// Parses a script: one step a line, '#' starts a comment.
-///   down KEY [shift] [ctrl] | up KEY | frames N | wait aiming | wait shot N | quit
+///   down KEY [shift] [ctrl] [alt] | up KEY | frames N | wait aiming | wait shot N | quit
+///   | mouse press X Y | mouse move X Y | mouse release X Y
 /// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
 Result<std::vector<ScriptStep>> parseScript(const std::string& text);
 

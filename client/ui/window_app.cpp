@@ -22,6 +22,7 @@
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
 #include "client/app/placement_search.h"
+#include "client/app/turn_view.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
 #include "client/render/eight_ball_room.h"
@@ -144,11 +145,22 @@ class WindowApp {
         break;
       }
     }
+    // The turn opens behind the cue ball, facing the nearest ball the shooter may hit first.
+    if (const auto yaw =
+            app::turnStartYaw(controls_.cueBall().head<2>(), v->balls, client::gameStateOf(*v))) {
+      controls_.setYaw(*yaw);
+    }
   }
 
   void send(protocol::ShotRequest request) {
     const int seat = aiming_seat_;
     aiming_seat_ = -1;
+    // A cue ball put in hand is drawn there until the shot's own frames show it moving.
+    const client::MatchView* v = session_.view();
+    if (request.cue_ball_at && v && protocol::optionShoots(request.option)) {
+      placed_ = Placed{{request.cue_ball_at->x(), request.cue_ball_at->y(), view_.radius()},
+                       v->shot_number + 1};
+    }
     auto sent = session_.shoot(seat, request);
     if (!sent) {
       addNote({"shot not sent: " + sent.error(), true});
@@ -219,13 +231,27 @@ class WindowApp {
     }
   }
 
+  /// Where the cue ball is held in hand (aiming), or put for the shot sent (until its frames).
+  std::optional<Eigen::Vector3d> cueBallHeld() {
+    if (placed_) {
+      const auto playing = session_.motionShot();
+      const client::MatchView* v = session_.view();
+      if ((playing && *playing >= placed_->shot) || !v || v->shot_number >= placed_->shot) {
+        placed_.reset();
+      }
+    }
+    if (auto held = heldCueBall(controls_)) return held;
+    if (placed_) return placed_->at;
+    return std::nullopt;
+  }
+
   void drawScene(double now) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     if (width <= 0 || height <= 0) return;
     controls_.setViewport(width, height);
     const auto balls = session_.balls(now);
-    const auto shown = withCueBallInHand(balls.value_or(std::vector<physics::Ball>{}), controls_);
+    const auto shown = withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
     if (balls) renderer_.setBalls(sceneBalls(shown));
     auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
     placement_problem_ = std::move(overlay.placement_problem);
@@ -319,6 +345,12 @@ class WindowApp {
     double start = 0.0;
   };
   std::optional<Stroke> stroke_;
+  /// A cue ball put in hand for a shot sent: where, and the shot number that will count it.
+  struct Placed {
+    Eigen::Vector3d at;
+    std::uint32_t shot = 0;
+  };
+  std::optional<Placed> placed_;
   app::Controls controls_;
   app::MatchSession session_;
   SoundListener sound_;

@@ -31,15 +31,24 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
 
 }  // namespace
 
-std::vector<physics::Ball> withCueBallInHand(std::vector<physics::Ball> balls,
-                                             const app::Controls& controls) {
-  if (!controls.aim().cue_ball_at) return balls;
+std::vector<physics::Ball> withCueBallAt(std::vector<physics::Ball> balls,
+                                         const std::optional<Eigen::Vector3d>& placed) {
+  if (!placed) return balls;
   for (auto& b : balls) {
     if (b.id != physics::kCueBall) continue;
-    b.pos = controls.cueBall();
+    b.pos = *placed;
+    b.vel.setZero();
+    b.ang_vel.setZero();
     b.state = physics::MotionState::Stationary;
   }
   return balls;
+}
+
+std::optional<Eigen::Vector3d> heldCueBall(const app::Controls& controls) {
+  if (controls.mode() != app::ControlMode::Aiming || !controls.aim().cue_ball_at) {
+    return std::nullopt;
+  }
+  return controls.cueBall();
 }
 
 WindowOverlay windowOverlay(app::Controls& controls, const client::MatchView* match,

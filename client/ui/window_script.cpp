@@ -1,4 +1,4 @@
-// Script steps (key down, key up, quit) applied to the controls.
+// Script steps (keys, the mouse, quit) applied to the controls.
 #include "client/ui/window_script.h"
 
 namespace pool::ui {
@@ -16,6 +16,15 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
         break;
       case app::ScriptStep::Kind::Up:
         controls.keyUp(step.key);
+        break;
+      case app::ScriptStep::Kind::MousePress:
+        controls.mouseButton(app::MouseButton::Left, true, step.x, step.y);
+        break;
+      case app::ScriptStep::Kind::MouseMove:
+        controls.mouseMove(step.x, step.y);
+        break;
+      case app::ScriptStep::Kind::MouseRelease:
+        controls.mouseButton(app::MouseButton::Left, false, step.x, step.y);
         break;
       case app::ScriptStep::Kind::Quit:
         quit = true;

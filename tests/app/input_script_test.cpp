@@ -33,8 +33,12 @@ TEST(InputScriptTest, ParsesEveryStep) {
 }
 
 TEST(InputScriptTest, ABadLineNamesItsNumber) {
-  EXPECT_EQ(parseScript("frames 2\ndown F1\n").error(), "line 2: unknown key 'F1'");
-  EXPECT_EQ(parseScript("down A alt\n").error(), "line 1: unknown modifier 'alt'");
+  EXPECT_EQ(parseScript("frames 2\ndown F13\n").error(), "line 2: unknown key 'F13'");
+  EXPECT_EQ(parseScript("down A meta\n").error(), "line 1: unknown modifier 'meta'");
+  EXPECT_EQ(parseScript("mouse press 10\n").error(), "line 1: mouse press needs X Y in pixels");
+  EXPECT_EQ(parseScript("mouse move nan 3\n").error(), "line 1: mouse move needs X Y in pixels");
+  EXPECT_EQ(parseScript("mouse click 1 2\n").error(),
+            "line 1: mouse needs 'press', 'move' or 'release'");
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
   EXPECT_EQ(parseScript("wait forever\n").error(), "line 1: wait needs 'aiming' or 'shot N'");
