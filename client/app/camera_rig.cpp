@@ -66,6 +66,28 @@ void CameraRig::behindCue() {
   overhead_ = false;
 }
 
+void CameraRig::frameAim(const Eigen::Vector3d& cue, const Eigen::Vector3d& contact,
+                         double ball_radius) {
+  constexpr double kHighest = 0.8;  // rad: beyond this the view is no longer a player's
+  constexpr double kGap = 0.01;     // rad of clear felt between the two balls as seen
+  Orbit probe = aim_;
+  probe.target = cue;
+  for (double e = aim_.elevation; e <= kHighest; e += 0.005) {
+    probe.elevation = e;
+    const Eigen::Vector3d eye = probe.view(fov_y_deg_).eye;
+    const Eigen::Vector3d to_cue = cue - eye, to_contact = contact - eye;
+    const double apart =
+        std::acos(std::clamp(to_cue.normalized().dot(to_contact.normalized()), -1.0, 1.0));
+    const double sizes = std::asin(std::min(1.0, ball_radius / to_cue.norm())) +
+                         std::asin(std::min(1.0, ball_radius / to_contact.norm()));
+    if (apart >= sizes + kGap) {
+      aim_.elevation = std::clamp(e, limits_.min_elevation, limits_.max_elevation);
+      return;
+    }
+  }
+  aim_.elevation = std::clamp(kHighest, limits_.min_elevation, limits_.max_elevation);
+}
+
 void CameraRig::setOverhead(bool overhead) {
   if (overhead == overhead_) return;
   startGlide();

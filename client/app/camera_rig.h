@@ -74,6 +74,10 @@ class CameraRig {
   /// The aiming camera back to its place straight behind the cue ball (height and distance too)
   /// and the overhead view off: what each turn starts with and the B key gives. Glides.
   void behindCue();
+  /// Raises the aiming camera (from its height behind the cue, never lowering it) until the ball
+  /// at `contact` (the first contact's ghost ball centre) shows clear above the cue ball at
+  /// `cue`, so the view frames both.
+  void frameAim(const Eigen::Vector3d& cue, const Eigen::Vector3d& contact, double ball_radius);
   /// The view straight down on the whole table on or off (O). Glides.
   void setOverhead(bool overhead);
   bool overhead() const { return overhead_; }

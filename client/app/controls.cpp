@@ -39,15 +39,29 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   if (in_hand != rules::BallInHand::None) placeCueBall(cue_ball.head<2>());
   if (drag_ != Drag::None) camera_.hold(false);
   drag_ = Drag::None;
+  contact_.reset();
   camera_.setAiming(true);
+  behindCue();
+}
+
+void Controls::behindCue() {
   camera_.behindCue();
+  if (contact_) camera_.frameAim(cueBall(), *contact_, area_.ball_radius);
   followCue();
+}
+
+void Controls::setContact(const Eigen::Vector3d& contact) {
+  const bool first = !contact_;
+  contact_ = contact;
+  // The turn's first prediction frames the view it opens with.
+  if (first && mode_ == ControlMode::Aiming) behindCue();
 }
 
 void Controls::setYaw(double yaw) {
   if (!std::isfinite(yaw)) return;
   aim_.yaw = yaw;
   clampAim(aim_, limits_);
+  contact_.reset();  // the next prediction frames the new heading
   if (mode_ == ControlMode::Aiming) followCue();
 }
 
@@ -102,8 +116,7 @@ void Controls::keyDown(Key key, Mods mods) {
       break;
     case Key::B:
       if (aiming) {
-        camera_.behindCue();
-        followCue();
+        behindCue();
       } else {
         camera_.setOverhead(false);
         camera_.resetOverview();
@@ -114,6 +127,10 @@ void Controls::keyDown(Key key, Mods mods) {
       break;
     case Key::F1:
       toggles_.help = !toggles_.help;
+      break;
+    case Key::R:
+    case Key::N:
+      requests_.push_back(key);
       break;
     case Key::Space:
       if (aiming && !charging_) {
@@ -308,6 +325,12 @@ void Controls::setViewport(int width, int height) {
   width_ = width;
   height_ = height;
   camera_.setAspect(static_cast<double>(width) / height);
+}
+
+std::vector<Key> Controls::takeRequests() {
+  std::vector<Key> out;
+  out.swap(requests_);
+  return out;
 }
 
 std::optional<protocol::ShotRequest> Controls::takeShot() {

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "client/app/aim.h"
 #include "client/app/camera_rig.h"
@@ -72,6 +73,9 @@ class Controls {
   void startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_hand);
   /// Turns the cue to `yaw` (rad), the camera behind it (e.g. facing the turn's target).
   void setYaw(double yaw);
+  /// The current aim's first contact (the ghost ball's centre, m), told each frame: the view
+  /// behind the cue (a new turn, B) is raised until it shows above the cue ball.
+  void setContact(const Eigen::Vector3d& contact);
   /// Moves the cue ball in hand to `at` (kept on the slate, behind the head string when it must
   /// be); nothing without ball in hand.
   void moveCueBall(const Eigen::Vector2d& at);
@@ -89,6 +93,10 @@ class Controls {
 
   /// Applies the held keys for `dt` seconds (cue, tip, elevation, power, camera).
   void advance(double dt);
+
+  /// The keys that ask the window for something (R: rematch, N: new game) pressed since the last
+  /// call, in order.
+  std::vector<Key> takeRequests();
 
   /// The command of the shot released with Space since the last call, if any.
   std::optional<protocol::ShotRequest> takeShot();
@@ -131,9 +139,12 @@ class Controls {
   ControlMode mode_ = ControlMode::Watching;
   AimState aim_;
   Eigen::Vector3d cue_ball_ = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> contact_;
+  void behindCue();
   rules::BallInHand in_hand_ = rules::BallInHand::None;
   bool charging_ = false;
   std::optional<protocol::ShotRequest> shot_;
+  std::vector<Key> requests_;
   /// A key held: the modifiers it was pressed with and how long it has been down (before and
   /// after the last advance), s.
   struct Held {

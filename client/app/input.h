@@ -28,6 +28,8 @@ enum class Key : std::uint8_t {
   B,   ///< the view back behind the cue ball
   O,   ///< the view from overhead (top-down) on/off
   F1,  ///< the help overlay on/off
+  R,   ///< rematch (game over)
+  N,   ///< a new game at a free table (game over)
   Escape,
 };
 

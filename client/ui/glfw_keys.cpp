@@ -46,6 +46,10 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::O;
     case GLFW_KEY_F1:
       return Key::F1;
+    case GLFW_KEY_R:
+      return Key::R;
+    case GLFW_KEY_N:
+      return Key::N;
     case GLFW_KEY_ESCAPE:
       return Key::Escape;
     default:

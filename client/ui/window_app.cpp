@@ -22,6 +22,7 @@
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
 #include "client/app/placement_search.h"
+#include "client/app/shot_story.h"
 #include "client/app/turn_view.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
@@ -306,16 +307,68 @@ class WindowApp {
     in.placement_problem = placement_problem_;
     in.last_verdict = session_.lastVerdict();
     in.notes = &notes_;
+    in.banner = session_.banner();
+    in.log = &session_.shotLog();
+    in.help = controls_.toggles().help;
+    in.names = session_.names();
     return in;
   }
 
   void hudActions(const HudActions& actions) {
+    if (options_.json && actions.texts != hud_texts_) printHudLine(actions.texts);
+    hud_texts_ = actions.texts;
     if (actions.option) chooseOption(*actions.option);
-    if (actions.rematch) session_.rematch();
+    if (actions.rematch) rematch();
     if (actions.visit_room) in_room_ = true;
+    if (actions.new_game) newGame();
     if (actions.leave) {
       controls_.stopAiming();
       session_.leave();
+    }
+  }
+
+  /// Leaves a finished match for a free table (the server keeps one open).
+  void newGame() {
+    controls_.stopAiming();
+    aiming_seat_ = -1;
+    placed_.reset();
+    in_room_ = false;
+    session_.leave();
+    session_.play();
+    addNote({"looking for a free table for a new game", false});
+  }
+
+  /// A rematch, unless the opponent has left the table (then the player is told so).
+  void rematch() {
+    const client::MatchView* v = session_.view();
+    if (!v) return;
+    const auto local = session_.localSeats();
+    for (int s = 0; s < 2; ++s) {
+      const auto& seat = v->seats[static_cast<std::size_t>(s)];
+      const bool ours = std::find(local.begin(), local.end(), s) != local.end();
+      if (!ours && (seat.name.empty() || !seat.connected)) {
+        addNote({session_.names()[static_cast<std::size_t>(s)] +
+                     " has left the table: no rematch. N starts a new game at a free table.",
+                 true});
+        return;
+      }
+    }
+    session_.rematch();
+    addNote({"rematch asked", false});
+  }
+
+  /// R and N on the game-over screen.
+  void requests() {
+    const client::MatchView* v = session_.view();
+    const bool over =
+        v && v->phase == client::MatchPhase::Over && session_.stage() == app::SessionStage::Playing;
+    for (const app::Key key : controls_.takeRequests()) {
+      if (!over) continue;
+      if (key == app::Key::N) {
+        newGame();
+        return;
+      }
+      if (key == app::Key::R) rematch();
     }
   }
 
@@ -325,6 +378,7 @@ class WindowApp {
     for (auto& note : session_.takeNotes()) addNote(std::move(note));
     followTurn();
     applyScript();
+    requests();
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) {
       startStroke(*shot, now);
@@ -357,6 +411,7 @@ class WindowApp {
   std::optional<app::ScriptPlayer> script_;
   int aiming_seat_ = -1;
   std::deque<app::SessionNote> notes_;
+  std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)
   std::string placement_problem_;
   bool in_room_ = false;
   EightBallRoomState room_;

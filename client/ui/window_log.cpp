@@ -37,6 +37,10 @@ void printNoteLine(const app::SessionNote& note) {
   printLine({{"event", "note"}, {"text", note.text}, {"problem", note.problem}});
 }
 
+void printHudLine(const std::vector<std::string>& texts) {
+  printLine({{"event", "hud"}, {"texts", texts}});
+}
+
 void ProgressLog::report(const app::MatchSession& session) {
   const client::MatchView* v = session.view();
   if (v && (!last_revision_ || *last_revision_ != v->revision)) {

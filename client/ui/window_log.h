@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "client/app/match_session.h"
 
@@ -15,6 +16,9 @@ void printShotLine(const std::string& match, int seat, std::uint32_t seq,
 
 /// Prints {"event": "note", "text", "problem"}.
 void printNoteLine(const app::SessionNote& note);
+
+/// Prints {"event": "hud", "texts": [...]}: every text the HUD drew in a frame.
+void printHudLine(const std::vector<std::string>& texts);
 
 /// Prints a line for each new state of the match followed and each shot whose motion starts.
 class ProgressLog {

@@ -17,6 +17,7 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   const auto prediction =
       app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
   controls.suggestCall(app::autoCall(prediction, client::gameStateOf(match), balls, view));
+  controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()});
   if (t.aim_line) append(out.lines, app::aimOverlay(prediction, view.radius()));
   out.aim = prediction;
   if (t.vectors) {

@@ -7,7 +7,12 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
                      const app::MatchSession& session) {
   app::ScriptConditions now;
   now.can_aim = controls.mode() == app::ControlMode::Aiming;
-  if (const auto* v = session.view()) now.shot_number = v->shot_number;
+  if (const auto* v = session.view()) {
+    now.shot_number = v->shot_number;
+    now.over = v->phase == client::MatchPhase::Over;
+    now.at_table =
+        !now.over && session.stage() == app::SessionStage::Playing && !session.localSeats().empty();
+  }
   bool quit = false;
   for (const auto& step : script.frame(now)) {
     switch (step.kind) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 namespace pool::app::test {
 namespace {
 
@@ -41,7 +43,8 @@ TEST(InputScriptTest, ABadLineNamesItsNumber) {
             "line 1: mouse needs 'press', 'move' or 'release'");
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
-  EXPECT_EQ(parseScript("wait forever\n").error(), "line 1: wait needs 'aiming' or 'shot N'");
+  EXPECT_EQ(parseScript("wait forever\n").error(),
+            "line 1: wait needs 'aiming', 'shot N', 'over' or 'table'");
   EXPECT_FALSE(loadScript("/nonexistent/script.txt"));
 }
 
@@ -82,6 +85,26 @@ TEST(InputScriptTest, AWaitAfterAStepIsJudgedOnTheNextFrame) {
   auto pressed = player.frame({true, 0});
   ASSERT_EQ(pressed.size(), 1u);
   EXPECT_EQ(pressed[0].key, Key::Up);
+}
+
+}  // namespace
+}  // namespace pool::app::test
+
+namespace pool::app::test {
+namespace {
+
+TEST(KeyNamesTest, EveryKeyHasOneNameAndNoNameIsEmpty) {
+  std::set<Key> seen;
+  for (const char* name :
+       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z", "S",  "X", "G", "V",
+        "C",    "K",     "P",  "T",    "L",     "B", "O", "F1", "R", "N", "ESCAPE"}) {
+    const auto key = keyFromName(name);
+    ASSERT_TRUE(key) << name;
+    EXPECT_TRUE(seen.insert(*key).second) << name;
+  }
+  EXPECT_EQ(seen.size(), static_cast<std::size_t>(Key::Escape) + 1);
+  EXPECT_FALSE(keyFromName(""));
+  EXPECT_EQ(keyFromName("f1"), Key::F1);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "client/app/aim.h"
 #include "client/app/controls.h"
+#include "client/app/turn_view.h"
 #include "support/client_fixture.h"
 #include "support/display_check.h"
 
@@ -97,8 +98,34 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   ASSERT_TRUE(seen) << "no accepted shot from the window\n" << windowErr() << logs();
   EXPECT_EQ(status, 0) << windowErr();
 
-  // The command on the wire: each control's effect at its documented rate.
-  EXPECT_NEAR(sent->cue.yaw, 30.0 / 60.0 * rates.yaw, 1e-9);
+  // The turns opened facing the nearest ball the shooter may hit, from the layouts the server
+  // published before each shot.
+  auto stateBefore = [&](std::uint32_t shot) -> std::optional<MatchView> {
+    std::optional<MatchView> found;
+    for (const auto& s : recorder.states(match)) {
+      if (s.shot_number == shot) found = s;
+    }
+    return found;
+  };
+  auto facing = [&](const protocol::ShotRequest& request, const MatchView& before) {
+    Eigen::Vector2d cue = Eigen::Vector2d::Zero();
+    for (const auto& b : before.balls) {
+      if (b.id == physics::kCueBall) cue = b.pos.head<2>();
+    }
+    if (request.cue_ball_at) cue = *request.cue_ball_at;
+    return app::turnStartYaw(cue, before.balls, gameStateOf(before));
+  };
+  const auto rack = stateBefore(0);
+  const auto after_break = stateBefore(1);
+  ASSERT_TRUE(rack && after_break);
+  const auto first_yaw = facing(*sent, *rack);
+  const auto second_yaw = facing(*second, *after_break);
+  ASSERT_TRUE(first_yaw && second_yaw);
+
+  // The command on the wire: each control's effect at its documented rate (a press of LEFT turns
+  // one step, then the held rate past the repeat delay).
+  EXPECT_NEAR(sent->cue.yaw,
+              *first_yaw + rates.yaw_step + rates.yaw * (30.0 / 60.0 - rates.repeat_delay), 1e-9);
   EXPECT_NEAR(sent->cue.elevation, 12.0 / 60.0 * rates.elevation, 1e-9);
   EXPECT_NEAR(sent->cue.speed, app::cueSpeedOf(45.0 / 60.0 / rates.charge_time, limits), 1e-9);
   EXPECT_FALSE(sent->cue.speed_is_ball);
@@ -108,11 +135,11 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   ASSERT_TRUE(sent->cue_ball_at);   // the breaker has the cue ball in hand behind the head string
   EXPECT_LT(sent->cue_ball_at->x(), app::PlacementArea{}.head_string_x);
 
-  // The next shot: the tip, the heading kept, and a call the rules accept (a ball and a pocket,
-  // or a safety), with the cue ball placed legally if it is in hand.
+  // The next shot: the tip, the turn's opening heading, and a call the rules accept (a ball and a
+  // pocket, or a safety), with the cue ball placed legally if it is in hand.
   EXPECT_NEAR(second->cue.tip_height, 20.0 / 60.0 * rates.tip, 1e-9);
   EXPECT_DOUBLE_EQ(second->cue.tip_side, 0.0);
-  EXPECT_DOUBLE_EQ(second->cue.yaw, sent->cue.yaw);
+  EXPECT_NEAR(second->cue.yaw, *second_yaw, 1e-9);
   EXPECT_NEAR(second->cue.speed, app::cueSpeedOf(30.0 / 60.0 / rates.charge_time, limits), 1e-9);
   EXPECT_NE(second->safety, second->called_ball.has_value());
   EXPECT_EQ(second->called_ball.has_value(), !second->called_pocket.empty());
@@ -234,6 +261,98 @@ TEST_F(WindowClientTest, AWindowKilledMidMatchTakesItsSeatBackAndPlaysOn) {
   EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
   EXPECT_EQ(recorder.latest(match)->seats[0].name, "Wendy");
   bot.kill(SIGTERM);
+}
+
+/// True when `text`, with the players' `names` taken out, has no underscore.
+bool freeOfIdentifiers(std::string text, const std::vector<std::string>& names) {
+  for (const auto& name : names) {
+    for (auto at = text.find(name); !name.empty() && at != std::string::npos;
+         at = text.find(name)) {
+      text.erase(at, name.size());
+    }
+  }
+  return text.find('_') == std::string::npos;
+}
+
+// A game ends (the opponent's window dies and the grace runs out): the game-over screen names the
+// winner and why, says the departed opponent cannot have a rematch, and N gets a new game at a
+// free table. No text the HUD drew on the way holds an identifier.
+TEST_F(WindowClientTest, TheGameOverScreenStartsASecondGameAtAFreeTable) {
+  open(kWindowNewGame, "window-new-game");
+  MatchRecorder recorder(kWindowNewGame);
+  startServer({"--grace", "2"});
+  startWindow({"--play", "--name", "Wendy"},
+              "wait over\nframes 20\ndown R\nup R\nframes 20\ndown N\nup N\n"
+              "wait table\nframes 30\nquit\n");
+  ASSERT_TRUE(recorder.pump(60s,
+                            [&] {
+                              const MatchView* v = recorder.latest(recorder.firstMatch());
+                              return v && v->seats[0].name == "Wendy";
+                            }))
+      << windowErr() << logs();
+  const std::string first = recorder.firstMatch();
+  ChildProcess& bot = startBot("bert_the_bot", 5);
+  ASSERT_TRUE(recorder.pump(30s, [&] {
+    const MatchView* v = recorder.latest(first);
+    return v && v->seats[1].name == "bert_the_bot" && v->phase == MatchPhase::Break;
+  })) << logs();
+  bot.kill(SIGKILL);
+  ASSERT_TRUE(recorder.pump(90s,
+                            [&] {
+                              const MatchView* v = recorder.latest(first);
+                              return v && v->phase == MatchPhase::Over;
+                            }))
+      << "the match was not forfeited to Wendy\n"
+      << logs();
+  EXPECT_EQ(recorder.latest(first)->winner, 0);
+
+  // The window started a second game: Wendy holds a seat at another table, not over.
+  std::string second;
+  const bool seated = recorder.pump(60s, [&] {
+    for (const auto* e : recorder.client().lobby().entries()) {
+      const MatchView* v = recorder.latest(e->match);
+      if (e->match != first && v && v->phase != MatchPhase::Over &&
+          (v->seats[0].name == "Wendy" || v->seats[1].name == "Wendy")) {
+        second = e->match;
+        return true;
+      }
+    }
+    return false;
+  });
+  const int status = windowExit();
+  ASSERT_TRUE(seated) << "Wendy got no table after the game over\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+
+  // What the HUD said on the way.
+  bool winner_said = false, departed_said = false, new_game_offered = false;
+  const auto huds = windowLines("hud");
+  ASSERT_FALSE(huds.empty());
+  for (const auto& hud : huds) {
+    for (const auto& t : hud["texts"]) {
+      const std::string text = t.get<std::string>();
+      EXPECT_TRUE(freeOfIdentifiers(text, {"bert_the_bot"})) << text;
+      winner_said = winner_said || text.find("Wendy (you) wins: a forfeit") != std::string::npos;
+      departed_said =
+          departed_said || text.find("bert_the_bot has left the table") != std::string::npos;
+      new_game_offered = new_game_offered || text == "New game (N)";
+    }
+  }
+  EXPECT_TRUE(winner_said);
+  std::string over_screen;
+  for (const auto& hud : huds) {
+    const std::string dump = hud["texts"].dump();
+    if (dump.find("wins") != std::string::npos) over_screen = dump;
+  }
+  EXPECT_TRUE(departed_said) << over_screen;
+  EXPECT_TRUE(new_game_offered) << over_screen;
+  bool refused_rematch = false;
+  for (const auto& note : windowLines("note")) {
+    refused_rematch = refused_rematch ||
+                      note.value("text", "").find("bert_the_bot has left the table: no rematch") !=
+                          std::string::npos;
+  }
+  EXPECT_TRUE(refused_rematch) << "R against a departed opponent said nothing\n"
+                               << std::ifstream(file("window.out")).rdbuf();
 }
 
 }  // namespace
