@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace pool::app {
 namespace {
@@ -56,16 +57,30 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
   if (verb == "mouse") {
     std::string what;
     words >> what;
+    std::vector<std::string> args;
+    for (std::string w; words >> w;) args.push_back(w);
+    if (what == "press" && args == std::vector<std::string>{"cue"}) {
+      step.kind = ScriptStep::Kind::MouseOnCue;
+      return R::ok(step);
+    }
+    if (what == "release" && args.empty()) {
+      step.kind = ScriptStep::Kind::MouseRelease;
+      step.count = 1;  // released where the mouse is
+      return R::ok(step);
+    }
     if (what == "press") {
       step.kind = ScriptStep::Kind::MousePress;
     } else if (what == "move") {
       step.kind = ScriptStep::Kind::MouseMove;
     } else if (what == "release") {
       step.kind = ScriptStep::Kind::MouseRelease;
+    } else if (what == "by") {
+      step.kind = ScriptStep::Kind::MouseBy;
     } else {
-      return R::fail("mouse needs 'press', 'move' or 'release'");
+      return R::fail("mouse needs 'press', 'move', 'release' or 'by'");
     }
-    if (!(words >> step.x >> step.y) || !std::isfinite(step.x) || !std::isfinite(step.y)) {
+    std::istringstream numbers(args.size() == 2 ? args[0] + " " + args[1] : std::string());
+    if (!(numbers >> step.x >> step.y) || !std::isfinite(step.x) || !std::isfinite(step.y)) {
       return R::fail("mouse " + what + " needs X Y in pixels");
     }
     return R::ok(step);

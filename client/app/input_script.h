@@ -25,6 +25,8 @@ struct ScriptStep {
     MousePress,    ///< press the left button at (`x`, `y`) (pixels from the top-left corner)
     MouseMove,     ///< move the mouse to (`x`, `y`)
     MouseRelease,  ///< release the left button at (`x`, `y`)
+    MouseOnCue,    ///< move the mouse onto the cue ball as drawn and press the left button there
+    MouseBy,       ///< move the mouse by (`x`, `y`) pixels
   };
   Kind kind = Kind::Frames;
   Key key = Key::Space;

@@ -26,6 +26,7 @@
 #include "client/app/turn_view.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
+#include "client/render/camera.h"
 #include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
@@ -112,7 +113,7 @@ class WindowApp {
   }
 
   void applyScript() {
-    if (script_ && playScriptFrame(*script_, controls_, session_)) quit_ = true;
+    if (script_ && playScriptFrame(*script_, controls_, session_, script_mouse_)) quit_ = true;
   }
 
   // ---- Turns and shots ------------------------------------------------------------------------
@@ -271,7 +272,45 @@ class WindowApp {
       room_scene_->draw(render::EightBallRoom::defaultCamera(), width, height, room_.answer);
       return;
     }
-    renderer_.draw(cameraOf(controls_.camera().view()), width, height);
+    const render::Camera camera = cameraOf(controls_.camera().view());
+    renderer_.draw(camera, width, height);
+    drawn(camera, shown, width, height, now);
+  }
+
+  /// Where the cue ball was drawn (for scripted drags), and the --log-frames line.
+  void drawn(const render::Camera& camera, const std::vector<physics::Ball>& shown, int width,
+             int height, double now) {
+    DrawnFrame f;
+    for (const auto& b : shown) {
+      if (b.id != physics::kCueBall || !physics::onTable(b.state)) continue;
+      f.cue = b.pos;
+      const glm::vec3 p = render::projectToPixels(
+          camera, width, height,
+          glm::vec3(static_cast<float>(b.pos.x()), static_cast<float>(b.pos.y()),
+                    static_cast<float>(b.pos.z())));
+      f.cue_px = Eigen::Vector2d(p.x, p.y);
+    }
+    script_mouse_.cue_ball = f.cue_px;
+    if (!options_.json || !options_.log_frames) return;
+    f.now = now;
+    f.shot = session_.motionShot();
+    f.moving = session_.inMotion();
+    f.play_time = session_.playTime();
+    f.aiming = controls_.mode() == app::ControlMode::Aiming;
+    f.dragging = controls_.draggingCueBall();
+    f.mouse = script_mouse_.at;
+    const glm::mat4 view = render::viewMatrix(camera);
+    const glm::mat4 projection =
+        render::projectionMatrix(camera, static_cast<float>(width) / static_cast<float>(height));
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        f.view[static_cast<std::size_t>(4 * c + r)] = view[c][r];
+        f.projection[static_cast<std::size_t>(4 * c + r)] = projection[c][r];
+      }
+    }
+    f.width = width;
+    f.height = height;
+    printDrawnLine(f);
   }
 
   void drawInterface() {
@@ -409,6 +448,7 @@ class WindowApp {
   app::MatchSession session_;
   SoundListener sound_;
   std::optional<app::ScriptPlayer> script_;
+  ScriptMouse script_mouse_;
   int aiming_seat_ = -1;
   std::deque<app::SessionNote> notes_;
   std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)

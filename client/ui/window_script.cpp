@@ -4,7 +4,7 @@
 namespace pool::ui {
 
 bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
-                     const app::MatchSession& session) {
+                     const app::MatchSession& session, ScriptMouse& mouse) {
   app::ScriptConditions now;
   now.can_aim = controls.mode() == app::ControlMode::Aiming;
   if (const auto* v = session.view()) {
@@ -23,13 +23,25 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
         controls.keyUp(step.key);
         break;
       case app::ScriptStep::Kind::MousePress:
+        mouse.at = {step.x, step.y};
         controls.mouseButton(app::MouseButton::Left, true, step.x, step.y);
         break;
+      case app::ScriptStep::Kind::MouseOnCue:
+        if (mouse.cue_ball) mouse.at = *mouse.cue_ball;
+        controls.mouseMove(mouse.at.x(), mouse.at.y());
+        controls.mouseButton(app::MouseButton::Left, true, mouse.at.x(), mouse.at.y());
+        break;
       case app::ScriptStep::Kind::MouseMove:
+        mouse.at = {step.x, step.y};
         controls.mouseMove(step.x, step.y);
         break;
+      case app::ScriptStep::Kind::MouseBy:
+        mouse.at += Eigen::Vector2d(step.x, step.y);
+        controls.mouseMove(mouse.at.x(), mouse.at.y());
+        break;
       case app::ScriptStep::Kind::MouseRelease:
-        controls.mouseButton(app::MouseButton::Left, false, step.x, step.y);
+        if (step.count == 0) mouse.at = {step.x, step.y};
+        controls.mouseButton(app::MouseButton::Left, false, mouse.at.x(), mouse.at.y());
         break;
       case app::ScriptStep::Kind::Quit:
         quit = true;

@@ -40,7 +40,10 @@ TEST(InputScriptTest, ABadLineNamesItsNumber) {
   EXPECT_EQ(parseScript("mouse press 10\n").error(), "line 1: mouse press needs X Y in pixels");
   EXPECT_EQ(parseScript("mouse move nan 3\n").error(), "line 1: mouse move needs X Y in pixels");
   EXPECT_EQ(parseScript("mouse click 1 2\n").error(),
-            "line 1: mouse needs 'press', 'move' or 'release'");
+            "line 1: mouse needs 'press', 'move', 'release' or 'by'");
+  EXPECT_EQ(parseScript("mouse press cue\nmouse by -2.5 3\nmouse press 4 5\n")->size(), 3u);
+  EXPECT_EQ((*parseScript("mouse press cue\n"))[0].kind, ScriptStep::Kind::MouseOnCue);
+  EXPECT_EQ((*parseScript("mouse by -2.5 3\n"))[0].x, -2.5);
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
   EXPECT_EQ(parseScript("wait forever\n").error(),

@@ -355,5 +355,127 @@ TEST_F(WindowClientTest, TheGameOverScreenStartsASecondGameAtAFreeTable) {
                                << std::ifstream(file("window.out")).rdbuf();
 }
 
+/// A logged frame's pixel for table point `p` through its view and projection (column-major).
+Eigen::Vector2d pixelOf(const nlohmann::json& drawn, const Eigen::Vector3d& p) {
+  Eigen::Matrix4d view, projection;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      view(r, c) = drawn["view"][static_cast<std::size_t>(4 * c + r)].get<double>();
+      projection(r, c) = drawn["projection"][static_cast<std::size_t>(4 * c + r)].get<double>();
+    }
+  }
+  const Eigen::Vector4d clip = projection * view * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.0);
+  const double w = drawn["width"].get<double>(), h = drawn["height"].get<double>();
+  return {(clip.x() / clip.w() * 0.5 + 0.5) * w, (0.5 - clip.y() / clip.w() * 0.5) * h};
+}
+
+Eigen::Vector3d cueIn(const TableFrame& frame) {
+  for (const auto& b : frame.balls) {
+    if (b.id == physics::kCueBall) return b.pos;
+  }
+  return Eigen::Vector3d::Constant(std::nan(""));
+}
+
+// The breaker drags the cue ball in hand across the kitchen: in every frame drawn while dragging
+// the ball sits within 2 px of the cursor. Then the break: in every frame drawn, the cue ball is
+// where the server's frames put it at the time played back (within 2 px), from the release on.
+TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames) {
+  open(kWindowBallInHand, "window-ball-in-hand");
+  MatchRecorder recorder(kWindowBallInHand);
+  startServer({});  // frames paced at 60 Hz, as a player sees them
+  std::string script = "wait aiming\nframes 60\nmouse press cue\nframes 2\n";
+  for (int i = 0; i < 30; ++i) script += "mouse by -2 3\nframes 1\n";  // back and to the left
+  script +=
+      "mouse release\nframes 10\ndown SPACE\nframes 10\nup SPACE\nwait shot 1\n"
+      "frames 30\nquit\n";
+  startWindow({"--hotseat", "--play", "--log-frames"}, script);
+  std::string match;
+  const bool played = recorder.pump(120s, [&] {
+    match = recorder.firstMatch();
+    return !match.empty() && recorder.finals(match).count(1) != 0;
+  });
+  const int status = windowExit();
+  recorder.pump(2s);
+  ASSERT_TRUE(played) << "no break from the window\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  const auto drawn = windowLines("drawn");
+  ASSERT_FALSE(drawn.empty());
+
+  // The drag: the ball under the cursor in every frame, and it went somewhere.
+  int dragged = 0;
+  Eigen::Vector2d first_px(0, 0), last_px(0, 0);
+  for (const auto& d : drawn) {
+    if (!d["dragging"].get<bool>() || !d.contains("cue_px")) continue;
+    const Eigen::Vector2d px(d["cue_px"][0].get<double>(), d["cue_px"][1].get<double>());
+    const Eigen::Vector2d mouse(d["mouse"][0].get<double>(), d["mouse"][1].get<double>());
+    EXPECT_LT((px - mouse).norm(), 2.0) << d.dump();
+    if (dragged++ == 0) first_px = px;
+    last_px = px;
+  }
+  EXPECT_GE(dragged, 25);
+  EXPECT_GT((last_px - first_px).norm(), 80.0);
+
+  // The break (a soft one: it runs long enough to see) as drawn against the server's frames.
+  const auto frames = recorder.frames(match, 1);
+  ASSERT_GE(frames.size(), 10u);
+  const protocol::ShotRequest* sent =
+      recorder.nthCommand(match, recorder.latest(match)->breaker, 1);
+  ASSERT_TRUE(sent && sent->cue_ball_at);
+  // Where the server says the cue ball is at `t` s after the strike.
+  auto serverCue = [&](double t) {
+    if (t <= frames.front().sim_time) return cueIn(frames.front());
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+      if (frames[i].sim_time < t) continue;
+      const double u = (t - frames[i - 1].sim_time) / (frames[i].sim_time - frames[i - 1].sim_time);
+      return Eigen::Vector3d(cueIn(frames[i - 1]) + u * (cueIn(frames[i]) - cueIn(frames[i - 1])));
+    }
+    return cueIn(frames.back());
+  };
+  // Snapshots are 1/60 s apart: where the cue ball is struck or strikes a ball its path turns a
+  // corner that interpolation between two snapshots cuts, so the 50 ms around each turn are left
+  // out.
+  std::vector<double> turns{0.0};
+  for (std::size_t i = 2; i < frames.size(); ++i) {
+    const double dt1 = frames[i - 1].sim_time - frames[i - 2].sim_time;
+    const double dt2 = frames[i].sim_time - frames[i - 1].sim_time;
+    const Eigen::Vector3d v1 = (cueIn(frames[i - 1]) - cueIn(frames[i - 2])) / dt1;
+    const Eigen::Vector3d v2 = (cueIn(frames[i]) - cueIn(frames[i - 1])) / dt2;
+    if ((v2 - v1).norm() > 0.2) turns.push_back(frames[i - 1].sim_time);
+  }
+  auto nearTurn = [&](double t) {
+    return std::any_of(turns.begin(), turns.end(),
+                       [&](double c) { return std::abs(t - c) < 0.05; });
+  };
+  // From the first frame after the release (the last one dragging, then the first not aiming).
+  std::size_t from = 0;
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    if (drawn[i]["dragging"].get<bool>()) from = i;
+  }
+  while (from < drawn.size() && drawn[from]["aiming"].get<bool>()) ++from;
+  int compared = 0, before_motion = 0;
+  for (std::size_t i = from; i < drawn.size(); ++i) {
+    const auto& d = drawn[i];
+    if (d["aiming"].get<bool>()) break;  // the next turn
+    if (!d.contains("cue_px")) continue;
+    const Eigen::Vector2d px(d["cue_px"][0].get<double>(), d["cue_px"][1].get<double>());
+    const bool this_shot = !d["shot"].is_null() && d["shot"].get<std::uint32_t>() == 1;
+    if (this_shot && d["moving"].get<bool>()) {
+      const double t = d["play_time"].get<double>();
+      if (nearTurn(t)) continue;
+      EXPECT_LT((px - pixelOf(d, serverCue(t))).norm(), 2.0) << "t " << t << " " << d.dump();
+      ++compared;
+    } else if (!this_shot && compared == 0) {
+      // Sent, its frames not here yet: the ball stays where it was put.
+      const Eigen::Vector3d put(sent->cue_ball_at->x(), sent->cue_ball_at->y(),
+                                cueIn(frames.front()).z());
+      EXPECT_LT((px - pixelOf(d, put)).norm(), 2.0) << d.dump();
+      ++before_motion;
+    }
+  }
+  EXPECT_GE(compared, 20) << "too few frames of the break drawn";
+  EXPECT_GE(before_motion, 1);
+  EXPECT_LT((*sent->cue_ball_at - cueIn(frames.front()).head<2>()).norm(), 1e-6);
+}
+
 }  // namespace
 }  // namespace pool::client::test
