@@ -12,6 +12,10 @@ namespace {
 
 // How far behind the head string a cue ball in hand is put when it must be behind it, m.
 constexpr double kHeadStringSetback = 0.01;
+// A press and release closer than this (pixels) is a click, not a drag.
+constexpr double kClickSlop = 3.0;
+// A click this close to a pocket's mouth (m) calls that pocket.
+constexpr double kPocketReach = 0.15;
 
 int axis(bool minus, bool plus) {
   return (plus ? 1 : 0) - (minus ? 1 : 0);
@@ -36,6 +40,7 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   aim_.call = ShotCall{};
   aim_.option = protocol::ShotOption::None;
   aim_.cue_ball_at.reset();
+  picked_ball_.reset();
   if (in_hand != rules::BallInHand::None) placeCueBall(cue_ball.head<2>());
   if (drag_ != Drag::None) camera_.hold(false);
   drag_ = Drag::None;
@@ -267,6 +272,7 @@ void Controls::advanceCamera(double dt, int side, int updown) {
 void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mods mods) {
   mouse_ = {x, y};
   if (!down) {
+    if (drag_ == Drag::Cue && !moved_) click(x, y);
     if (drag_ == Drag::CueBall) {
       // The view glides from where it held to behind the ball's new spot.
       camera_.hold(false);
@@ -276,6 +282,8 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mo
     return;
   }
   fine_drag_ = mods.alt;
+  pressed_at_ = {x, y};
+  moved_ = false;
   if (button == MouseButton::Right || mode_ != ControlMode::Aiming) {
     drag_ = Drag::View;
     return;
@@ -294,6 +302,16 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mo
 void Controls::mouseMove(double x, double y) {
   const Eigen::Vector2d delta = Eigen::Vector2d(x, y) - mouse_;
   mouse_ = {x, y};
+  // A few pixels of jitter keep a click a click (and do not turn the cue).
+  if (drag_ == Drag::Cue && !moved_) {
+    if ((mouse_ - pressed_at_).norm() < kClickSlop) return;
+    moved_ = true;
+    const Eigen::Vector2d held = mouse_ - pressed_at_;
+    aim_.yaw -= held.x() * (fine_drag_ ? rates_.fine_mouse_yaw : rates_.mouse_yaw);
+    clampAim(aim_, limits_);
+    followCue();
+    return;
+  }
   switch (drag_) {
     case Drag::None:
       return;
@@ -314,6 +332,27 @@ void Controls::mouseMove(double x, double y) {
       break;
   }
   if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
+}
+
+void Controls::click(double x, double y) {
+  if (mode_ != ControlMode::Aiming) return;
+  const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
+  if (!hit) return;
+  for (const auto& [id, at] : targets_.balls) {
+    if ((*hit - at).norm() < 1.3 * area_.ball_radius) {
+      picked_ball_ = id;
+      return;
+    }
+  }
+  if (!picked_ball_) return;
+  const std::pair<std::string, Eigen::Vector2d>* best = nullptr;
+  for (const auto& pocket : targets_.pockets) {
+    const double d = (*hit - pocket.second).norm();
+    if (d < kPocketReach && (!best || d < (*hit - best->second).norm())) best = &pocket;
+  }
+  if (!best) return;
+  aim_.call = ShotCall{picked_ball_, best->first, false, true};
+  picked_ball_.reset();
 }
 
 void Controls::scroll(double steps) {

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <map>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "client/app/aim.h"
@@ -55,6 +57,12 @@ struct Toggles {
   bool help = false;  ///< the help overlay (F1)
 };
 
+/// What a click may call: the object balls on the table and the pockets' mouths (m).
+struct ClickTargets {
+  std::vector<std::pair<int, Eigen::Vector2d>> balls;
+  std::vector<std::pair<std::string, Eigen::Vector2d>> pockets;
+};
+
 /// What the player may do now.
 enum class ControlMode : std::uint8_t {
   Watching,  ///< balls moving, the other's turn, spectating
@@ -100,6 +108,12 @@ class Controls {
 
   /// The command of the shot released with Space since the last call, if any.
   std::optional<protocol::ShotRequest> takeShot();
+
+  /// The balls and pockets a click may call this frame: a click (a press and release that does
+  /// not move) on an object ball picks it, then a click at a pocket calls it there.
+  void setClickTargets(ClickTargets targets) { targets_ = std::move(targets); }
+  /// The ball clicked, waiting for its pocket.
+  std::optional<int> pickedBall() const { return picked_ball_; }
 
   /// The automatic call for the current aim; ignored once the player chose one.
   void suggestCall(const ShotCall& call);
@@ -156,6 +170,11 @@ class Controls {
   Toggles toggles_;
   Drag drag_ = Drag::None;
   bool fine_drag_ = false;  ///< the drag started with Alt held
+  Eigen::Vector2d pressed_at_ = Eigen::Vector2d::Zero();
+  bool moved_ = false;  ///< the mouse moved since the press
+  void click(double x, double y);
+  ClickTargets targets_;
+  std::optional<int> picked_ball_;
   Eigen::Vector2d mouse_ = Eigen::Vector2d::Zero();
   int width_ = 1280;
   int height_ = 720;

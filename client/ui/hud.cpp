@@ -168,12 +168,17 @@ void choicePanel(Say& say, const HudInput& in) {
   ImGui::End();
 }
 
-void callLine(Say& say, const app::AimState& aim) {
+void callLine(Say& say, const app::Controls& c) {
+  const app::AimState& aim = c.aim();
+  if (c.pickedBall()) {
+    say.text("the " + std::to_string(*c.pickedBall()) + " picked: click the pocket to call");
+  }
   if (aim.call.safety) {
     say.text("call: a safety (K drops it)");
   } else if (aim.call.ball) {
     std::string line = "call: the " + std::to_string(*aim.call.ball) + " in the " +
-                       app::spoken(aim.call.pocket) + " (C: next pocket)";
+                       app::spoken(aim.call.pocket) +
+                       (aim.call.by_player ? "" : " (C: next pocket; or click a ball, a pocket)");
     say.text(line);
     if (*aim.call.ball == rules::kEightBall) say.coloured(kProblem, "the 8: check the pocket");
   } else {
@@ -215,7 +220,7 @@ void shotPanel(Say& say, const HudInput& in) {
   ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(220, 0),
                      c.charging() ? "charging" : "power");
   drawTipWidget(aim.tip_side, aim.tip_height, c.limits().miscue_limit);
-  callLine(say, aim);
+  callLine(say, c);
   if (aim.cue_ball_at) {
     say.text("cue ball in hand: drag it");
     if (!in.placement_problem.empty()) {

@@ -18,6 +18,14 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
       app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
   controls.suggestCall(app::autoCall(prediction, client::gameStateOf(match), balls, view));
   controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()});
+  app::ClickTargets targets;
+  for (const auto& b : balls) {
+    if (b.id != physics::kCueBall && physics::onTable(b.state)) {
+      targets.balls.emplace_back(b.id, b.pos.head<2>());
+    }
+  }
+  for (const auto& p : view.pockets) targets.pockets.emplace_back(p.name, p.mouth);
+  controls.setClickTargets(std::move(targets));
   if (t.aim_line) append(out.lines, app::aimOverlay(prediction, view.radius()));
   out.aim = prediction;
   if (t.vectors) {
