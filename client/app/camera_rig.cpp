@@ -123,9 +123,10 @@ Orbit CameraRig::overheadOrbit() const {
   o.elevation = limits_.max_elevation;
   const double half_fov_y = radians(fov_y_deg_) / 2;
   const double half_fov_x = std::atan(std::tan(half_fov_y) * aspect_);
-  const double along = (table_length_ / 2 + kMargin / 2) / std::tan(half_fov_x);
-  const double across = (table_width_ / 2 + kMargin / 2) / std::tan(half_fov_y);
-  o.distance = std::clamp(std::max(along, across), limits_.min_distance, limits_.max_distance);
+  const double along = (table_length_ / 2 + kMargin) / std::tan(half_fov_x);
+  const double across = (table_width_ / 2 + kMargin) / std::tan(half_fov_y);
+  o.distance =
+      std::clamp(std::max(along, across) * 1.05, limits_.min_distance, limits_.max_distance);
   return o;
 }
 

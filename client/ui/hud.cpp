@@ -66,6 +66,11 @@ ImVec2 screenSize() {
   return ImGui::GetMainViewport()->WorkSize;
 }
 
+/// Pane widths in pixels grow with the text (ImGui's FontGlobalScale, set from the window).
+float px(float pixels) {
+  return pixels * ImGui::GetIO().FontGlobalScale;
+}
+
 /// The next window at `pivot` of the screen (0,0 top-left … 1,1 bottom-right), at most `max_w` ×
 /// `max_h` of the screen, never moved by the player and never off screen.
 void anchor(ImVec2 pivot, float max_w, float max_h, float width = 0.0f) {
@@ -113,7 +118,7 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
 }
 
 void matchPanel(Say& say, const HudInput& in) {
-  anchor(ImVec2(0, 0), 0.32f, 0.45f, std::min(screenSize().x * 0.32f, 340.0f));
+  anchor(ImVec2(0, 0), 0.32f, 0.45f, std::min(screenSize().x * 0.32f, px(340.0f)));
   ImGui::Begin("Match", nullptr, kPane);
   say.text(in.match + (in.spectating ? " (watching)" : ""));
   if (!in.view) {
@@ -142,7 +147,7 @@ void matchPanel(Say& say, const HudInput& in) {
 
 void bannerPanel(Say& say, const HudInput& in) {
   if (in.banner.empty() || in.in_motion) return;
-  anchor(ImVec2(0.5f, 0), 0.34f, 0.3f, std::min(screenSize().x * 0.34f, 560.0f));
+  anchor(ImVec2(0.5f, 0), 0.34f, 0.3f, std::min(screenSize().x * 0.34f, px(560.0f)));
   ImGui::Begin("Last shot", nullptr, kPane | ImGuiWindowFlags_NoTitleBar);
   const bool foul = in.banner.rfind("Foul", 0) == 0;
   say.coloured(foul ? kBannerFoul : ImVec4(1, 1, 1, 1), in.banner);
@@ -179,7 +184,7 @@ void callLine(Say& say, const app::Controls& c) {
     std::string line = "call: the " + std::to_string(*aim.call.ball) + " in the " +
                        app::spoken(aim.call.pocket) +
                        (aim.call.by_player ? "" : " (C: next pocket; or click a ball, a pocket)");
-    say.text(line);
+    say.wrapped(line);
     if (*aim.call.ball == rules::kEightBall) say.coloured(kProblem, "the 8: check the pocket");
   } else {
     say.text("call: none needed on the break");
@@ -189,7 +194,7 @@ void callLine(Say& say, const app::Controls& c) {
 void shotPanel(Say& say, const HudInput& in) {
   const app::Controls& c = *in.controls;
   const app::AimState& aim = c.aim();
-  anchor(ImVec2(0, 1), 0.32f, 0.5f, std::min(screenSize().x * 0.32f, 340.0f));
+  anchor(ImVec2(0, 1), 0.32f, 0.5f, std::min(screenSize().x * 0.32f, px(340.0f)));
   ImGui::Begin("Shot", nullptr, kPane);
   const app::SeatNames names = namesOf(in);
   if (in.local_shooter >= 0) {
@@ -217,7 +222,7 @@ void shotPanel(Say& say, const HudInput& in) {
   say.text("tip side " + fixed(aim.tip_side, 2, true) + " R   height " +
            fixed(aim.tip_height, 2, true) + " R");
   say.text("cue speed " + fixed(app::cueSpeedOf(aim.power, c.limits()), 2) + " m/s");
-  ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(220, 0),
+  ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(px(220), 0),
                      c.charging() ? "charging" : "power");
   drawTipWidget(aim.tip_side, aim.tip_height, c.limits().miscue_limit);
   callLine(say, c);
@@ -238,10 +243,10 @@ void logPanel(Say& say, const HudInput& in) {
   const bool notes = in.notes && !in.notes->empty();
   if (!log && !notes) return;
   const ImVec2 size = screenSize();
-  anchor(ImVec2(1, 0), 0.3f, 0.42f, std::min(size.x * 0.3f, 460.0f));
+  anchor(ImVec2(1, 0), 0.3f, 0.42f, std::min(size.x * 0.3f, px(460.0f)));
   ImGui::Begin("Match log", nullptr, kPane);
   if (log) {
-    const float height = std::min(size.y * 0.25f, 220.0f);
+    const float height = std::min(size.y * 0.25f, px(220.0f));
     ImGui::BeginChild("shots", ImVec2(0, height), true);
     for (const auto& line : *in.log) say.wrapped(line);
     if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY() - 1) ImGui::SetScrollHereY(1.0f);
@@ -263,7 +268,7 @@ void gameOverPanel(Say& say, const HudInput& in) {
   if (!in.view || in.view->phase != client::MatchPhase::Over) return;
   const auto& v = *in.view;
   const app::SeatNames names = namesOf(in);
-  anchor(ImVec2(0.5f, 0.5f), 0.5f, 0.6f, std::min(screenSize().x * 0.45f, 520.0f));
+  anchor(ImVec2(0.5f, 0.5f), 0.5f, 0.6f, std::min(screenSize().x * 0.45f, px(520.0f)));
   ImGui::Begin("Game over", nullptr, kPane);
   if (v.winner == 0 || v.winner == 1) {
     const std::string& winner = names[static_cast<std::size_t>(v.winner)];
@@ -297,7 +302,7 @@ void gameOverPanel(Say& say, const HudInput& in) {
 }
 
 void helpPanel(Say& say) {
-  anchor(ImVec2(0.5f, 0.5f), 0.9f, 0.9f, std::min(screenSize().x * 0.9f, 760.0f));
+  anchor(ImVec2(0.5f, 0.5f), 0.9f, 0.9f, std::min(screenSize().x * 0.9f, px(760.0f)));
   ImGui::Begin("Keys (F1 closes)", nullptr, kPane);
   if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     for (const auto& k : app::keyHelp()) {
@@ -317,7 +322,7 @@ void helpPanel(Say& say) {
 }  // namespace
 
 void drawTipWidget(double tip_side, double tip_height, double miscue_limit) {
-  const float size = 90.0f, radius = size * 0.45f;
+  const float size = 90.0f * ImGui::GetIO().FontGlobalScale, radius = size * 0.45f;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 centre(origin.x + size / 2, origin.y + size / 2);
   ImDrawList* draw = ImGui::GetWindowDrawList();

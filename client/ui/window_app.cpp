@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -314,6 +315,10 @@ class WindowApp {
   }
 
   void drawInterface() {
+    // Text grows with tall windows (1 up to 800 px high, 2 from 1600), so panes stay readable.
+    int fb_width = 0, fb_height = 0;
+    glfwGetFramebufferSize(window_.get(), &fb_width, &fb_height);
+    ImGui::GetIO().FontGlobalScale = std::clamp(static_cast<float>(fb_height) / 800.0f, 1.0f, 2.0f);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

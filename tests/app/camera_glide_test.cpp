@@ -88,8 +88,9 @@ TEST(CameraGlideTest, OverheadLooksDownOnTheWholeTable) {
   const Eigen::Vector3d down = (view.target - view.eye).normalized();
   EXPECT_LT(down.z(), -0.999);  // within 2.6° of straight down
   const auto camera = cameraOf(view);
-  for (float x : {-1.27f, 1.27f}) {
-    for (float y : {-0.635f, 0.635f}) {
+  // The rails' outer corners (about 15 cm beyond the playing surface).
+  for (float x : {-1.42f, 1.42f}) {
+    for (float y : {-0.78f, 0.78f}) {
       const glm::vec3 p = render::projectToPixels(camera, 1280, 720, glm::vec3(x, y, 0.0f));
       EXPECT_GT(p.x, 0.0f);
       EXPECT_LT(p.x, 1280.0f);
