@@ -135,6 +135,7 @@ void Controls::keyDown(Key key, Mods mods) {
       break;
     case Key::R:
     case Key::N:
+    case Key::F11:
       requests_.push_back(key);
       break;
     case Key::Space:

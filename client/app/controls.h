@@ -102,8 +102,8 @@ class Controls {
   /// Applies the held keys for `dt` seconds (cue, tip, elevation, power, camera).
   void advance(double dt);
 
-  /// The keys that ask the window for something (R: rematch, N: new game) pressed since the last
-  /// call, in order.
+  /// The keys that ask the window for something (R: rematch, N: new game, F11: full screen)
+  /// pressed since the last call, in order.
   std::vector<Key> takeRequests();
 
   /// The command of the shot released with Space since the last call, if any.
@@ -129,6 +129,11 @@ class Controls {
   const CameraRig& camera() const { return camera_; }
   CameraRig& camera() { return camera_; }
   const Toggles& toggles() const { return toggles_; }
+  /// The aim aids as the player's settings have them (G and V change them too).
+  void setAimAids(bool aim_line, bool vectors) {
+    toggles_.aim_line = aim_line;
+    toggles_.vectors = vectors;
+  }
   const protocol::CommandLimits& limits() const { return limits_; }
 
  private:

@@ -22,7 +22,8 @@ const std::vector<KeyHelp>& keyHelp() {
       {"always", "G / V", "aim line and ghost ball / direction arrows"},
       {"always", "P / T / L", "wireframe / textures / lighting"},
       {"game over", "R / N", "rematch / a new game at a free table"},
-      {"always", "F1", "this help, on and off"},
+      {"always", "F11", "full screen, on and off"},
+      {"always", "F1", "this help and the settings, on and off"},
   };
   return kHelp;
 }

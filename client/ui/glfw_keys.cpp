@@ -50,6 +50,8 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::R;
     case GLFW_KEY_N:
       return Key::N;
+    case GLFW_KEY_F11:
+      return Key::F11;
     case GLFW_KEY_ESCAPE:
       return Key::Escape;
     default:

@@ -301,7 +301,29 @@ void gameOverPanel(Say& say, const HudInput& in) {
   ImGui::End();
 }
 
-void helpPanel(Say& say) {
+void settingsLines(Say& say, const HudInput& in) {
+  ImGui::Separator();
+  say.text("Settings");
+  app::Settings s = in.settings;
+  bool changed = false;
+  auto check = [&](const std::string& label, bool& value) {
+    say.out().texts.push_back(label);
+    changed = ImGui::Checkbox(label.c_str(), &value) || changed;
+  };
+  check("Aim line and ghost ball (G)", s.aim_line);
+  check("Direction arrows (V)", s.vectors);
+  check("Full screen (F11)", s.full_screen);
+  float volume = static_cast<float>(s.volume);
+  say.out().texts.push_back("Volume (from the next start)");
+  if (ImGui::SliderFloat("Volume (from the next start)", &volume, 0.0f, 1.0f, "%.2f")) {
+    s.volume = volume;
+    changed = true;
+  }
+  if (!in.settings_note.empty()) say.wrapped(in.settings_note);
+  if (changed) say.out().settings = s;
+}
+
+void helpPanel(Say& say, const HudInput& in) {
   anchor(ImVec2(0.5f, 0.5f), 0.9f, 0.9f, std::min(screenSize().x * 0.9f, px(760.0f)));
   ImGui::Begin("Keys (F1 closes)", nullptr, kPane);
   if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
@@ -316,6 +338,7 @@ void helpPanel(Say& say) {
     }
     ImGui::EndTable();
   }
+  settingsLines(say, in);
   ImGui::End();
 }
 
@@ -348,7 +371,7 @@ HudActions drawHud(const HudInput& input) {
   if (input.controls) shotPanel(say, input);
   logPanel(say, input);
   gameOverPanel(say, input);
-  if (input.help) helpPanel(say);
+  if (input.help) helpPanel(say, input);
   return actions;
 }
 

@@ -11,6 +11,7 @@
 
 #include "client/app/controls.h"
 #include "client/app/match_session.h"
+#include "client/app/settings.h"
 #include "client/app/shot_story.h"
 #include "client/net/match_types.h"
 #include "protocol/shot_request.h"
@@ -34,6 +35,8 @@ struct HudInput {
   bool help = false;                             ///< the help overlay (F1)
   /// The players' names (remembered after a player leaves); empty: read from `view`.
   std::optional<app::SeatNames> names;
+  app::Settings settings;     ///< as they are now (shown with the help)
+  std::string settings_note;  ///< where they are kept, or why they are not
 };
 
 /// What the player clicked.
@@ -41,9 +44,10 @@ struct HudActions {
   std::optional<protocol::ShotOption> option;  ///< an answer to the rules' pending choice
   bool rematch = false;
   bool leave = false;
-  bool visit_room = false;         ///< the winner goes to the Magic Eight Ball room
-  bool new_game = false;           ///< leave this table for a free one
-  std::vector<std::string> texts;  ///< every text the HUD drew this frame (tests read them)
+  bool visit_room = false;                ///< the winner goes to the Magic Eight Ball room
+  bool new_game = false;                  ///< leave this table for a free one
+  std::optional<app::Settings> settings;  ///< the player changed a setting
+  std::vector<std::string> texts;         ///< every text the HUD drew this frame (tests read them)
 };
 
 /// Draws the HUD windows for this frame (between ImGui::NewFrame and ImGui::Render).

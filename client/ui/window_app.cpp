@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -23,6 +24,7 @@
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
 #include "client/app/placement_search.h"
+#include "client/app/settings.h"
 #include "client/app/shot_story.h"
 #include "client/app/turn_view.h"
 #include "client/bot/ai/table_view.h"
@@ -63,10 +65,32 @@ app::PlacementArea areaOf(const bot::TableView& view) {
   return {view.halfLength(), view.halfWidth(), view.headStringX(), view.radius()};
 }
 
+/// The settings file's path and what it holds (the defaults, and why, when it cannot be used).
+struct LoadedSettings {
+  std::filesystem::path path;
+  app::Settings settings;
+  std::string problem;
+};
+
+LoadedSettings loadSettingsFor(const WindowOptions& options) {
+  LoadedSettings out;
+  if (!options.keep_identity) return out;  // --fresh-identity keeps nothing between runs
+  out.path = app::defaultSettingsPath();
+  if (out.path.empty()) return out;
+  auto loaded = app::loadSettings(out.path);
+  if (loaded) {
+    out.settings = *loaded;
+  } else {
+    out.problem = "settings not used (the file is left as it is): " + loaded.error();
+  }
+  return out;
+}
+
 class WindowApp {
  public:
   WindowApp(const WindowOptions& options, bot::TableView view, render::Scene scene)
       : options_(options),
+        settings_(loadSettingsFor(options)),
         view_(std::move(view)),
         window_(options.width, options.height),
         renderer_(scene),
@@ -75,8 +99,11 @@ class WindowApp {
                                  static_cast<double>(options.width) / options.height)),
         session_({options.domain, options.name, options.hotseat,
                   options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
-        sound_(options.mute) {
+        sound_(options.mute, settings_.settings.volume) {
     session_.setListener(&sound_);
+    controls_.setAimAids(settings_.settings.aim_line, settings_.settings.vectors);
+    window_.setFullScreen(settings_.settings.full_screen);
+    if (!settings_.problem.empty()) addNote({settings_.problem, true});
     installInput(window_.get(), controls_);
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
@@ -355,6 +382,10 @@ class WindowApp {
     in.log = &session_.shotLog();
     in.help = controls_.toggles().help;
     in.names = session_.names();
+    in.settings = currentSettings();
+    in.settings_note = !settings_.problem.empty() ? settings_.problem
+                       : settings_.path.empty()   ? "settings are not kept (no config folder)"
+                                                  : "kept in " + settings_.path.string();
     return in;
   }
 
@@ -365,6 +396,12 @@ class WindowApp {
     if (actions.rematch) rematch();
     if (actions.visit_room) in_room_ = true;
     if (actions.new_game) newGame();
+    if (actions.settings) {
+      controls_.setAimAids(actions.settings->aim_line, actions.settings->vectors);
+      window_.setFullScreen(actions.settings->full_screen);
+      settings_.settings.volume = actions.settings->volume;
+    }
+    keepSettings();
     if (actions.leave) {
       controls_.stopAiming();
       session_.leave();
@@ -401,12 +438,36 @@ class WindowApp {
     addNote({"rematch asked", false});
   }
 
-  /// R and N on the game-over screen.
+  /// The settings as they are now: the toggles, the window, the volume chosen.
+  app::Settings currentSettings() const {
+    app::Settings s = settings_.settings;
+    s.aim_line = controls_.toggles().aim_line;
+    s.vectors = controls_.toggles().vectors;
+    s.full_screen = window_.fullScreen();
+    return s;
+  }
+
+  /// Writes the settings when they changed (never over a file that could not be read).
+  void keepSettings() {
+    const app::Settings now = currentSettings();
+    if (now == settings_.settings || settings_.path.empty() || !settings_.problem.empty()) {
+      settings_.settings = now;
+      return;
+    }
+    settings_.settings = now;
+    if (auto saved = app::saveSettings(settings_.path, now); !saved) {
+      settings_.problem = "settings not kept: " + saved.error();
+      addNote({settings_.problem, true});
+    }
+  }
+
+  /// R, N and F11.
   void requests() {
     const client::MatchView* v = session_.view();
     const bool over =
         v && v->phase == client::MatchPhase::Over && session_.stage() == app::SessionStage::Playing;
     for (const app::Key key : controls_.takeRequests()) {
+      if (key == app::Key::F11) window_.setFullScreen(!window_.fullScreen());
       if (!over) continue;
       if (key == app::Key::N) {
         newGame();
@@ -434,6 +495,7 @@ class WindowApp {
   }
 
   WindowOptions options_;
+  LoadedSettings settings_;
   bot::TableView view_;
   GlfwWindow window_;
   render::Renderer renderer_;

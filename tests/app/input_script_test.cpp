@@ -99,8 +99,8 @@ namespace {
 TEST(KeyNamesTest, EveryKeyHasOneNameAndNoNameIsEmpty) {
   std::set<Key> seen;
   for (const char* name :
-       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z", "S",  "X", "G", "V",
-        "C",    "K",     "P",  "T",    "L",     "B", "O", "F1", "R", "N", "ESCAPE"}) {
+       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z",  "S", "X", "G",   "V",     "C",
+        "K",    "P",     "T",  "L",    "B",     "O", "F1", "R", "N", "F11", "ESCAPE"}) {
     const auto key = keyFromName(name);
     ASSERT_TRUE(key) << name;
     EXPECT_TRUE(seen.insert(*key).second) << name;
