@@ -80,6 +80,8 @@ int main(int argc, char** argv) {
   app.add_option("--match", flags.window.match, "with --play: the match to join");
   app.add_option("--script", flags.window.script, "play timed key presses from FILE (window)");
   app.add_option("--capture", flags.window.capture, "write the window's last frame to this PNG");
+  app.add_flag("--log-frames", flags.window.log_frames,
+               "with --json in a window: a line for every frame drawn (camera, cue ball, mouse)");
   app.add_option("--table", flags.window.table, "table spec the window draws");
   app.add_option("--width", flags.window.width, "window width")->check(CLI::Range(320, 8192));
   app.add_option("--height", flags.window.height, "window height")->check(CLI::Range(240, 8192));

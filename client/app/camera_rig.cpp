@@ -18,6 +18,13 @@ double radians(double degrees) {
 
 }  // namespace
 
+ViewPoint blend(const ViewPoint& from, const ViewPoint& to, double s) {
+  s = std::clamp(s, 0.0, 1.0);
+  const double e = s * s * (3.0 - 2.0 * s);
+  return {from.eye + e * (to.eye - from.eye), from.target + e * (to.target - from.target),
+          from.fov_y_deg + e * (to.fov_y_deg - from.fov_y_deg)};
+}
+
 ViewPoint Orbit::view(double fov_y_deg) const {
   const Eigen::Vector3d dir(std::cos(elevation) * std::cos(azimuth),
                             std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
@@ -43,6 +50,84 @@ void CameraRig::resetOverview() {
   const double across = (table_width_ / 2 + kMargin) / std::tan(half_fov_y);
   watch_.distance =
       std::clamp(std::max(along, across) * 1.15, limits_.min_distance, limits_.max_distance);
+}
+
+void CameraRig::setAiming(bool aiming) {
+  if (aiming == aiming_) return;
+  startGlide();
+  aiming_ = aiming;
+}
+
+void CameraRig::behindCue() {
+  startGlide();
+  aim_turn_ = 0.0;
+  aim_.elevation = kAimElevation;
+  aim_.distance = kAimDistance;
+  overhead_ = false;
+}
+
+void CameraRig::frameAim(const Eigen::Vector3d& cue, const Eigen::Vector3d& contact,
+                         double ball_radius) {
+  constexpr double kHighest = 0.8;  // rad: beyond this the view is no longer a player's
+  constexpr double kGap = 0.01;     // rad of clear felt between the two balls as seen
+  Orbit probe = aim_;
+  probe.target = cue;
+  for (double e = aim_.elevation; e <= kHighest; e += 0.005) {
+    probe.elevation = e;
+    const Eigen::Vector3d eye = probe.view(fov_y_deg_).eye;
+    const Eigen::Vector3d to_cue = cue - eye, to_contact = contact - eye;
+    const double apart =
+        std::acos(std::clamp(to_cue.normalized().dot(to_contact.normalized()), -1.0, 1.0));
+    const double sizes = std::asin(std::min(1.0, ball_radius / to_cue.norm())) +
+                         std::asin(std::min(1.0, ball_radius / to_contact.norm()));
+    if (apart >= sizes + kGap) {
+      aim_.elevation = std::clamp(e, limits_.min_elevation, limits_.max_elevation);
+      return;
+    }
+  }
+  aim_.elevation = std::clamp(kHighest, limits_.min_elevation, limits_.max_elevation);
+}
+
+void CameraRig::setOverhead(bool overhead) {
+  if (overhead == overhead_) return;
+  startGlide();
+  overhead_ = overhead;
+}
+
+void CameraRig::hold(bool held) {
+  if (held && !held_) {
+    held_ = view();
+    glide_.reset();
+  } else if (!held && held_) {
+    glide_ = Glide{*held_, 0.0};
+    held_.reset();
+  }
+}
+
+void CameraRig::startGlide() {
+  if (held_) return;
+  glide_ = Glide{view(), 0.0};
+}
+
+void CameraRig::update(double dt) {
+  if (!glide_ || !(dt > 0)) return;
+  glide_->t += dt;
+  if (glide_->t >= kGlideTime) glide_.reset();
+}
+
+Orbit CameraRig::overheadOrbit() const {
+  // Straight down (as near as an orbit with +z up allows), the long axis across the screen.
+  Orbit o;
+  o.target = Eigen::Vector3d::Zero();
+  o.azimuth = -std::numbers::pi / 2;
+  o.elevation = limits_.max_elevation;
+  const double half_fov_y = radians(fov_y_deg_) / 2;
+  const double half_fov_x = std::atan(std::tan(half_fov_y) * aspect_);
+  const double along = (table_length_ / 2 + kMargin) / std::tan(half_fov_x);
+  const double across = (table_width_ / 2 + kMargin) / std::tan(half_fov_y);
+  o.distance =
+      std::clamp(std::max(along, across) * 1.05, limits_.min_distance, limits_.max_distance);
+  return o;
 }
 
 void CameraRig::setAspect(double aspect) {
@@ -81,8 +166,15 @@ void CameraRig::zoom(double factor) {
   o.distance = std::clamp(o.distance * factor, limits_.min_distance, limits_.max_distance);
 }
 
-ViewPoint CameraRig::view() const {
+ViewPoint CameraRig::goal() const {
+  if (overhead_) return overheadOrbit().view(fov_y_deg_);
   return (aiming_ ? aim_ : watch_).view(fov_y_deg_);
+}
+
+ViewPoint CameraRig::view() const {
+  if (held_) return *held_;
+  if (glide_) return blend(glide_->from, goal(), glide_->t / kGlideTime);
+  return goal();
 }
 
 std::optional<Eigen::Vector2d> pointUnderPixel(const ViewPoint& view, int width, int height,

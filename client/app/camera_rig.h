@@ -1,5 +1,6 @@
 // The camera as the player steers it: an orbit about the table (watching) or about the cue ball,
-// behind the cue (aiming); and the ray under a pixel, for dragging the cue ball.
+// behind the cue (aiming), or overhead; changes of view glide; and the ray under a pixel, for
+// dragging the cue ball.
 #pragma once
 
 #include <Eigen/Core>
@@ -37,7 +38,16 @@ struct CameraLimits {
   double max_distance = 9.0;    ///< m
 };
 
-/// The two cameras of the client and which one is in use.
+/// How long a change of view takes to glide from the old view to the new one, s.
+inline constexpr double kGlideTime = 0.6;
+
+/// `from` moved toward `to` by `s` in [0, 1] (eye and target alike, eased at both ends).
+ViewPoint blend(const ViewPoint& from, const ViewPoint& to, double s);
+
+/// The two cameras of the client (and the overhead view) and which one is in use. view() is what
+/// is drawn: a change of camera (aiming on or off, behind the cue, overhead, a new turn) glides
+/// there over kGlideTime of update() time instead of cutting; steering the camera in use follows
+/// at once.
 class CameraRig {
  public:
   /// The watching camera frames a table of `table_length` × `table_width` (m) in a viewport of
@@ -45,7 +55,7 @@ class CameraRig {
   CameraRig(double table_length, double table_width, double aspect);
 
   /// Aiming: the view sits behind the cue ball at `cue_ball`, looking along `yaw` (rad).
-  void setAiming(bool aiming) { aiming_ = aiming; }
+  void setAiming(bool aiming);
   bool aiming() const { return aiming_; }
   void followCue(const Eigen::Vector3d& cue_ball, double yaw);
 
@@ -61,13 +71,40 @@ class CameraRig {
   void resetOverview();
   void setAspect(double aspect);
 
+  /// The aiming camera back to its place straight behind the cue ball (height and distance too)
+  /// and the overhead view off: what each turn starts with and the B key gives. Glides.
+  void behindCue();
+  /// Raises the aiming camera (from its height behind the cue, never lowering it) until the ball
+  /// at `contact` (the first contact's ghost ball centre) shows clear above the cue ball at
+  /// `cue`, so the view frames both.
+  void frameAim(const Eigen::Vector3d& cue, const Eigen::Vector3d& contact, double ball_radius);
+  /// The view straight down on the whole table on or off (O). Glides.
+  void setOverhead(bool overhead);
+  bool overhead() const { return overhead_; }
+  /// Holds the drawn view where it is (dragging the cue ball) or lets it follow again (a glide
+  /// to wherever the camera went meanwhile).
+  void hold(bool held);
+  bool held() const { return held_.has_value(); }
+
+  /// Lets `dt` seconds of glide pass.
+  void update(double dt);
+  /// Ends any glide at once (a screenshot draws the view it set up).
+  void settle() { glide_.reset(); }
+  bool gliding() const { return glide_.has_value(); }
+
+  /// The view drawn: the camera's, or on its way there.
   ViewPoint view() const;
+  /// Where the camera in use is (the end of any glide).
+  ViewPoint goal() const;
   const Orbit& watching() const { return watch_; }
   const Orbit& aimingOrbit() const { return aim_; }
   double fovY() const { return fov_y_deg_; }
 
  private:
   Orbit& active() { return aiming_ ? aim_ : watch_; }
+  /// Starts a glide from the view drawn now.
+  void startGlide();
+  Orbit overheadOrbit() const;
 
   double table_length_;
   double table_width_;
@@ -78,6 +115,13 @@ class CameraRig {
   Orbit watch_;
   Orbit aim_;
   double aim_turn_ = 0.0;  ///< the aiming camera's azimuth off the line behind the cue, rad
+  bool overhead_ = false;
+  struct Glide {
+    ViewPoint from;
+    double t = 0.0;  ///< s since it started
+  };
+  std::optional<Glide> glide_;
+  std::optional<ViewPoint> held_;  ///< the view drawn while held
 };
 
 /// The point of the horizontal plane z = `plane_z` under pixel (`px`, `py`) (from the top-left

@@ -12,6 +12,10 @@ namespace {
 
 // How far behind the head string a cue ball in hand is put when it must be behind it, m.
 constexpr double kHeadStringSetback = 0.01;
+// A press and release closer than this (pixels) is a click, not a drag.
+constexpr double kClickSlop = 3.0;
+// A click this close to a pocket's mouth (m) calls that pocket.
+constexpr double kPocketReach = 0.15;
 
 int axis(bool minus, bool plus) {
   return (plus ? 1 : 0) - (minus ? 1 : 0);
@@ -36,9 +40,34 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   aim_.call = ShotCall{};
   aim_.option = protocol::ShotOption::None;
   aim_.cue_ball_at.reset();
+  picked_ball_.reset();
   if (in_hand != rules::BallInHand::None) placeCueBall(cue_ball.head<2>());
+  if (drag_ != Drag::None) camera_.hold(false);
+  drag_ = Drag::None;
+  contact_.reset();
   camera_.setAiming(true);
+  behindCue();
+}
+
+void Controls::behindCue() {
+  camera_.behindCue();
+  if (contact_) camera_.frameAim(cueBall(), *contact_, area_.ball_radius);
   followCue();
+}
+
+void Controls::setContact(const Eigen::Vector3d& contact) {
+  const bool first = !contact_;
+  contact_ = contact;
+  // The turn's first prediction frames the view it opens with.
+  if (first && mode_ == ControlMode::Aiming) behindCue();
+}
+
+void Controls::setYaw(double yaw) {
+  if (!std::isfinite(yaw)) return;
+  aim_.yaw = yaw;
+  clampAim(aim_, limits_);
+  contact_.reset();  // the next prediction frames the new heading
+  if (mode_ == ControlMode::Aiming) followCue();
 }
 
 void Controls::moveCueBall(const Eigen::Vector2d& at) {
@@ -51,6 +80,7 @@ void Controls::stopAiming() {
   mode_ = ControlMode::Watching;
   charging_ = false;
   aim_.power = 0.0;
+  if (drag_ == Drag::CueBall) camera_.hold(false);
   if (drag_ == Drag::Cue || drag_ == Drag::CueBall) drag_ = Drag::None;
   camera_.setAiming(false);
 }
@@ -76,9 +106,38 @@ void Controls::placeCueBall(const Eigen::Vector2d& at) {
 }
 
 void Controls::keyDown(Key key, Mods mods) {
-  held_[key] = mods;
+  held_[key] = Held{mods};
   const bool aiming = mode_ == ControlMode::Aiming;
   switch (key) {
+    case Key::Left:
+    case Key::Right:
+      // A press turns the cue one step at once, however short it is.
+      if (aiming && !mods.ctrl && !mods.shift) {
+        const double step = mods.alt ? rates_.fine_yaw_step : rates_.yaw_step;
+        aim_.yaw += key == Key::Left ? step : -step;
+        clampAim(aim_, limits_);
+        followCue();
+      }
+      break;
+    case Key::B:
+      if (aiming) {
+        behindCue();
+      } else {
+        camera_.setOverhead(false);
+        camera_.resetOverview();
+      }
+      break;
+    case Key::O:
+      camera_.setOverhead(!camera_.overhead());
+      break;
+    case Key::F1:
+      toggles_.help = !toggles_.help;
+      break;
+    case Key::R:
+    case Key::N:
+    case Key::F11:
+      requests_.push_back(key);
+      break;
     case Key::Space:
       if (aiming && !charging_) {
         charging_ = true;
@@ -151,11 +210,16 @@ void Controls::suggestCall(const ShotCall& call) {
 
 void Controls::advance(double dt) {
   if (!(dt > 0)) return;
+  for (auto& [key, h] : held_) {
+    h.before = h.time;
+    h.time += dt;
+  }
+  camera_.update(dt);
   const int side = axis(held(Key::Left), held(Key::Right));
   const int updown = axis(held(Key::Down), held(Key::Up));
   Mods mods;
   for (Key k : {Key::Left, Key::Right, Key::Up, Key::Down}) {
-    if (const auto it = held_.find(k); it != held_.end()) mods = it->second;
+    if (const auto it = held_.find(k); it != held_.end()) mods = it->second.mods;
   }
   if (mode_ == ControlMode::Aiming) {
     advanceAim(dt, side, updown, mods);
@@ -164,7 +228,25 @@ void Controls::advance(double dt) {
   }
   const int zoom = axis(held(Key::S), held(Key::X));
   if (zoom != 0) camera_.zoom(std::pow(rates_.zoom, zoom * dt));
-  if (mode_ == ControlMode::Aiming) followCue();
+  if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
+}
+
+double Controls::repeatTime(Key key) const {
+  const auto it = held_.find(key);
+  if (it == held_.end()) return 0.0;
+  const double delay = rates_.repeat_delay;
+  return std::max(0.0, it->second.time - delay) - std::max(0.0, it->second.before - delay);
+}
+
+double Controls::heldTurn() const {
+  double turn = 0.0;
+  for (const Key k : {Key::Left, Key::Right}) {
+    const auto it = held_.find(k);
+    if (it == held_.end() || it->second.mods.ctrl || it->second.mods.shift) continue;
+    const double rate = it->second.mods.alt ? rates_.fine_yaw : rates_.yaw;
+    turn += (k == Key::Left ? 1.0 : -1.0) * rate * repeatTime(k);
+  }
+  return turn;
 }
 
 void Controls::advanceAim(double dt, int side, int updown, Mods mods) {
@@ -175,7 +257,7 @@ void Controls::advanceAim(double dt, int side, int updown, Mods mods) {
     advanceCamera(dt, side, updown);
   } else {
     // Right turns the cue clockwise seen from above, as it looks from behind the cue.
-    aim_.yaw -= side * rates_.yaw * dt;
+    aim_.yaw += heldTurn();
     camera_.raise(updown * rates_.raise * dt);
   }
   aim_.elevation += axis(held(Key::Z), held(Key::A)) * rates_.elevation * dt;
@@ -188,12 +270,21 @@ void Controls::advanceCamera(double dt, int side, int updown) {
   camera_.raise(updown * rates_.raise * dt);
 }
 
-void Controls::mouseButton(MouseButton button, bool down, double x, double y) {
+void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mods mods) {
   mouse_ = {x, y};
   if (!down) {
+    if (drag_ == Drag::Cue && !moved_) click(x, y);
+    if (drag_ == Drag::CueBall) {
+      // The view glides from where it held to behind the ball's new spot.
+      camera_.hold(false);
+      followCue();
+    }
     drag_ = Drag::None;
     return;
   }
+  fine_drag_ = mods.alt;
+  pressed_at_ = {x, y};
+  moved_ = false;
   if (button == MouseButton::Right || mode_ != ControlMode::Aiming) {
     drag_ = Drag::View;
     return;
@@ -202,12 +293,26 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y) {
   drag_ = Drag::Cue;
   if (in_hand_ == rules::BallInHand::None) return;
   const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
-  if (hit && (*hit - cueBall().head<2>()).norm() < 2.5 * area_.ball_radius) drag_ = Drag::CueBall;
+  if (hit && (*hit - cueBall().head<2>()).norm() < 2.5 * area_.ball_radius) {
+    // The camera holds still while the ball is dragged, so the ball stays under the cursor.
+    drag_ = Drag::CueBall;
+    camera_.hold(true);
+  }
 }
 
 void Controls::mouseMove(double x, double y) {
   const Eigen::Vector2d delta = Eigen::Vector2d(x, y) - mouse_;
   mouse_ = {x, y};
+  // A few pixels of jitter keep a click a click (and do not turn the cue).
+  if (drag_ == Drag::Cue && !moved_) {
+    if ((mouse_ - pressed_at_).norm() < kClickSlop) return;
+    moved_ = true;
+    const Eigen::Vector2d held = mouse_ - pressed_at_;
+    aim_.yaw -= held.x() * (fine_drag_ ? rates_.fine_mouse_yaw : rates_.mouse_yaw);
+    clampAim(aim_, limits_);
+    followCue();
+    return;
+  }
   switch (drag_) {
     case Drag::None:
       return;
@@ -216,11 +321,11 @@ void Controls::mouseMove(double x, double y) {
       camera_.raise(delta.y() * rates_.mouse_orbit);
       break;
     case Drag::Cue:
-      aim_.yaw -= delta.x() * rates_.mouse_yaw;
+      aim_.yaw -= delta.x() * (fine_drag_ ? rates_.fine_mouse_yaw : rates_.mouse_yaw);
       clampAim(aim_, limits_);
       break;
     case Drag::CueBall:
-      // The camera follows the ball: take the ray from the view the press was seen in.
+      // The view is held, so the ray under the cursor is the one drawn.
       if (const auto hit =
               pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius)) {
         placeCueBall(*hit);
@@ -228,6 +333,27 @@ void Controls::mouseMove(double x, double y) {
       break;
   }
   if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
+}
+
+void Controls::click(double x, double y) {
+  if (mode_ != ControlMode::Aiming) return;
+  const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
+  if (!hit) return;
+  for (const auto& [id, at] : targets_.balls) {
+    if ((*hit - at).norm() < 1.3 * area_.ball_radius) {
+      picked_ball_ = id;
+      return;
+    }
+  }
+  if (!picked_ball_) return;
+  const std::pair<std::string, Eigen::Vector2d>* best = nullptr;
+  for (const auto& pocket : targets_.pockets) {
+    const double d = (*hit - pocket.second).norm();
+    if (d < kPocketReach && (!best || d < (*hit - best->second).norm())) best = &pocket;
+  }
+  if (!best) return;
+  aim_.call = ShotCall{picked_ball_, best->first, false, true};
+  picked_ball_.reset();
 }
 
 void Controls::scroll(double steps) {
@@ -239,6 +365,12 @@ void Controls::setViewport(int width, int height) {
   width_ = width;
   height_ = height;
   camera_.setAspect(static_cast<double>(width) / height);
+}
+
+std::vector<Key> Controls::takeRequests() {
+  std::vector<Key> out;
+  out.swap(requests_);
+  return out;
 }
 
 std::optional<protocol::ShotRequest> Controls::takeShot() {

@@ -5,6 +5,9 @@
 #include <Eigen/Core>
 #include <map>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "client/app/aim.h"
 #include "client/app/camera_rig.h"
@@ -15,18 +18,25 @@
 
 namespace pool::app {
 
-/// How fast held keys and the mouse move things.
+/// How fast held keys and the mouse move things. The aim's arrows step on each press and, held
+/// past `repeat_delay`, turn at `yaw` (`fine_yaw` with Alt): the heading after a press depends on
+/// how long the key was held, never on how that time fell into frames.
 struct ControlRates {
-  double yaw = 0.5;            ///< rad/s, left/right while aiming
-  double tip = 0.5;            ///< fractions of R per s, Ctrl+arrows
-  double elevation = 0.5;      ///< rad/s, A/Z
-  double charge_time = 1.5;    ///< s of Space from empty to full power
-  double orbit = 1.2;          ///< rad/s, arrows (watching) or Shift+arrows (aiming)
-  double raise = 0.8;          ///< rad/s
-  double zoom = 2.0;           ///< distance factor per s, S (÷) and X (×)
-  double mouse_yaw = 0.003;    ///< rad per pixel, dragging while aiming
-  double mouse_orbit = 0.006;  ///< rad per pixel, dragging the view
-  double scroll_zoom = 0.9;    ///< distance factor per scroll step
+  double yaw_step = 0.00436332;       ///< rad per press of left/right (0.25°)
+  double fine_yaw_step = 0.00087266;  ///< rad per press with Alt (0.05°)
+  double repeat_delay = 0.25;         ///< s held before the arrows turn the cue steadily
+  double yaw = 0.5;                   ///< rad/s, left/right held while aiming
+  double fine_yaw = 0.01745329;       ///< rad/s, Alt + left/right held (1°/s)
+  double fine_mouse_yaw = 0.0002;     ///< rad per pixel, dragging with Alt held
+  double tip = 0.5;                   ///< fractions of R per s, Ctrl+arrows
+  double elevation = 0.5;             ///< rad/s, A/Z
+  double charge_time = 1.5;           ///< s of Space from empty to full power
+  double orbit = 1.2;                 ///< rad/s, arrows (watching) or Shift+arrows (aiming)
+  double raise = 0.8;                 ///< rad/s
+  double zoom = 2.0;                  ///< distance factor per s, S (÷) and X (×)
+  double mouse_yaw = 0.003;           ///< rad per pixel, dragging while aiming
+  double mouse_orbit = 0.006;         ///< rad per pixel, dragging the view
+  double scroll_zoom = 0.9;           ///< distance factor per scroll step
 };
 
 /// Where the cue ball may be put with ball in hand (table frame, m).
@@ -44,6 +54,13 @@ struct Toggles {
   bool wireframe = false;
   bool textures = true;
   bool lighting = true;
+  bool help = false;  ///< the help overlay (F1)
+};
+
+/// What a click may call: the object balls on the table and the pockets' mouths (m).
+struct ClickTargets {
+  std::vector<std::pair<int, Eigen::Vector2d>> balls;
+  std::vector<std::pair<std::string, Eigen::Vector2d>> pockets;
 };
 
 /// What the player may do now.
@@ -59,8 +76,14 @@ class Controls {
 
   /// Our turn starts: aiming from the cue ball at `cue_ball` (m), with the cue ball in hand as
   /// the rules say (a placement starts where the ball lies, moved behind the head string if it
-  /// must be). The aim's heading, tip and elevation are kept from the last shot.
+  /// must be). Tip, elevation and the call start afresh, the camera behind the cue ball (its
+  /// orbit, height and distance of the last turn dropped); the heading is kept until setYaw.
   void startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_hand);
+  /// Turns the cue to `yaw` (rad), the camera behind it (e.g. facing the turn's target).
+  void setYaw(double yaw);
+  /// The current aim's first contact (the ghost ball's centre, m), told each frame: the view
+  /// behind the cue (a new turn, B) is raised until it shows above the cue ball.
+  void setContact(const Eigen::Vector3d& contact);
   /// Moves the cue ball in hand to `at` (kept on the slate, behind the head string when it must
   /// be); nothing without ball in hand.
   void moveCueBall(const Eigen::Vector2d& at);
@@ -70,7 +93,8 @@ class Controls {
 
   void keyDown(Key key, Mods mods);
   void keyUp(Key key);
-  void mouseButton(MouseButton button, bool down, double x, double y);
+  /// A press or release at (`x`, `y`) pixels; Alt (`mods.alt`) makes dragging the cue fine.
+  void mouseButton(MouseButton button, bool down, double x, double y, Mods mods = {});
   void mouseMove(double x, double y);
   void scroll(double steps);
   void setViewport(int width, int height);
@@ -78,8 +102,18 @@ class Controls {
   /// Applies the held keys for `dt` seconds (cue, tip, elevation, power, camera).
   void advance(double dt);
 
+  /// The keys that ask the window for something (R: rematch, N: new game, F11: full screen)
+  /// pressed since the last call, in order.
+  std::vector<Key> takeRequests();
+
   /// The command of the shot released with Space since the last call, if any.
   std::optional<protocol::ShotRequest> takeShot();
+
+  /// The balls and pockets a click may call this frame: a click (a press and release that does
+  /// not move) on an object ball picks it, then a click at a pocket calls it there.
+  void setClickTargets(ClickTargets targets) { targets_ = std::move(targets); }
+  /// The ball clicked, waiting for its pocket.
+  std::optional<int> pickedBall() const { return picked_ball_; }
 
   /// The automatic call for the current aim; ignored once the player chose one.
   void suggestCall(const ShotCall& call);
@@ -95,12 +129,21 @@ class Controls {
   const CameraRig& camera() const { return camera_; }
   CameraRig& camera() { return camera_; }
   const Toggles& toggles() const { return toggles_; }
+  /// The aim aids as the player's settings have them (G and V change them too).
+  void setAimAids(bool aim_line, bool vectors) {
+    toggles_.aim_line = aim_line;
+    toggles_.vectors = vectors;
+  }
   const protocol::CommandLimits& limits() const { return limits_; }
 
  private:
   enum class Drag : std::uint8_t { None, Cue, View, CueBall };
 
   void advanceAim(double dt, int side, int updown, Mods mods);
+  /// The heading's change from the arrows held this advance (past their repeat delay).
+  double heldTurn() const;
+  /// Seconds of `key`'s hold past the repeat delay that fell in the last advance.
+  double repeatTime(Key key) const;
   void advanceCamera(double dt, int side, int updown);
   void toggle(Key key);
   void cyclePocket();
@@ -115,12 +158,28 @@ class Controls {
   ControlMode mode_ = ControlMode::Watching;
   AimState aim_;
   Eigen::Vector3d cue_ball_ = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> contact_;
+  void behindCue();
   rules::BallInHand in_hand_ = rules::BallInHand::None;
   bool charging_ = false;
   std::optional<protocol::ShotRequest> shot_;
-  std::map<Key, Mods> held_;  ///< keys held, with the modifiers they were pressed with
+  std::vector<Key> requests_;
+  /// A key held: the modifiers it was pressed with and how long it has been down (before and
+  /// after the last advance), s.
+  struct Held {
+    Mods mods;
+    double time = 0.0;
+    double before = 0.0;
+  };
+  std::map<Key, Held> held_;
   Toggles toggles_;
   Drag drag_ = Drag::None;
+  bool fine_drag_ = false;  ///< the drag started with Alt held
+  Eigen::Vector2d pressed_at_ = Eigen::Vector2d::Zero();
+  bool moved_ = false;  ///< the mouse moved since the press
+  void click(double x, double y);
+  ClickTargets targets_;
+  std::optional<int> picked_ball_;
   Eigen::Vector2d mouse_ = Eigen::Vector2d::Zero();
   int width_ = 1280;
   int height_ = 720;

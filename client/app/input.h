@@ -14,17 +14,23 @@ enum class Key : std::uint8_t {
   Up,
   Down,
   Space,
-  A,  ///< raise the cue
-  Z,  ///< lower the cue
-  S,  ///< zoom in
-  X,  ///< zoom out
-  G,  ///< aim line on/off
-  V,  ///< direction vectors on/off
-  C,  ///< next called pocket
-  K,  ///< declare a safety on/off
-  P,  ///< wireframe
-  T,  ///< textures
-  L,  ///< lighting
+  A,    ///< raise the cue
+  Z,    ///< lower the cue
+  S,    ///< zoom in
+  X,    ///< zoom out
+  G,    ///< aim line on/off
+  V,    ///< direction vectors on/off
+  C,    ///< next called pocket
+  K,    ///< declare a safety on/off
+  P,    ///< wireframe
+  T,    ///< textures
+  L,    ///< lighting
+  B,    ///< the view back behind the cue ball
+  O,    ///< the view from overhead (top-down) on/off
+  F1,   ///< the help overlay on/off
+  R,    ///< rematch (game over)
+  N,    ///< a new game at a free table (game over)
+  F11,  ///< full screen on/off
   Escape,
 };
 
@@ -32,6 +38,7 @@ enum class Key : std::uint8_t {
 struct Mods {
   bool shift = false;
   bool ctrl = false;
+  bool alt = false;  ///< fine: the aim turns in small steps
 };
 
 enum class MouseButton : std::uint8_t { Left, Right };

@@ -1,8 +1,10 @@
 // Script parsing and frame-by-frame playback.
 #include "client/app/input_script.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace pool::app {
 namespace {
@@ -22,6 +24,8 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
         step.mods.shift = true;
       } else if (mod == "ctrl") {
         step.mods.ctrl = true;
+      } else if (mod == "alt") {
+        step.mods.alt = true;
       } else {
         return R::fail("unknown modifier '" + mod + "'");
       }
@@ -40,11 +44,46 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
       step.kind = ScriptStep::Kind::WaitAiming;
       return R::ok(step);
     }
+    if (what == "over" || what == "table") {
+      step.kind = what == "over" ? ScriptStep::Kind::WaitOver : ScriptStep::Kind::WaitTable;
+      return R::ok(step);
+    }
     if (what == "shot" && (words >> step.count) && step.count >= 0) {
       step.kind = ScriptStep::Kind::WaitShot;
       return R::ok(step);
     }
-    return R::fail("wait needs 'aiming' or 'shot N'");
+    return R::fail("wait needs 'aiming', 'shot N', 'over' or 'table'");
+  }
+  if (verb == "mouse") {
+    std::string what;
+    words >> what;
+    std::vector<std::string> args;
+    for (std::string w; words >> w;) args.push_back(w);
+    if (what == "press" && args == std::vector<std::string>{"cue"}) {
+      step.kind = ScriptStep::Kind::MouseOnCue;
+      return R::ok(step);
+    }
+    if (what == "release" && args.empty()) {
+      step.kind = ScriptStep::Kind::MouseRelease;
+      step.count = 1;  // released where the mouse is
+      return R::ok(step);
+    }
+    if (what == "press") {
+      step.kind = ScriptStep::Kind::MousePress;
+    } else if (what == "move") {
+      step.kind = ScriptStep::Kind::MouseMove;
+    } else if (what == "release") {
+      step.kind = ScriptStep::Kind::MouseRelease;
+    } else if (what == "by") {
+      step.kind = ScriptStep::Kind::MouseBy;
+    } else {
+      return R::fail("mouse needs 'press', 'move', 'release' or 'by'");
+    }
+    std::istringstream numbers(args.size() == 2 ? args[0] + " " + args[1] : std::string());
+    if (!(numbers >> step.x >> step.y) || !std::isfinite(step.x) || !std::isfinite(step.y)) {
+      return R::fail("mouse " + what + " needs X Y in pixels");
+    }
+    return R::ok(step);
   }
   if (verb == "quit") {
     step.kind = ScriptStep::Kind::Quit;
@@ -92,10 +131,13 @@ std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
   while (next_ < steps_.size()) {
     const ScriptStep& step = steps_[next_];
     const bool wait =
-        step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot;
+        step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot ||
+        step.kind == ScriptStep::Kind::WaitOver || step.kind == ScriptStep::Kind::WaitTable;
     // `now` was seen before this frame's steps: a wait after one is judged on the next frame.
     if (wait && !due.empty()) return due;
     const bool waiting = (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
+                         (step.kind == ScriptStep::Kind::WaitOver && !now.over) ||
+                         (step.kind == ScriptStep::Kind::WaitTable && !now.at_table) ||
                          (step.kind == ScriptStep::Kind::WaitShot &&
                           now.shot_number < static_cast<std::uint32_t>(step.count));
     if (waiting) return due;

@@ -14,21 +14,31 @@ namespace pool::app {
 /// One line of a script.
 struct ScriptStep {
   enum class Kind : std::uint8_t {
-    Down,        ///< press `key` with `mods`
-    Up,          ///< release `key`
-    Frames,      ///< let `count` frames pass
-    WaitAiming,  ///< wait until this screen may aim
-    WaitShot,    ///< wait until the match's shot number reaches `count`
-    Quit,        ///< close the client
+    Down,          ///< press `key` with `mods`
+    Up,            ///< release `key`
+    Frames,        ///< let `count` frames pass
+    WaitAiming,    ///< wait until this screen may aim
+    WaitShot,      ///< wait until the match's shot number reaches `count`
+    WaitOver,      ///< wait until the match followed is over
+    WaitTable,     ///< wait until this screen holds a seat in a match that is not over
+    Quit,          ///< close the client
+    MousePress,    ///< press the left button at (`x`, `y`) (pixels from the top-left corner)
+    MouseMove,     ///< move the mouse to (`x`, `y`)
+    MouseRelease,  ///< release the left button at (`x`, `y`)
+    MouseOnCue,    ///< move the mouse onto the cue ball as drawn and press the left button there
+    MouseBy,       ///< move the mouse by (`x`, `y`) pixels
   };
   Kind kind = Kind::Frames;
   Key key = Key::Space;
   Mods mods;
   int count = 0;
+  double x = 0.0;
+  double y = 0.0;
 };
 
 /// Parses a script: one step a line, '#' starts a comment.
-///   down KEY [shift] [ctrl] | up KEY | frames N | wait aiming | wait shot N | quit
+///   down KEY [shift] [ctrl] [alt] | up KEY | frames N | wait aiming | wait shot N | wait over |
+///   wait table | quit | mouse press X Y | mouse move X Y | mouse release X Y
 /// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
 Result<std::vector<ScriptStep>> parseScript(const std::string& text);
 
@@ -39,6 +49,8 @@ Result<std::vector<ScriptStep>> loadScript(const std::string& path);
 struct ScriptConditions {
   bool can_aim = false;
   std::uint32_t shot_number = 0;  ///< of the match followed
+  bool over = false;              ///< the match followed is over
+  bool at_table = false;          ///< seated in a match that is not over
 };
 
 /// Plays a script: each frame, the steps due now.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <variant>
 
+#include "client/app/shot_story.h"
+
 namespace pool::app {
 namespace {
 
@@ -84,6 +86,9 @@ void MatchSession::leave() {
   unanswered_.reset();
   shots_seen_ = 0;
   frames_due_until_ = 0.0;
+  banner_.clear();
+  shot_log_.clear();
+  names_ = seatNames(nullptr);
 }
 
 void MatchSession::rematch() {
@@ -220,6 +225,9 @@ void MatchSession::onReport(const client::ShotReport& report) {
   }
   if (report.final()) {
     last_verdict_ = report.verdict_text;
+    banner_ = shotStory(report, names_);
+    shot_log_.push_back(banner_);
+    while (shot_log_.size() > kLogKept) shot_log_.pop_front();
     if (listener_) listener_->onShot(report);
   } else if (ours) {
     note("shot " + std::to_string(report.seq) + " of seat " + std::to_string(report.seat + 1) +
@@ -248,6 +256,12 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
     // Our shot is answered by the state that counts it (other states may come in between).
     if (unanswered_ && view->shot_number >= awaited_shots_) unanswered_.reset();
     if (!view->last_verdict.empty()) last_verdict_ = view->last_verdict;
+    for (std::size_t s = 0; s < 2; ++s) {
+      if (!view->seats[s].name.empty()) names_[s] = view->seats[s].name;
+    }
+    if (banner_.empty() && !view->last_verdict.empty()) {
+      banner_ = verdictInWords(view->last_verdict, names_);
+    }
   } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
     onReport(*report);
   }

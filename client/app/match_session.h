@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "client/app/playback_clock.h"
+#include "client/app/shot_story.h"
 #include "client/net/game_client.h"
 #include "client/net/player_identity.h"
 #include "core/result.h"
@@ -97,6 +99,15 @@ class MatchSession {
   /// Notes since the last call: join answers, rejections, verdicts.
   std::vector<SessionNote> takeNotes();
   const std::string& lastVerdict() const { return last_verdict_; }
+  /// What happened on the last shot, in sentences with names (app::shotStory), until the next
+  /// shot's story replaces it; a late joiner gets the server's verdict in words.
+  const std::string& banner() const { return banner_; }
+  /// Every shot's story since the match was joined, oldest first (the last kLogKept).
+  const std::deque<std::string>& shotLog() const { return shot_log_; }
+  static constexpr std::size_t kLogKept = 200;
+  /// The players' names as last seen in the match followed: a player who left (and whose seat
+  /// the server freed) keeps the name they played under.
+  const SeatNames& names() const { return names_; }
 
  private:
   void handle(client::ClientEvent& event, std::size_t from, double now);
@@ -129,6 +140,9 @@ class MatchSession {
   double frames_due_until_ = 0.0;            ///< a new shot's frames are awaited until then, s
   double last_poll_ = 0.0;
   std::string last_verdict_;
+  std::string banner_;
+  std::deque<std::string> shot_log_;
+  SeatNames names_ = seatNames(nullptr);
   std::vector<SessionNote> notes_;
   ShotListener* listener_ = nullptr;
 };

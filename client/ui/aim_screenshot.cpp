@@ -74,6 +74,7 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
   if (options.aim.camera_distance) {
     rig.zoom(*options.aim.camera_distance / rig.aimingOrbit().distance);
   }
+  rig.settle();  // the view set up, not a glide toward it
   const Eigen::Vector3d ghost(prediction.contact.x(), prediction.contact.y(), view->radius());
   return render::renderScreenshot(options, *scene, cameraOf(rig.view()),
                                   [&](render::Renderer& renderer) {

@@ -40,6 +40,18 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::T;
     case GLFW_KEY_L:
       return Key::L;
+    case GLFW_KEY_B:
+      return Key::B;
+    case GLFW_KEY_O:
+      return Key::O;
+    case GLFW_KEY_F1:
+      return Key::F1;
+    case GLFW_KEY_R:
+      return Key::R;
+    case GLFW_KEY_N:
+      return Key::N;
+    case GLFW_KEY_F11:
+      return Key::F11;
     case GLFW_KEY_ESCAPE:
       return Key::Escape;
     default:
@@ -48,7 +60,8 @@ std::optional<app::Key> keyOf(int glfw_key) {
 }
 
 app::Mods modsOf(int glfw_mods) {
-  return {(glfw_mods & GLFW_MOD_SHIFT) != 0, (glfw_mods & GLFW_MOD_CONTROL) != 0};
+  return {(glfw_mods & GLFW_MOD_SHIFT) != 0, (glfw_mods & GLFW_MOD_CONTROL) != 0,
+          (glfw_mods & GLFW_MOD_ALT) != 0};
 }
 
 }  // namespace pool::ui

@@ -3,138 +3,349 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
+#include "client/app/key_help.h"
+#include "client/app/shot_story.h"
 #include "client/app/spoken.h"
 #include "client/bot/shot_command.h"
 
 namespace pool::ui {
 namespace {
 
+constexpr float kMargin = 10.0f;
+const ImVec4 kProblem(1.0f, 0.4f, 0.3f, 1.0f);
+const ImVec4 kBannerFoul(1.0f, 0.75f, 0.35f, 1.0f);
+
 double degrees(double rad) {
   return rad * 180.0 / std::numbers::pi;
 }
 
-void seatLine(const client::MatchView& view, int s, const std::vector<int>& local) {
-  const auto& seat = view.seats[static_cast<std::size_t>(s)];
-  const bool here = std::find(local.begin(), local.end(), s) != local.end();
-  const bool turn = view.shooter == s;
-  ImGui::Text("%s %s%s%s", turn ? ">" : " ", seat.name.empty() ? "(free)" : seat.name.c_str(),
-              here ? " (you)" : "", seat.connected || seat.name.empty() ? "" : " [away]");
-  ImGui::Text("    %s, %d left, %d fouls, %d racks",
-              app::spoken(rules::toString(seat.group)).c_str(), seat.balls_left, seat.fouls,
-              seat.racks_won);
+std::string fixed(double value, int decimals, bool sign = false) {
+  char text[32];
+  std::snprintf(text, sizeof text, sign ? "%+.*f" : "%.*f", decimals, value);
+  return text;
 }
 
-void matchPanel(const HudInput& in, HudActions& actions) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Match", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Text("%s%s", in.match.c_str(), in.spectating ? " (watching)" : "");
+/// Draws text and keeps it for the frame's record.
+class Say {
+ public:
+  explicit Say(HudActions& out) : out_(out) {}
+  void text(const std::string& s) {
+    out_.texts.push_back(s);
+    ImGui::TextUnformatted(s.c_str());
+  }
+  void wrapped(const std::string& s) {
+    out_.texts.push_back(s);
+    ImGui::TextWrapped("%s", s.c_str());
+  }
+  void coloured(const ImVec4& colour, const std::string& s) {
+    out_.texts.push_back(s);
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s", s.c_str());
+    ImGui::PopStyleColor();
+  }
+  bool button(const std::string& label) {
+    out_.texts.push_back(label);
+    return ImGui::Button(label.c_str());
+  }
+  bool radio(const std::string& label, bool on) {
+    out_.texts.push_back(label);
+    return ImGui::RadioButton(label.c_str(), on);
+  }
+  HudActions& out() { return out_; }
+
+ private:
+  HudActions& out_;
+};
+
+ImVec2 screenSize() {
+  return ImGui::GetMainViewport()->WorkSize;
+}
+
+/// Pane widths in pixels grow with the text (ImGui's FontGlobalScale, set from the window).
+float px(float pixels) {
+  return pixels * ImGui::GetIO().FontGlobalScale;
+}
+
+/// The next window at `pivot` of the screen (0,0 top-left … 1,1 bottom-right), at most `max_w` ×
+/// `max_h` of the screen, never moved by the player and never off screen.
+void anchor(ImVec2 pivot, float max_w, float max_h, float width = 0.0f) {
+  const ImVec2 size = screenSize();
+  const ImVec2 pos(kMargin + pivot.x * (size.x - 2 * kMargin),
+                   kMargin + pivot.y * (size.y - 2 * kMargin));
+  ImGui::SetNextWindowPos(pos, ImGuiCond_Always, pivot);
+  const float w = std::min(width > 0 ? width : max_w * size.x, size.x - 2 * kMargin);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width > 0 ? w : 0.0f, 0.0f),
+                                      ImVec2(w, max_h * size.y));
+}
+
+constexpr ImGuiWindowFlags kPane =
+    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+
+app::SeatNames namesOf(const HudInput& in) {
+  return in.names ? *in.names : app::seatNames(in.view);
+}
+
+bool localSeat(const HudInput& in, int seat) {
+  return std::find(in.local_seats.begin(), in.local_seats.end(), seat) != in.local_seats.end();
+}
+
+void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
+               const app::SeatNames& names) {
+  for (int s = 0; s < 2; ++s) {
+    const auto& seat = view.seats[static_cast<std::size_t>(s)];
+    const bool turn = view.shooter == s && client::inPlay(view.phase);
+    std::string line = std::string(turn ? "> " : "  ") +
+                       (seat.name.empty() ? "(a free seat)" : names[static_cast<std::size_t>(s)]);
+    if (seat.name.empty() && view.phase == client::MatchPhase::Over) {
+      line = "  " + names[static_cast<std::size_t>(s)] + " (left)";
+    }
+    if (localSeat(in, s)) line += " (you)";
+    if (!seat.name.empty() && !seat.connected) line += " (away)";
+    say.text(line);
+    std::string detail = "    ";
+    detail += seat.group == rules::Group::None ? "no group yet"
+                                               : app::spoken(rules::toString(seat.group));
+    detail += ", " + std::to_string(seat.balls_left) + " left, " + std::to_string(seat.fouls) +
+              (seat.fouls == 1 ? " foul, " : " fouls, ") + std::to_string(seat.racks_won) +
+              (seat.racks_won == 1 ? " rack won" : " racks won");
+    say.wrapped(detail);
+  }
+}
+
+void matchPanel(Say& say, const HudInput& in) {
+  anchor(ImVec2(0, 0), 0.32f, 0.45f, std::min(screenSize().x * 0.32f, px(340.0f)));
+  ImGui::Begin("Match", nullptr, kPane);
+  say.text(in.match + (in.spectating ? " (watching)" : ""));
   if (!in.view) {
-    ImGui::TextUnformatted("waiting for the match state...");
+    say.text("waiting for the match state...");
     ImGui::End();
     return;
   }
   const auto& v = *in.view;
-  ImGui::Text("%s, rack %u, shot %u", app::spoken(client::toString(v.phase)).c_str(), v.rack,
-              v.shot_number);
-  for (int s = 0; s < 2; ++s) seatLine(v, s, in.local_seats);
-  if (v.ball_in_hand != rules::BallInHand::None) {
-    ImGui::Text("ball in hand: %s", app::spoken(rules::toString(v.ball_in_hand)).c_str());
+  const app::SeatNames names = namesOf(in);
+  say.text(app::spoken(client::toString(v.phase)) + ", rack " + std::to_string(v.rack) + ", shot " +
+           std::to_string(v.shot_number));
+  seatLines(say, v, in, names);
+  if (client::inPlay(v.phase) && v.shooter >= 0) {
+    const std::string& who = names[static_cast<std::size_t>(v.shooter)];
+    std::string turn = who + " to shoot";
+    const std::string where = app::inHandWhere(v.ball_in_hand);
+    if (!where.empty()) turn += ", cue ball in hand " + where;
+    say.wrapped(turn);
   }
-  if (v.shot_clock >= 0) ImGui::Text("shot clock: %.0f s", v.shot_clock);
-  if (in.in_motion) ImGui::TextUnformatted("balls moving");
-  if (!in.last_verdict.empty()) {
-    ImGui::TextWrapped("last shot: %s", app::spokenText(in.last_verdict).c_str());
-  }
-  if (v.phase == client::MatchPhase::Over) {
-    ImGui::Text("winner: %s (%s)",
-                v.winner >= 0 ? v.seats[static_cast<std::size_t>(v.winner)].name.c_str() : "-",
-                app::spoken(rules::toString(v.end)).c_str());
-    const bool won =
-        std::find(in.local_seats.begin(), in.local_seats.end(), v.winner) != in.local_seats.end();
-    if (won && ImGui::Button("Visit the Magic Eight Ball room")) actions.visit_room = true;
-    if (!in.local_seats.empty() && ImGui::Button("Rematch")) actions.rematch = true;
-  }
-  if (ImGui::Button("Leave to the lobby")) actions.leave = true;
+  if (v.shot_clock >= 0) say.text("shot clock: " + fixed(v.shot_clock, 0) + " s");
+  if (in.in_motion) say.text("balls moving");
+  if (ImGui::SmallButton("Leave to the lobby")) say.out().leave = true;
+  say.out().texts.push_back("Leave to the lobby");
   ImGui::End();
 }
 
-void choicePanel(const HudInput& in, HudActions& actions) {
+void bannerPanel(Say& say, const HudInput& in) {
+  if (in.banner.empty() || in.in_motion) return;
+  anchor(ImVec2(0.5f, 0), 0.34f, 0.3f, std::min(screenSize().x * 0.34f, px(560.0f)));
+  ImGui::Begin("Last shot", nullptr, kPane | ImGuiWindowFlags_NoTitleBar);
+  const bool foul = in.banner.rfind("Foul", 0) == 0;
+  say.coloured(foul ? kBannerFoul : ImVec4(1, 1, 1, 1), in.banner);
+  ImGui::End();
+}
+
+void choicePanel(Say& say, const HudInput& in) {
   if (!in.view || in.local_shooter < 0 || in.view->options.empty()) return;
-  ImGui::Begin("Your choice", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  const app::SeatNames names = namesOf(in);
+  const std::string& other = names[static_cast<std::size_t>(1 - in.local_shooter)];
+  anchor(ImVec2(0.5f, 1), 0.4f, 0.4f);
+  ImGui::Begin("Your choice", nullptr, kPane);
+  say.wrapped(names[static_cast<std::size_t>(in.local_shooter)] +
+              ", the rules let you choose before you shoot:");
   const auto chosen = in.controls->aim().option;
   for (const rules::Choice c : in.view->options) {
     const protocol::ShotOption option = bot::optionOf(c);
-    const bool on = chosen == option;
-    if (ImGui::RadioButton(app::spoken(rules::toString(c)).c_str(), on)) actions.option = option;
+    if (say.radio(app::choiceSentence(c, other), chosen == option)) say.out().option = option;
   }
-  ImGui::TextUnformatted("play on / ball in hand: then shoot; a re-rack is sent at once");
+  say.wrapped(
+      "Playing on or taking the cue ball goes with your next shot; a new rack is sent at "
+      "once.");
   ImGui::End();
 }
 
-void shotPanel(const HudInput& in) {
+void callLine(Say& say, const app::Controls& c) {
+  const app::AimState& aim = c.aim();
+  if (c.pickedBall()) {
+    say.text("the " + std::to_string(*c.pickedBall()) + " picked: click the pocket to call");
+  }
+  if (aim.call.safety) {
+    say.text("call: a safety (K drops it)");
+  } else if (aim.call.ball) {
+    std::string line = "call: the " + std::to_string(*aim.call.ball) + " in the " +
+                       app::spoken(aim.call.pocket) +
+                       (aim.call.by_player ? "" : " (C: next pocket; or click a ball, a pocket)");
+    say.wrapped(line);
+    if (*aim.call.ball == rules::kEightBall) say.coloured(kProblem, "the 8: check the pocket");
+  } else {
+    say.text("call: none needed on the break");
+  }
+}
+
+void shotPanel(Say& say, const HudInput& in) {
   const app::Controls& c = *in.controls;
   const app::AimState& aim = c.aim();
-  const ImGuiViewport* screen = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(10, screen->WorkSize.y - 10), ImGuiCond_FirstUseEver,
-                          ImVec2(0, 1));
-  ImGui::Begin("Shot", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  anchor(ImVec2(0, 1), 0.32f, 0.5f, std::min(screenSize().x * 0.32f, px(340.0f)));
+  ImGui::Begin("Shot", nullptr, kPane);
+  const app::SeatNames names = namesOf(in);
   if (in.local_shooter >= 0) {
-    ImGui::Text("your turn (seat %d): aim and hold Space", in.local_shooter + 1);
+    say.text(names[static_cast<std::size_t>(in.local_shooter)] + ", your turn: aim and hold Space");
   } else {
-    ImGui::TextUnformatted("watching");
+    if (in.view && client::inPlay(in.view->phase) && in.view->shooter >= 0) {
+      say.text(names[static_cast<std::size_t>(in.view->shooter)] +
+               (in.in_motion ? " has shot" : " is at the table"));
+    } else if (in.view && in.view->phase == client::MatchPhase::Over) {
+      say.text("the game is over");
+    } else if (in.view && in.view->phase == client::MatchPhase::Lobby) {
+      say.text("waiting for an opponent to sit down");
+    } else {
+      say.text("watching");
+    }
+    // The shooter's aim is theirs: nothing is shown rather than numbers that are not theirs.
+    if (!localSeat(in, in.view ? in.view->shooter : -1)) {
+      say.text("F1: keys");
+      ImGui::End();
+      return;
+    }
   }
-  ImGui::Text("aim %.1f deg   elevation %.1f deg", degrees(aim.yaw), degrees(aim.elevation));
-  ImGui::Text("tip side %+.2f R   height %+.2f R", aim.tip_side, aim.tip_height);
-  ImGui::Text("cue speed %.2f m/s", app::cueSpeedOf(aim.power, c.limits()));
-  ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(220, 0),
+  say.text("aim " + fixed(degrees(aim.yaw), 2) + " deg   cue elevation " +
+           fixed(degrees(aim.elevation), 1) + " deg");
+  say.text("tip side " + fixed(aim.tip_side, 2, true) + " R   height " +
+           fixed(aim.tip_height, 2, true) + " R");
+  say.text("cue speed " + fixed(app::cueSpeedOf(aim.power, c.limits()), 2) + " m/s");
+  ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(px(220), 0),
                      c.charging() ? "charging" : "power");
   drawTipWidget(aim.tip_side, aim.tip_height, c.limits().miscue_limit);
-  if (aim.call.safety) {
-    ImGui::TextUnformatted("call: safety (K to drop it)");
-  } else if (aim.call.ball) {
-    ImGui::Text("call: %d in the %s%s (C: next pocket)", *aim.call.ball,
-                app::spoken(aim.call.pocket).c_str(),
-                *aim.call.ball == rules::kEightBall ? "  <- the 8: check the pocket" : "");
-  } else {
-    ImGui::TextUnformatted("call: none (break)");
-  }
+  callLine(say, c);
   if (aim.cue_ball_at) {
-    ImGui::Text("cue ball at (%.3f, %.3f): drag it", aim.cue_ball_at->x(), aim.cue_ball_at->y());
+    say.text("cue ball in hand: drag it");
     if (!in.placement_problem.empty()) {
-      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "placement: %s",
-                         app::spokenText(in.placement_problem).c_str());
+      say.coloured(kProblem, "it cannot go there: " + app::spokenText(in.placement_problem));
     }
   }
   const app::Toggles& t = c.toggles();
-  ImGui::Text("G aim line %s  V vectors %s  P/T/L %s%s%s", t.aim_line ? "on" : "off",
-              t.vectors ? "on" : "off", t.wireframe ? "W" : "-", t.textures ? "T" : "-",
-              t.lighting ? "L" : "-");
+  say.text(std::string("G aim line ") + (t.aim_line ? "on" : "off") + "   V arrows " +
+           (t.vectors ? "on" : "off") + "   F1 keys");
   ImGui::End();
 }
 
-void notesPanel(const HudInput& in) {
-  if (!in.notes || in.notes->empty()) return;
-  const ImGuiViewport* screen = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(screen->WorkSize.x - 10, 10), ImGuiCond_FirstUseEver,
-                          ImVec2(1, 0));
-  ImGui::Begin("Messages", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  for (const auto& n : *in.notes) {
-    if (n.problem) {
-      ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", app::spokenText(n.text).c_str());
-    } else {
-      ImGui::TextUnformatted(app::spokenText(n.text).c_str());
+void logPanel(Say& say, const HudInput& in) {
+  const bool log = in.log && !in.log->empty();
+  const bool notes = in.notes && !in.notes->empty();
+  if (!log && !notes) return;
+  const ImVec2 size = screenSize();
+  anchor(ImVec2(1, 0), 0.3f, 0.42f, std::min(size.x * 0.3f, px(460.0f)));
+  ImGui::Begin("Match log", nullptr, kPane);
+  if (log) {
+    const float height = std::min(size.y * 0.25f, px(220.0f));
+    ImGui::BeginChild("shots", ImVec2(0, height), true);
+    for (const auto& line : *in.log) say.wrapped(line);
+    if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY() - 1) ImGui::SetScrollHereY(1.0f);
+    ImGui::EndChild();
+  }
+  if (notes) {
+    for (const auto& n : *in.notes) {
+      if (n.problem) {
+        say.coloured(kProblem, app::spokenText(n.text));
+      } else {
+        say.wrapped(app::spokenText(n.text));
+      }
     }
   }
+  ImGui::End();
+}
+
+void gameOverPanel(Say& say, const HudInput& in) {
+  if (!in.view || in.view->phase != client::MatchPhase::Over) return;
+  const auto& v = *in.view;
+  const app::SeatNames names = namesOf(in);
+  anchor(ImVec2(0.5f, 0.5f), 0.5f, 0.6f, std::min(screenSize().x * 0.45f, px(520.0f)));
+  ImGui::Begin("Game over", nullptr, kPane);
+  if (v.winner == 0 || v.winner == 1) {
+    const std::string& winner = names[static_cast<std::size_t>(v.winner)];
+    say.wrapped(winner + (localSeat(in, v.winner) ? " (you) wins" : " wins") + ": " +
+                app::endReason(v.end) + ".");
+  } else {
+    say.wrapped("The game is over.");
+  }
+  say.text("Racks: " + names[0] + " " + std::to_string(v.seats[0].racks_won) + ", " + names[1] +
+           " " + std::to_string(v.seats[1].racks_won));
+  if (!in.local_seats.empty()) {
+    // A rematch needs both players; one who left cannot accept it.
+    int gone = -1;
+    for (int s = 0; s < 2; ++s) {
+      const auto& seat = v.seats[static_cast<std::size_t>(s)];
+      if (!localSeat(in, s) && (seat.name.empty() || !seat.connected)) gone = s;
+    }
+    if (gone >= 0) {
+      say.coloured(kProblem, names[static_cast<std::size_t>(gone)] +
+                                 " has left the table: a rematch needs both players. Start a "
+                                 "new game at a free table instead.");
+    } else if (say.button("Rematch (R)")) {
+      say.out().rematch = true;
+    }
+    if (say.button("New game (N)")) say.out().new_game = true;
+    const bool won = localSeat(in, v.winner);
+    if (won && say.button("Visit the Magic Eight Ball room")) say.out().visit_room = true;
+  }
+  if (say.button("Leave to the lobby")) say.out().leave = true;
+  ImGui::End();
+}
+
+void settingsLines(Say& say, const HudInput& in) {
+  ImGui::Separator();
+  say.text("Settings");
+  app::Settings s = in.settings;
+  bool changed = false;
+  auto check = [&](const std::string& label, bool& value) {
+    say.out().texts.push_back(label);
+    changed = ImGui::Checkbox(label.c_str(), &value) || changed;
+  };
+  check("Aim line and ghost ball (G)", s.aim_line);
+  check("Direction arrows (V)", s.vectors);
+  check("Full screen (F11)", s.full_screen);
+  float volume = static_cast<float>(s.volume);
+  say.out().texts.push_back("Volume (from the next start)");
+  if (ImGui::SliderFloat("Volume (from the next start)", &volume, 0.0f, 1.0f, "%.2f")) {
+    s.volume = volume;
+    changed = true;
+  }
+  if (!in.settings_note.empty()) say.wrapped(in.settings_note);
+  if (changed) say.out().settings = s;
+}
+
+void helpPanel(Say& say, const HudInput& in) {
+  anchor(ImVec2(0.5f, 0.5f), 0.9f, 0.9f, std::min(screenSize().x * 0.9f, px(760.0f)));
+  ImGui::Begin("Keys (F1 closes)", nullptr, kPane);
+  if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    for (const auto& k : app::keyHelp()) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      say.text(std::string(k.when));
+      ImGui::TableSetColumnIndex(1);
+      say.text(std::string(k.keys));
+      ImGui::TableSetColumnIndex(2);
+      say.wrapped(std::string(k.does));
+    }
+    ImGui::EndTable();
+  }
+  settingsLines(say, in);
   ImGui::End();
 }
 
 }  // namespace
 
 void drawTipWidget(double tip_side, double tip_height, double miscue_limit) {
-  const float size = 90.0f, radius = size * 0.45f;
+  const float size = 90.0f * ImGui::GetIO().FontGlobalScale, radius = size * 0.45f;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 centre(origin.x + size / 2, origin.y + size / 2);
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -153,10 +364,14 @@ void drawTipWidget(double tip_side, double tip_height, double miscue_limit) {
 
 HudActions drawHud(const HudInput& input) {
   HudActions actions;
-  matchPanel(input, actions);
-  choicePanel(input, actions);
-  if (input.controls) shotPanel(input);
-  notesPanel(input);
+  Say say(actions);
+  matchPanel(say, input);
+  bannerPanel(say, input);
+  choicePanel(say, input);
+  if (input.controls) shotPanel(say, input);
+  logPanel(say, input);
+  gameOverPanel(say, input);
+  if (input.help) helpPanel(say, input);
   return actions;
 }
 

@@ -1,5 +1,7 @@
-// The heads-up display (Dear ImGui): players, turn, groups, balls left, fouls, ball in hand, the
-// shot's parameters with the power bar and the tip-offset ball, the call, the last verdict.
+// The heads-up display (Dear ImGui): players by name, turn, groups, balls left, fouls, ball in
+// hand, the shot's parameters with the power bar and the tip-offset ball, the call; a banner with
+// the last shot's story, the match log, the rules' choices in sentences, the game-over screen and
+// the help overlay. Panes are anchored to the window's corners and sized to it.
 #pragma once
 
 #include <deque>
@@ -9,6 +11,8 @@
 
 #include "client/app/controls.h"
 #include "client/app/match_session.h"
+#include "client/app/settings.h"
+#include "client/app/shot_story.h"
 #include "client/net/match_types.h"
 #include "protocol/shot_request.h"
 
@@ -26,6 +30,13 @@ struct HudInput {
   std::string placement_problem;  ///< why the cue ball cannot go where it is; empty: fine
   std::string last_verdict;
   const std::deque<app::SessionNote>* notes = nullptr;
+  std::string banner;                            ///< the last shot's story (app::shotStory)
+  const std::deque<std::string>* log = nullptr;  ///< every shot's story, oldest first
+  bool help = false;                             ///< the help overlay (F1)
+  /// The players' names (remembered after a player leaves); empty: read from `view`.
+  std::optional<app::SeatNames> names;
+  app::Settings settings;     ///< as they are now (shown with the help)
+  std::string settings_note;  ///< where they are kept, or why they are not
 };
 
 /// What the player clicked.
@@ -33,7 +44,10 @@ struct HudActions {
   std::optional<protocol::ShotOption> option;  ///< an answer to the rules' pending choice
   bool rematch = false;
   bool leave = false;
-  bool visit_room = false;  ///< the winner goes to the Magic Eight Ball room
+  bool visit_room = false;                ///< the winner goes to the Magic Eight Ball room
+  bool new_game = false;                  ///< leave this table for a free one
+  std::optional<app::Settings> settings;  ///< the player changed a setting
+  std::vector<std::string> texts;         ///< every text the HUD drew this frame (tests read them)
 };
 
 /// Draws the HUD windows for this frame (between ImGui::NewFrame and ImGui::Render).

@@ -9,9 +9,11 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -22,8 +24,12 @@
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
 #include "client/app/placement_search.h"
+#include "client/app/settings.h"
+#include "client/app/shot_story.h"
+#include "client/app/turn_view.h"
 #include "client/bot/ai/table_view.h"
 #include "client/bot/shot_command.h"
+#include "client/render/camera.h"
 #include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
@@ -59,10 +65,32 @@ app::PlacementArea areaOf(const bot::TableView& view) {
   return {view.halfLength(), view.halfWidth(), view.headStringX(), view.radius()};
 }
 
+/// The settings file's path and what it holds (the defaults, and why, when it cannot be used).
+struct LoadedSettings {
+  std::filesystem::path path;
+  app::Settings settings;
+  std::string problem;
+};
+
+LoadedSettings loadSettingsFor(const WindowOptions& options) {
+  LoadedSettings out;
+  if (!options.keep_identity) return out;  // --fresh-identity keeps nothing between runs
+  out.path = app::defaultSettingsPath();
+  if (out.path.empty()) return out;
+  auto loaded = app::loadSettings(out.path);
+  if (loaded) {
+    out.settings = *loaded;
+  } else {
+    out.problem = "settings not used (the file is left as it is): " + loaded.error();
+  }
+  return out;
+}
+
 class WindowApp {
  public:
   WindowApp(const WindowOptions& options, bot::TableView view, render::Scene scene)
       : options_(options),
+        settings_(loadSettingsFor(options)),
         view_(std::move(view)),
         window_(options.width, options.height),
         renderer_(scene),
@@ -71,13 +99,16 @@ class WindowApp {
                                  static_cast<double>(options.width) / options.height)),
         session_({options.domain, options.name, options.hotseat,
                   options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
-        sound_(options.mute) {
+        sound_(options.mute, settings_.settings.volume) {
     session_.setListener(&sound_);
     // Under a software renderer the light preset keeps the frame budget (--quality overrides).
     const GLubyte* gl_renderer = glGetString(GL_RENDERER);
     quality_ = render::resolveQuality(
         render::parseQualitySetting(options.quality).value_or(render::QualitySetting::Auto),
         gl_renderer ? reinterpret_cast<const char*>(gl_renderer) : "");
+    controls_.setAimAids(settings_.settings.aim_line, settings_.settings.vectors);
+    window_.setFullScreen(settings_.settings.full_screen);
+    if (!settings_.problem.empty()) addNote({settings_.problem, true});
     installInput(window_.get(), controls_);
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
@@ -115,7 +146,7 @@ class WindowApp {
   }
 
   void applyScript() {
-    if (script_ && playScriptFrame(*script_, controls_, session_)) quit_ = true;
+    if (script_ && playScriptFrame(*script_, controls_, session_, script_mouse_)) quit_ = true;
   }
 
   // ---- Turns and shots ------------------------------------------------------------------------
@@ -149,11 +180,22 @@ class WindowApp {
         break;
       }
     }
+    // The turn opens behind the cue ball, facing the nearest ball the shooter may hit first.
+    if (const auto yaw =
+            app::turnStartYaw(controls_.cueBall().head<2>(), v->balls, client::gameStateOf(*v))) {
+      controls_.setYaw(*yaw);
+    }
   }
 
   void send(protocol::ShotRequest request) {
     const int seat = aiming_seat_;
     aiming_seat_ = -1;
+    // A cue ball put in hand is drawn there until the shot's own frames show it moving.
+    const client::MatchView* v = session_.view();
+    if (request.cue_ball_at && v && protocol::optionShoots(request.option)) {
+      placed_ = Placed{{request.cue_ball_at->x(), request.cue_ball_at->y(), view_.radius()},
+                       v->shot_number + 1};
+    }
     auto sent = session_.shoot(seat, request);
     if (!sent) {
       addNote({"shot not sent: " + sent.error(), true});
@@ -224,13 +266,27 @@ class WindowApp {
     }
   }
 
+  /// Where the cue ball is held in hand (aiming), or put for the shot sent (until its frames).
+  std::optional<Eigen::Vector3d> cueBallHeld() {
+    if (placed_) {
+      const auto playing = session_.motionShot();
+      const client::MatchView* v = session_.view();
+      if ((playing && *playing >= placed_->shot) || !v || v->shot_number >= placed_->shot) {
+        placed_.reset();
+      }
+    }
+    if (auto held = heldCueBall(controls_)) return held;
+    if (placed_) return placed_->at;
+    return std::nullopt;
+  }
+
   void drawScene(double now) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
     if (width <= 0 || height <= 0) return;
     controls_.setViewport(width, height);
     const auto balls = session_.balls(now);
-    const auto shown = withCueBallInHand(balls.value_or(std::vector<physics::Ball>{}), controls_);
+    const auto shown = withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
     if (balls) renderer_.setBalls(sceneBalls(shown));
     auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
     placement_problem_ = std::move(overlay.placement_problem);
@@ -249,10 +305,52 @@ class WindowApp {
       room_scene_->draw(render::EightBallRoom::defaultCamera(), width, height, room_.answer);
       return;
     }
-    renderer_.draw(cameraOf(controls_.camera().view()), width, height);
+    const render::Camera camera = cameraOf(controls_.camera().view());
+    renderer_.draw(camera, width, height);
+    drawn(camera, shown, width, height, now);
+  }
+
+  /// Where the cue ball was drawn (for scripted drags), and the --log-frames line.
+  void drawn(const render::Camera& camera, const std::vector<physics::Ball>& shown, int width,
+             int height, double now) {
+    DrawnFrame f;
+    for (const auto& b : shown) {
+      if (b.id != physics::kCueBall || !physics::onTable(b.state)) continue;
+      f.cue = b.pos;
+      const glm::vec3 p = render::projectToPixels(
+          camera, width, height,
+          glm::vec3(static_cast<float>(b.pos.x()), static_cast<float>(b.pos.y()),
+                    static_cast<float>(b.pos.z())));
+      f.cue_px = Eigen::Vector2d(p.x, p.y);
+    }
+    script_mouse_.cue_ball = f.cue_px;
+    if (!options_.json || !options_.log_frames) return;
+    f.now = now;
+    f.shot = session_.motionShot();
+    f.moving = session_.inMotion();
+    f.play_time = session_.playTime();
+    f.aiming = controls_.mode() == app::ControlMode::Aiming;
+    f.dragging = controls_.draggingCueBall();
+    f.mouse = script_mouse_.at;
+    const glm::mat4 view = render::viewMatrix(camera);
+    const glm::mat4 projection =
+        render::projectionMatrix(camera, static_cast<float>(width) / static_cast<float>(height));
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        f.view[static_cast<std::size_t>(4 * c + r)] = view[c][r];
+        f.projection[static_cast<std::size_t>(4 * c + r)] = projection[c][r];
+      }
+    }
+    f.width = width;
+    f.height = height;
+    printDrawnLine(f);
   }
 
   void drawInterface() {
+    // Text grows with tall windows (1 up to 800 px high, 2 from 1600), so panes stay readable.
+    int fb_width = 0, fb_height = 0;
+    glfwGetFramebufferSize(window_.get(), &fb_width, &fb_height);
+    ImGui::GetIO().FontGlobalScale = std::clamp(static_cast<float>(fb_height) / 800.0f, 1.0f, 2.0f);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -285,16 +383,102 @@ class WindowApp {
     in.placement_problem = placement_problem_;
     in.last_verdict = session_.lastVerdict();
     in.notes = &notes_;
+    in.banner = session_.banner();
+    in.log = &session_.shotLog();
+    in.help = controls_.toggles().help;
+    in.names = session_.names();
+    in.settings = currentSettings();
+    in.settings_note = !settings_.problem.empty() ? settings_.problem
+                       : settings_.path.empty()   ? "settings are not kept (no config folder)"
+                                                  : "kept in " + settings_.path.string();
     return in;
   }
 
   void hudActions(const HudActions& actions) {
+    if (options_.json && actions.texts != hud_texts_) printHudLine(actions.texts);
+    hud_texts_ = actions.texts;
     if (actions.option) chooseOption(*actions.option);
-    if (actions.rematch) session_.rematch();
+    if (actions.rematch) rematch();
     if (actions.visit_room) in_room_ = true;
+    if (actions.new_game) newGame();
+    if (actions.settings) {
+      controls_.setAimAids(actions.settings->aim_line, actions.settings->vectors);
+      window_.setFullScreen(actions.settings->full_screen);
+      settings_.settings.volume = actions.settings->volume;
+    }
+    keepSettings();
     if (actions.leave) {
       controls_.stopAiming();
       session_.leave();
+    }
+  }
+
+  /// Leaves a finished match for a free table (the server keeps one open).
+  void newGame() {
+    controls_.stopAiming();
+    aiming_seat_ = -1;
+    placed_.reset();
+    in_room_ = false;
+    session_.leave();
+    session_.play();
+    addNote({"looking for a free table for a new game", false});
+  }
+
+  /// A rematch, unless the opponent has left the table (then the player is told so).
+  void rematch() {
+    const client::MatchView* v = session_.view();
+    if (!v) return;
+    const auto local = session_.localSeats();
+    for (int s = 0; s < 2; ++s) {
+      const auto& seat = v->seats[static_cast<std::size_t>(s)];
+      const bool ours = std::find(local.begin(), local.end(), s) != local.end();
+      if (!ours && (seat.name.empty() || !seat.connected)) {
+        addNote({session_.names()[static_cast<std::size_t>(s)] +
+                     " has left the table: no rematch. N starts a new game at a free table.",
+                 true});
+        return;
+      }
+    }
+    session_.rematch();
+    addNote({"rematch asked", false});
+  }
+
+  /// The settings as they are now: the toggles, the window, the volume chosen.
+  app::Settings currentSettings() const {
+    app::Settings s = settings_.settings;
+    s.aim_line = controls_.toggles().aim_line;
+    s.vectors = controls_.toggles().vectors;
+    s.full_screen = window_.fullScreen();
+    return s;
+  }
+
+  /// Writes the settings when they changed (never over a file that could not be read).
+  void keepSettings() {
+    const app::Settings now = currentSettings();
+    if (now == settings_.settings || settings_.path.empty() || !settings_.problem.empty()) {
+      settings_.settings = now;
+      return;
+    }
+    settings_.settings = now;
+    if (auto saved = app::saveSettings(settings_.path, now); !saved) {
+      settings_.problem = "settings not kept: " + saved.error();
+      addNote({settings_.problem, true});
+    }
+  }
+
+  /// R, N and F11.
+  void requests() {
+    const client::MatchView* v = session_.view();
+    const bool over =
+        v && v->phase == client::MatchPhase::Over && session_.stage() == app::SessionStage::Playing;
+    for (const app::Key key : controls_.takeRequests()) {
+      if (key == app::Key::F11) window_.setFullScreen(!window_.fullScreen());
+      if (!over) continue;
+      if (key == app::Key::N) {
+        newGame();
+        return;
+      }
+      if (key == app::Key::R) rematch();
     }
   }
 
@@ -304,6 +488,7 @@ class WindowApp {
     for (auto& note : session_.takeNotes()) addNote(std::move(note));
     followTurn();
     applyScript();
+    requests();
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) {
       startStroke(*shot, now);
@@ -315,6 +500,7 @@ class WindowApp {
   }
 
   WindowOptions options_;
+  LoadedSettings settings_;
   bot::TableView view_;
   GlfwWindow window_;
   render::Renderer renderer_;
@@ -325,12 +511,20 @@ class WindowApp {
     double start = 0.0;
   };
   std::optional<Stroke> stroke_;
+  /// A cue ball put in hand for a shot sent: where, and the shot number that will count it.
+  struct Placed {
+    Eigen::Vector3d at;
+    std::uint32_t shot = 0;
+  };
+  std::optional<Placed> placed_;
   app::Controls controls_;
   app::MatchSession session_;
   SoundListener sound_;
   std::optional<app::ScriptPlayer> script_;
+  ScriptMouse script_mouse_;
   int aiming_seat_ = -1;
   std::deque<app::SessionNote> notes_;
+  std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)
   std::string placement_problem_;
   bool in_room_ = false;
   EightBallRoomState room_;

@@ -22,6 +22,9 @@ struct WindowOptions {
   std::string match;     ///< with `play`: this match
   std::string script;    ///< input script file (see client/app/input_script.h)
   bool json = false;     ///< print shots sent and messages as JSON lines on stdout
+  /// With `json`: a line for every frame drawn (the camera, the cue ball as drawn and in pixels,
+  /// the mouse, the playback): tests check the picture against the server's frames.
+  bool log_frames = false;
   double timeout = 0.0;  ///< s; exit with code 3 after this long; 0: never
   std::string capture;   ///< write the last frame drawn to this PNG when the window closes
   std::string table = "wpa-9ft";

@@ -53,4 +53,20 @@ void GlfwWindow::startImGui() {
   imgui_ = true;
 }
 
+void GlfwWindow::setFullScreen(bool full) {
+  if (full == full_screen_) return;
+  if (full) {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return;
+    glfwGetWindowPos(window_, &windowed_[0], &windowed_[1]);
+    glfwGetWindowSize(window_, &windowed_[2], &windowed_[3]);
+    glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+  } else {
+    glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3],
+                         0);
+  }
+  full_screen_ = full;
+}
+
 }  // namespace pool::ui

@@ -18,9 +18,14 @@ class GlfwWindow {
   void startImGui();
   /// The GLFW window.
   GLFWwindow* get() const { return window_; }
+  /// Full screen on the primary monitor at its mode, or back to the window it was.
+  void setFullScreen(bool full);
+  bool fullScreen() const { return full_screen_; }
 
  private:
   GLFWwindow* window_ = nullptr;
+  bool full_screen_ = false;
+  int windowed_[4] = {0, 0, 0, 0};  ///< x, y, width, height before going full screen
   bool imgui_ = false;
 };
 

@@ -26,14 +26,14 @@ void onKey(GLFWwindow* win, int key, int, int action, int mods) {
   if (action == GLFW_RELEASE) controlsOf(win).keyUp(*k);
 }
 
-void onMouseButton(GLFWwindow* win, int button, int action, int) {
+void onMouseButton(GLFWwindow* win, int button, int action, int mods) {
   if (imGuiWants(false)) return;
   if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
   double x = 0, y = 0;
   glfwGetCursorPos(win, &x, &y);
   controlsOf(win).mouseButton(
       button == GLFW_MOUSE_BUTTON_LEFT ? app::MouseButton::Left : app::MouseButton::Right,
-      action == GLFW_PRESS, x, y);
+      action == GLFW_PRESS, x, y, modsOf(mods));
 }
 
 void onCursor(GLFWwindow* win, double x, double y) {

@@ -37,6 +37,28 @@ void printNoteLine(const app::SessionNote& note) {
   printLine({{"event", "note"}, {"text", note.text}, {"problem", note.problem}});
 }
 
+void printHudLine(const std::vector<std::string>& texts) {
+  printLine({{"event", "hud"}, {"texts", texts}});
+}
+
+void printDrawnLine(const DrawnFrame& f) {
+  nlohmann::json line{{"event", "drawn"},
+                      {"now", f.now},
+                      {"moving", f.moving},
+                      {"play_time", f.play_time},
+                      {"aiming", f.aiming},
+                      {"dragging", f.dragging},
+                      {"mouse", {f.mouse.x(), f.mouse.y()}},
+                      {"view", f.view},
+                      {"projection", f.projection},
+                      {"width", f.width},
+                      {"height", f.height}};
+  line["shot"] = f.shot ? nlohmann::json(*f.shot) : nlohmann::json();
+  if (f.cue) line["cue"] = {f.cue->x(), f.cue->y(), f.cue->z()};
+  if (f.cue_px) line["cue_px"] = {f.cue_px->x(), f.cue_px->y()};
+  printLine(line);
+}
+
 void ProgressLog::report(const app::MatchSession& session) {
   const client::MatchView* v = session.view();
   if (v && (!last_revision_ || *last_revision_ != v->revision)) {

@@ -1,9 +1,12 @@
 // The window's JSON lines on stdout (with --json): shots sent, notes, states and motions.
 #pragma once
 
+#include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "client/app/match_session.h"
 
@@ -15,6 +18,29 @@ void printShotLine(const std::string& match, int seat, std::uint32_t seq,
 
 /// Prints {"event": "note", "text", "problem"}.
 void printNoteLine(const app::SessionNote& note);
+
+/// Prints {"event": "hud", "texts": [...]}: every text the HUD drew in a frame.
+void printHudLine(const std::vector<std::string>& texts);
+
+/// One frame as drawn (--log-frames).
+struct DrawnFrame {
+  double now = 0.0;                   ///< s on the window's clock
+  std::optional<std::uint32_t> shot;  ///< the shot whose frames were played last
+  bool moving = false;                ///< a shot's motion is being drawn
+  double play_time = 0.0;             ///< s since that shot's strike, as played back
+  bool aiming = false;
+  bool dragging = false;                  ///< the cue ball in hand under the mouse
+  std::optional<Eigen::Vector3d> cue;     ///< the cue ball as drawn, table frame (m)
+  std::optional<Eigen::Vector2d> cue_px;  ///< and in pixels from the top-left corner
+  Eigen::Vector2d mouse = Eigen::Vector2d::Zero();
+  std::array<float, 16> view{};        ///< column after column
+  std::array<float, 16> projection{};  ///< column after column
+  int width = 0;
+  int height = 0;
+};
+
+/// Prints {"event": "drawn", ...}.
+void printDrawnLine(const DrawnFrame& frame);
 
 /// Prints a line for each new state of the match followed and each shot whose motion starts.
 class ProgressLog {

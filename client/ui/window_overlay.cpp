@@ -17,6 +17,15 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   const auto prediction =
       app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
   controls.suggestCall(app::autoCall(prediction, client::gameStateOf(match), balls, view));
+  controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()});
+  app::ClickTargets targets;
+  for (const auto& b : balls) {
+    if (b.id != physics::kCueBall && physics::onTable(b.state)) {
+      targets.balls.emplace_back(b.id, b.pos.head<2>());
+    }
+  }
+  for (const auto& p : view.pockets) targets.pockets.emplace_back(p.name, p.mouth);
+  controls.setClickTargets(std::move(targets));
   if (t.aim_line) append(out.lines, app::aimOverlay(prediction, view.radius()));
   out.aim = prediction;
   if (t.vectors) {
@@ -31,15 +40,24 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
 
 }  // namespace
 
-std::vector<physics::Ball> withCueBallInHand(std::vector<physics::Ball> balls,
-                                             const app::Controls& controls) {
-  if (!controls.aim().cue_ball_at) return balls;
+std::vector<physics::Ball> withCueBallAt(std::vector<physics::Ball> balls,
+                                         const std::optional<Eigen::Vector3d>& placed) {
+  if (!placed) return balls;
   for (auto& b : balls) {
     if (b.id != physics::kCueBall) continue;
-    b.pos = controls.cueBall();
+    b.pos = *placed;
+    b.vel.setZero();
+    b.ang_vel.setZero();
     b.state = physics::MotionState::Stationary;
   }
   return balls;
+}
+
+std::optional<Eigen::Vector3d> heldCueBall(const app::Controls& controls) {
+  if (controls.mode() != app::ControlMode::Aiming || !controls.aim().cue_ball_at) {
+    return std::nullopt;
+  }
+  return controls.cueBall();
 }
 
 WindowOverlay windowOverlay(app::Controls& controls, const client::MatchView* match,

@@ -19,9 +19,14 @@ struct WindowOverlay {
   std::optional<app::AimPrediction> aim;  ///< while aiming: the predicted first contact
 };
 
-/// `balls` with the cue ball where the player holds it, at rest, while it is in hand.
-std::vector<physics::Ball> withCueBallInHand(std::vector<physics::Ball> balls,
-                                             const app::Controls& controls);
+/// `balls` with the cue ball at rest at `placed` (m), when set: where the player holds it in hand
+/// while aiming, or where it was put for the shot sent until that shot's frames arrive.
+std::vector<physics::Ball> withCueBallAt(std::vector<physics::Ball> balls,
+                                         const std::optional<Eigen::Vector3d>& placed);
+
+/// Where the cue ball in hand is held while aiming; empty when not aiming or not in hand (a shot
+/// in motion draws the server's cue ball, never the placement).
+std::optional<Eigen::Vector3d> heldCueBall(const app::Controls& controls);
 
 /// The overlay over `balls` by the toggles of `controls`. While aiming at `match` (the state
 /// followed, or null) it also suggests the controls a call for the predicted shot.

@@ -1,15 +1,24 @@
 // The window's input script: each frame's scripted key presses into the controls.
 #pragma once
 
+#include <Eigen/Core>
+#include <optional>
+
 #include "client/app/controls.h"
 #include "client/app/input_script.h"
 #include "client/app/match_session.h"
 
 namespace pool::ui {
 
+/// The scripted mouse: where it is, and where the cue ball was drawn in the last frame (pixels).
+struct ScriptMouse {
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  std::optional<Eigen::Vector2d> cue_ball;
+};
+
 /// Plays this frame's steps of `script` on `controls`, given whether they can aim and the
 /// session's shot number. True when the script says to quit.
 bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
-                     const app::MatchSession& session);
+                     const app::MatchSession& session, ScriptMouse& mouse);
 
 }  // namespace pool::ui

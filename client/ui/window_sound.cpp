@@ -4,15 +4,16 @@
 namespace pool::ui {
 namespace {
 
-audio::SoundOptions soundOptions(bool mute) {
+audio::SoundOptions soundOptions(bool mute, double volume) {
   audio::SoundOptions o;
   o.mute = mute;
+  o.mixer.master = static_cast<float>(volume);
   return o;
 }
 
 }  // namespace
 
-SoundListener::SoundListener(bool mute) : board_(soundOptions(mute)) {}
+SoundListener::SoundListener(bool mute, double volume) : board_(soundOptions(mute, volume)) {}
 
 void SoundListener::onFrame(const client::TableFrame& frame) {
   board_.onFrame(frame.shot_number, frame.sim_time, frame.balls);

@@ -9,7 +9,8 @@ namespace pool::ui {
 /// Hears the match followed and plays it on a SoundBoard (silent when `mute`).
 class SoundListener final : public app::ShotListener {
  public:
-  explicit SoundListener(bool mute);
+  /// `volume`: the master gain, 0–1.
+  SoundListener(bool mute, double volume);
   void onFrame(const client::TableFrame& frame) override;
   void onShot(const client::ShotReport& report) override;
   /// Plays what is due at `playback_time` (s since the strike of the shot being drawn).

@@ -59,6 +59,13 @@ inline void hold(Controls& controls, Key key, double seconds, Mods mods = {}) {
   controls.keyUp(key);
 }
 
+/// The cue's turn from one press of an aiming arrow held `seconds`: the press's step, then the
+/// held rate past the repeat delay (ControlRates' documented rule).
+inline double heldTurn(double seconds, bool fine = false, const ControlRates& r = {}) {
+  return (fine ? r.fine_yaw_step : r.yaw_step) +
+         (fine ? r.fine_yaw : r.yaw) * std::max(0.0, seconds - r.repeat_delay);
+}
+
 /// Charges for `seconds` and releases: the shot sent.
 inline std::optional<protocol::ShotRequest> shoot(Controls& controls, double seconds) {
   hold(controls, Key::Space, seconds);

@@ -45,6 +45,7 @@ TEST(CameraRigTest, ARayAboveTheHorizonMissesTheTable) {
   CameraRig rig(2.54, 1.27, 1.0);
   rig.setAiming(true);
   rig.followCue(Eigen::Vector3d(0, 0, kRadius), 0.0);
+  rig.settle();
   EXPECT_FALSE(pointUnderPixel(rig.view(), 800, 800, 400, 0, kRadius));
 }
 

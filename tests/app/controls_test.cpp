@@ -24,17 +24,17 @@ class ControlsTest : public ::testing::Test {
 
 TEST_F(ControlsTest, ArrowsTurnTheCueAtTheirRateRightClockwise) {
   hold(controls, Key::Right, 0.5);
-  EXPECT_NEAR(controls.aim().yaw, -0.5 * kRates.yaw, 1e-9);
+  EXPECT_NEAR(controls.aim().yaw, -heldTurn(0.5), 1e-9);
   hold(controls, Key::Left, 1.5);
   const auto shot = shoot(controls, 0.2);
   ASSERT_TRUE(shot);
-  EXPECT_NEAR(shot->cue.yaw, 1.0 * kRates.yaw, 1e-9);
+  EXPECT_NEAR(shot->cue.yaw, heldTurn(1.5) - heldTurn(0.5), 1e-9);
   EXPECT_TRUE(wireCheck(*shot).ok());
 }
 
 TEST_F(ControlsTest, YawWrapsIntoTheWireRange) {
   hold(controls, Key::Left, 20.0);  // 10 rad: past pi more than once
-  const double expected = std::remainder(20.0 * kRates.yaw, 2 * std::numbers::pi);
+  const double expected = std::remainder(heldTurn(20.0), 2 * std::numbers::pi);
   const auto shot = shoot(controls, 0.1);
   ASSERT_TRUE(shot);
   EXPECT_NEAR(shot->cue.yaw, expected, 1e-9);
@@ -218,6 +218,28 @@ TEST_F(BallInHandTest, DraggingTheCueBallPlacesItUnderTheMouse) {
   // A pixel is about a millimetre at this distance.
   EXPECT_LT((*shot->cue_ball_at - target).norm(), 0.003);
   EXPECT_TRUE(wireCheck(*shot).ok());
+}
+
+TEST_F(BallInHandTest, TheBallStaysUnderTheCursorAndTheViewStillWhileDragging) {
+  controls.startTurn(Eigen::Vector3d(0.2, 0.0, kRadius), rules::BallInHand::Anywhere);
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);  // the turn's glide is over
+  const ViewPoint before = controls.camera().view();
+  const Eigen::Vector2d a = pixelOf(Eigen::Vector2d(0.2, 0.0));
+  controls.mouseButton(MouseButton::Left, true, a.x(), a.y());
+  ASSERT_TRUE(controls.draggingCueBall());
+  for (int i = 1; i <= 40; ++i) {
+    const Eigen::Vector2d cursor = a + Eigen::Vector2d(6.0 * i, -2.5 * i);
+    controls.mouseMove(cursor.x(), cursor.y());
+    controls.advance(1.0 / 60);  // frames pass while dragging
+    const ViewPoint now = controls.camera().view();
+    EXPECT_LT((now.eye - before.eye).norm(), 1e-12) << i;
+    EXPECT_LT((now.target - before.target).norm(), 1e-12) << i;
+    EXPECT_LT((pixelOf(controls.cueBall().head<2>()) - cursor).norm(), 0.05) << i;
+  }
+  controls.mouseButton(MouseButton::Left, false, a.x() + 240, a.y() - 100);
+  EXPECT_FALSE(controls.draggingCueBall());
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);
+  EXPECT_LT((controls.camera().view().target - controls.cueBall()).norm(), 1e-12);
 }
 
 TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 namespace pool::app::test {
 namespace {
 
@@ -33,11 +35,19 @@ TEST(InputScriptTest, ParsesEveryStep) {
 }
 
 TEST(InputScriptTest, ABadLineNamesItsNumber) {
-  EXPECT_EQ(parseScript("frames 2\ndown F1\n").error(), "line 2: unknown key 'F1'");
-  EXPECT_EQ(parseScript("down A alt\n").error(), "line 1: unknown modifier 'alt'");
+  EXPECT_EQ(parseScript("frames 2\ndown F13\n").error(), "line 2: unknown key 'F13'");
+  EXPECT_EQ(parseScript("down A meta\n").error(), "line 1: unknown modifier 'meta'");
+  EXPECT_EQ(parseScript("mouse press 10\n").error(), "line 1: mouse press needs X Y in pixels");
+  EXPECT_EQ(parseScript("mouse move nan 3\n").error(), "line 1: mouse move needs X Y in pixels");
+  EXPECT_EQ(parseScript("mouse click 1 2\n").error(),
+            "line 1: mouse needs 'press', 'move', 'release' or 'by'");
+  EXPECT_EQ(parseScript("mouse press cue\nmouse by -2.5 3\nmouse press 4 5\n")->size(), 3u);
+  EXPECT_EQ((*parseScript("mouse press cue\n"))[0].kind, ScriptStep::Kind::MouseOnCue);
+  EXPECT_EQ((*parseScript("mouse by -2.5 3\n"))[0].x, -2.5);
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
-  EXPECT_EQ(parseScript("wait forever\n").error(), "line 1: wait needs 'aiming' or 'shot N'");
+  EXPECT_EQ(parseScript("wait forever\n").error(),
+            "line 1: wait needs 'aiming', 'shot N', 'over' or 'table'");
   EXPECT_FALSE(loadScript("/nonexistent/script.txt"));
 }
 
@@ -78,6 +88,26 @@ TEST(InputScriptTest, AWaitAfterAStepIsJudgedOnTheNextFrame) {
   auto pressed = player.frame({true, 0});
   ASSERT_EQ(pressed.size(), 1u);
   EXPECT_EQ(pressed[0].key, Key::Up);
+}
+
+}  // namespace
+}  // namespace pool::app::test
+
+namespace pool::app::test {
+namespace {
+
+TEST(KeyNamesTest, EveryKeyHasOneNameAndNoNameIsEmpty) {
+  std::set<Key> seen;
+  for (const char* name :
+       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z",  "S", "X", "G",   "V",     "C",
+        "K",    "P",     "T",  "L",    "B",     "O", "F1", "R", "N", "F11", "ESCAPE"}) {
+    const auto key = keyFromName(name);
+    ASSERT_TRUE(key) << name;
+    EXPECT_TRUE(seen.insert(*key).second) << name;
+  }
+  EXPECT_EQ(seen.size(), static_cast<std::size_t>(Key::Escape) + 1);
+  EXPECT_FALSE(keyFromName(""));
+  EXPECT_EQ(keyFromName("f1"), Key::F1);
 }
 
 }  // namespace

@@ -26,6 +26,8 @@ enum Domain : std::uint32_t {
   kWindowShot = 210,
   kWindowSpectate = 211,
   kWindowRestart = 212,
+  kWindowNewGame = 213,
+  kWindowBallInHand = 214,
   kRestarts = 122,
   kStarved = 136,  ///< 135–149: the signing, flood and presence tests
   kSpectateScreenshot = 204,

@@ -2,6 +2,8 @@
 // matches on a domain, plus every shot command the players send, in arrival order.
 #pragma once
 
+#include <algorithm>
+
 #include <chrono>
 #include <functional>
 #include <map>
@@ -72,6 +74,16 @@ class MatchRecorder {
     }
     return out;
   }
+  /// The frames of shot `shot` of `match` received, by simulated time.
+  std::vector<TableFrame> frames(const std::string& match, std::uint32_t shot) const {
+    std::vector<TableFrame> out;
+    for (const auto& f : frames_) {
+      if (f.match == match && f.shot_number == shot) out.push_back(f);
+    }
+    std::sort(out.begin(), out.end(),
+              [](const TableFrame& a, const TableFrame& b) { return a.sim_time < b.sim_time; });
+    return out;
+  }
   /// Every ShotResult seen, in arrival order.
   const std::vector<ShotReport>& reports() const { return reports_; }
   /// Every rejection seen.
@@ -111,6 +123,7 @@ class MatchRecorder {
   void drain() {
     for (auto& event : client_.poll()) {
       if (auto* report = std::get_if<ShotReport>(&event)) reports_.push_back(std::move(*report));
+      if (auto* frame = std::get_if<TableFrame>(&event)) frames_.push_back(std::move(*frame));
     }
     for (auto& sample : all_states_.take()) {
       if (auto view = net::fromWire(*sample)) states_.push_back(std::move(*view));
@@ -128,6 +141,7 @@ class MatchRecorder {
   net::Topic<pool_MatchState> state_topic_;
   net::Reader<pool_MatchState> all_states_;
   std::vector<MatchView> states_;
+  std::vector<TableFrame> frames_;
   std::vector<ShotReport> reports_;
   std::map<CommandKey, protocol::ShotRequest> commands_seen_;
 };

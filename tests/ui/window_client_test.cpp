@@ -12,6 +12,7 @@
 
 #include "client/app/aim.h"
 #include "client/app/controls.h"
+#include "client/app/turn_view.h"
 #include "support/client_fixture.h"
 #include "support/display_check.h"
 
@@ -97,8 +98,34 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   ASSERT_TRUE(seen) << "no accepted shot from the window\n" << windowErr() << logs();
   EXPECT_EQ(status, 0) << windowErr();
 
-  // The command on the wire: each control's effect at its documented rate.
-  EXPECT_NEAR(sent->cue.yaw, 30.0 / 60.0 * rates.yaw, 1e-9);
+  // The turns opened facing the nearest ball the shooter may hit, from the layouts the server
+  // published before each shot.
+  auto stateBefore = [&](std::uint32_t shot) -> std::optional<MatchView> {
+    std::optional<MatchView> found;
+    for (const auto& s : recorder.states(match)) {
+      if (s.shot_number == shot) found = s;
+    }
+    return found;
+  };
+  auto facing = [&](const protocol::ShotRequest& request, const MatchView& before) {
+    Eigen::Vector2d cue = Eigen::Vector2d::Zero();
+    for (const auto& b : before.balls) {
+      if (b.id == physics::kCueBall) cue = b.pos.head<2>();
+    }
+    if (request.cue_ball_at) cue = *request.cue_ball_at;
+    return app::turnStartYaw(cue, before.balls, gameStateOf(before));
+  };
+  const auto rack = stateBefore(0);
+  const auto after_break = stateBefore(1);
+  ASSERT_TRUE(rack && after_break);
+  const auto first_yaw = facing(*sent, *rack);
+  const auto second_yaw = facing(*second, *after_break);
+  ASSERT_TRUE(first_yaw && second_yaw);
+
+  // The command on the wire: each control's effect at its documented rate (a press of LEFT turns
+  // one step, then the held rate past the repeat delay).
+  EXPECT_NEAR(sent->cue.yaw,
+              *first_yaw + rates.yaw_step + rates.yaw * (30.0 / 60.0 - rates.repeat_delay), 1e-9);
   EXPECT_NEAR(sent->cue.elevation, 12.0 / 60.0 * rates.elevation, 1e-9);
   EXPECT_NEAR(sent->cue.speed, app::cueSpeedOf(45.0 / 60.0 / rates.charge_time, limits), 1e-9);
   EXPECT_FALSE(sent->cue.speed_is_ball);
@@ -108,11 +135,11 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   ASSERT_TRUE(sent->cue_ball_at);   // the breaker has the cue ball in hand behind the head string
   EXPECT_LT(sent->cue_ball_at->x(), app::PlacementArea{}.head_string_x);
 
-  // The next shot: the tip, the heading kept, and a call the rules accept (a ball and a pocket,
-  // or a safety), with the cue ball placed legally if it is in hand.
+  // The next shot: the tip, the turn's opening heading, and a call the rules accept (a ball and a
+  // pocket, or a safety), with the cue ball placed legally if it is in hand.
   EXPECT_NEAR(second->cue.tip_height, 20.0 / 60.0 * rates.tip, 1e-9);
   EXPECT_DOUBLE_EQ(second->cue.tip_side, 0.0);
-  EXPECT_DOUBLE_EQ(second->cue.yaw, sent->cue.yaw);
+  EXPECT_NEAR(second->cue.yaw, *second_yaw, 1e-9);
   EXPECT_NEAR(second->cue.speed, app::cueSpeedOf(30.0 / 60.0 / rates.charge_time, limits), 1e-9);
   EXPECT_NE(second->safety, second->called_ball.has_value());
   EXPECT_EQ(second->called_ball.has_value(), !second->called_pocket.empty());
@@ -234,6 +261,220 @@ TEST_F(WindowClientTest, AWindowKilledMidMatchTakesItsSeatBackAndPlaysOn) {
   EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
   EXPECT_EQ(recorder.latest(match)->seats[0].name, "Wendy");
   bot.kill(SIGTERM);
+}
+
+/// True when `text`, with the players' `names` taken out, has no underscore.
+bool freeOfIdentifiers(std::string text, const std::vector<std::string>& names) {
+  for (const auto& name : names) {
+    for (auto at = text.find(name); !name.empty() && at != std::string::npos;
+         at = text.find(name)) {
+      text.erase(at, name.size());
+    }
+  }
+  return text.find('_') == std::string::npos;
+}
+
+// A game ends (the opponent's window dies and the grace runs out): the game-over screen names the
+// winner and why, says the departed opponent cannot have a rematch, and N gets a new game at a
+// free table. No text the HUD drew on the way holds an identifier.
+TEST_F(WindowClientTest, TheGameOverScreenStartsASecondGameAtAFreeTable) {
+  open(kWindowNewGame, "window-new-game");
+  MatchRecorder recorder(kWindowNewGame);
+  startServer({"--grace", "2"});
+  startWindow({"--play", "--name", "Wendy"},
+              "wait over\nframes 20\ndown R\nup R\nframes 20\ndown N\nup N\n"
+              "wait table\nframes 30\nquit\n");
+  ASSERT_TRUE(recorder.pump(60s,
+                            [&] {
+                              const MatchView* v = recorder.latest(recorder.firstMatch());
+                              return v && v->seats[0].name == "Wendy";
+                            }))
+      << windowErr() << logs();
+  const std::string first = recorder.firstMatch();
+  ChildProcess& bot = startBot("bert_the_bot", 5);
+  ASSERT_TRUE(recorder.pump(30s, [&] {
+    const MatchView* v = recorder.latest(first);
+    return v && v->seats[1].name == "bert_the_bot" && v->phase == MatchPhase::Break;
+  })) << logs();
+  bot.kill(SIGKILL);
+  ASSERT_TRUE(recorder.pump(90s,
+                            [&] {
+                              const MatchView* v = recorder.latest(first);
+                              return v && v->phase == MatchPhase::Over;
+                            }))
+      << "the match was not forfeited to Wendy\n"
+      << logs();
+  EXPECT_EQ(recorder.latest(first)->winner, 0);
+
+  // The window started a second game: Wendy holds a seat at another table, not over.
+  std::string second;
+  const bool seated = recorder.pump(60s, [&] {
+    for (const auto* e : recorder.client().lobby().entries()) {
+      const MatchView* v = recorder.latest(e->match);
+      if (e->match != first && v && v->phase != MatchPhase::Over &&
+          (v->seats[0].name == "Wendy" || v->seats[1].name == "Wendy")) {
+        second = e->match;
+        return true;
+      }
+    }
+    return false;
+  });
+  const int status = windowExit();
+  ASSERT_TRUE(seated) << "Wendy got no table after the game over\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+
+  // What the HUD said on the way.
+  bool winner_said = false, departed_said = false, new_game_offered = false;
+  const auto huds = windowLines("hud");
+  ASSERT_FALSE(huds.empty());
+  for (const auto& hud : huds) {
+    for (const auto& t : hud["texts"]) {
+      const std::string text = t.get<std::string>();
+      EXPECT_TRUE(freeOfIdentifiers(text, {"bert_the_bot"})) << text;
+      winner_said = winner_said || text.find("Wendy (you) wins: a forfeit") != std::string::npos;
+      departed_said =
+          departed_said || text.find("bert_the_bot has left the table") != std::string::npos;
+      new_game_offered = new_game_offered || text == "New game (N)";
+    }
+  }
+  EXPECT_TRUE(winner_said);
+  std::string over_screen;
+  for (const auto& hud : huds) {
+    const std::string dump = hud["texts"].dump();
+    if (dump.find("wins") != std::string::npos) over_screen = dump;
+  }
+  EXPECT_TRUE(departed_said) << over_screen;
+  EXPECT_TRUE(new_game_offered) << over_screen;
+  bool refused_rematch = false;
+  for (const auto& note : windowLines("note")) {
+    refused_rematch = refused_rematch ||
+                      note.value("text", "").find("bert_the_bot has left the table: no rematch") !=
+                          std::string::npos;
+  }
+  EXPECT_TRUE(refused_rematch) << "R against a departed opponent said nothing\n"
+                               << std::ifstream(file("window.out")).rdbuf();
+}
+
+/// A logged frame's pixel for table point `p` through its view and projection (column-major).
+Eigen::Vector2d pixelOf(const nlohmann::json& drawn, const Eigen::Vector3d& p) {
+  Eigen::Matrix4d view, projection;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      view(r, c) = drawn["view"][static_cast<std::size_t>(4 * c + r)].get<double>();
+      projection(r, c) = drawn["projection"][static_cast<std::size_t>(4 * c + r)].get<double>();
+    }
+  }
+  const Eigen::Vector4d clip = projection * view * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.0);
+  const double w = drawn["width"].get<double>(), h = drawn["height"].get<double>();
+  return {(clip.x() / clip.w() * 0.5 + 0.5) * w, (0.5 - clip.y() / clip.w() * 0.5) * h};
+}
+
+Eigen::Vector3d cueIn(const TableFrame& frame) {
+  for (const auto& b : frame.balls) {
+    if (b.id == physics::kCueBall) return b.pos;
+  }
+  return Eigen::Vector3d::Constant(std::nan(""));
+}
+
+// The breaker drags the cue ball in hand across the kitchen: in every frame drawn while dragging
+// the ball sits within 2 px of the cursor. Then the break: in every frame drawn, the cue ball is
+// where the server's frames put it at the time played back (within 2 px), from the release on.
+TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames) {
+  open(kWindowBallInHand, "window-ball-in-hand");
+  MatchRecorder recorder(kWindowBallInHand);
+  startServer({});  // frames paced at 60 Hz, as a player sees them
+  std::string script = "wait aiming\nframes 60\nmouse press cue\nframes 2\n";
+  for (int i = 0; i < 30; ++i) script += "mouse by -2 3\nframes 1\n";  // back and to the left
+  script +=
+      "mouse release\nframes 10\ndown SPACE\nframes 10\nup SPACE\nwait shot 1\n"
+      "frames 30\nquit\n";
+  startWindow({"--hotseat", "--play", "--log-frames"}, script);
+  std::string match;
+  const bool played = recorder.pump(120s, [&] {
+    match = recorder.firstMatch();
+    return !match.empty() && recorder.finals(match).count(1) != 0;
+  });
+  const int status = windowExit();
+  recorder.pump(2s);
+  ASSERT_TRUE(played) << "no break from the window\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  const auto drawn = windowLines("drawn");
+  ASSERT_FALSE(drawn.empty());
+
+  // The drag: the ball under the cursor in every frame, and it went somewhere.
+  int dragged = 0;
+  Eigen::Vector2d first_px(0, 0), last_px(0, 0);
+  for (const auto& d : drawn) {
+    if (!d["dragging"].get<bool>() || !d.contains("cue_px")) continue;
+    const Eigen::Vector2d px(d["cue_px"][0].get<double>(), d["cue_px"][1].get<double>());
+    const Eigen::Vector2d mouse(d["mouse"][0].get<double>(), d["mouse"][1].get<double>());
+    EXPECT_LT((px - mouse).norm(), 2.0) << d.dump();
+    if (dragged++ == 0) first_px = px;
+    last_px = px;
+  }
+  EXPECT_GE(dragged, 25);
+  EXPECT_GT((last_px - first_px).norm(), 80.0);
+
+  // The break (a soft one: it runs long enough to see) as drawn against the server's frames.
+  const auto frames = recorder.frames(match, 1);
+  ASSERT_GE(frames.size(), 10u);
+  const protocol::ShotRequest* sent =
+      recorder.nthCommand(match, recorder.latest(match)->breaker, 1);
+  ASSERT_TRUE(sent && sent->cue_ball_at);
+  // Where the server says the cue ball is at `t` s after the strike.
+  auto serverCue = [&](double t) {
+    if (t <= frames.front().sim_time) return cueIn(frames.front());
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+      if (frames[i].sim_time < t) continue;
+      const double u = (t - frames[i - 1].sim_time) / (frames[i].sim_time - frames[i - 1].sim_time);
+      return Eigen::Vector3d(cueIn(frames[i - 1]) + u * (cueIn(frames[i]) - cueIn(frames[i - 1])));
+    }
+    return cueIn(frames.back());
+  };
+  // Snapshots are 1/60 s apart: where the cue ball is struck or strikes a ball its path turns a
+  // corner that interpolation between two snapshots cuts, so the 50 ms around each turn are left
+  // out.
+  std::vector<double> turns{0.0};
+  for (std::size_t i = 2; i < frames.size(); ++i) {
+    const double dt1 = frames[i - 1].sim_time - frames[i - 2].sim_time;
+    const double dt2 = frames[i].sim_time - frames[i - 1].sim_time;
+    const Eigen::Vector3d v1 = (cueIn(frames[i - 1]) - cueIn(frames[i - 2])) / dt1;
+    const Eigen::Vector3d v2 = (cueIn(frames[i]) - cueIn(frames[i - 1])) / dt2;
+    if ((v2 - v1).norm() > 0.2) turns.push_back(frames[i - 1].sim_time);
+  }
+  auto nearTurn = [&](double t) {
+    return std::any_of(turns.begin(), turns.end(),
+                       [&](double c) { return std::abs(t - c) < 0.05; });
+  };
+  // From the first frame after the release (the last one dragging, then the first not aiming).
+  std::size_t from = 0;
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    if (drawn[i]["dragging"].get<bool>()) from = i;
+  }
+  while (from < drawn.size() && drawn[from]["aiming"].get<bool>()) ++from;
+  int compared = 0, before_motion = 0;
+  for (std::size_t i = from; i < drawn.size(); ++i) {
+    const auto& d = drawn[i];
+    if (d["aiming"].get<bool>()) break;  // the next turn
+    if (!d.contains("cue_px")) continue;
+    const Eigen::Vector2d px(d["cue_px"][0].get<double>(), d["cue_px"][1].get<double>());
+    const bool this_shot = !d["shot"].is_null() && d["shot"].get<std::uint32_t>() == 1;
+    if (this_shot && d["moving"].get<bool>()) {
+      const double t = d["play_time"].get<double>();
+      if (nearTurn(t)) continue;
+      EXPECT_LT((px - pixelOf(d, serverCue(t))).norm(), 2.0) << "t " << t << " " << d.dump();
+      ++compared;
+    } else if (!this_shot && compared == 0) {
+      // Sent, its frames not here yet: the ball stays where it was put.
+      const Eigen::Vector3d put(sent->cue_ball_at->x(), sent->cue_ball_at->y(),
+                                cueIn(frames.front()).z());
+      EXPECT_LT((px - pixelOf(d, put)).norm(), 2.0) << d.dump();
+      ++before_motion;
+    }
+  }
+  EXPECT_GE(compared, 20) << "too few frames of the break drawn";
+  EXPECT_GE(before_motion, 1);
+  EXPECT_LT((*sent->cue_ball_at - cueIn(frames.front()).head<2>()).norm(), 1e-6);
 }
 
 }  // namespace

@@ -1,0 +1,31 @@
+// The help overlay's list of keys.
+#include "client/app/key_help.h"
+
+namespace pool::app {
+
+const std::vector<KeyHelp>& keyHelp() {
+  static const std::vector<KeyHelp> kHelp{
+      {"aiming", "Left / Right, left drag", "turn the cue (a press: 0.25 degrees)"},
+      {"aiming", "Alt + Left / Right, Alt + drag", "fine aim (a press: 0.05 degrees)"},
+      {"aiming", "Up / Down", "raise and lower the view"},
+      {"aiming", "Shift + arrows", "move the view around the cue ball"},
+      {"aiming", "Ctrl + arrows", "move the tip on the cue ball (spin)"},
+      {"aiming", "A / Z", "raise / lower the cue (jump and masse)"},
+      {"aiming", "hold Space, release", "charge the power, shoot (Esc cancels)"},
+      {"aiming", "C / K", "call the next pocket / declare a safety"},
+      {"ball in hand", "drag the cue ball", "place it where the rules allow"},
+      {"always", "B", "back behind the cue ball (watching: the whole table)"},
+      {"always", "O", "the table from overhead, on and off"},
+      {"watching", "arrows, left drag", "orbit the view, raise and lower it"},
+      {"always", "right drag", "orbit the view"},
+      {"always", "S / X, mouse wheel", "zoom in / out"},
+      {"always", "G / V", "aim line and ghost ball / direction arrows"},
+      {"always", "P / T / L", "wireframe / textures / lighting"},
+      {"game over", "R / N", "rematch / a new game at a free table"},
+      {"always", "F11", "full screen, on and off"},
+      {"always", "F1", "this help and the settings, on and off"},
+  };
+  return kHelp;
+}
+
+}  // namespace pool::app

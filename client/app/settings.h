@@ -1,0 +1,34 @@
+// The player's settings kept between runs: full screen, volume and the aim aids, in a small text
+// file in the user's config folder ($XDG_CONFIG_HOME/pool/settings.conf).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "core/result.h"
+
+namespace pool::app {
+
+struct Settings {
+  bool full_screen = false;
+  double volume = 1.0;   ///< 0–1, the sound's master gain
+  bool aim_line = true;  ///< aim line and ghost ball (G)
+  bool vectors = false;  ///< direction arrows (V)
+
+  bool operator==(const Settings&) const = default;
+};
+
+/// `$XDG_CONFIG_HOME/pool/settings.conf` (or `~/.config/pool/settings.conf`); empty when neither
+/// is set.
+std::filesystem::path defaultSettingsPath();
+
+/// Reads `key = value` lines ('#' starts a comment). A missing file gives the defaults. An unknown
+/// key, a bad value or a volume outside [0, 1] fails with the line's number, and nothing of the
+/// file is used.
+Result<Settings> loadSettings(const std::filesystem::path& path);
+
+/// Writes `settings` to `path` (its folder made if needed) through a temporary file renamed over
+/// it, so a crash never leaves half a file.
+Result<bool> saveSettings(const std::filesystem::path& path, const Settings& settings);
+
+}  // namespace pool::app

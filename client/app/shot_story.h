@@ -1,0 +1,39 @@
+// What happened on a shot, said in sentences with the players' names: what fell, the foul and
+// its reason, who shoots next and with the cue ball in hand where, the choice to make, the end of
+// the game. No identifier reaches these sentences.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "client/net/match_types.h"
+#include "rules/game_state.h"
+#include "rules/verdict.h"
+
+namespace pool::app {
+
+/// The two players' names as shown: a seat's name, or "Player 1" / "Player 2" when it has none.
+using SeatNames = std::array<std::string, 2>;
+SeatNames seatNames(const client::MatchView* view);
+
+/// Why a foul is one, e.g. "the cue ball fell in a pocket (a scratch)".
+std::string foulReason(rules::Foul foul);
+
+/// Why a game ended, e.g. "the 8 fell on a foul".
+std::string endReason(rules::GameEnd end);
+
+/// Where the cue ball may go, e.g. "anywhere on the table"; empty for none.
+std::string inHandWhere(rules::BallInHand in_hand);
+
+/// A choice the rules offer `chooser` explained as a sentence (`other`: the opponent's name).
+std::string choiceSentence(rules::Choice choice, const std::string& other);
+
+/// The story of a shot from its final report, e.g. "Foul by Ada: the cue ball fell in a pocket
+/// (a scratch). Bob has the cue ball in hand anywhere on the table."
+std::string shotStory(const client::ShotReport& report, const SeatNames& names);
+
+/// The server's one-line verdict (a late joiner's only account of the last shot) with seat
+/// numbers as names and identifiers as words.
+std::string verdictInWords(const std::string& verdict, const SeatNames& names);
+
+}  // namespace pool::app

@@ -1,0 +1,124 @@
+// Changes of view glide instead of cutting, at the same pace whatever the frame rate; B goes back
+// behind the cue, O looks straight down on the table.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "app_fixture.h"
+#include "client/app/camera_rig.h"
+
+namespace pool::app::test {
+namespace {
+
+double gap(const ViewPoint& a, const ViewPoint& b) {
+  return std::max((a.eye - b.eye).norm(), (a.target - b.target).norm());
+}
+
+/// A rig watching, then switched to aiming at a cue ball: the drawn view starts where it was.
+CameraRig switchedToAiming() {
+  CameraRig rig(2.54, 1.27, 1280.0 / 720.0);
+  rig.followCue(Eigen::Vector3d(-0.6, 0.2, kRadius), 0.3);
+  rig.setAiming(true);
+  return rig;
+}
+
+TEST(CameraGlideTest, ASwitchOfCameraStartsFromTheViewDrawnAndEndsOnTheNewOne) {
+  const CameraRig watching(2.54, 1.27, 1280.0 / 720.0);
+  CameraRig rig = switchedToAiming();
+  ASSERT_TRUE(rig.gliding());
+  EXPECT_LT(gap(rig.view(), watching.view()), 1e-12);  // no cut
+  const double total = gap(watching.view(), rig.goal());
+  ASSERT_GT(total, 1.0);  // the overview and the aiming view are metres apart
+  rig.update(kGlideTime / 2);
+  const double left = gap(rig.view(), rig.goal());
+  EXPECT_GT(left, 0.2 * total);
+  EXPECT_LT(left, 0.8 * total);
+  rig.update(kGlideTime / 2 + 1e-9);
+  EXPECT_FALSE(rig.gliding());
+  EXPECT_LT(gap(rig.view(), rig.goal()), 1e-12);
+}
+
+TEST(CameraGlideTest, NoFrameOfTheGlideJumps) {
+  CameraRig rig = switchedToAiming();
+  const double total = gap(rig.view(), rig.goal());
+  ViewPoint last = rig.view();
+  double largest = 0.0;
+  for (int i = 0; i < 60; ++i) {
+    rig.update(kGlideTime / 60);
+    largest = std::max(largest, gap(rig.view(), last));
+    last = rig.view();
+  }
+  // Eased: no 1/60 of the glide moves more than 1.5/60 of the way (a cut would move all of it).
+  EXPECT_LT(largest, 1.5 * total / 60);
+  EXPECT_FALSE(rig.gliding());
+}
+
+TEST(CameraGlideTest, TheGlideDependsOnTimeNotOnFrames) {
+  CameraRig fast = switchedToAiming();
+  CameraRig slow = switchedToAiming();
+  CameraRig uneven = switchedToAiming();
+  for (int i = 0; i < 24; ++i) fast.update(0.25 * kGlideTime / 24);
+  slow.update(0.25 * kGlideTime);
+  for (const double part : {0.1, 0.02, 0.13}) uneven.update(part * kGlideTime);
+  EXPECT_LT(gap(fast.view(), slow.view()), 1e-9);
+  EXPECT_LT(gap(uneven.view(), slow.view()), 1e-9);
+}
+
+TEST(CameraGlideTest, HeldTheViewStaysAndReleasedItGlidesOn) {
+  CameraRig rig = switchedToAiming();
+  rig.update(kGlideTime);
+  const ViewPoint before = rig.view();
+  rig.hold(true);
+  rig.followCue(Eigen::Vector3d(0.4, -0.3, kRadius), 1.0);  // the ball moved under the cursor
+  rig.update(1.0);
+  EXPECT_LT(gap(rig.view(), before), 1e-12);
+  rig.hold(false);
+  EXPECT_LT(gap(rig.view(), before), 1e-12);  // no cut on release either
+  rig.update(kGlideTime);
+  EXPECT_LT(gap(rig.view(), rig.goal()), 1e-12);
+  EXPECT_LT((rig.view().target - Eigen::Vector3d(0.4, -0.3, kRadius)).norm(), 1e-12);
+}
+
+TEST(CameraGlideTest, OverheadLooksDownOnTheWholeTable) {
+  CameraRig rig(2.54, 1.27, 1280.0 / 720.0);
+  rig.setOverhead(true);
+  rig.update(kGlideTime);
+  const ViewPoint view = rig.view();
+  const Eigen::Vector3d down = (view.target - view.eye).normalized();
+  EXPECT_LT(down.z(), -0.999);  // within 2.6° of straight down
+  const auto camera = cameraOf(view);
+  // The rails' outer corners (about 15 cm beyond the playing surface).
+  for (float x : {-1.42f, 1.42f}) {
+    for (float y : {-0.78f, 0.78f}) {
+      const glm::vec3 p = render::projectToPixels(camera, 1280, 720, glm::vec3(x, y, 0.0f));
+      EXPECT_GT(p.x, 0.0f);
+      EXPECT_LT(p.x, 1280.0f);
+      EXPECT_GT(p.y, 0.0f);
+      EXPECT_LT(p.y, 720.0f);
+    }
+  }
+}
+
+TEST(CameraGlideTest, BGoesBackBehindTheCueAndOLooksDown) {
+  Controls controls = nineFootControls();
+  controls.startTurn(Eigen::Vector3d(-0.5, 0.1, kRadius), rules::BallInHand::None);
+  hold(controls, Key::Left, 0.5, {.shift = true});  // orbit the aiming view
+  hold(controls, Key::Up, 0.5);                     // and raise it
+  hold(controls, Key::O, 0.1);
+  EXPECT_TRUE(controls.camera().overhead());
+  controls.keyDown(Key::B, {});
+  controls.keyUp(Key::B);
+  EXPECT_TRUE(controls.camera().gliding());
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);
+  EXPECT_FALSE(controls.camera().overhead());
+  const ViewPoint view = controls.camera().view();
+  const Eigen::Vector2d back = (view.eye - view.target).head<2>().normalized();
+  const double yaw = controls.aim().yaw;
+  EXPECT_NEAR(back.dot(Eigen::Vector2d(std::cos(yaw), std::sin(yaw))), -1.0, 1e-9);
+  EXPECT_NEAR(controls.camera().aimingOrbit().elevation,
+              CameraRig(2.54, 1.27, 1.0).aimingOrbit().elevation, 1e-12);
+}
+
+}  // namespace
+}  // namespace pool::app::test
