@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -37,7 +38,11 @@ class ServerLoop {
   /// Plays `replay` on this loop: its commands are answered and published like players' ones.
   void replay(MatchReplay* replay) { replay_ = replay; }
 
-  /// Runs passes until `stop` is set (checked at least every kMaxWait).
+  /// Checks `check(now)` after every pass; a non-empty answer ends run() with it as fault().
+  void guard(std::function<std::string(double now)> check) { guard_ = std::move(check); }
+  /// Why run() ended on its own (a guard's answer), or empty.
+  const std::string& fault() const { return fault_; }
+  /// Runs passes until `stop` is set (checked at least every kMaxWait) or a guard objects.
   void run(const std::atomic<bool>& stop);
 
   /// One pass at `now` (s since the loop started): joins, commands, due frames, grace expiries,
@@ -81,6 +86,8 @@ class ServerLoop {
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
+  std::function<std::string(double)> guard_;
+  std::string fault_;
   /// A pass later than this after the previous one means the server was not running.
   static constexpr double kStall = 1.0;
 };

@@ -27,6 +27,7 @@ enum Domain : std::uint32_t {
   kNewMatch,
   kSideBySide,
   kSeatAttacks,
+  kVersionMismatch,  ///< its own: two servers under one id on one domain refuse to run
 };
 
 /// The flood tests' domain (135–149 are theirs).
