@@ -37,7 +37,7 @@ MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)
     if (!options_.identity_dir.empty()) {
       client_options.server_pins = options_.identity_dir.parent_path() / "servers";
     }
-    client_options.log = [this](const std::string& line) { note(line, true); };
+    client_options.log = [this](const std::string& line, bool problem) { note(line, problem); };
     clients_.push_back(std::make_unique<client::GameClient>(std::move(client_options), key));
     saved_.push_back(identity ? identity->seat() : std::nullopt);
     if (saved_.back()) clients_.back()->noteSequence(saved_.back()->last_seq);

@@ -36,12 +36,12 @@ void GameClient::problem(const std::string& what) {
   note(what);
 }
 
-void GameClient::note(const std::string& line) {
+void GameClient::note(const std::string& line, bool is_problem) {
   // A flood of forged samples logs each kind of refusal once; the rest are only counted.
   constexpr std::size_t kMaxLogged = 256;
   if (logged_.size() >= kMaxLogged || !logged_.insert(line).second) return;
   if (options_.log) {
-    options_.log(line);
+    options_.log(line, is_problem);
   } else {
     std::fprintf(stderr, "%s\n", line.c_str());
   }
@@ -55,8 +55,9 @@ std::string GameClient::checkServer(const protocol::SealedSample& sample) {
       return {};
     case PinCheck::FirstSight:
       note("server '" + server + "': key " + protocol::fingerprint(sample.server_key) +
-           " pinned at first sight" +
-           (options_.server_pins.empty() ? "" : " (" + options_.server_pins.string() + ")"));
+               " pinned at first sight" +
+               (options_.server_pins.empty() ? "" : " (" + options_.server_pins.string() + ")"),
+           false);
       if (!pins_.fileProblem().empty()) note("server keys: " + pins_.fileProblem());
       return {};
     case PinCheck::Changed:

@@ -44,8 +44,9 @@ struct ClientOptions {
   std::string name;          ///< the player's name in seat requests
   /// Where the server keys this client trusts are pinned (server_pins.h); empty: in memory.
   std::filesystem::path server_pins;
-  /// Where lines about server keys go (a pin made, a sample dropped); empty: standard error.
-  std::function<void(const std::string&)> log;
+  /// Where lines about server keys go: a pin made (`problem` false), a sample dropped (true);
+  /// empty: standard error.
+  std::function<void(const std::string& line, bool problem)> log;
 };
 
 /// How far past the last state a match's revision may jump, and its shot number past the last
@@ -128,7 +129,7 @@ class GameClient {
   /// Why a sample the server signed is dropped (sealProblem, then the pins), or empty.
   std::string checkServer(const protocol::SealedSample& sample);
   /// Logs `line` once (the same line again is only counted).
-  void note(const std::string& line);
+  void note(const std::string& line, bool problem = true);
   /// Why a state, result or frame of `match` with these numbers is impossible, or empty.
   std::string impossibleJump(const std::string& match, const char* what, std::uint32_t revision,
                              std::uint32_t shot_number) const;

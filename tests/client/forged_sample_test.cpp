@@ -26,7 +26,7 @@ constexpr std::uint32_t kChangedKey = 207;
 struct Watcher {
   explicit Watcher(std::uint32_t domain, std::filesystem::path pins = {})
       : client({domain, "", "watcher", std::move(pins),
-                [this](const std::string& line) { lines.push_back(line); }}) {}
+                [this](const std::string& line, bool) { lines.push_back(line); }}) {}
 
   /// Polls until `done()` or `timeout`; returns done().
   bool pumpUntil(const std::function<bool()>& done, std::chrono::milliseconds timeout = 30s) {
