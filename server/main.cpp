@@ -130,12 +130,13 @@ int serve(const pool::server::ServerConfig& config,
   spdlog::info("server key fingerprint {} (clients pin it for server id {})",
                pool::protocol::fingerprint(key.public_key), registry.serverId());
   loop.run(g_stop);
-  spdlog::info("shutting down");
-  loop.disposeAll();
   if (!loop.fault().empty()) {
+    // The matches are the other server's too: leave them (no disposal notices) and go.
     spdlog::error("{}", loop.fault());
     return kExitDuplicateServer;
   }
+  spdlog::info("shutting down");
+  loop.disposeAll();
   return 0;
 }
 

@@ -16,12 +16,10 @@ namespace {
 
 using namespace std::chrono_literals;
 
-constexpr std::uint32_t kForgedMatch = 209;  ///< the client tests' range (client_fixture.h)
-
 class ForgedMatchTest : public ClientIntegrationTest {};
 
 TEST_F(ForgedMatchTest, BotsAndASpectatorIgnoreForgedSamplesAndFinishTheRealMatch) {
-  open(static_cast<Domain>(kForgedMatch), "forged-match");
+  open(kForgedMatch, "forged-match");
   MatchRecorder recorder(kForgedMatch);
   startServer({"--fast"});
   ASSERT_TRUE(recorder.pump(20s, [&] { return recorder.latest("srv-1") != nullptr; })) << logs();

@@ -1,7 +1,9 @@
 // One server per server id on a domain: a second pool-server under a live id (another database,
-// another key) is refused with a clear error and its own exit code, while the same database
-// started again after a crash resumes at once.
+// another key) is refused with a clear error and its own exit code, the same database started
+// again after a crash resumes at once, and a copy of a live database stops after the lease.
 #include <gtest/gtest.h>
+
+#include <cstdlib>
 
 #include "client/net/game_client.h"
 #include "support/client_fixture.h"
@@ -10,8 +12,6 @@ namespace pool::client::test {
 namespace {
 
 using namespace std::chrono_literals;
-
-constexpr std::uint32_t kDuplicateId = 208;  ///< the client tests' range (client_fixture.h)
 
 class ServerIdentityTest : public ClientIntegrationTest {};
 
@@ -28,7 +28,7 @@ bool pumpUntil(GameClient& client, const std::function<bool()>& done,
 }
 
 TEST_F(ServerIdentityTest, ADuplicateServerIdIsRefusedAndTheSameDatabaseResumesAtOnce) {
-  open(static_cast<Domain>(kDuplicateId), "server-id");
+  open(kDuplicateId, "server-id");
   ChildProcess& first = startServer({"--fast", "--db", file("a.db")});
   GameClient ada({kDuplicateId, "", "Ada", {}, {}});
   // Join requests are volatile: ask again until the server's reader has matched ours.
@@ -70,6 +70,35 @@ TEST_F(ServerIdentityTest, ADuplicateServerIdIsRefusedAndTheSameDatabaseResumesA
   })) << again.err();
   EXPECT_TRUE(again.running());
   EXPECT_EQ(ada.unreadable(), 0u) << ada.lastProblem();
+}
+
+TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLeaseShowsTheOtherIsLive) {
+  open(kDatabaseCopy, "db-copy");
+  {
+    // A database with a key, then two copies of it: two servers with one key and one id.
+    ChildProcess& maker = startServer({"--fast", "--db", file("a.db")});
+    GameClient watcher({kDatabaseCopy, "", "watcher", {}, {}});
+    ASSERT_TRUE(pumpUntil(watcher, [&] {
+      return watcher.lobby().lowestWithFreeSeat().has_value();
+    })) << logs();
+    maker.kill(SIGTERM);
+    ASSERT_EQ(maker.waitExit(20s), 0) << maker.err();
+  }
+  ASSERT_EQ(std::system(("cp '" + file("a.db") + "' '" + file("b.db") + "'").c_str()), 0);
+  ChildProcess& live = startServer({"--fast", "--db", file("a.db")});
+  GameClient watcher({kDatabaseCopy, "", "watcher", {}, {}});
+  ASSERT_TRUE(pumpUntil(watcher, [&] { return watcher.lobby().lowestWithFreeSeat().has_value(); }))
+      << logs();
+
+  // The copy holds the same key: it may be a crashed run of the live one, so it serves at once,
+  // and stops once the other is still there after the lease period.
+  ChildProcess& copy = startServer({"--fast", "--db", file("b.db")});
+  EXPECT_TRUE(pumpUntil(watcher, [&] {
+    return copy.err().find("is still seen") != std::string::npos;
+  })) << copy.err();
+  EXPECT_EQ(copy.waitExit(60s), 3) << copy.err();
+  EXPECT_NE(copy.err().find("is still live on the domain after"), std::string::npos) << copy.err();
+  EXPECT_TRUE(live.running()) << live.err();
 }
 
 }  // namespace

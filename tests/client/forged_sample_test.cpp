@@ -17,11 +17,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-/// Domains of these tests (the client tests' range, see client_fixture.h).
-constexpr std::uint32_t kForgedSamples = 205;
-constexpr std::uint32_t kImpossibleJumps = 206;
-constexpr std::uint32_t kChangedKey = 207;
-
 /// A GameClient that keeps everything poll() handed out and every line it logged.
 struct Watcher {
   explicit Watcher(std::uint32_t domain, std::filesystem::path pins = {})
@@ -62,7 +57,7 @@ struct Watcher {
 class ForgedSampleTest : public ClientIntegrationTest {};
 
 TEST_F(ForgedSampleTest, ForgedStateFrameAndResultAreDroppedAndChangeNothing) {
-  open(static_cast<Domain>(kForgedSamples), "forged");
+  open(kForgedSamples, "forged");
   startServer({"--fast"});
   Watcher w(kForgedSamples);
   w.client.requestSpectate("srv-1");
@@ -106,7 +101,7 @@ TEST_F(ForgedSampleTest, ForgedStateFrameAndResultAreDroppedAndChangeNothing) {
 }
 
 TEST_F(ForgedSampleTest, ImpossibleJumpsAreDroppedEvenWhenSigned) {
-  open(static_cast<Domain>(kImpossibleJumps), "jumps");
+  open(kImpossibleJumps, "jumps");
   // A "server" of the forger's own: its key is pinned at first sight, so its signatures verify.
   pool::test::Forger server(kImpossibleJumps);
   server.signWith(protocol::generateKeyPair());
@@ -132,7 +127,7 @@ TEST_F(ForgedSampleTest, ImpossibleJumpsAreDroppedEvenWhenSigned) {
 }
 
 TEST_F(ForgedSampleTest, AChangedServerKeyIsRefusedUntilItsPinIsForgotten) {
-  open(static_cast<Domain>(kChangedKey), "changed-key");
+  open(kChangedKey, "changed-key");
   const std::filesystem::path pins = file("config/pool/servers");
   {
     ChildProcess& first = startServer({"--fast", "--db", file("first.db")});
