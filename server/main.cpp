@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <string>
 
 #include "net/dds_error.h"
@@ -131,9 +132,12 @@ int serve(const pool::server::ServerConfig& config,
                pool::protocol::fingerprint(key.public_key), registry.serverId());
   loop.run(g_stop);
   if (!loop.fault().empty()) {
-    // The matches are the other server's too: leave them (no disposal notices) and go.
+    // The matches are the other server's too: no disposal notices. Deleting the writers would
+    // dispose every instance they wrote (autodispose), so the process ends without deleting
+    // them; every stored change is already committed.
     spdlog::error("{}", loop.fault());
-    return kExitDuplicateServer;
+    spdlog::default_logger()->flush();
+    std::_Exit(kExitDuplicateServer);
   }
   spdlog::info("shutting down");
   loop.disposeAll();

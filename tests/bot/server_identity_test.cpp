@@ -89,6 +89,7 @@ TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLeaseShowsTheOt
   GameClient watcher({kDatabaseCopy, "", "watcher", {}, {}});
   ASSERT_TRUE(pumpUntil(watcher, [&] { return watcher.lobby().lowestWithFreeSeat().has_value(); }))
       << logs();
+  const auto listed = watcher.lobby().lowestWithFreeSeat();
 
   // The copy holds the same key: it may be a crashed run of the live one, so it serves at once,
   // and stops once the other is still there after the lease period.
@@ -99,6 +100,10 @@ TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLeaseShowsTheOt
   EXPECT_EQ(copy.waitExit(60s), 3) << copy.err();
   EXPECT_NE(copy.err().find("is still live on the domain after"), std::string::npos) << copy.err();
   EXPECT_TRUE(live.running()) << live.err();
+  // The copy did not dispose the live server's matches on its way out.
+  pumpUntil(
+      watcher, [] { return false; }, 2s);
+  EXPECT_EQ(watcher.lobby().lowestWithFreeSeat(), listed);
 }
 
 }  // namespace
