@@ -8,12 +8,15 @@
 #include <iostream>
 
 #include "client/net/game_client.h"
+#include "client/net/server_pins.h"
 #include "client/render/screenshot.h"
 #include "client/spectate/spectate_screenshot.h"
 #include "client/spectate/spectator.h"
 #include "client/ui/aim_screenshot.h"
 #include "client/ui/window_app.h"
+#include "core/text.h"
 #include "net/dds_error.h"
+#include "protocol/server_signature.h"
 
 namespace {
 
@@ -39,7 +42,7 @@ struct Flags {
 
 int runSpectator(const Flags& flags) {
   using namespace pool::client;
-  GameClient client({flags.domain, "", "spectator"});
+  GameClient client({flags.domain, "", "spectator", {}, {}});
   SpectatorConfig config;
   config.match = flags.spectate;
   config.exit_when_over = !flags.follow;
@@ -58,6 +61,28 @@ int runSpectator(const Flags& flags) {
   return 0;
 }
 
+/// --forget-server-key: drops the pin of `server` from the user's pin file.
+int forgetServerKey(const std::string& server) {
+  using namespace pool;
+  const auto file = client::defaultServerPinFile();
+  client::ServerPins pins(file);
+  const auto* pinned = pins.pinned(server);
+  if (!pinned) {
+    std::cerr << "no key is pinned for server '" << escapedForLog(server) << "' in "
+              << file.string() << '\n';
+    return 1;
+  }
+  const std::string was = protocol::fingerprint(*pinned);
+  pins.forget(server);
+  if (!pins.fileProblem().empty()) {
+    std::cerr << pins.fileProblem() << '\n';
+    return 1;
+  }
+  std::cout << "forgot key " << was << " of server '" << escapedForLog(server)
+            << "': the next key it shows is pinned\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -71,6 +96,10 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
   app.add_option("--name", flags.window.name, "the player's name (window)");
   app.add_flag("--hotseat", flags.window.hotseat, "two players on this screen (window)");
+  std::string forget_server;
+  app.add_option("--forget-server-key", forget_server,
+                 "forget the key pinned for SERVER-ID (in $XDG_CONFIG_HOME/pool/servers) and exit: "
+                 "for a server whose database was replaced on purpose");
   bool fresh_identity = false;
   app.add_flag("--fresh-identity", fresh_identity,
                "play with a new key, keeping nothing (default: each player's key and seat are kept "
@@ -130,6 +159,8 @@ int main(int argc, char** argv) {
     flags.screenshot.render = withQuality(flags.screenshot.render, pool::render::Quality::Light);
   }
   flags.screenshot.render.lighting = !no_lighting;
+
+  if (!forget_server.empty()) return forgetServerKey(forget_server);
 
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);

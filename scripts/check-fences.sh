@@ -29,7 +29,7 @@ fence() {
 }
 
 # The net headers anyone may include: they show the protocol's domain types only.
-net_public='net/(client_transport|server_transport|incoming_command|dds_error)\.h'
+net_public='net/(client_transport|server_transport|server_id_probe|incoming_command|dds_error)\.h'
 
 fence dds 'dds/|pool\.h|net/' "$net_public" common/net/ tests/
 fence opengl 'glad/|GLFW/|EGL/|GL/|backends/imgui_impl' '' client/render/ client/ui/ tests/

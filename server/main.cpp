@@ -4,10 +4,15 @@
 #include <spdlog/spdlog.h>
 
 #include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <string>
 
 #include "net/dds_error.h"
+#include "net/server_id_probe.h"
 #include "net/server_transport.h"
 #include "protocol/protocol_version.h"
+#include "protocol/server_signature.h"
 #include "server/admin/admin_cli.h"
 #include "server/admin/admin_listener.h"
 #include "server/admin_desk.h"
@@ -22,6 +27,24 @@
 namespace {
 
 std::atomic<bool> g_stop{false};
+
+/// The exit code of a server that refuses to run beside a live one with its id (the systemd unit
+/// does not restart on it: RestartPreventExitStatus).
+constexpr int kExitDuplicateServer = 3;
+/// How long the lobby is read for another server with our id before serving.
+constexpr std::chrono::milliseconds kPeerWait{1500};
+/// How long a server seen with our id and our key may stay seen: a crashed process is unmatched
+/// when its participant's lease (Cyclone's default: 10 s) runs out.
+constexpr double kPeerLease = 15.0;
+
+/// Why this server must not serve as `server_id` beside what `probe` saw, or empty.
+std::string duplicateServer(const std::string& server_id, const pool::net::ServerSighting& seen) {
+  if (!seen.seen || seen.same_key) return {};
+  std::string why = "--server-id " + server_id + " is already live on this domain (match " +
+                    seen.match + ", server key " + seen.key_fingerprint + ")";
+  if (!seen.problem.empty()) why += "; " + seen.problem;
+  return why + ": give this server another --server-id, or stop the other one";
+}
 
 extern "C" void onSignal(int) {
   g_stop.store(true);
@@ -83,14 +106,38 @@ int serve(const pool::server::ServerConfig& config,
   // The default socket beside the database may not fit (a long path): the games go on without.
   if (!listener) spdlog::warn("no admin socket: {} (set --admin-socket)", listener.error());
   store.setTable(config.table);
+  const pool::protocol::KeyPair key = store.serverKey();
   RegistryOptions options = registryOptions(config);
   // The file keeps the server's id, so match ids go on where they stopped.
   if (options.server_id.empty()) options.server_id = store.serverId();
   MatchRegistry registry(options, std::move(kit));
+  // Another server live under this id: refuse, unless it holds our key (the same database, a
+  // crashed run of ours still seen) and goes within its lease.
+  pool::net::ServerIdProbe probe(config.domain);
+  const auto seen = probe.look(registry.serverId(), key, kPeerWait);
+  if (auto why = duplicateServer(registry.serverId(), seen); !why.empty()) {
+    spdlog::error("{}", why);
+    return kExitDuplicateServer;
+  }
+  if (seen.seen) {
+    spdlog::warn(
+        "server {} with this database's key is still seen (a run that crashed?): "
+        "serving, and stopping if it is still there in {:.0f} s",
+        registry.serverId(), kPeerLease);
+  }
   const int resumed = resume(registry, store);
   const int opened = registry.keepFreeTables(config.tables);
-  pool::net::ServerTransport transport(config.domain);
+  pool::net::ServerTransport transport(config.domain, key);
   ServerLoop loop(config, registry, transport, &store);
+  if (seen.seen) {
+    loop.guard([&probe](double now) -> std::string {
+      if (now < kPeerLease || !probe.stillLive()) return {};
+      return "another server with this database's key and server id is still live on the domain "
+             "after " +
+             std::to_string(static_cast<int>(kPeerLease)) +
+             " s (a copy of this database?): stopping";
+    });
+  }
   AdminDesk desk(registry, store, loop.counters(), db_path);
   desk.loadBans();
   if (listener) loop.admin(listener->get(), &desk);
@@ -98,7 +145,17 @@ int serve(const pool::server::ServerConfig& config,
       "server {} on domain {}: {} free tables opened, {} resumed, {} Hz{}, db {}, admin {}",
       registry.serverId(), config.domain, opened, resumed, config.snapshot_hz,
       config.fast ? ", unpaced" : "", db_path, listener ? socket_path : "none");
+  spdlog::info("server key fingerprint {} (clients pin it for server id {})",
+               pool::protocol::fingerprint(key.public_key), registry.serverId());
   loop.run(g_stop);
+  if (!loop.fault().empty()) {
+    // The matches are the other server's too: no disposal notices. Deleting the writers would
+    // dispose every instance they wrote (autodispose), so the process ends without deleting
+    // them; every stored change is already committed.
+    spdlog::error("{}", loop.fault());
+    spdlog::default_logger()->flush();
+    std::_Exit(kExitDuplicateServer);
+  }
   spdlog::info("shutting down");
   loop.disposeAll();
   return 0;
@@ -127,7 +184,7 @@ int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStor
   TokenSource tokens(randomSeed());
   MatchReplay replay(*stored, std::move(commands), *target, {tokens.token(), tokens.token()},
                      config.fast ? 0.0 : 1.0);
-  pool::net::ServerTransport transport(config.domain);
+  pool::net::ServerTransport transport(config.domain, store.serverKey());
   ServerLoop loop(config, registry, transport);
   loop.replay(&replay);
   spdlog::info("server {} on domain {}: replaying {} ({} commands) as {}", registry.serverId(),

@@ -37,14 +37,6 @@ void take(const Json& doc, const std::string& key, T& into) {
   }
 }
 
-bool validServerId(const std::string& id) {
-  if (id.empty()) return true;  // drawn at random
-  return id.size() <= kMaxServerIdLength && std::all_of(id.begin(), id.end(), [](char ch) {
-           return std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '_' ||
-                  ch == '-';
-         });
-}
-
 std::string readFile(const std::string& path, bool& ok) {
   std::ifstream in(path);
   std::ostringstream text;
@@ -85,7 +77,8 @@ std::string checkConfig(const ServerConfig& c) {
   }
   if (!(c.snapshot_hz > 0.0 && c.snapshot_hz <= 1000.0)) return "snapshot-hz: must be in (0, 1000]";
   if (!(c.grace >= 0.0)) return "grace: must be >= 0";
-  if (!validServerId(c.server_id)) {
+  // Empty: drawn at random.
+  if (!c.server_id.empty() && !protocol::validServerId(c.server_id)) {
     return "server-id: 1-" + std::to_string(kMaxServerIdLength) +
            " letters, digits, '.', '_' or '-' (match ids are \"<server id>-<n>\" in 39 bytes)";
   }

@@ -2,18 +2,19 @@
 #pragma once
 
 #include <cstddef>
-
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "protocol/server_signature.h"
+
 namespace pool::server {
 
-/// Everything pool-server can be told.
-/// The longest --server-id: "<id>-<n>" must fit a match id's 39 bytes for any n the server reaches.
-inline constexpr std::size_t kMaxServerIdLength = 24;
+/// The longest --server-id (protocol/server_signature.h).
+using protocol::kMaxServerIdLength;
 
+/// Everything pool-server can be told.
 struct ServerConfig {
   std::uint32_t domain = 0;          ///< DDS domain id, 0–232
   int tables = 0;                    ///< free tables kept open at all times

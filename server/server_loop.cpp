@@ -29,6 +29,8 @@ void ServerLoop::run(const std::atomic<bool>& stop) {
   while (!stop.load()) {
     transport_.wait(waitTimeout(now()));
     step(now());
+    if (guard_) fault_ = guard_(now());
+    if (!fault_.empty()) break;
   }
 }
 

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -52,7 +53,11 @@ class ServerLoop {
   /// What the loop has counted so far.
   const ServerCounters& counters() const { return counters_; }
 
-  /// Runs passes until `stop` is set (checked at least every kMaxWait).
+  /// Checks `check(now)` after every pass; a non-empty answer ends run() with it as fault().
+  void guard(std::function<std::string(double now)> check) { guard_ = std::move(check); }
+  /// Why run() ended on its own (a guard's answer), or empty.
+  const std::string& fault() const { return fault_; }
+  /// Runs passes until `stop` is set (checked at least every kMaxWait) or a guard objects.
   void run(const std::atomic<bool>& stop);
 
   /// One pass at `now` (s since the loop started): joins, commands, due frames, grace expiries,
@@ -115,6 +120,8 @@ class ServerLoop {
   JoinRateLimit rate_;         ///< join requests per client
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
+  std::function<std::string(double)> guard_;
+  std::string fault_;
   /// A pass later than this after the previous one means the server was not running.
   static constexpr double kStall = 1.0;
   /// A lobby entry whose only change is its spectator count goes out at most this often, s.

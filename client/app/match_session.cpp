@@ -34,8 +34,13 @@ MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)
         identity.reset();
       }
     }
-    clients_.push_back(std::make_unique<client::GameClient>(
-        client::ClientOptions{options_.domain, "", name}, key));
+    // Server keys are pinned beside the players' identities (in memory without them).
+    client::ClientOptions client_options{options_.domain, "", name, {}, {}};
+    if (!options_.identity_dir.empty()) {
+      client_options.server_pins = options_.identity_dir.parent_path() / "servers";
+    }
+    client_options.log = [this](const std::string& line, bool problem) { note(line, problem); };
+    clients_.push_back(std::make_unique<client::GameClient>(std::move(client_options), key));
     saved_.push_back(identity ? identity->seat() : std::nullopt);
     if (saved_.back()) clients_.back()->noteSequence(saved_.back()->last_seq);
     identities_.push_back(std::move(identity));

@@ -49,7 +49,16 @@ int run(const Flags& flags) {
     }
     key = *loaded;
   }
-  client::GameClient client({flags.domain, "", flags.name}, key);
+  // Server keys are pinned in memory for the bot's run (a restarted bot pins again).
+  client::ClientOptions options{
+      flags.domain, "", flags.name, {}, [](const std::string& line, bool problem) {
+        if (problem) {
+          spdlog::warn("{}", line);
+        } else {
+          spdlog::info("{}", line);
+        }
+      }};
+  client::GameClient client(std::move(options), key);
   bot::BotPlayer player(client, flags.bot, saved);
   const auto start = std::chrono::steady_clock::now();
   auto now = [&] {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <random>
 
+#include "core/text.h"
 #include "protocol/command_signature.h"
 #include "protocol/protocol_version.h"
 
@@ -18,9 +19,13 @@ std::string randomClientId() {
 }
 
 GameClient::GameClient(ClientOptions options, std::optional<protocol::KeyPair> key)
-    : options_(std::move(options)), key_(key ? *key : protocol::generateKeyPair()) {
+    : options_(std::move(options)),
+      key_(key ? *key : protocol::generateKeyPair()),
+      pins_(options_.server_pins) {
   if (options_.client_id.empty()) options_.client_id = randomClientId();
-  transport_ = std::make_unique<net::ClientTransport>(options_.domain);
+  if (!pins_.fileProblem().empty()) note("server keys: " + pins_.fileProblem());
+  transport_ = std::make_unique<net::ClientTransport>(
+      options_.domain, [this](const protocol::SealedSample& s) { return checkServer(s); });
 }
 
 GameClient::~GameClient() = default;
@@ -28,6 +33,63 @@ GameClient::~GameClient() = default;
 void GameClient::problem(const std::string& what) {
   ++unreadable_;
   last_problem_ = what;
+  note(what);
+}
+
+void GameClient::note(const std::string& line, bool is_problem) {
+  // A flood of forged samples logs each kind of refusal once; the rest are only counted.
+  constexpr std::size_t kMaxLogged = 256;
+  if (logged_.size() >= kMaxLogged || !logged_.insert(line).second) return;
+  if (options_.log) {
+    options_.log(line, is_problem);
+  } else {
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
+}
+
+std::string GameClient::checkServer(const protocol::SealedSample& sample) {
+  if (auto why = protocol::sealProblem(sample); !why.empty()) return why;
+  const std::string server = escapedForLog(sample.server);
+  switch (pins_.check(sample.server, sample.server_key)) {
+    case PinCheck::Same:
+      return {};
+    case PinCheck::FirstSight:
+      note("server '" + server + "': key " + protocol::fingerprint(sample.server_key) +
+               " pinned at first sight" +
+               (options_.server_pins.empty() ? "" : " (" + options_.server_pins.string() + ")"),
+           false);
+      if (!pins_.fileProblem().empty()) note("server keys: " + pins_.fileProblem());
+      return {};
+    case PinCheck::Changed:
+      break;
+    case PinCheck::Refused:
+      return std::string(protocol::toString(sample.kind)) + " from server '" + server +
+             "' dropped: not a valid server id, or too many servers pinned";
+  }
+  const auto* pinned = pins_.pinned(sample.server);
+  return std::string(protocol::toString(sample.kind)) + " from server '" + server +
+         "' dropped: signed by key " + protocol::fingerprint(sample.server_key) +
+         ", but the key pinned for that server is " +
+         protocol::fingerprint(std::span<const std::uint8_t>(pinned->data(), pinned->size())) +
+         " (the server's key changed: if its database was replaced on purpose, "
+         "forget the old key with --forget-server-key " +
+         server + ")";
+}
+
+std::string GameClient::impossibleJump(const std::string& match, const char* what,
+                                       std::uint32_t revision, std::uint32_t shot_number) const {
+  const MatchView* last = state(match);
+  if (!last) return {};
+  const std::string where = std::string(what) + " of " + escapedForLog(match) + " dropped: ";
+  if (revision > last->revision && revision - last->revision > kMaxRevisionJump) {
+    return where + "revision " + std::to_string(revision) + " after " +
+           std::to_string(last->revision) + " is an impossible jump";
+  }
+  if (shot_number > last->shot_number && shot_number - last->shot_number > kMaxShotJump) {
+    return where + "shot " + std::to_string(shot_number) + " after " +
+           std::to_string(last->shot_number) + " is an impossible jump";
+  }
+  return {};
 }
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
@@ -178,6 +240,11 @@ void GameClient::pollStates(std::vector<ClientEvent>& out) {
       problem(view.error());
       continue;
     }
+    if (auto why = impossibleJump(view->match, "MatchState", view->revision, view->shot_number);
+        !why.empty()) {
+      problem(why);
+      continue;
+    }
     states_[view->match] = *view;
     out.emplace_back(std::move(*view));
   }
@@ -187,6 +254,11 @@ void GameClient::pollResults(std::vector<ClientEvent>& out) {
   for (auto& report : transport_->takeResults()) {
     if (!report) {
       problem(report.error());
+      continue;
+    }
+    if (auto why = impossibleJump(report->match, "ShotResult", 0, report->shot_number);
+        !why.empty()) {
+      problem(why);
       continue;
     }
     // Only a number the seat's own key used up counts: anyone may send a command with any
@@ -206,6 +278,11 @@ void GameClient::pollFrames(std::vector<ClientEvent>& out) {
   for (auto& frame : transport_->takeFrames()) {
     if (!frame) {
       problem(frame.error());
+      continue;
+    }
+    if (auto why = impossibleJump(frame->match, "TableSnapshot", 0, frame->shot_number);
+        !why.empty()) {
+      problem(why);
       continue;
     }
     out.emplace_back(std::move(*frame));

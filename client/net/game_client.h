@@ -4,9 +4,12 @@
 
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <variant>
@@ -14,6 +17,7 @@
 
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
+#include "client/net/server_pins.h"
 #include "core/result.h"
 #include "net/client_transport.h"
 #include "protocol/key_pair.h"
@@ -38,7 +42,17 @@ struct ClientOptions {
   std::uint32_t domain = 0;  ///< DDS domain id, 0–232
   std::string client_id;     ///< unique per process; empty: random hex
   std::string name;          ///< the player's name in seat requests
+  /// Where the server keys this client trusts are pinned (server_pins.h); empty: in memory.
+  std::filesystem::path server_pins;
+  /// Where lines about server keys go: a pin made (`problem` false), a sample dropped (true);
+  /// empty: standard error.
+  std::function<void(const std::string& line, bool problem)> log;
 };
+
+/// How far past the last state a match's revision may jump, and its shot number past the last
+/// one known: beyond that a sample is impossible and dropped, however it is signed.
+inline constexpr std::uint32_t kMaxRevisionJump = 10000;
+inline constexpr std::uint32_t kMaxShotJump = 64;
 
 /// One client's session on a DDS domain. Not thread-safe; nothing in it reads a clock (waits
 /// take a timeout). Throws net::DdsError from the constructor only.
@@ -90,7 +104,8 @@ class GameClient {
   const Lobby& lobby() const { return lobby_; }
   /// The latest state of `match`, if any arrived.
   const MatchView* state(const std::string& match) const;
-  /// Samples dropped because they could not be read, and the last reason.
+  /// Samples dropped because they could not be read, were not signed by their server's pinned
+  /// key, or jumped impossibly far; and the last reason.
   std::uint64_t unreadable() const { return unreadable_; }
   const std::string& lastProblem() const { return last_problem_; }
 
@@ -111,9 +126,18 @@ class GameClient {
   /// Applies an answer to one of our requests; false when it was consumed by a retry.
   bool accept(const JoinAnswer& answer);
   void problem(const std::string& what);
+  /// Why a sample the server signed is dropped (sealProblem, then the pins), or empty.
+  std::string checkServer(const protocol::SealedSample& sample);
+  /// Logs `line` once (the same line again is only counted).
+  void note(const std::string& line, bool problem = true);
+  /// Why a state, result or frame of `match` with these numbers is impossible, or empty.
+  std::string impossibleJump(const std::string& match, const char* what, std::uint32_t revision,
+                             std::uint32_t shot_number) const;
 
   ClientOptions options_;
   protocol::KeyPair key_;
+  ServerPins pins_;
+  std::set<std::string> logged_;  ///< lines logged once (bounded)
   std::unique_ptr<net::ClientTransport> transport_;
   std::uint32_t next_request_ = 1;
   std::map<std::uint32_t, PendingJoin> pending_;  ///< our requests not answered yet

@@ -21,7 +21,7 @@ std::vector<render::SceneBall> sceneBalls(const std::vector<physics::Ball>& ball
 }
 
 int follow(const SpectateScreenshotConfig& config, const render::ScreenshotOptions& options) {
-  GameClient client({config.domain, "", "spectator"});
+  GameClient client({config.domain, "", "spectator", {}, {}});
   SpectatorConfig watch;
   watch.match = config.match;
   watch.exit_when_over = false;

@@ -8,6 +8,7 @@
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
+#include "net/server_seal.h"
 #include "net/topic.h"
 #include "net/waitset.h"
 #include "net/wire_fields.h"
@@ -23,21 +24,12 @@ QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
 
 enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates };
 
-/// Every valid sample of `samples` read with fromWire.
-template <class Domain, class Samples>
-std::vector<Result<Domain>> readAll(Samples samples) {
-  std::vector<Result<Domain>> out;
-  for (auto& sample : samples) {
-    if (sample.meta().valid) out.push_back(fromWire(*sample));  // skips disposal notices
-  }
-  return out;
-}
-
 }  // namespace
 
 struct ClientTransport::Endpoints : ProtocolTopics {
-  explicit Endpoints(std::uint32_t domain)
+  Endpoints(std::uint32_t domain, ServerCheck server_check)
       : ProtocolTopics(domain),
+        check(server_check ? std::move(server_check) : ServerCheck(protocol::sealProblem)),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         results(participant, result_topic, deeper(qos::result())),
@@ -53,6 +45,28 @@ struct ClientTransport::Endpoints : ProtocolTopics {
     waitset.attachData(states, kStates);
   }
 
+  /// Why the server's `sample` is dropped, or empty when it may be read.
+  template <class T>
+  std::string refusal(const T& sample) const {
+    return check(sealedOf(sample));
+  }
+
+  /// Every valid sample of `samples` that passes the check, read with fromWire.
+  template <class Domain, class Samples>
+  std::vector<Result<Domain>> readAll(Samples samples) const {
+    std::vector<Result<Domain>> out;
+    for (auto& sample : samples) {
+      if (!sample.meta().valid) continue;  // skips disposal notices
+      if (auto why = refusal(*sample); !why.empty()) {
+        out.push_back(Result<Domain>::fail(why));
+        continue;
+      }
+      out.push_back(fromWire(*sample));
+    }
+    return out;
+  }
+
+  ServerCheck check;
   Reader<pool_MatchInfo> match_info;
   Reader<pool_JoinReply> join_replies;
   Reader<pool_ShotResult> results;
@@ -63,7 +77,8 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   WaitSet waitset;
 };
 
-ClientTransport::ClientTransport(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {}
+ClientTransport::ClientTransport(std::uint32_t domain, ServerCheck check)
+    : e_(std::make_unique<Endpoints>(domain, std::move(check))) {}
 
 ClientTransport::~ClientTransport() = default;
 
@@ -89,6 +104,10 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
           protocol::MatchGone{std::string(textOf(sample->match)), disposed}));
       continue;
     }
+    if (auto why = e_->refusal(*sample); !why.empty()) {
+      out.push_back(Result<LobbyEvent>::fail(why));
+      continue;
+    }
     auto entry = fromWire(*sample);
     if (!entry) {
       out.push_back(Result<LobbyEvent>::fail(entry.error()));
@@ -100,19 +119,19 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
 }
 
 std::vector<Result<protocol::JoinAnswer>> ClientTransport::takeReplies() {
-  return readAll<protocol::JoinAnswer>(e_->join_replies.take());
+  return e_->readAll<protocol::JoinAnswer>(e_->join_replies.take());
 }
 
 std::vector<Result<protocol::MatchView>> ClientTransport::takeStates() {
-  return readAll<protocol::MatchView>(e_->states.takeWithNotices());
+  return e_->readAll<protocol::MatchView>(e_->states.takeWithNotices());
 }
 
 std::vector<Result<protocol::ShotReport>> ClientTransport::takeResults() {
-  return readAll<protocol::ShotReport>(e_->results.take());
+  return e_->readAll<protocol::ShotReport>(e_->results.take());
 }
 
 std::vector<Result<protocol::TableFrame>> ClientTransport::takeFrames() {
-  return readAll<protocol::TableFrame>(e_->snapshots.take(kSnapshotDepth));
+  return e_->readAll<protocol::TableFrame>(e_->snapshots.take(kSnapshotDepth));
 }
 
 }  // namespace pool::net

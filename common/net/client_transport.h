@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <variant>
@@ -12,6 +13,7 @@
 #include "core/result.h"
 #include "protocol/match_messages.h"
 #include "protocol/seat_request.h"
+#include "protocol/server_signature.h"
 #include "protocol/shot_request.h"
 
 namespace pool::net {
@@ -26,12 +28,18 @@ inline constexpr std::uint32_t kSnapshotDepth = 512;
 /// A lobby entry, or the news that one went away.
 using LobbyEvent = std::variant<protocol::LobbyEntry, protocol::MatchGone>;
 
+/// Decides whether a sample the server signed may be read: empty to take it, else why it is
+/// dropped (the sample then comes out of the take as a failure with that reason).
+using ServerCheck = std::function<std::string(const protocol::SealedSample&)>;
+
 /// One participant with every reader and writer a client needs, and a waitset over the readers.
 /// Throws DdsError from the constructor only. Each take returns what arrived since the last one,
-/// a sample that could not be read as a failure naming why.
+/// a sample that could not be read or that `check` refused as a failure naming why. Without a
+/// check, a sample is read when its signature verifies with the key it carries
+/// (protocol::sealProblem); a client that pins server keys passes its own.
 class ClientTransport {
  public:
-  explicit ClientTransport(std::uint32_t domain);
+  explicit ClientTransport(std::uint32_t domain, ServerCheck check = {});
   ~ClientTransport();
   ClientTransport(const ClientTransport&) = delete;
   ClientTransport& operator=(const ClientTransport&) = delete;

@@ -282,8 +282,9 @@ Result<SeatRequest> fromWire(const pool_JoinRequest& r) {
   return Result<SeatRequest>::ok(std::move(c));
 }
 
-pool_MatchInfo toWire(const LobbyEntry& entry) {
-  pool_MatchInfo info{};
+Sample<pool_MatchInfo> toWire(const LobbyEntry& entry) {
+  Sample<pool_MatchInfo> sample;
+  pool_MatchInfo& info = *sample;
   setText(info.match, entry.match);
   setText(info.server, entry.server);
   setText(info.name, entry.name);
@@ -293,11 +294,12 @@ pool_MatchInfo toWire(const LobbyEntry& entry) {
   info.seats_taken = static_cast<std::uint8_t>(entry.seats_taken);
   info.spectators = entry.spectators;
   info.protocol_version = entry.protocol_version;
-  return info;
+  return sample;
 }
 
-pool_JoinReply toWire(const JoinAnswer& answer) {
-  pool_JoinReply reply{};
+Sample<pool_JoinReply> toWire(const JoinAnswer& answer) {
+  Sample<pool_JoinReply> sample;
+  pool_JoinReply& reply = *sample;
   setText(reply.client, answer.client);
   reply.request = answer.request;
   setText(reply.server, answer.server);
@@ -308,7 +310,7 @@ pool_JoinReply toWire(const JoinAnswer& answer) {
   reply.seat = static_cast<std::int16_t>(answer.seat);
   reply.seat_token = answer.token;
   reply.last_seq = answer.last_seq;
-  return reply;
+  return sample;
 }
 
 Sample<pool_MatchState> toWire(const MatchView& view) {

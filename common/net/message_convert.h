@@ -11,7 +11,7 @@
 namespace pool::net {
 
 /// A lobby entry (MatchInfo).
-pool_MatchInfo toWire(const protocol::LobbyEntry& entry);
+Sample<pool_MatchInfo> toWire(const protocol::LobbyEntry& entry);
 Result<protocol::LobbyEntry> fromWire(const pool_MatchInfo& info);
 
 /// A join request: text cut to its bounds, key and signature to theirs. Reading fails on an
@@ -20,7 +20,7 @@ Sample<pool_JoinRequest> toWire(const protocol::SeatRequest& request);
 Result<protocol::SeatRequest> fromWire(const pool_JoinRequest& request);
 
 /// The answer to a join request (JoinReply).
-pool_JoinReply toWire(const protocol::JoinAnswer& answer);
+Sample<pool_JoinReply> toWire(const protocol::JoinAnswer& answer);
 Result<protocol::JoinAnswer> fromWire(const pool_JoinReply& reply);
 
 /// A match between shots (MatchState).

@@ -8,6 +8,7 @@
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
+#include "net/server_seal.h"
 #include "net/shot_command_check.h"
 #include "net/topic.h"
 #include "net/waitset.h"
@@ -23,8 +24,9 @@ enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2 };
 }  // namespace
 
 struct ServerTransport::Endpoints : ProtocolTopics {
-  explicit Endpoints(std::uint32_t domain)
+  Endpoints(std::uint32_t domain, const protocol::KeyPair& server_key)
       : ProtocolTopics(domain),
+        key(server_key),
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
         match_info(participant, match_info_topic, qos::lobby()),
@@ -37,6 +39,14 @@ struct ServerTransport::Endpoints : ProtocolTopics {
     waitset.attachData(commands, kCommandTag);
   }
 
+  /// Seals `sample` with the server's key and writes it; empty when written, else why not.
+  template <class T>
+  std::string sealAndWrite(const Writer<T>& writer, T& sample) const {
+    seal(sample, key);
+    return writer.writeOrWhy(sample);
+  }
+
+  protocol::KeyPair key;
   Reader<pool_JoinRequest> join_requests;
   Reader<pool_ShotCommand> commands;
   Writer<pool_MatchInfo> match_info;
@@ -48,7 +58,8 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   std::unordered_set<std::string> replied;  ///< clients whose last reply is kept
 };
 
-ServerTransport::ServerTransport(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {}
+ServerTransport::ServerTransport(std::uint32_t domain, const protocol::KeyPair& server_key)
+    : e_(std::make_unique<Endpoints>(domain, server_key)) {}
 
 ServerTransport::~ServerTransport() = default;
 
@@ -91,27 +102,27 @@ std::vector<IncomingCommand> ServerTransport::takeCommands(const protocol::Comma
 }
 
 std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {
-  return e_->match_info.writeOrWhy(toWire(entry));
+  return e_->sealAndWrite(e_->match_info, *toWire(entry));
 }
 
 std::string ServerTransport::publish(const protocol::MatchView& view) {
-  return e_->states.writeOrWhy(*toWire(view));
+  return e_->sealAndWrite(e_->states, *toWire(view));
 }
 
 std::string ServerTransport::publish(const protocol::JoinAnswer& answer) {
   e_->replied.insert(answer.client);
-  return e_->join_replies.writeOrWhy(toWire(answer));
+  return e_->sealAndWrite(e_->join_replies, *toWire(answer));
 }
 
 std::string ServerTransport::publish(const protocol::ShotReport& report, bool keep) {
-  const auto sample = toWire(report);
-  std::string error = e_->results.writeOrWhy(*sample);
+  auto sample = toWire(report);
+  std::string error = e_->sealAndWrite(e_->results, *sample);
   if (!keep) e_->results.unregister(*sample);
   return error;
 }
 
 std::string ServerTransport::publish(const protocol::TableFrame& frame) {
-  return e_->snapshots.writeOrWhy(*toWire(frame));
+  return e_->sealAndWrite(e_->snapshots, *toWire(frame));
 }
 
 std::uint32_t ServerTransport::resultReaders() const {

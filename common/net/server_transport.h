@@ -12,6 +12,7 @@
 
 #include "net/incoming_command.h"
 #include "protocol/command_limits.h"
+#include "protocol/key_pair.h"
 #include "protocol/match_messages.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
@@ -37,11 +38,12 @@ struct ClientGone {
 using JoinEvent = std::variant<protocol::SeatRequest, UnreadableJoin, ClientGone>;
 
 /// The server's participant, its readers of requests and commands and its writers of lobby
-/// entries, replies, results, frames and states (QoS from qos_profiles.h). Throws DdsError from
-/// the constructor only; a failed write is returned as text (empty: written).
+/// entries, replies, results, frames and states (QoS from qos_profiles.h). Every sample it
+/// publishes is signed with `server_key` (net/server_seal.h). Throws DdsError from the
+/// constructor only; a failed write is returned as text (empty: written).
 class ServerTransport {
  public:
-  explicit ServerTransport(std::uint32_t domain);
+  ServerTransport(std::uint32_t domain, const protocol::KeyPair& server_key);
   ~ServerTransport();
   ServerTransport(const ServerTransport&) = delete;
   ServerTransport& operator=(const ServerTransport&) = delete;

@@ -3,6 +3,7 @@
 
 #include <sodium.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -32,11 +33,23 @@ Result<KeyPair> keyFromHex(const std::string& hex, const std::string& where) {
     return Result<KeyPair>::fail(where + ": not a key file (" +
                                  std::to_string(kSecretKeyBytes * 2) + " hex digits)");
   }
-  crypto_sign_ed25519_sk_to_pk(pair.public_key.data(), pair.secret_key.data());
-  return Result<KeyPair>::ok(pair);
+  return keyPairFromSecret(pair.secret_key, where);
 }
 
 }  // namespace
+
+Result<KeyPair> keyPairFromSecret(std::span<const std::uint8_t> secret, const std::string& where) {
+  if (secret.size() != kSecretKeyBytes) {
+    return Result<KeyPair>::fail(where + ": not an Ed25519 secret key (" +
+                                 std::to_string(secret.size()) + " bytes, not " +
+                                 std::to_string(kSecretKeyBytes) + ")");
+  }
+  initSodium();
+  KeyPair pair;
+  std::copy(secret.begin(), secret.end(), pair.secret_key.begin());
+  crypto_sign_ed25519_sk_to_pk(pair.public_key.data(), pair.secret_key.data());
+  return Result<KeyPair>::ok(pair);
+}
 
 KeyPair generateKeyPair() {
   initSodium();

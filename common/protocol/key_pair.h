@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "core/result.h"
@@ -25,6 +27,10 @@ struct KeyPair {
 
 /// A fresh random key pair.
 KeyPair generateKeyPair();
+
+/// The key pair of a libsodium secret key (64 bytes: seed and public half); an error naming
+/// `where` for any other length.
+Result<KeyPair> keyPairFromSecret(std::span<const std::uint8_t> secret, const std::string& where);
 
 /// The key pair kept in `path` (the secret key in hex, one line). A missing file is created with
 /// a fresh pair, readable by its owner only; a file that exists but does not hold a key is an

@@ -102,6 +102,24 @@ std::string MatchStore::serverId() {
   return readMeta("server_id");
 }
 
+protocol::KeyPair MatchStore::serverKey() {
+  {
+    auto q = db_.prepare("SELECT secret_key FROM server_key WHERE id = 1");
+    if (q.step()) {
+      auto pair = protocol::keyPairFromSecret(q.blob(0), "the server key kept in the database");
+      if (!pair) throw StoreError(pair.error());
+      return *pair;
+    }
+  }
+  const protocol::KeyPair pair = protocol::generateKeyPair();
+  Transaction made(db_);
+  db_.prepare("INSERT INTO server_key(id, secret_key, created) VALUES(1, ?, strftime('%s'))")
+      .bindBlob(1, pair.secret_key)
+      .run();
+  made.commit();
+  return pair;
+}
+
 std::uint64_t MatchStore::opened() {
   const std::string text = readMeta("opened");
   return text.empty() ? 0 : std::strtoull(text.c_str(), nullptr, 10);

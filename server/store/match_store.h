@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "protocol/key_pair.h"
 #include "server/match/match_snapshot.h"
 #include "server/match/shot_record.h"
 #include "server/store/sqlite_db.h"
@@ -39,6 +40,9 @@ class MatchStore {
 
   /// The server id kept in the file; empty when none yet.
   std::string serverId();
+  /// The server's own key pair, which signs everything it publishes: made and kept the first
+  /// time, the same for the life of the file. Throws StoreError when the kept key is unreadable.
+  protocol::KeyPair serverKey();
   /// The number of matches opened so far (ids are never reused).
   std::uint64_t opened();
 

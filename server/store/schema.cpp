@@ -1,5 +1,5 @@
-// Schema version 1 (matches, seats, shots), 2 (seats' public keys) and 3 (banned keys), and the
-// refusals.
+// Schema version 1 (matches, seats, shots), 2 (seats' public keys), 3 (banned keys) and 4 (the
+// server's own key), and the refusals.
 #include "server/store/schema.h"
 
 #include <array>
@@ -42,7 +42,14 @@ constexpr const char* kVersion3 = R"sql(
 CREATE TABLE bans(public_key BLOB PRIMARY KEY, reason TEXT NOT NULL, banned_at TEXT NOT NULL);
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3};
+// Server-signed samples: the server's Ed25519 key pair, made once (at most one row).
+constexpr const char* kVersion4 = R"sql(
+CREATE TABLE server_key(
+  id INTEGER PRIMARY KEY CHECK (id = 1), secret_key BLOB NOT NULL, created INTEGER NOT NULL);
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3,
+                                                         kVersion4};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

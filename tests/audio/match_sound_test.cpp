@@ -24,7 +24,7 @@ std::size_t sounded(const audio::SoundBoard& board) {
 
 TEST_F(MatchSoundTest, EveryShotSoundsFromItsFramesAndItsLogAddsNothing) {
   open(kSoundDomain, "sound");
-  GameClient listener({kSoundDomain, "", "listener"});
+  GameClient listener({kSoundDomain, "", "listener", {}, {}});
   audio::SoundOptions options;
   options.mute = true;  // the silent sink: no device needed, the mixing is the same
   options.log = [](const std::string&) {};

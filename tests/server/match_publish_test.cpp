@@ -105,7 +105,8 @@ TEST(MatchPublish, MatchStateShowsSeatsTurnAndLayout) {
   EXPECT_EQ(st->balls._length, 16u);
   EXPECT_LT(st->shot_clock, 0.0);
   EXPECT_EQ(st->winner, -1);
-  const pool_MatchInfo info = net::toWire(lobbyEntryOf(*m, "srv"));
+  const auto info_sample = net::toWire(lobbyEntryOf(*m, "srv"));
+  const pool_MatchInfo& info = *info_sample;
   EXPECT_EQ(info.seats_taken, 2);
   EXPECT_EQ(net::textOf(info.table), "wpa-9ft");
 }

@@ -29,7 +29,7 @@ enum Domain : std::uint32_t {
   kNewMatch,
   kSideBySide,
   kSeatAttacks,
-  kOtherVersion,
+  kVersionMismatch,  ///< its own: two servers under one id on one domain refuse to run
   kAdmin,
   kAdminBackup,
 };

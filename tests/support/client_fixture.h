@@ -31,6 +31,14 @@ enum Domain : std::uint32_t {
   kRestarts = 122,
   kStarved = 136,  ///< 135–149: the signing, flood and presence tests
   kSpectateScreenshot = 204,
+  // Server-signed samples and server ids (forged_sample_test, forged_match_test,
+  // server_identity_test).
+  kForgedSamples = 205,
+  kImpossibleJumps = 206,
+  kChangedKey = 207,
+  kDuplicateId = 208,
+  kForgedMatch = 209,
+  kDatabaseCopy = 213,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

@@ -26,7 +26,7 @@ namespace pool::client::test {
 class MatchRecorder {
  public:
   explicit MatchRecorder(std::uint32_t domain)
-      : client_({domain, "", "recorder"}),
+      : client_({domain, "", "recorder", {}, {}}),
         participant_(domain),
         command_topic_(participant_),
         commands_(participant_, command_topic_, net::qos::command()),

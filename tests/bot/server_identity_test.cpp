@@ -1,0 +1,110 @@
+// One server per server id on a domain: a second pool-server under a live id (another database,
+// another key) is refused with a clear error and its own exit code, the same database started
+// again after a crash resumes at once, and a copy of a live database stops after the lease.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "client/net/game_client.h"
+#include "support/client_fixture.h"
+
+namespace pool::client::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+class ServerIdentityTest : public ClientIntegrationTest {};
+
+/// Polls `client` until `done()` or `timeout`.
+bool pumpUntil(GameClient& client, const std::function<bool()>& done,
+               std::chrono::milliseconds timeout = 30s) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    client.poll();
+    if (done()) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    client.wait(20ms);
+  }
+}
+
+TEST_F(ServerIdentityTest, ADuplicateServerIdIsRefusedAndTheSameDatabaseResumesAtOnce) {
+  open(kDuplicateId, "server-id");
+  ChildProcess& first = startServer({"--fast", "--db", file("a.db")});
+  GameClient ada({kDuplicateId, "", "Ada", {}, {}});
+  // Join requests are volatile: ask again until the server's reader has matched ours.
+  auto asked = std::chrono::steady_clock::time_point{};
+  ASSERT_TRUE(pumpUntil(ada, [&] {
+    if (ada.seat()) return true;
+    if (std::chrono::steady_clock::now() - asked > 2s &&
+        ada.lobby().lowestWithFreeSeat() == "srv-1") {
+      ada.requestSeat("srv-1", 0);
+      asked = std::chrono::steady_clock::now();
+    }
+    return false;
+  })) << logs();
+  const SeatHolding held = *ada.seat();
+
+  // Another database under the same id while the first is live: refused, exit code 3.
+  ChildProcess& second = startServer({"--fast", "--db", file("b.db")});
+  EXPECT_EQ(second.waitExit(30s), 3) << second.err();
+  EXPECT_NE(second.err().find("--server-id srv is already live on this domain"), std::string::npos)
+      << second.err();
+  EXPECT_TRUE(first.running()) << "the live server goes on";
+
+  // The first one crashes; its database started again resumes at once and the seat is there.
+  first.kill(SIGKILL);
+  const auto restarted = std::chrono::steady_clock::now();
+  ChildProcess& again = startServer({"--fast", "--db", file("a.db")});
+  ASSERT_TRUE(pumpUntil(ada, [&] {
+    return again.err().find("resumed srv-1") != std::string::npos;
+  })) << again.err();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - restarted).count();
+  std::printf("same-database restart resumed srv-1 after %.2f s\n", seconds);
+  // A restart that waited for the crashed run's lease (10 s) to run out would miss this bound.
+  EXPECT_LT(seconds, 8.0);
+  ada.requestRejoin(held.match, held.token, held.seat);
+  ASSERT_TRUE(pumpUntil(ada, [&] {
+    const MatchView* v = ada.state("srv-1");
+    return v && v->seats[0].name == "Ada" && v->seats[0].connected && ada.seat().has_value();
+  })) << again.err();
+  EXPECT_TRUE(again.running());
+  EXPECT_EQ(ada.unreadable(), 0u) << ada.lastProblem();
+}
+
+TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLeaseShowsTheOtherIsLive) {
+  open(kDatabaseCopy, "db-copy");
+  {
+    // A database with a key, then two copies of it: two servers with one key and one id.
+    ChildProcess& maker = startServer({"--fast", "--db", file("a.db")});
+    GameClient watcher({kDatabaseCopy, "", "watcher", {}, {}});
+    ASSERT_TRUE(pumpUntil(watcher, [&] {
+      return watcher.lobby().lowestWithFreeSeat().has_value();
+    })) << logs();
+    maker.kill(SIGTERM);
+    ASSERT_EQ(maker.waitExit(20s), 0) << maker.err();
+  }
+  ASSERT_EQ(std::system(("cp '" + file("a.db") + "' '" + file("b.db") + "'").c_str()), 0);
+  ChildProcess& live = startServer({"--fast", "--db", file("a.db")});
+  GameClient watcher({kDatabaseCopy, "", "watcher", {}, {}});
+  ASSERT_TRUE(pumpUntil(watcher, [&] { return watcher.lobby().lowestWithFreeSeat().has_value(); }))
+      << logs();
+  const auto listed = watcher.lobby().lowestWithFreeSeat();
+
+  // The copy holds the same key: it may be a crashed run of the live one, so it serves at once,
+  // and stops once the other is still there after the lease period.
+  ChildProcess& copy = startServer({"--fast", "--db", file("b.db")});
+  EXPECT_TRUE(pumpUntil(watcher, [&] {
+    return copy.err().find("is still seen") != std::string::npos;
+  })) << copy.err();
+  EXPECT_EQ(copy.waitExit(60s), 3) << copy.err();
+  EXPECT_NE(copy.err().find("is still live on the domain after"), std::string::npos) << copy.err();
+  EXPECT_TRUE(live.running()) << live.err();
+  // The copy did not dispose the live server's matches on its way out.
+  pumpUntil(
+      watcher, [] { return false; }, 2s);
+  EXPECT_EQ(watcher.lobby().lowestWithFreeSeat(), listed);
+}
+
+}  // namespace
+}  // namespace pool::client::test
