@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "protocol/match_settings.h"
+
 namespace pool::server {
 
 /// Everything pool-server can be told.
@@ -26,7 +28,16 @@ struct ServerConfig {
   std::string log_level = "info";    ///< spdlog level name
   std::string db;      ///< the SQLite file matches are kept in; empty: store::defaultDbPath()
   std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
+  // Defaults of the tables this server opens (the first player at a table may choose others).
+  int game = 8;                      ///< 8, 9 or 10
+  int race = 1;                      ///< racks to win a match
+  std::string breaks = "alternate";  ///< "alternate" or "winner"
+  std::string shot_clock = "off";    ///< "off" or seconds per shot (5-600)
 };
+
+/// The table defaults of `config` (game, race, breaks, shot clock), or why they are not valid.
+std::optional<protocol::MatchSettings> matchSettingsOf(const ServerConfig& config,
+                                                       std::string* why = nullptr);
 
 /// The outcome of reading the command line: run with `config`, or exit with `exit_code` (help,
 /// or an error already printed).
@@ -36,9 +47,9 @@ struct ConfigOutcome {
 };
 
 /// Reads flags (--domain, --tables, --snapshot-hz, --fast, --config FILE, --server-id, --grace,
-/// --name, --table, --log-level, --db,
-/// --replay). A --config JSON file gives values under the flags' names
-/// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.
+/// --name, --table, --log-level, --db, --replay, --game, --race, --breaks, --shot-clock). A
+/// --config JSON file gives values under the flags' names (without dashes; "snapshot-hz" or
+/// "snapshot_hz"); flags given on the command line win.
 ConfigOutcome parseConfig(int argc, const char* const* argv);
 
 /// Applies JSON `text` onto `config`, naming the key in the error; empty on success.

@@ -89,6 +89,8 @@ int main(int argc, char** argv) {
   app.add_option("--token-file", flags.bot.seat_file,
                  "file keeping the seat token: read at start to rejoin, written when seated "
                  "(the signing key is kept beside it, in FILE.key)");
+  app.add_flag("--ignore-shot-clock", flags.bot.ignore_shot_clock,
+               "think the full --think even past the shot clock (tests)");
   app.add_option("--think", flags.bot.think, "seconds to wait on each turn before shooting")
       ->check(CLI::Range(0.0, 60.0));
   app.add_option("--timeout", flags.timeout, "give up (exit 3) after this many seconds; 0: never");

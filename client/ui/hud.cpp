@@ -3,7 +3,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "client/app/spoken.h"
@@ -27,6 +29,24 @@ void seatLine(const client::MatchView& view, int s, const std::vector<int>& loca
               seat.racks_won);
 }
 
+// The shot clock as a bar, counted down from the state's arrival; red, with a word, near the end.
+void clockBar(const client::MatchView& v) {
+  if (v.shot_clock < 0.0 || v.shot_clock_total <= 0.0) return;
+  static std::uint32_t seen_revision = 0;
+  static double seen_at = 0.0;
+  if (v.revision != seen_revision) {
+    seen_revision = v.revision;
+    seen_at = ImGui::GetTime();
+  }
+  const double left = std::max(0.0, v.shot_clock - (ImGui::GetTime() - seen_at));
+  const bool warning = left <= v.settings.warningAt();
+  if (warning) ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.9f, 0.2f, 0.1f, 1.0f));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f s%s", std::ceil(left), warning ? ", time!" : "");
+  ImGui::ProgressBar(static_cast<float>(left / v.shot_clock_total), ImVec2(220, 0), text);
+  if (warning) ImGui::PopStyleColor();
+}
+
 void matchPanel(const HudInput& in, HudActions& actions) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("Match", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -39,11 +59,13 @@ void matchPanel(const HudInput& in, HudActions& actions) {
   const auto& v = *in.view;
   ImGui::Text("%s, rack %u, shot %u", app::spoken(client::toString(v.phase)).c_str(), v.rack,
               v.shot_number);
+  ImGui::Text("%s, race to %d: %d-%d", rules::toString(v.settings.game), v.settings.race_to,
+              v.seats[0].racks_won, v.seats[1].racks_won);
   for (int s = 0; s < 2; ++s) seatLine(v, s, in.local_seats);
   if (v.ball_in_hand != rules::BallInHand::None) {
     ImGui::Text("ball in hand: %s", app::spoken(rules::toString(v.ball_in_hand)).c_str());
   }
-  if (v.shot_clock >= 0) ImGui::Text("shot clock: %.0f s", v.shot_clock);
+  clockBar(v);
   if (in.in_motion) ImGui::TextUnformatted("balls moving");
   if (!in.last_verdict.empty()) {
     ImGui::TextWrapped("last shot: %s", app::spokenText(in.last_verdict).c_str());

@@ -42,7 +42,8 @@ MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> co
     const auto i = static_cast<std::size_t>(s);
     std::string player = stored.seats[i].player;
     if (player.empty()) player = "seat " + std::to_string(s);
-    target_.takeSeat(s, player, "replay-" + std::to_string(s), tokens_[i], keys_[i].publicKey());
+    target_.takeSeat(s, player, "replay-" + std::to_string(s), tokens_[i], keys_[i].publicKey(),
+                     stored.settings);
   }
 }
 

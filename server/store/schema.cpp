@@ -1,4 +1,5 @@
-// Schema version 1 (matches, seats, shots) and 2 (seats' public keys), and the refusals.
+// Schema version 1 (matches, seats, shots), 2 (seats' public keys) and 3 (match settings), and
+// the refusals.
 #include "server/store/schema.h"
 
 #include <array>
@@ -36,7 +37,12 @@ constexpr const char* kVersion2 = R"sql(
 ALTER TABLE seats ADD COLUMN public_key BLOB NOT NULL DEFAULT x'';
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2};
+// Match settings (game, race, breaks, shot clock) as JSON; '{}': an 8-ball match of one rack.
+constexpr const char* kVersion3 = R"sql(
+ALTER TABLE matches ADD COLUMN settings TEXT NOT NULL DEFAULT '{}';
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

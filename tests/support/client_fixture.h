@@ -27,6 +27,9 @@ enum Domain : std::uint32_t {
   kWindowRestart = 212,
   kStarved = 136,  ///< 135–149: the signing, flood and presence tests
   kSpectateScreenshot = 204,
+  kNineBallRace = 205,
+  kTenBallRace = 206,
+  kShotClock = 207,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
