@@ -66,7 +66,9 @@ TEST_F(ShotClockTest, ABotThatWaitsLosesItsTurnWithBallInHandToTheOpponent) {
   })) << logs();
   // Alice, who was not told to wait, never ran out of time on her turns.
   for (const auto& r : recorder.reports()) {
-    if (r.match == match && ranOut(r)) EXPECT_EQ(r.seat, bob) << r.verdict_text;
+    if (r.match == match && ranOut(r)) {
+      EXPECT_EQ(r.seat, bob) << r.verdict_text;
+    }
   }
   EXPECT_TRUE(alice.running());
 }

@@ -4,6 +4,7 @@
 
 #include "net/message_convert.h"
 #include "net/messages.h"
+#include "net/wire_fields.h"
 
 namespace pool::net {
 namespace {
@@ -74,7 +75,7 @@ TEST(SettingsConvert, SeatRequestSettingsInAndBadOnesRefused) {
   wire->shot_clock = 1.0;
   EXPECT_FALSE(fromWire(*wire));
   wire->shot_clock = 0.0;
-  wire->breaks = static_cast<pool_BreakOrder>(7);
+  setRawValue(wire->breaks, 7);
   EXPECT_FALSE(fromWire(*wire));
   // Without settings the fields are not read.
   wire->has_settings = false;

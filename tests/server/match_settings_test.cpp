@@ -2,8 +2,8 @@
 // the shot clock runs on the server's time (extension, foul, stalls and the shooter's view).
 #include <gtest/gtest.h>
 
-#include "server/match/match.h"
 #include "match_fixture.h"
+#include "server/match/match.h"
 
 namespace pool::server::test {
 namespace {
