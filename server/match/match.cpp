@@ -521,6 +521,11 @@ std::optional<CommandAnswer> Match::tickClock(double now) {
   return timeOut();
 }
 
+std::optional<CommandAnswer> Match::runOutClock() {
+  if (flight_ || !inPlay()) return std::nullopt;
+  return timeOut();
+}
+
 // The clock ran out: judged as a safety without a strike (a pending choice taken as playing on).
 CommandAnswer Match::timeOut() {
   rules::GameState state = game_;

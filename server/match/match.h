@@ -90,6 +90,9 @@ class Match {
   /// Seconds left for the shooter at `now`; empty while no clock runs (none set, no rack in
   /// play, a shot in motion).
   std::optional<double> clockLeft(double now) const;
+  /// Judges the shooter's clock as run out now, whatever it shows (a replay of a stored expiry);
+  /// empty when no rack is in play or a shot is in motion.
+  std::optional<CommandAnswer> runOutClock();
   /// Seconds the current shot has in all (an extension included).
   double clockTotal() const { return clock_total_; }
   /// Shot clock extensions `seat` has left this rack.

@@ -96,5 +96,45 @@ TEST_F(RotationMatchTest, TwoBotsPlayATenBallRaceToThree) {
   playRace(kTenBallRace, "10", rules::Game::TenBall);
 }
 
+TEST_F(RotationMatchTest, TheFirstBotAtAFreeTableSetsHowItIsPlayed) {
+  open(kOpensTable, "opens-table");
+  MatchRecorder recorder(kOpensTable);
+  startServer({"--fast"});  // the server's tables default to 8-ball, one rack, no clock
+  ASSERT_TRUE(recorder.pump(20s, [&] {
+    const std::string m = recorder.firstMatch();
+    return !m.empty() && recorder.latest(m) != nullptr;
+  }));
+  const std::string match = recorder.firstMatch();
+  EXPECT_EQ(recorder.latest(match)->settings, protocol::MatchSettings{});
+  start("pool-bot",
+        {"--domain", std::to_string(domain_), "--name", "ada", "--game", "10", "--race", "2",
+         "--breaks", "winner", "--shot-clock", "30", "--timeout", "60"},
+        "ada");
+  protocol::MatchSettings wanted;
+  wanted.game = rules::Game::TenBall;
+  wanted.race_to = 2;
+  wanted.breaks = protocol::BreakOrder::Winner;
+  wanted.shot_clock = 30.0;
+  ASSERT_TRUE(recorder.pump(30s, [&] {
+    const MatchView* v = recorder.latest(match);
+    return v && v->seats[0].name == "ada" && v->settings == wanted;
+  })) << logs();
+  // A 10-ball rack: ten object balls; the lobby shows the settings too.
+  int object_balls = 0;
+  for (const auto& b : recorder.latest(match)->balls) {
+    object_balls += physics::onTable(b.state) && b.id != physics::kCueBall ? 1 : 0;
+  }
+  EXPECT_EQ(object_balls, 10);
+  // A second bot with other wishes sits down and changes nothing.
+  start("pool-bot",
+        {"--domain", std::to_string(domain_), "--name", "bea", "--game", "8", "--timeout", "60"},
+        "bea");
+  ASSERT_TRUE(recorder.pump(30s, [&] {
+    const MatchView* v = recorder.latest(match);
+    return v && v->seats[1].name == "bea";
+  })) << logs();
+  EXPECT_EQ(recorder.latest(match)->settings, wanted);
+}
+
 }  // namespace
 }  // namespace pool::client::test

@@ -4,6 +4,7 @@
 
 #include "match_fixture.h"
 #include "server/match/match.h"
+#include "server/match/match_replay.h"
 
 namespace pool::server::test {
 namespace {
@@ -159,6 +160,30 @@ TEST(ShotClock, StartsOnceTheShootersViewHasShownTheShotToRest) {
   // The frames went out at once, but the shooter sees the shot for its length: the clock waits.
   EXPECT_DOUBLE_EQ(*m->clockLeft(1.0 + rest), 5.0);
   EXPECT_NEAR(*m->clockLeft(1.0 + rest + kViewDelay + 2.0), 3.0, 1e-6);
+}
+
+TEST(ShotClock, AStoredExpiryIsReplayedWhereItHappened) {
+  MatchOptions options = pacedOptions();
+  options.settings = nineBallRace(3, 5.0);
+  auto m = seatedMatch(options);
+  m->tickClock(0.0);
+  m->tickClock(5.1);  // the extension
+  auto expired = m->tickClock(10.2);
+  ASSERT_TRUE(expired && expired->record);
+  // On the break a time-out hands the break over.
+  EXPECT_EQ(m->game().breaker, 1);
+  EXPECT_EQ(m->phase(), MatchPhase::Break);
+
+  Match target("srv-2", "Replay", runner(), pacedOptions(), 42);
+  MatchReplay replay(m->snapshot(), {*expired->record}, target, {kToken0, kToken1}, 0.0);
+  EXPECT_EQ(target.settings().game, rules::Game::NineBall);
+  EXPECT_FALSE(target.settings().clockOn());  // the replay's own clock does not run
+  const auto again = replay.step(0.0);
+  ASSERT_TRUE(again && again->accepted());
+  EXPECT_TRUE(replay.differences().empty());
+  EXPECT_EQ(replay.replayed(), 1u);
+  EXPECT_EQ(target.game().breaker, 1);
+  EXPECT_EQ(target.lastVerdict(), m->lastVerdict());
 }
 
 }  // namespace

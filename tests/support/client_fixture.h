@@ -30,6 +30,7 @@ enum Domain : std::uint32_t {
   kNineBallRace = 205,
   kTenBallRace = 206,
   kShotClock = 207,
+  kOpensTable = 208,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
