@@ -1,4 +1,5 @@
-// pool-server: the authoritative 8-ball match server; wires the match logic to Cyclone DDS.
+// pool-server: the authoritative 8-, 9- and 10-ball match server; wires the match logic to Cyclone
+// DDS.
 #include <signal.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -71,6 +72,7 @@ pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& 
   options.max_matches = static_cast<std::size_t>(config.max_matches);
   options.match.snapshot_hz = config.snapshot_hz;
   options.match.unpaced = config.fast;
+  options.match.settings = *pool::server::matchSettingsOf(config);
   options.protocol_version = pool::protocol::kProtocolVersion;
   return options;
 }

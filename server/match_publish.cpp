@@ -11,9 +11,15 @@ namespace pool::server {
 namespace {
 
 int ballsLeft(const Match& match, rules::Group group) {
+  const auto& balls = match.balls();
+  // 9- and 10-ball: both players shoot at every object ball on the table.
+  if (match.settings().game != rules::Game::EightBall) {
+    return static_cast<int>(std::count_if(balls.begin(), balls.end(), [](const auto& b) {
+      return physics::onTable(b.state) && rules::isObjectBall(b.id);
+    }));
+  }
   // While the table is open each player has seven to go.
   if (group == rules::Group::None) return 7;
-  const auto& balls = match.balls();
   return static_cast<int>(std::count_if(balls.begin(), balls.end(), [&](const auto& b) {
     return physics::onTable(b.state) && rules::groupOf(b.id) == group;
   }));
@@ -30,6 +36,8 @@ protocol::SeatView seatViewOf(const Match& match, int seat) {
   out.fouls = s.fouls;
   out.racks_won = s.racks_won;
   out.last_seq = s.last_seq;
+  out.fouls_in_row = match.game().fouls_in_row[static_cast<std::size_t>(seat)];
+  out.extensions_left = match.extensionsLeft(seat);
   return out;
 }
 
@@ -49,10 +57,12 @@ protocol::LobbyEntry lobbyEntryOf(const Match& match, const std::string& server_
   }
   info.spectators = static_cast<std::uint32_t>(match.spectators());
   info.protocol_version = protocol::kProtocolVersion;
+  info.settings = match.settings();
+  info.racks_won = {match.seats()[0].racks_won, match.seats()[1].racks_won};
   return info;
 }
 
-protocol::MatchView matchViewOf(const Match& match) {
+protocol::MatchView matchViewOf(const Match& match, std::optional<double> now) {
   const rules::GameState& game = match.game();
   const bool started = match.phase() != MatchPhase::Lobby;
   protocol::MatchView st;
@@ -66,7 +76,10 @@ protocol::MatchView matchViewOf(const Match& match) {
   st.shot_number = match.shotNumber();
   st.ball_in_hand = match.inPlay() ? game.ball_in_hand : rules::BallInHand::None;
   st.options = game.options;
-  st.shot_clock = -1.0;  // no shot clock yet
+  const auto left = now ? match.clockLeft(*now) : std::nullopt;
+  st.shot_clock = left.value_or(-1.0);
+  st.shot_clock_total = match.clockTotal();
+  st.settings = match.settings();
   st.winner = game.winner;
   st.end = game.end;
   st.last_verdict = match.lastVerdict();

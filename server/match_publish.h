@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "physics/simulation.h"
@@ -18,8 +19,9 @@ namespace pool::server {
 /// The lobby entry of `match`, run by server `server_id`.
 protocol::LobbyEntry lobbyEntryOf(const Match& match, const std::string& server_id);
 
-/// The state of `match` between shots, with its balls at rest.
-protocol::MatchView matchViewOf(const Match& match);
+/// The state of `match` between shots, with its balls at rest, and its shot clock at `now` (s, the
+/// server's clock; none without it).
+protocol::MatchView matchViewOf(const Match& match, std::optional<double> now = {});
 
 /// The answer to a command as soon as it is judged: a refusal (with its reason), or an accepted
 /// shot whose motion is about to be published (no events or verdict yet; verdict_text empty).

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -63,6 +64,10 @@ std::string applyConfigJson(const std::string& text, ServerConfig& c) {
     take(doc, "log-level", c.log_level);
     take(doc, "db", c.db);
     take(doc, "admin-socket", c.admin_socket);
+    take(doc, "game", c.game);
+    take(doc, "race", c.race);
+    take(doc, "breaks", c.breaks);
+    take(doc, "shot-clock", c.shot_clock);
   } catch (const std::runtime_error& e) {
     return e.what();
   }
@@ -82,6 +87,7 @@ std::string checkConfig(const ServerConfig& c) {
     return "server-id: 1-" + std::to_string(kMaxServerIdLength) +
            " letters, digits, '.', '_' or '-' (match ids are \"<server id>-<n>\" in 39 bytes)";
   }
+  if (std::string why; !matchSettingsOf(c, &why)) return why;
   if (spdlog::level::from_str(c.log_level) == spdlog::level::off && c.log_level != "off") {
     return "log-level: '" + c.log_level +
            "' is not one of trace, debug, info, warn, error, "
@@ -90,8 +96,38 @@ std::string checkConfig(const ServerConfig& c) {
   return {};
 }
 
+std::optional<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c, std::string* why) {
+  auto refuse = [why](std::string reason) {
+    if (why) *why = std::move(reason);
+    return std::optional<protocol::MatchSettings>{};
+  };
+  protocol::MatchSettings s;
+  const auto game = rules::gameOfNumber(c.game);
+  if (!game) return refuse("game: must be 8, 9 or 10");
+  s.game = *game;
+  s.race_to = c.race;
+  const auto breaks = protocol::breakOrderOf(c.breaks);
+  if (!breaks) return refuse("breaks: must be alternate or winner");
+  s.breaks = *breaks;
+  if (c.shot_clock != "off") {
+    char* end = nullptr;
+    s.shot_clock = std::strtod(c.shot_clock.c_str(), &end);
+    if (c.shot_clock.empty() || end != c.shot_clock.c_str() + c.shot_clock.size() ||
+        s.shot_clock == 0.0) {
+      return refuse("shot-clock: must be off or seconds per shot (5-600)");
+    }
+  }
+  if (std::string reason = protocol::checkSettings(s); !reason.empty()) {
+    return refuse(reason.rfind("race", 0) == 0
+                      ? "race: must be 1-" + std::to_string(protocol::kMaxRace)
+                      : "shot-clock: must be off or seconds per shot "
+                        "(5-600)");
+  }
+  return s;
+}
+
 ConfigOutcome parseConfig(int argc, const char* const* argv) {
-  CLI::App app{"pool-server: the authoritative 8-ball match server over Cyclone DDS"};
+  CLI::App app{"pool-server: the authoritative 8-, 9- and 10-ball match server over Cyclone DDS"};
   ServerConfig flags;
   std::string config_file;
   app.add_option("--domain", flags.domain, "DDS domain id (0-232)");
@@ -109,6 +145,10 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error, critical, off");
   app.add_option("--db", flags.db,
                  "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)");
+  app.add_option("--game", flags.game, "game of the tables this server opens: 8, 9 or 10");
+  app.add_option("--race", flags.race, "racks to win a match (1-15)");
+  app.add_option("--breaks", flags.breaks, "who breaks the next rack: alternate or winner");
+  app.add_option("--shot-clock", flags.shot_clock, "off, or seconds per shot (5-600)");
   app.add_option("--replay", flags.replay,
                  "play stored match MATCH again as a new match for spectators (stores nothing)");
   app.add_option("--admin-socket", flags.admin_socket,
@@ -149,6 +189,10 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   if (app.count("--db")) c.db = flags.db;
   if (app.count("--replay")) c.replay = flags.replay;
   if (app.count("--admin-socket")) c.admin_socket = flags.admin_socket;
+  if (app.count("--game")) c.game = flags.game;
+  if (app.count("--race")) c.race = flags.race;
+  if (app.count("--breaks")) c.breaks = flags.breaks;
+  if (app.count("--shot-clock")) c.shot_clock = flags.shot_clock;
   if (auto error = checkConfig(c); !error.empty()) {
     std::cerr << error << "\n";
     out.exit_code = 2;

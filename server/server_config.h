@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "protocol/match_settings.h"
 #include "protocol/server_signature.h"
 
 namespace pool::server {
@@ -29,7 +30,16 @@ struct ServerConfig {
   std::string db;      ///< the SQLite file matches are kept in; empty: store::defaultDbPath()
   std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
   std::string admin_socket;  ///< the operator's Unix socket; empty: "<db>.sock"
+  // Defaults of the tables this server opens (the first player at a table may choose others).
+  int game = 8;                      ///< 8, 9 or 10
+  int race = 1;                      ///< racks to win a match
+  std::string breaks = "alternate";  ///< "alternate" or "winner"
+  std::string shot_clock = "off";    ///< "off" or seconds per shot (5-600)
 };
+
+/// The table defaults of `config` (game, race, breaks, shot clock), or why they are not valid.
+std::optional<protocol::MatchSettings> matchSettingsOf(const ServerConfig& config,
+                                                       std::string* why = nullptr);
 
 /// The outcome of reading the command line: run with `config`, or exit with `exit_code` (help,
 /// or an error already printed).
@@ -43,6 +53,10 @@ struct ConfigOutcome {
 /// --name, --table, --log-level, --db,
 /// --replay, --admin-socket). A --config JSON file gives values under the flags' names
 /// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.
+/// Reads flags (--domain, --tables, --snapshot-hz, --fast, --config FILE, --server-id, --grace,
+/// --name, --table, --log-level, --db, --replay, --game, --race, --breaks, --shot-clock). A
+/// --config JSON file gives values under the flags' names (without dashes; "snapshot-hz" or
+/// "snapshot_hz"); flags given on the command line win.
 ConfigOutcome parseConfig(int argc, const char* const* argv);
 
 /// Applies JSON `text` onto `config`, naming the key in the error; empty on success.

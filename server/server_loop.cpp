@@ -49,6 +49,15 @@ void ServerLoop::step(double now) {
   stepReplay(now);
   publishFrames(now);
   registry_.expireAway(now, config_.grace);
+  for (const auto& [match, answer] : registry_.tickClocks(now)) {
+    if (!answer.accepted()) {
+      spdlog::error("shot clock of {}: {}", match, answer.rejection.text);
+      continue;
+    }
+    spdlog::info("shot clock of {}: seat {} ran out of time", match, answer.seat);
+    storeShot(answer, match);
+    publishResult(match, answer);
+  }
   const auto closed = registry_.sweepEmpty();
   for (const auto& id : closed) dispose(id);
   // A table is always free for the next players (two asking at once meet there).
@@ -283,7 +292,7 @@ void ServerLoop::publishChanges(double now) {
     auto& published = published_[m->id()];
     if (published.revision != m->revision()) {
       published.revision = m->revision();
-      warnIfFailed(transport_.publish(matchViewOf(*m)), "match state");
+      warnIfFailed(transport_.publish(matchViewOf(*m, last_step_)), "match state");
     } else if (published.spectators == m->spectators() ||
                now - published.info_at < kSpectatorCountPeriod) {
       continue;  // at most one lobby entry a period for spectators coming and going

@@ -95,6 +95,11 @@ std::string choiceSentence(rules::Choice choice, const std::string& other) {
       return "Rack the balls again and break yourself.";
     case rules::Choice::OpponentReBreaks:
       return "Rack the balls again and let " + other + " break.";
+    case rules::Choice::PushOut:
+      return "Play a push-out: move the cue ball anywhere without having to hit the lowest ball; " +
+             other + " then chooses who shoots next.";
+    case rules::Choice::PassBack:
+      return "Pass the table back: " + other + " shoots from where the balls lie.";
   }
   return "";
 }

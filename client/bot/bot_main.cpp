@@ -28,7 +28,29 @@ struct Flags {
   std::string log_level = "info";
   double timeout = 0.0;  // s; 0: none
   pool::bot::BotConfig bot;
+  // How to play a table the bot opens (the first player at a table chooses); unset: the server's.
+  int game = 0;
+  int race = 1;
+  std::string breaks = "alternate";
+  double shot_clock = 0.0;
 };
+
+// The table settings the flags ask for, or why they are refused; empty without --game.
+std::optional<pool::protocol::MatchSettings> tableSettings(const Flags& flags, std::string& why) {
+  if (flags.game == 0) return std::nullopt;
+  pool::protocol::MatchSettings s;
+  const auto game = pool::rules::gameOfNumber(flags.game);
+  const auto breaks = pool::protocol::breakOrderOf(flags.breaks);
+  if (!game) why = "--game: must be 8, 9 or 10";
+  if (!breaks) why = "--breaks: must be alternate or winner";
+  if (!game || !breaks) return std::nullopt;
+  s.game = *game;
+  s.race_to = flags.race;
+  s.breaks = *breaks;
+  s.shot_clock = flags.shot_clock;
+  if (std::string reason = pool::protocol::checkSettings(s); !reason.empty()) why = reason;
+  return s;
+}
 
 int run(const Flags& flags) {
   using namespace pool;
@@ -49,6 +71,12 @@ int run(const Flags& flags) {
     }
     key = *loaded;
   }
+  std::string why;
+  const auto settings = tableSettings(flags, why);
+  if (!why.empty()) {
+    spdlog::error("{}", why);
+    return 2;
+  }
   // Server keys are pinned in memory for the bot's run (a restarted bot pins again).
   client::ClientOptions options{
       flags.domain, "", flags.name, {}, [](const std::string& line, bool problem) {
@@ -59,6 +87,7 @@ int run(const Flags& flags) {
         }
       }};
   client::GameClient client(std::move(options), key);
+  client.setTableSettings(settings);
   bot::BotPlayer player(client, flags.bot, saved);
   const auto start = std::chrono::steady_clock::now();
   auto now = [&] {
@@ -87,7 +116,7 @@ int run(const Flags& flags) {
 
 int main(int argc, char** argv) {
   Flags flags;
-  CLI::App app{"pool-bot: a headless 8-ball player"};
+  CLI::App app{"pool-bot: a headless 8-, 9- and 10-ball player"};
   app.add_option("--domain", flags.domain, "DDS domain id")->check(CLI::Range(0, 232));
   app.add_option("--match", flags.bot.match,
                  "match id to sit in (default: the lowest-numbered with a free seat)");
@@ -98,6 +127,12 @@ int main(int argc, char** argv) {
   app.add_option("--token-file", flags.bot.seat_file,
                  "file keeping the seat token: read at start to rejoin, written when seated "
                  "(the signing key is kept beside it, in FILE.key)");
+  app.add_flag("--ignore-shot-clock", flags.bot.ignore_shot_clock,
+               "think the full --think even past the shot clock (tests)");
+  app.add_option("--game", flags.game, "a table the bot opens: 8, 9 or 10 (default: the server's)");
+  app.add_option("--race", flags.race, "with --game: racks to win (1-15)");
+  app.add_option("--breaks", flags.breaks, "with --game: alternate or winner");
+  app.add_option("--shot-clock", flags.shot_clock, "with --game: seconds per shot, 0: none");
   app.add_option("--think", flags.bot.think, "seconds to wait on each turn before shooting")
       ->check(CLI::Range(0.0, 60.0));
   app.add_option("--timeout", flags.timeout, "give up (exit 3) after this many seconds; 0: never");

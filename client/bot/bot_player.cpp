@@ -255,10 +255,15 @@ void BotPlayer::maybeShoot(double now) {
   if (turn_revision_ != view->revision) {
     turn_revision_ = view->revision;
     turn_since_ = now;
+    clock_deadline_.reset();
+    if (view->shot_clock >= 0.0) clock_deadline_ = now + view->shot_clock;
   }
-  if (now - turn_since_ < config_.think) return;
-  const TableView* table = tableFor(seat->match);
-  if (!table) return;
+  const bool pressed =
+      clock_deadline_ && !config_.ignore_shot_clock && now >= *clock_deadline_ - kClockMargin;
+  if (now - turn_since_ < config_.think && !pressed) return;
+  if (!tableFor(seat->match)) return;
+  // The game decides what is legal: the view's rules follow the match's settings.
+  tables_[planner_table_]->rules.game = view->settings.game;
   PlannedShot shot = planner_->plan(view->balls, client::gameStateOf(*view));
   if (shoots(shot)) shot.cue = noise_.apply(shot.cue);
   const auto sent = client_.shoot(requestOf(shot));

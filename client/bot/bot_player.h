@@ -27,7 +27,13 @@ struct BotConfig {
   double lost_seat_wait = 5.0;      ///< s to wait for a lost match to reappear before seating anew
   double answer_timeout = 10.0;     ///< s without an answer to a shot before sending it again
   double think = 0.0;               ///< s to wait on each turn before shooting (pace for watchers)
+  /// Tests: think the full `think` even when the shot clock runs out first (it shoots
+  /// kClockMargin s before the clock's end otherwise).
+  bool ignore_shot_clock = false;
 };
+
+/// How long before the shot clock runs out the bot shoots at the latest (planning, delivery), s.
+inline constexpr double kClockMargin = 2.0;
 
 /// Where the bot is in its life.
 enum class BotStage : std::uint8_t {
@@ -92,6 +98,7 @@ class BotPlayer {
   double retry_at_ = 0.0;
   std::optional<std::uint32_t> turn_revision_;  ///< the state our current turn was first seen in
   double turn_since_ = 0.0;
+  std::optional<double> clock_deadline_;  ///< when the shot clock of our turn runs out (our clock)
   int rejections_ = 0;
   std::optional<std::uint32_t> away_revision_;  ///< the state that showed us away (we rejoined)
 

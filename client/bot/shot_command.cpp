@@ -15,6 +15,10 @@ protocol::ShotOption optionOf(rules::Choice choice) {
       return protocol::ShotOption::ReBreak;
     case rules::Choice::OpponentReBreaks:
       return protocol::ShotOption::OpponentReBreaks;
+    case rules::Choice::PushOut:
+      return protocol::ShotOption::PushOut;
+    case rules::Choice::PassBack:
+      return protocol::ShotOption::PassBack;
   }
   return protocol::ShotOption::None;
 }

@@ -103,6 +103,7 @@ std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, 
   r.seat = seat;
   r.name = options_.name;
   r.token = token;
+  if (action == JoinAction::Seat) r.settings = table_settings_;
   const std::uint32_t number = r.request;
   send(r);
   pending_[number] = PendingJoin{std::move(r), false};

@@ -61,6 +61,11 @@ class GameClient {
   /// `key` signs the commands of its seats (its public half goes with seat and rejoin requests);
   /// empty: a fresh pair for this session. Keep it to rejoin a seat from another process.
   explicit GameClient(ClientOptions options, std::optional<protocol::KeyPair> key = std::nullopt);
+  /// How to play a table this client opens: sent with its seat requests (the server applies them
+  /// only when they seat the first player at a table that has not started). Empty: the server's.
+  void setTableSettings(std::optional<protocol::MatchSettings> settings) {
+    table_settings_ = std::move(settings);
+  }
   ~GameClient();
   GameClient(const GameClient&) = delete;
   GameClient& operator=(const GameClient&) = delete;
@@ -148,6 +153,7 @@ class GameClient {
   std::map<std::string, MatchView> states_;
   std::uint64_t unreadable_ = 0;
   std::string last_problem_;
+  std::optional<protocol::MatchSettings> table_settings_;
 };
 
 /// A random client id (hex, 16 characters).

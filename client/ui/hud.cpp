@@ -117,10 +117,29 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
   }
 }
 
+// The shot clock as a bar, counted down from the state's arrival; red, with a word, near the end.
+void clockBar(const client::MatchView& v) {
+  if (v.shot_clock < 0.0 || v.shot_clock_total <= 0.0) return;
+  static std::uint32_t seen_revision = 0;
+  static double seen_at = 0.0;
+  if (v.revision != seen_revision) {
+    seen_revision = v.revision;
+    seen_at = ImGui::GetTime();
+  }
+  const double left = std::max(0.0, v.shot_clock - (ImGui::GetTime() - seen_at));
+  const bool warning = left <= v.settings.warningAt();
+  if (warning) ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.9f, 0.2f, 0.1f, 1.0f));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f s%s", std::ceil(left), warning ? ", time!" : "");
+  ImGui::ProgressBar(static_cast<float>(left / v.shot_clock_total), ImVec2(220, 0), text);
+  if (warning) ImGui::PopStyleColor();
+}
+
 void matchPanel(Say& say, const HudInput& in) {
   anchor(ImVec2(0, 0), 0.32f, 0.45f, std::min(screenSize().x * 0.32f, px(340.0f)));
   ImGui::Begin("Match", nullptr, kPane);
   say.text(in.match + (in.spectating ? " (watching)" : ""));
+
   if (!in.view) {
     say.text("waiting for the match state...");
     ImGui::End();
@@ -138,7 +157,13 @@ void matchPanel(Say& say, const HudInput& in) {
     if (!where.empty()) turn += ", cue ball in hand " + where;
     say.wrapped(turn);
   }
-  if (v.shot_clock >= 0) say.text("shot clock: " + fixed(v.shot_clock, 0) + " s");
+  say.text(app::spoken(rules::toString(v.settings.game)) + ", race to " +
+           std::to_string(v.settings.race_to) + ": " + std::to_string(v.seats[0].racks_won) + "-" +
+           std::to_string(v.seats[1].racks_won));
+  if (v.shot_clock >= 0) {
+    say.out().texts.push_back("shot clock: " + fixed(v.shot_clock, 0) + " s");
+    clockBar(v);
+  }
   if (in.in_motion) say.text("balls moving");
   if (ImGui::SmallButton("Leave to the lobby")) say.out().leave = true;
   say.out().texts.push_back("Leave to the lobby");

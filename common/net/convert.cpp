@@ -238,6 +238,10 @@ pool_ShotOption toWire(protocol::ShotOption option) {
       return pool_OPTION_REBREAK;
     case protocol::ShotOption::OpponentReBreaks:
       return pool_OPTION_OPPONENT_REBREAKS;
+    case protocol::ShotOption::PushOut:
+      return pool_OPTION_PUSH_OUT;
+    case protocol::ShotOption::PassBack:
+      return pool_OPTION_PASS_BACK;
   }
   return pool_OPTION_NONE;
 }
@@ -256,6 +260,10 @@ Result<protocol::ShotOption> fromWire(const pool_ShotOption& option) {
       return Result<protocol::ShotOption>::ok(protocol::ShotOption::ReBreak);
     case pool_OPTION_OPPONENT_REBREAKS:
       return Result<protocol::ShotOption>::ok(protocol::ShotOption::OpponentReBreaks);
+    case pool_OPTION_PUSH_OUT:
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::PushOut);
+    case pool_OPTION_PASS_BACK:
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::PassBack);
   }
   return Result<protocol::ShotOption>::fail("unknown shot option " +
                                             std::to_string(rawValue(option)));

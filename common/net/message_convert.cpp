@@ -31,14 +31,14 @@ static_assert(pool_REJECT_BAD_CALL == static_cast<int>(RejectReason::BadCall));
 static_assert(pool_REJECT_MATCH_OVER == static_cast<int>(RejectReason::MatchOver));
 static_assert(pool_REJECT_BAD_SIGNATURE == static_cast<int>(RejectReason::BadSignature));
 static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
-static_assert(pool_END_FORFEIT == static_cast<int>(rules::GameEnd::Forfeit));
+static_assert(pool_END_THREE_FOULS == static_cast<int>(rules::GameEnd::ThreeFouls));
 static_assert(pool_IN_HAND_BEHIND_HEAD_STRING ==
               static_cast<int>(rules::BallInHand::BehindHeadString));
 static_assert(pool_GROUP_STRIPES == static_cast<int>(rules::Group::Stripes));
 static_assert(pool_FOUL_BEHIND_HEAD_STRING_DIRECT ==
               static_cast<int>(rules::Foul::BehindHeadStringDirect));
-static_assert(pool_OPTION_OPPONENT_REBREAKS - pool_OPTION_PLAY_ON ==
-              static_cast<int>(rules::Choice::OpponentReBreaks));
+static_assert(pool_OPTION_PASS_BACK - pool_OPTION_PLAY_ON ==
+              static_cast<int>(rules::Choice::PassBack));
 
 // An IDL enum field as a domain enum whose enumerators follow the IDL's order one to one, or
 // empty when the value is out of range.
@@ -89,7 +89,7 @@ Result<std::vector<rules::Choice>> choicesOf(const dds_sequence_pool_ShotOption&
   for (const auto& option : elementsOf(seq)) {
     const auto raw = rawValue(option);
     if (raw == pool_OPTION_NONE) continue;
-    if (raw < pool_OPTION_PLAY_ON || raw > pool_OPTION_OPPONENT_REBREAKS) {
+    if (raw < pool_OPTION_PLAY_ON || raw > pool_OPTION_PASS_BACK) {
       return Result<std::vector<rules::Choice>>::fail("unknown option " + std::to_string(raw));
     }
     out.push_back(static_cast<rules::Choice>(raw - pool_OPTION_PLAY_ON));
@@ -124,6 +124,24 @@ int seatNumber(std::int16_t seat) {
   return seat == 0 || seat == 1 ? seat : -1;
 }
 
+static_assert(pool_BREAK_WINNER == static_cast<int>(BreakOrder::Winner));
+
+// Settings from their wire fields, checked as the server checks a table's settings.
+Result<MatchSettings> settingsOf(std::uint8_t game, std::uint16_t race_to,
+                                 const pool_BreakOrder& breaks, double shot_clock) {
+  MatchSettings s;
+  const auto g = rules::gameOfNumber(game);
+  const auto order = enumOf<BreakOrder>(breaks, pool_BREAK_WINNER + 1);
+  if (!g) return Result<MatchSettings>::fail("game: must be 8, 9 or 10");
+  if (!order) return Result<MatchSettings>::fail("breaks: not a known break order");
+  s.game = *g;
+  s.race_to = race_to;
+  s.breaks = *order;
+  s.shot_clock = shot_clock;
+  if (std::string why = checkSettings(s); !why.empty()) return Result<MatchSettings>::fail(why);
+  return Result<MatchSettings>::ok(s);
+}
+
 }  // namespace
 
 Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
@@ -138,6 +156,10 @@ Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
   for (std::size_t i = 0; i < 2; ++i) entry.players[i] = std::string(textOf(info.players[i]));
   entry.seats_taken = info.seats_taken;
   entry.spectators = info.spectators;
+  auto settings = settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit);
+  if (!settings) return fail<LobbyEntry>("match info " + entry.match, settings.error());
+  entry.settings = *settings;
+  entry.racks_won = {info.racks_won[0], info.racks_won[1]};
   entry.protocol_version = info.protocol_version;
   return Result<LobbyEntry>::ok(std::move(entry));
 }
@@ -168,7 +190,7 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
   const auto phase = enumOf<MatchPhase>(state.phase, pool_PHASE_CLOSED + 1);
   const auto in_hand =
       enumOf<rules::BallInHand>(state.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
-  const auto end = enumOf<rules::GameEnd>(state.end, pool_END_FORFEIT + 1);
+  const auto end = enumOf<rules::GameEnd>(state.end, pool_END_THREE_FOULS + 1);
   if (!phase || !in_hand || !end) return fail<MatchView>(what, "unknown enum value");
   view.phase = *phase;
   view.ball_in_hand = *in_hand;
@@ -178,7 +200,13 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
     if (!seat) return fail<MatchView>(what, "unknown group");
     view.seats[i] = *seat;
     view.seats[i].last_seq = state.seat_seq[i];
+    view.seats[i].extensions_left = state.extensions_left[i];
+    view.seats[i].fouls_in_row = state.fouls_in_row[i];
   }
+  auto settings = settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit);
+  if (!settings) return fail<MatchView>(what, settings.error());
+  view.settings = *settings;
+  view.shot_clock_total = state.shot_clock_total;
   view.shooter = seatNumber(state.shooter);
   view.breaker = seatNumber(state.breaker);
   view.rack = state.rack;
@@ -206,7 +234,7 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_UNSIGNED + 1);
   const auto in_hand =
       enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
-  const auto end = enumOf<rules::GameEnd>(result.end, pool_END_FORFEIT + 1);
+  const auto end = enumOf<rules::GameEnd>(result.end, pool_END_THREE_FOULS + 1);
   if (!reason || !in_hand || !end) return fail<ShotReport>(what, "unknown enum value");
   report.reject_reason = *reason;
   report.ball_in_hand = *in_hand;
@@ -256,6 +284,13 @@ Sample<pool_JoinRequest> toWire(const SeatRequest& fields) {
   setBytes(request.public_key, fields.public_key, kPublicKeyBytes);
   request.seq = fields.seq;
   setBytes(request.signature, fields.signature, kSignatureBytes);
+  request.has_settings = fields.settings.has_value();
+  if (fields.settings) {
+    request.game = static_cast<std::uint8_t>(rules::gameNumber(fields.settings->game));
+    request.race_to = static_cast<std::uint16_t>(fields.settings->race_to);
+    request.breaks = wireOf<pool_BreakOrder>(fields.settings->breaks);
+    request.shot_clock = fields.settings->shot_clock;
+  }
   return sample;
 }
 
@@ -279,6 +314,11 @@ Result<SeatRequest> fromWire(const pool_JoinRequest& r) {
   c.seq = r.seq;
   const auto signature = elementsOf(r.signature);
   c.signature.assign(signature.begin(), signature.end());
+  if (r.has_settings) {
+    auto settings = settingsOf(r.game, r.race_to, r.breaks, r.shot_clock);
+    if (!settings) return Result<SeatRequest>::fail("settings: " + settings.error());
+    c.settings = *settings;
+  }
   return Result<SeatRequest>::ok(std::move(c));
 }
 
@@ -294,6 +334,13 @@ Sample<pool_MatchInfo> toWire(const LobbyEntry& entry) {
   info.seats_taken = static_cast<std::uint8_t>(entry.seats_taken);
   info.spectators = entry.spectators;
   info.protocol_version = entry.protocol_version;
+  info.game = static_cast<std::uint8_t>(rules::gameNumber(entry.settings.game));
+  info.race_to = static_cast<std::uint16_t>(entry.settings.race_to);
+  info.breaks = wireOf<pool_BreakOrder>(entry.settings.breaks);
+  info.shot_clock_limit = entry.settings.shot_clock;
+  for (std::size_t s = 0; s < 2; ++s) {
+    info.racks_won[s] = static_cast<std::uint16_t>(entry.racks_won[s]);
+  }
   return sample;
 }
 
@@ -322,7 +369,15 @@ Sample<pool_MatchState> toWire(const MatchView& view) {
   for (std::size_t i = 0; i < 2; ++i) {
     st.seats[i] = seatStateOf(view.seats[i]);
     st.seat_seq[i] = view.seats[i].last_seq;
+    st.extensions_left[i] = static_cast<std::uint8_t>(view.seats[i].extensions_left);
+    st.fouls_in_row[i] = static_cast<std::uint8_t>(view.seats[i].fouls_in_row);
   }
+  st.game = static_cast<std::uint8_t>(rules::gameNumber(view.settings.game));
+  st.race_to = static_cast<std::uint16_t>(view.settings.race_to);
+  st.breaks = wireOf<pool_BreakOrder>(view.settings.breaks);
+  st.shot_clock_limit = view.settings.shot_clock;
+  st.shot_clock_total = view.shot_clock_total;
+  st.shot_clock_warning = view.clockWarning();
   st.shooter = static_cast<std::int16_t>(view.shooter);
   st.breaker = static_cast<std::int16_t>(view.breaker);
   st.rack = view.rack;

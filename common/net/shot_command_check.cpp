@@ -34,7 +34,8 @@ bool printable(std::string_view text) {
 
 bool shoots(const pool_ShotOption& option) {
   const std::int32_t value = rawValue(option);
-  return value != pool_OPTION_REBREAK && value != pool_OPTION_OPPONENT_REBREAKS;
+  return value != pool_OPTION_REBREAK && value != pool_OPTION_OPPONENT_REBREAKS &&
+         value != pool_OPTION_PASS_BACK;
 }
 
 Check checkIdentity(const pool_ShotCommand& c) {
@@ -66,7 +67,7 @@ Check checkFinite(const pool_ShotCommand& c) {
 Check checkOption(const pool_ShotCommand& c) {
   // The enum arrives as an integer: anything outside the declared values is malformed.
   const std::int32_t value = rawValue(c.option);
-  if (value < pool_OPTION_NONE || value > pool_OPTION_OPPONENT_REBREAKS) {
+  if (value < pool_OPTION_NONE || value > pool_OPTION_PASS_BACK) {
     return fail(CommandProblem::BadOption, "option: not a known shot option");
   }
   return std::nullopt;

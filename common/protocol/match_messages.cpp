@@ -30,6 +30,7 @@ rules::GameState gameStateOf(const MatchView& view) {
   state.options = view.options;
   state.winner = view.winner;
   state.end = view.end;
+  state.fouls_in_row = {view.seats[0].fouls_in_row, view.seats[1].fouls_in_row};
   return state;
 }
 

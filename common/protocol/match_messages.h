@@ -10,6 +10,7 @@
 
 #include "physics/ball.h"
 #include "physics/events.h"
+#include "protocol/match_settings.h"
 #include "protocol/protocol_enums.h"
 #include "protocol/shot_request.h"
 #include "rules/game_state.h"
@@ -31,6 +32,8 @@ struct LobbyEntry {
   int seats_taken = 0;
   std::uint32_t spectators = 0;
   std::uint32_t protocol_version = 0;
+  MatchSettings settings;              ///< game, race, breaks, shot clock
+  std::array<int, 2> racks_won{0, 0};  ///< the score of the race
 };
 
 /// The answer to a join request (JoinReply).
@@ -58,6 +61,8 @@ struct SeatView {
   int fouls = 0;
   int racks_won = 0;
   std::uint32_t last_seq = 0;  ///< the seat's last used sequence number
+  int fouls_in_row = 0;        ///< 9-/10-ball: fouls on its consecutive shots (three lose)
+  int extensions_left = 0;     ///< shot clock extensions left this rack
 };
 
 /// A match between shots (MatchState).
@@ -72,11 +77,18 @@ struct MatchView {
   std::uint32_t shot_number = 0;
   rules::BallInHand ball_in_hand = rules::BallInHand::None;
   std::vector<rules::Choice> options;  ///< the shooter must choose one first
-  double shot_clock = -1.0;            ///< s left; < 0: no clock
+  double shot_clock = -1.0;            ///< s left; < 0: no clock (or not running)
+  double shot_clock_total = 0.0;       ///< s the current shot has in all (extension included)
   int winner = -1;
   rules::GameEnd end = rules::GameEnd::None;
   std::string last_verdict;
   std::vector<physics::Ball> balls;  ///< the layout at rest, pocketed balls included
+  MatchSettings settings;            ///< game, race, breaks, shot clock
+
+  /// The warning is on: the clock runs and little time is left.
+  bool clockWarning() const {
+    return shot_clock >= 0.0 && settings.clockOn() && shot_clock <= settings.warningAt();
+  }
 };
 
 /// The rules' state of a match view in play (phase, shooter, breaker, groups, ball in hand,

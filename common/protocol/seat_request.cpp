@@ -31,6 +31,13 @@ std::vector<std::uint8_t> signedBytes(const SeatRequest& r) {
   e.u32(r.request);
   e.text(r.name, kNameField);
   e.bytes(r.public_key, kPublicKeyBytes);
+  const MatchSettings none{};
+  const MatchSettings& s = r.settings ? *r.settings : none;
+  e.u8(r.settings ? 1 : 0);
+  e.u8(r.settings ? static_cast<std::uint8_t>(rules::gameNumber(s.game)) : 0);
+  e.u32(r.settings ? static_cast<std::uint32_t>(s.race_to) : 0);
+  e.u8(r.settings ? static_cast<std::uint8_t>(s.breaks) : 0);
+  e.f64(r.settings ? s.shot_clock : 0.0);
   return e.message();
 }
 

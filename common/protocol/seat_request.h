@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "protocol/envelope.h"
 #include "protocol/key_pair.h"
+#include "protocol/match_settings.h"
 #include "protocol/protocol_enums.h"
 
 namespace pool::protocol {
@@ -30,6 +32,9 @@ struct SeatRequest {
   std::vector<std::uint8_t> public_key;  ///< the signer's Ed25519 public key (32 bytes)
   std::uint32_t seq = 0;                 ///< per key, strictly increasing
   std::vector<std::uint8_t> signature;   ///< 64 bytes, empty when unsigned
+  /// Seat: how to play, if this request opens the table (the first player to sit at a free
+  /// table sets them; otherwise they are ignored). Empty: the server's defaults.
+  std::optional<MatchSettings> settings;
 };
 
 /// True for the requests that change a seat and so must be signed.
@@ -37,7 +42,8 @@ bool changesSeat(const SeatRequest& request);
 
 /// The bytes a seat request's signature covers: the envelope header (tag SeatRequest, match,
 /// seat, token, seq), then action u8 | client length u8 + 40 | request u32 | name length u8 + 32
-/// | public key 32 bytes (zero-padded).
+/// | public key 32 bytes (zero-padded) | settings given u8 | game number u8 | race u32 | breaks u8
+/// | shot clock f64 (all 0 without settings).
 std::vector<std::uint8_t> signedBytes(const SeatRequest& request);
 
 /// Fills in `request.public_key` with `key`'s public half and `request.signature` with its

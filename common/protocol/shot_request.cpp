@@ -17,12 +17,17 @@ const char* toString(ShotOption option) {
       return "rebreak";
     case ShotOption::OpponentReBreaks:
       return "opponent_rebreaks";
+    case ShotOption::PushOut:
+      return "push_out";
+    case ShotOption::PassBack:
+      return "pass_back";
   }
   return "unknown";
 }
 
 bool optionShoots(ShotOption option) {
-  return option != ShotOption::ReBreak && option != ShotOption::OpponentReBreaks;
+  return option != ShotOption::ReBreak && option != ShotOption::OpponentReBreaks &&
+         option != ShotOption::PassBack;
 }
 
 }  // namespace pool::protocol

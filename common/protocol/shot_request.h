@@ -19,11 +19,13 @@ enum class ShotOption : std::uint8_t {
   RespotEight,       ///< re-spot the 8 pocketed on the break, and shoot
   ReBreak,           ///< re-rack, the chooser breaks; the command carries no shot
   OpponentReBreaks,  ///< re-rack, the other player breaks; the command carries no shot
+  PushOut,           ///< 9-/10-ball: play this shot as a push-out
+  PassBack,          ///< 9-/10-ball: the player who just shot shoots again; no shot
 };
 
 const char* toString(ShotOption option);
 
-/// True for the options that answer with a shot (None, PlayOn, BallInHand, RespotEight).
+/// True for the options that answer with a shot (None, PlayOn, BallInHand, RespotEight, PushOut).
 bool optionShoots(ShotOption option);
 
 /// One shot command (the ShotCommand topic) in domain types. Angles in radians, SI units, table

@@ -25,7 +25,8 @@ void passTurn(const GameState& state, BallInHand in_hand, Verdict& verdict) {
 void endGame(const GameState& state, GameEnd end, Verdict& verdict) {
   verdict.game_over = true;
   verdict.end = end;
-  verdict.winner = end == GameEnd::EightPocketed ? state.shooter : opponentOf(state.shooter);
+  const bool won = end == GameEnd::EightPocketed || end == GameEnd::RackBallPocketed;
+  verdict.winner = won ? state.shooter : opponentOf(state.shooter);
   verdict.next_shooter = verdict.winner;
   verdict.ball_in_hand = BallInHand::None;
   verdict.options.clear();
@@ -52,7 +53,60 @@ GameState nextState(const GameState& state, const Verdict& verdict, int dry_turn
   next.ball_in_hand = verdict.ball_in_hand;
   next.options = verdict.options;
   next.dry_turns = dry_turns;
+  next.push_out = false;
   return next;
+}
+
+Result<bool> checkCueInHand(const GameState& state, const Shot& shot, const TableContext& table) {
+  if (state.ball_in_hand == BallInHand::None) return Result<bool>::ok(true);
+  for (const auto& b : shot.before) {
+    if (b.id != physics::kCueBall) continue;
+    PlacementCheck check =
+        checkCueBallPlacement(state.ball_in_hand, b.pos.head<2>(), shot.before, table);
+    if (!check.ok()) return Result<bool>::fail("cue ball in hand: " + check.reason());
+  }
+  return Result<bool>::ok(true);
+}
+
+void addWatchdogRemovals(const ShotFacts& facts, Judged& judged) {
+  for (int id : facts.removed) {
+    if (id == physics::kCueBall && judged.verdict.ball_in_hand == BallInHand::None) {
+      judged.verdict.ball_in_hand = BallInHand::Anywhere;
+    } else if (id != physics::kCueBall) {
+      judged.respot_ids.push_back(id);
+    }
+  }
+}
+
+std::vector<Foul> leavingFouls(const Shot& shot, const ShotFacts& facts) {
+  std::vector<Foul> fouls;
+  if (facts.isPocketed(physics::kCueBall)) fouls.push_back(Foul::CueBallPocketed);
+  if (facts.isOffTable(physics::kCueBall)) fouls.push_back(Foul::CueBallOffTable);
+  if (!facts.objectBallsOffTable().empty()) fouls.push_back(Foul::ObjectBallOffTable);
+  if (shot.clock_expired) fouls.push_back(Foul::ShotClockExpired);
+  return fouls;
+}
+
+void checkStalemate(const GameState& state, int dry_turns, int stalemate_turns, Verdict& v) {
+  if (v.game_over || v.rerack || !v.options.empty()) return;
+  if (stalemate_turns <= 0 || dry_turns < stalemate_turns) return;
+  v.rerack = true;
+  v.stalemate = true;
+  v.turn_continues = false;
+  v.next_shooter = state.breaker;
+  v.ball_in_hand = BallInHand::BehindHeadString;
+  v.respots.clear();
+}
+
+Judged timeOut(const GameState& state) {
+  Judged judged;
+  Verdict& v = judged.verdict;
+  v.fouls.push_back(Foul::ShotClockExpired);
+  bool breaking = state.phase == Phase::Break;
+  passTurn(state, breaking ? BallInHand::BehindHeadString : BallInHand::Anywhere, v);
+  // The rack still stands: "re-racking" it only hands the break over.
+  v.rerack = breaking;
+  return judged;
 }
 
 }  // namespace detail
@@ -70,59 +124,12 @@ GameState stateForShot(const GameState& state, const Intent& intent) {
   return st;
 }
 
-Result<bool> checkCueInHand(const GameState& state, const Shot& shot, const TableContext& table) {
-  if (state.ball_in_hand == BallInHand::None) return Result<bool>::ok(true);
-  for (const auto& b : shot.before) {
-    if (b.id != physics::kCueBall) continue;
-    PlacementCheck check =
-        checkCueBallPlacement(state.ball_in_hand, b.pos.head<2>(), shot.before, table);
-    if (!check.ok()) return Result<bool>::fail("cue ball in hand: " + check.reason());
-  }
-  return Result<bool>::ok(true);
-}
-
-// The clock ran out before the strike: a foul without a shot. On the break the other player breaks.
-Judged timeOut(const GameState& state) {
-  Judged judged;
-  Verdict& v = judged.verdict;
-  v.fouls.push_back(Foul::ShotClockExpired);
-  bool breaking = state.phase == Phase::Break;
-  detail::passTurn(state, breaking ? BallInHand::BehindHeadString : BallInHand::Anywhere, v);
-  // The rack still stands: "re-racking" it only hands the break over.
-  v.rerack = breaking;
-  return judged;
-}
-
-// Balls the watchdog removed: object balls go back on the table, the cue ball comes in hand.
-void addWatchdogRemovals(const ShotFacts& facts, Judged& judged) {
-  for (int id : facts.removed) {
-    if (id == physics::kCueBall && judged.verdict.ball_in_hand == BallInHand::None) {
-      judged.verdict.ball_in_hand = BallInHand::Anywhere;
-    } else if (id != physics::kCueBall) {
-      judged.respot_ids.push_back(id);
-    }
-  }
-}
-
-// Lack of progress: after many shots with no ball down the rack is replayed by the same breaker.
-void checkStalemate(const GameState& state, int dry_turns, const EightBallConfig& config,
-                    Verdict& v) {
-  if (v.game_over || v.rerack || !v.options.empty()) return;
-  if (config.stalemate_turns <= 0 || dry_turns < config.stalemate_turns) return;
-  v.rerack = true;
-  v.stalemate = true;
-  v.turn_continues = false;
-  v.next_shooter = state.breaker;
-  v.ball_in_hand = BallInHand::BehindHeadString;
-  v.respots.clear();
-}
-
 Verdict finish(const GameState& state, const Shot& shot, Judged judged, const TableContext& table,
                const EightBallConfig& config) {
   Verdict& v = judged.verdict;
   if (!v.game_over) v.respots = respotBalls(judged.respot_ids, shot.after, table);
   int dry_turns = v.pocketed.empty() ? state.dry_turns + 1 : 0;
-  checkStalemate(state, dry_turns, config, v);
+  detail::checkStalemate(state, dry_turns, config.stalemate_turns, v);
   v.next = detail::nextState(state, v, dry_turns);
   return v;
 }
@@ -134,14 +141,15 @@ Result<Verdict> judgeEightBall(const GameState& state, const Shot& shot, const T
   if (auto ok = checkIntent(state, shot.intent, shot.before, config); !ok)
     return Result<Verdict>::fail(ok.error());
   GameState st = stateForShot(state, shot.intent);
-  if (auto ok = checkCueInHand(st, shot, table); !ok) return Result<Verdict>::fail(ok.error());
+  if (auto ok = detail::checkCueInHand(st, shot, table); !ok)
+    return Result<Verdict>::fail(ok.error());
   if (shot.clock_expired && shot.events.empty())
-    return Result<Verdict>::ok(finish(st, shot, timeOut(st), table, config));
+    return Result<Verdict>::ok(finish(st, shot, detail::timeOut(st), table, config));
   auto facts = distilShot(shot, table.spots.head_string_x);
   if (!facts) return Result<Verdict>::fail(facts.error());
   Judged judged = st.phase == Phase::Break ? detail::judgeBreak(st, shot, *facts)
                                            : detail::judgePlay(st, shot, *facts, table, config);
-  addWatchdogRemovals(*facts, judged);
+  detail::addWatchdogRemovals(*facts, judged);
   return Result<Verdict>::ok(finish(st, shot, std::move(judged), table, config));
 }
 

@@ -4,16 +4,6 @@
 namespace pool::rules::detail {
 namespace {
 
-// Fouls of a break other than its legality: the cue ball or an object ball leaving play.
-std::vector<Foul> breakFouls(const Shot& shot, const ShotFacts& facts) {
-  std::vector<Foul> fouls;
-  if (facts.isPocketed(physics::kCueBall)) fouls.push_back(Foul::CueBallPocketed);
-  if (facts.isOffTable(physics::kCueBall)) fouls.push_back(Foul::CueBallOffTable);
-  if (!facts.objectBallsOffTable().empty()) fouls.push_back(Foul::ObjectBallOffTable);
-  if (shot.clock_expired) fouls.push_back(Foul::ShotClockExpired);
-  return fouls;
-}
-
 // The 8 down on the break: re-spot it or break again. The breaker chooses, unless the break also
 // fouled: then the incoming player chooses and, re-spotting, has the cue ball behind the head
 // string.
@@ -57,7 +47,7 @@ void legalBreak(const GameState& state, bool cue_lost, Verdict& v) {
 Judged judgeBreak(const GameState& state, const Shot& shot, const ShotFacts& facts) {
   Judged judged;
   Verdict& v = judged.verdict;
-  v.fouls = breakFouls(shot, facts);
+  v.fouls = leavingFouls(shot, facts);
   v.pocketed = facts.objectBallsPocketed();
   v.off_table = facts.objectBallsOffTable();
   bool cue_lost = facts.cueBallLost();

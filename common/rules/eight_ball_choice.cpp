@@ -6,9 +6,8 @@
 #include "rules/respot.h"
 
 namespace pool::rules {
-namespace {
+namespace detail {
 
-// The choice that re-racks: who breaks the new rack.
 Verdict rerackVerdict(int breaker) {
   Verdict v;
   v.rerack = true;
@@ -18,7 +17,6 @@ Verdict rerackVerdict(int breaker) {
   return v;
 }
 
-// The choices that keep the rack: the chooser shoots with `in_hand`.
 Verdict playOnVerdict(const GameState& state, BallInHand in_hand) {
   Verdict v;
   v.turn_continues = true;
@@ -30,7 +28,10 @@ Verdict playOnVerdict(const GameState& state, BallInHand in_hand) {
   return v;
 }
 
-}  // namespace
+}  // namespace detail
+
+using detail::playOnVerdict;
+using detail::rerackVerdict;
 
 Result<Verdict> applyChoice(const GameState& state, Choice choice,
                             const std::vector<physics::Ball>& balls, const TableContext& table) {
@@ -49,6 +50,10 @@ Result<Verdict> applyChoice(const GameState& state, Choice choice,
       return Result<Verdict>::ok(rerackVerdict(opponentOf(state.shooter)));
     case Choice::RespotEight:
       break;
+    case Choice::PushOut:
+    case Choice::PassBack:
+      return Result<Verdict>::fail(std::string("choice ") + toString(choice) +
+                                   " is not part of 8-ball");
   }
   if (detail::ballOnTable(kEightBall, balls))
     return Result<Verdict>::fail("the 8 is already on the table");

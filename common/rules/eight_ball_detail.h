@@ -1,4 +1,4 @@
-// Pieces shared by the files of the 8-ball rule set (not part of the public API).
+// Pieces shared by the files of the rule sets (not part of the public API).
 #pragma once
 
 #include <vector>
@@ -23,6 +23,31 @@ void passTurn(const GameState& state, BallInHand in_hand, Verdict& verdict);
 
 /// The game ends for `end`: the shooter wins on EightPocketed, otherwise the opponent.
 void endGame(const GameState& state, GameEnd end, Verdict& verdict);
+
+/// The choice that re-racks: `breaker` breaks the new rack.
+Verdict rerackVerdict(int breaker);
+
+/// The choices that keep the rack: the chooser shoots with `in_hand`.
+Verdict playOnVerdict(const GameState& state, BallInHand in_hand);
+
+/// Refuses a cue ball in hand (per `state`) placed where the rules do not allow it.
+Result<bool> checkCueInHand(const GameState& state, const Shot& shot, const TableContext& table);
+
+/// Balls the watchdog removed: object balls go back on the table, the cue ball comes in hand.
+void addWatchdogRemovals(const ShotFacts& facts, Judged& judged);
+
+/// Fouls any shot can make whatever was hit: the cue ball or an object ball leaving play, the
+/// clock.
+std::vector<Foul> leavingFouls(const Shot& shot, const ShotFacts& facts);
+
+/// Lack of progress: after `stalemate_turns` (> 0) shots in a row with no ball down the rack is
+/// replayed by the same breaker.
+void checkStalemate(const GameState& state, int dry_turns, int stalemate_turns, Verdict& v);
+
+/// The clock ran out before the strike: a foul without a shot, ball in hand anywhere to the
+/// opponent. On the break the other player breaks (the rack stands: "re-racking" it only hands the
+/// break over).
+Judged timeOut(const GameState& state);
 
 /// The opening break (phase Break).
 Judged judgeBreak(const GameState& state, const Shot& shot, const ShotFacts& facts);

@@ -1,4 +1,4 @@
-// The state of one 8-ball rack between shots, and names of its enums.
+// The state of one rack between shots, and names of its enums.
 #include "rules/game_state.h"
 
 namespace pool::rules {
@@ -41,6 +41,10 @@ const char* toString(Choice choice) {
       return "re_break";
     case Choice::OpponentReBreaks:
       return "opponent_re_breaks";
+    case Choice::PushOut:
+      return "push_out";
+    case Choice::PassBack:
+      return "pass_back";
   }
   return "unknown";
 }
@@ -63,6 +67,10 @@ const char* toString(GameEnd end) {
       return "eight_off_table";
     case GameEnd::Forfeit:
       return "forfeit";
+    case GameEnd::RackBallPocketed:
+      return "rack_ball_pocketed";
+    case GameEnd::ThreeFouls:
+      return "three_fouls";
   }
   return "unknown";
 }
@@ -89,6 +97,10 @@ std::string describe(const GameState& state) {
   for (std::size_t i = 0; i < state.options.size(); ++i) {
     text += (i == 0 ? ", choose " : " or ");
     text += toString(state.options[i]);
+  }
+  if (state.push_out) text += ", push-out";
+  if (int fouls = state.fouls_in_row[state.shooter]; fouls > 0) {
+    text += ", " + std::to_string(fouls) + (fouls == 1 ? " foul" : " fouls") + " in a row";
   }
   return text;
 }

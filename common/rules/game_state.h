@@ -1,5 +1,5 @@
-// The state of one 8-ball rack between shots: whose turn, groups, phase, ball in hand, pending
-// choice.
+// The state of one rack between shots (8-, 9- or 10-ball): whose turn, groups, phase, ball in hand,
+// pending choice, fouls in a row.
 #pragma once
 
 #include <array>
@@ -28,9 +28,14 @@ enum class Choice : std::uint8_t {
   ReBreak,      ///< re-rack; the player choosing breaks
   OpponentReBreaks,  ///< re-rack; the other player breaks (after an illegal break: its breaker
                      ///< again)
+  PushOut,           ///< 9-/10-ball, the shot after the break: play a push-out (no contact
+                     ///< fouls; the opponent then chooses who shoots next)
+  PassBack,          ///< 9-/10-ball, after a push-out or a 10-ball shot that missed its call:
+                     ///< the player who just shot must shoot again
 };
 
-/// Why a game ended. Every reason but EightPocketed and Forfeit is a loss of the shooter.
+/// Why a game ended. Every reason but EightPocketed, RackBallPocketed and Forfeit is a loss of the
+/// shooter.
 enum class GameEnd : std::uint8_t {
   None,                     ///< the game goes on
   EightPocketed,            ///< the shooter legally pocketed the 8 in the called pocket: a win
@@ -41,6 +46,8 @@ enum class GameEnd : std::uint8_t {
   EightWrongPocket,         ///< the 8 fell in a pocket other than the one called (or on a safety)
   EightOffTable,            ///< the 8 left the table after the break
   Forfeit,                  ///< a player gave up or was forfeited (outside the rules' judging)
+  RackBallPocketed,  ///< 9-/10-ball: the shooter legally pocketed the 9 (the 10 called): a win
+  ThreeFouls,        ///< 9-/10-ball: the shooter's third foul in a row: a loss
 };
 
 const char* toString(Phase phase);
@@ -67,6 +74,10 @@ struct GameState {
   int dry_turns = 0;            ///< consecutive shots that pocketed no object ball
   int winner = -1;              ///< seat, once phase is Over
   GameEnd end = GameEnd::None;
+  /// 9-/10-ball: each seat's fouls on its consecutive shots (a legal shot of that seat resets it).
+  std::array<int, kSeats> fouls_in_row{0, 0};
+  /// 9-/10-ball: the shot about to be played is a push-out (set by choosing Choice::PushOut).
+  bool push_out = false;
 };
 
 /// A fresh rack: the breaker to break with the cue ball in hand behind the head string.

@@ -84,6 +84,19 @@ std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, s
   return place(slots, ids, rest);
 }
 
+std::vector<BallPlacement> tenBall(const TableSpec& spec, double ball_radius, std::uint64_t seed,
+                                   double gap) {
+  const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 4});
+  constexpr std::size_t kApex = 0, kCentre = 4;
+  SplitMix64 rng(seed);
+  std::vector<int> ids(slots.size(), 0);
+  ids[kApex] = 1;
+  ids[kCentre] = 10;
+  std::vector<int> rest{2, 3, 4, 5, 6, 7, 8, 9};
+  shuffle(rest, rng);
+  return place(slots, ids, rest);
+}
+
 bool isFree(const Vec2& p, double ball_radius, const std::vector<Vec2>& occupied) {
   return std::all_of(occupied.begin(), occupied.end(),
                      [&](const Vec2& c) { return (c - p).norm() >= 2.0 * ball_radius; });
@@ -118,13 +131,21 @@ Spots spotsFor(const TableSpec& spec) {
 std::optional<RackType> rackTypeFromString(std::string_view name) {
   if (name == "8ball") return RackType::EightBall;
   if (name == "9ball") return RackType::NineBall;
+  if (name == "10ball") return RackType::TenBall;
   return std::nullopt;
 }
 
 std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
                                      std::uint64_t seed, double gap) {
-  return type == RackType::EightBall ? eightBall(spec, ball_radius, seed, gap)
-                                     : nineBall(spec, ball_radius, seed, gap);
+  switch (type) {
+    case RackType::EightBall:
+      return eightBall(spec, ball_radius, seed, gap);
+    case RackType::NineBall:
+      return nineBall(spec, ball_radius, seed, gap);
+    case RackType::TenBall:
+      return tenBall(spec, ball_radius, seed, gap);
+  }
+  return {};
 }
 
 Vec2 respotPosition(const TableSpec& spec, double ball_radius, const std::vector<Vec2>& occupied) {

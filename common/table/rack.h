@@ -1,5 +1,5 @@
-// Spots, strings and racks of a table (8-ball and 9-ball), shared by the physics lab, the rules and
-// the server.
+// Spots, strings and racks of a table (8-, 9- and 10-ball), shared by the physics lab, the rules
+// and the server.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,8 +23,9 @@ struct Spots {
 
 Spots spotsFor(const TableSpec& spec);
 
-enum class RackType { EightBall, NineBall };
-std::optional<RackType> rackTypeFromString(std::string_view name);  ///< "8ball", "9ball"
+enum class RackType { EightBall, NineBall, TenBall };
+/// "8ball", "9ball", "10ball".
+std::optional<RackType> rackTypeFromString(std::string_view name);
 
 struct BallPlacement {
   int id = 0;
@@ -33,8 +34,9 @@ struct BallPlacement {
 
 /// Object balls of a rack, apex on the foot spot, rows toward the foot cushion. 8-ball: the 8 in
 /// the centre, one solid and one stripe in the back corners, the rest shuffled by `seed`. 9-ball:
-/// a diamond, the 1 at the apex, the 9 in the centre, the rest by `seed`. Neighbours are `gap`
-/// metres apart (surface to surface). Deterministic for a seed.
+/// a diamond, the 1 at the apex, the 9 in the centre, the rest by `seed`. 10-ball: a triangle of
+/// four rows, the 1 at the apex, the 10 in the middle of the third row, the rest by `seed`.
+/// Neighbours are `gap` metres apart (surface to surface). Deterministic for a seed.
 std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
                                      std::uint64_t seed, double gap = 0.0);
 

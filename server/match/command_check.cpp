@@ -96,7 +96,8 @@ Check checkOption(const Match& match, const protocol::ShotRequest& c, ShotPlan& 
     return refuse(Reject::OptionNotOffered,
                   std::string("option ") + protocol::toString(c.option) + " is not offered");
   }
-  auto verdict = rules::applyChoice(match.game(), *choice, match.balls(), match.table().context);
+  auto verdict = rules::applyChoiceFor(match.rules(), match.game(), *choice, match.balls(),
+                                       match.table().context);
   if (!verdict) return refuse(Reject::OptionNotOffered, verdict.error());
   plan.state = verdict->next;
   for (const auto& respot : verdict->respots) {
@@ -142,7 +143,7 @@ Check checkCall(const Match& match, const protocol::ShotRequest& c, ShotPlan& pl
   plan.intent.ball = c.called_ball;
   plan.intent.pocket = c.called_pocket;
   plan.intent.safety = c.safety;
-  auto ok = rules::checkIntent(plan.state, plan.intent, plan.before, match.options().rules);
+  auto ok = rules::checkIntentFor(match.rules(), plan.state, plan.intent, plan.before);
   if (!ok) return refuse(Reject::BadCall, ok.error());
   return std::nullopt;
 }
@@ -163,6 +164,10 @@ std::optional<rules::Choice> choiceOf(protocol::ShotOption option) {
       return rules::Choice::ReBreak;
     case protocol::ShotOption::OpponentReBreaks:
       return rules::Choice::OpponentReBreaks;
+    case protocol::ShotOption::PushOut:
+      return rules::Choice::PushOut;
+    case protocol::ShotOption::PassBack:
+      return rules::Choice::PassBack;
   }
   return std::nullopt;
 }

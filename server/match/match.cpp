@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "rules/eight_ball.h"
+#include "rules/game_rules.h"
 #include "rules/shot.h"
 #include "server/match/command_check.h"
 
@@ -38,8 +39,9 @@ Match::Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runne
       name_(std::move(name)),
       runner_(std::move(runner)),
       options_(options),
-      rack_seed_(rack_seed) {
-  balls_ = rackLayout(runner_->kit(), rack_seed_ + layouts_++);
+      rack_seed_(rack_seed),
+      settings_(options.settings) {
+  balls_ = rackLayout(runner_->kit(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
 }
 
 Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
@@ -59,16 +61,23 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
       rack_(snapshot.rack),
       last_verdict_(snapshot.last_verdict),
       // Past every revision published before the restart, so readers take the new states.
-      revision_(snapshot.revision + 1) {
+      revision_(snapshot.revision + 1),
+      settings_(snapshot.settings) {
   for (Seat& s : seats_) {
     if (s.taken()) s.away_since = now;
+  }
+  // A resumed rack's clock starts afresh, each player with an extension.
+  if (settings_.clockOn() && inPlay()) {
+    extensions_ = {1, 1};
+    restartClock(0.0);
   }
 }
 
 // ---- Seats --------------------------------------------------------------------------------------
 
 JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::string& client,
-                           std::uint64_t token, const std::vector<std::uint8_t>& public_key) {
+                           std::uint64_t token, const std::vector<std::uint8_t>& public_key,
+                           const std::optional<protocol::MatchSettings>& settings) {
   for (int s = 0; s < 2; ++s) {
     const Seat& mine = seats_[static_cast<std::size_t>(s)];
     if (mine.taken() && mine.client == client && mine.public_key == public_key &&
@@ -90,6 +99,13 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   s.client = client;
   s.token = token;
   s.public_key = public_key;
+  // The first player at a table that has not started sets how it is played.
+  const bool opens = !started_ && !seats_[static_cast<std::size_t>(1 - seat)].taken();
+  if (opens && settings && *settings != settings_) {
+    settings_ = *settings;
+    // The same layout number again: the racks of a match do not depend on who chose what.
+    balls_ = rackLayout(table(), rack_seed_ + layouts_ - 1, rules::rackTypeOf(settings_.game));
+  }
   touch();
   if (seats_[0].taken() && seats_[1].taken() && !inPlay()) startRack(rack_ % 2 == 0 ? 0 : 1);
   return seated(id_, seat, token);
@@ -162,8 +178,9 @@ JoinAnswer Match::rematchSeat(int seat) {
   touch();
   if (seats_[0].taken() && seats_[1].taken() && seats_[0].wants_rematch &&
       seats_[1].wants_rematch) {
-    // Breaks alternate between racks.
-    startRack(rules::opponentOf(game_.breaker));
+    // A new race: the score starts again; the breaks go on as the settings say.
+    for (Seat& s : seats_) s.racks_won = 0;
+    startRack(nextBreaker(game_.winner >= 0 ? game_.winner : rules::opponentOf(game_.breaker)));
   }
   return seated(id_, seat, seats_[static_cast<std::size_t>(seat)].token);
 }
@@ -181,7 +198,12 @@ void Match::pause(double seconds) {
   for (Seat& s : seats_) {
     if (s.away_since) *s.away_since += seconds;
   }
-  if (flight_) flight_->pacer.delay(seconds);
+  if (flight_) {
+    flight_->pacer.delay(seconds);
+    flight_->view_done += seconds;
+  }
+  if (clock_start_) *clock_start_ += seconds;
+  clock_not_before_ += seconds;
 }
 
 bool Match::clientGone(const std::string& client, double now) {
@@ -252,7 +274,7 @@ CommandAnswer Match::handleShot(const protocol::ShotRequest& command, double now
     return answer;
   }
   rules::Shot shot{plan.before, plan.intent, outcome->events, outcome->balls, false};
-  auto verdict = rules::judgeEightBall(plan.state, shot, table().context, options_.rules);
+  auto verdict = rules::judgeShot(rules(), plan.state, shot, table().context);
   if (!verdict) {
     answer.rejection = {Reject::Malformed, "the rules refused the shot: " + verdict.error()};
     return answer;
@@ -265,7 +287,12 @@ CommandAnswer Match::handleShot(const protocol::ShotRequest& command, double now
   auto after = tableAfter(report.verdict, outcome->balls);
   auto frames = framesOf(*outcome);
   FramePacer pacer(timesOf(frames), now, options_.unpaced);
-  flight_.emplace(Flight{std::move(report), std::move(frames), std::move(after), std::move(pacer)});
+  // Paced or not, the shooter's view plays the shot in real time.
+  const double view_done = now + frames.back().t + kViewDelay;
+  flight_.emplace(
+      Flight{std::move(report), std::move(frames), std::move(after), std::move(pacer), view_done});
+  clock_start_.reset();
+  clock_pending_ = false;
   answer.shot_number = shot_number_ + 1;
   answer.in_motion = true;
   return answer;
@@ -319,6 +346,7 @@ std::optional<ShotReport> Match::finishShot() {
 void Match::land(Flight flight) {
   ++shot_number_;
   commit(flight.report.verdict, std::move(flight.after), flight.report.seat);
+  if (clock_pending_) clock_not_before_ = flight.view_done;
   if (pending_forfeit_) {
     const int loser = *pending_forfeit_;
     pending_forfeit_.reset();
@@ -391,6 +419,7 @@ MatchSnapshot Match::snapshot() const {
   out.game = settled.game_;
   out.balls = settled.balls_;
   out.seats = settled.seats_;
+  out.settings = settings_;
   return out;
 }
 
@@ -400,7 +429,7 @@ bool Match::empty() const {
 
 void Match::startRack(int breaker) {
   game_ = rules::newRack(breaker);
-  balls_ = rackLayout(table(), rack_seed_ + layouts_++);
+  balls_ = rackLayout(table(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
   ++rack_;
   started_ = true;
   last_verdict_.clear();
@@ -408,6 +437,8 @@ void Match::startRack(int breaker) {
     s.fouls = 0;
     s.wants_rematch = false;
   }
+  extensions_ = settings_.clockOn() ? std::array<int, 2>{1, 1} : std::array<int, 2>{0, 0};
+  restartClock(0.0);
   touch();
 }
 
@@ -418,11 +449,18 @@ void Match::commit(const rules::Verdict& verdict, std::vector<physics::Ball> aft
   if (!verdict.legal()) ++seats_[static_cast<std::size_t>(shooter)].fouls;
   if (verdict.rerack) {
     // A re-rack is a fresh rack of the same game: new layout, fouls cleared.
-    balls_ = rackLayout(table(), rack_seed_ + layouts_++);
+    balls_ = rackLayout(table(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
     for (Seat& s : seats_) s.fouls = 0;
   }
+  restartClock(0.0);
   if (verdict.game_over && verdict.winner >= 0) {
-    ++seats_[static_cast<std::size_t>(verdict.winner)].racks_won;
+    const int won = ++seats_[static_cast<std::size_t>(verdict.winner)].racks_won;
+    // A race goes on with the next rack until a player has won race_to of them.
+    if (won < settings_.race_to) {
+      const std::string last = last_verdict_;
+      startRack(nextBreaker(verdict.winner));
+      last_verdict_ = last + "; rack " + std::to_string(rack_) + " to break";
+    }
   }
   touch();
 }
@@ -450,6 +488,102 @@ std::vector<physics::Ball> Match::tableAfter(const rules::Verdict& verdict,
     }
   }
   return balls;
+}
+
+// ---- Shot clock -------------------------------------------------------------------------------
+
+void Match::restartClock(double not_before) {
+  clock_start_.reset();
+  clock_pending_ = settings_.clockOn();
+  clock_not_before_ = not_before;
+  clock_total_ = settings_.shot_clock;
+  clock_warned_ = false;
+}
+
+std::optional<double> Match::clockLeft(double now) const {
+  if (!clock_start_ || flight_ || !inPlay()) return std::nullopt;
+  return std::max(0.0, clock_total_ - std::max(0.0, now - *clock_start_));
+}
+
+std::optional<CommandAnswer> Match::tickClock(double now) {
+  if (!settings_.clockOn() || flight_ || !inPlay()) return std::nullopt;
+  if (clock_pending_) {
+    clock_pending_ = false;
+    clock_start_ = std::max(now, clock_not_before_);
+    touch();
+    return std::nullopt;
+  }
+  const auto left = clockLeft(now);
+  if (!left) return std::nullopt;
+  if (*left > 0.0) {
+    if (!clock_warned_ && *left <= settings_.warningAt()) {
+      clock_warned_ = true;
+      touch();  // the state shows the warning
+    }
+    return std::nullopt;
+  }
+  int& extensions = extensions_[static_cast<std::size_t>(game_.shooter)];
+  if (extensions > 0) {
+    --extensions;
+    clock_total_ += settings_.shot_clock;
+    clock_warned_ = false;
+    touch();
+    return std::nullopt;
+  }
+  return timeOut();
+}
+
+std::optional<CommandAnswer> Match::runOutClock() {
+  if (flight_ || !inPlay()) return std::nullopt;
+  return timeOut();
+}
+
+// The clock ran out: judged as a safety without a strike (a pending choice taken as playing on).
+CommandAnswer Match::timeOut() {
+  rules::GameState state = game_;
+  std::vector<physics::Ball> balls = balls_;
+  if (!state.options.empty()) {
+    const auto& offered = state.options;
+    const bool play_on =
+        std::find(offered.begin(), offered.end(), rules::Choice::PlayOn) != offered.end();
+    auto chosen = rules::applyChoiceFor(
+        rules(), state, play_on ? rules::Choice::PlayOn : offered[0], balls, table().context);
+    if (chosen && !chosen->rerack) {
+      state = chosen->next;
+      balls = tableAfter(*chosen, std::move(balls));
+    }
+  }
+  const int seat = state.shooter;
+  rules::Shot shot{balls, rules::Intent::safe(), {}, balls, true};
+  auto verdict = rules::judgeShot(rules(), state, shot, table().context);
+  CommandAnswer answer;
+  answer.seat = seat;
+  answer.shot_number = shot_number_;
+  if (!verdict) {
+    // Not expected: the rules judge every time-out. The clock stops rather than loop.
+    clock_start_.reset();
+    answer.rejection = {Reject::Malformed, "the rules refused the time-out: " + verdict.error()};
+    return answer;
+  }
+  ShotRecord& record = answer.record.emplace();
+  record.command.match = id_;
+  record.command.seat = seat;
+  record.shot_number = shot_number_;
+  record.shoots = false;
+  record.state = state;
+  record.before = balls;
+  record.intent = shot.intent;
+  record.after = balls;
+  record.verdict = *verdict;
+  commit(*verdict, tableAfter(*verdict, std::move(balls)), seat);
+  last_verdict_ = "shot clock: " + last_verdict_;
+  answer.done = ShotReport{seat, 0, shot_number_, {}, *verdict};
+  return answer;
+}
+
+int Match::nextBreaker(int rack_winner) const {
+  if (settings_.breaks == protocol::BreakOrder::Winner && rack_winner >= 0) return rack_winner;
+  return rules::opponentOf(game_.breaker);
 }
 
 std::optional<int> Match::seatOf(const protocol::SeatRequest& r) const {

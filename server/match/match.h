@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "physics/simulation.h"
+#include "protocol/match_settings.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
+#include "rules/game_rules.h"
 #include "rules/game_state.h"
 #include "server/match/frame_pacer.h"
 #include "server/match/join.h"
@@ -30,9 +32,10 @@ struct DueFrames {
   std::span<const physics::Sample> frames;
 };
 
-/// One 8-ball match. Pure logic: time comes in as `now` (s on the server's monotonic clock),
-/// shots are simulated at once and their frames handed out as `now` reaches them. Every refused
-/// command leaves it unchanged, except that one its seat's key signed uses up its sequence number.
+/// One match of 8-, 9- or 10-ball, a race to one or more racks. Pure logic: time comes in as `now`
+/// (s on the server's monotonic clock), shots are simulated at once and their frames handed out as
+/// `now` reaches them. Every refused command leaves it unchanged, except that one its seat's key
+/// signed uses up its sequence number.
 class Match {
  public:
   Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner, MatchOptions options,
@@ -48,9 +51,11 @@ class Match {
   /// `token` (non-zero), binding `public_key` to it: the seat's commands and requests must be
   /// signed with it (the registry checked the seat request's signature) and carry the token.
   /// The client already in that seat with that key gets it back unchanged (a repeated request).
-  /// Starts a rack when both seats are taken and no game is in play.
+  /// Starts a rack when both seats are taken and no game is in play. `settings` (checked by the
+  /// registry) apply when this player is the first to sit at a table that has not started.
   JoinAnswer takeSeat(int seat, const std::string& player, const std::string& client,
-                      std::uint64_t token, const std::vector<std::uint8_t>& public_key);
+                      std::uint64_t token, const std::vector<std::uint8_t>& public_key,
+                      const std::optional<protocol::MatchSettings>& settings = {});
   /// A request that changes a held seat (Rejoin, Leave, Rematch), checked in this order: the
   /// seat (the one named, or the one bound to the request's key) → the holding's token (public,
   /// but a request signed for an earlier holding of the seat never matches it) → unsigned
@@ -74,6 +79,25 @@ class Match {
   /// more by `now` (once the shot in motion, if any, is done); in the lobby, or once the match is
   /// over, such a seat is freed. True when it acted.
   bool expireAway(double now, double grace);
+
+  // ---- Shot clock -----------------------------------------------------------------------------
+
+  /// Runs the shot clock at `now` (s, server clock): starts it for a new turn (once the shooter's
+  /// view has shown the last shot to rest), gives the shooter's one extension of the rack when it
+  /// first runs out, and otherwise judges the expiry: a foul, the cue ball in hand to the
+  /// opponent. Returns that verdict's answer (stored and published like a choice); empty when
+  /// nothing was judged.
+  std::optional<CommandAnswer> tickClock(double now);
+  /// Seconds left for the shooter at `now`; empty while no clock runs (none set, no rack in
+  /// play, a shot in motion).
+  std::optional<double> clockLeft(double now) const;
+  /// Judges the shooter's clock as run out now, whatever it shows (a replay of a stored expiry);
+  /// empty when no rack is in play or a shot is in motion.
+  std::optional<CommandAnswer> runOutClock();
+  /// Seconds the current shot has in all (an extension included).
+  double clockTotal() const { return clock_total_; }
+  /// Shot clock extensions `seat` has left this rack.
+  int extensionsLeft(int seat) const { return extensions_[static_cast<std::size_t>(seat)]; }
 
   // ---- Shots ----------------------------------------------------------------------------------
 
@@ -109,6 +133,10 @@ class Match {
   std::uint32_t rack() const { return rack_; }
   const std::string& lastVerdict() const { return last_verdict_; }
   const MatchOptions& options() const { return options_; }
+  /// Game, race, breaks and shot clock of this match.
+  const protocol::MatchSettings& settings() const { return settings_; }
+  /// The rule set this match is judged by.
+  rules::GameRules rules() const { return {settings_.game, options_.rules}; }
   /// Increases with every change of the match itself (state, seats, presence), each stored and
   /// published; spectators coming and going are not changes of the match (see spectators()).
   std::uint64_t revision() const { return revision_; }
@@ -133,6 +161,7 @@ class Match {
     std::vector<physics::Sample> frames;  ///< the trajectory, then the table at rest
     std::vector<physics::Ball> after;     ///< the table at rest once the verdict is applied
     FramePacer pacer;
+    double view_done = 0.0;  ///< when the shooter's view has shown the shot to rest (s)
   };
 
   CommandAnswer accept(const protocol::ShotRequest& command);
@@ -149,6 +178,10 @@ class Match {
   JoinAnswer leaveSeat(int seat);
   JoinAnswer rematchSeat(int seat);
   void touch() { ++revision_; }
+  void restartClock(double not_before);
+  CommandAnswer timeOut();
+  /// Who breaks the next rack of the race, `rack_winner` having won the last one.
+  int nextBreaker(int rack_winner) const;
 
   std::string id_;
   std::string name_;
@@ -168,6 +201,14 @@ class Match {
   std::uint64_t revision_ = 1;
   std::optional<Flight> flight_;
   std::optional<int> pending_forfeit_;  ///< a seat to forfeit once the shot in motion is done
+  protocol::MatchSettings settings_;
+  // The shot clock: pending until the next tick starts it (not before clock_not_before_).
+  bool clock_pending_ = false;
+  double clock_not_before_ = 0.0;
+  std::optional<double> clock_start_;
+  double clock_total_ = 0.0;
+  bool clock_warned_ = false;
+  std::array<int, 2> extensions_{0, 0};
 };
 
 }  // namespace pool::server

@@ -129,6 +129,11 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
   if (protocol::verifySeatRequest(c, c.public_key) != protocol::SignatureCheck::Valid) {
     return JoinAnswer::refuse(JoinOutcome::BadSignature, "signature: not by the key it carries");
   }
+  if (c.settings) {
+    if (std::string why = protocol::checkSettings(*c.settings); !why.empty()) {
+      return JoinAnswer::refuse(JoinOutcome::NotAllowed, "settings: " + why);
+    }
+  }
   useKeySeq(c.public_key, c.seq);
   Match* match = nullptr;
   if (c.match == kNewMatch) {
@@ -139,7 +144,8 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     match = find(c.match);
     if (!match) return JoinAnswer::refuse(JoinOutcome::NoSuchMatch, "no match " + c.match);
   }
-  JoinAnswer answer = match->takeSeat(c.seat, c.name, c.client, random_.token(), c.public_key);
+  JoinAnswer answer =
+      match->takeSeat(c.seat, c.name, c.client, random_.token(), c.public_key, c.settings);
   answer.last_seq = c.seq;
   return answer;
 }
@@ -222,6 +228,14 @@ std::size_t MatchRegistry::spectators() const {
 
 void MatchRegistry::pause(double seconds) {
   for (auto& m : matches_) m->pause(seconds);
+}
+
+std::vector<std::pair<std::string, CommandAnswer>> MatchRegistry::tickClocks(double now) {
+  std::vector<std::pair<std::string, CommandAnswer>> judged;
+  for (auto& m : matches_) {
+    if (auto answer = m->tickClock(now)) judged.emplace_back(m->id(), std::move(*answer));
+  }
+  return judged;
 }
 
 void MatchRegistry::expireAway(double now, double grace) {

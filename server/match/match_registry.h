@@ -76,6 +76,9 @@ class MatchRegistry {
   void pause(double seconds);
   /// Applies grace expiries due by `now` (forfeits, freed lobby seats).
   void expireAway(double now, double grace);
+  /// Runs every match's shot clock at `now` (Match::tickClock): the expiries judged, with their
+  /// match ids, to store and publish.
+  std::vector<std::pair<std::string, CommandAnswer>> tickClocks(double now);
   /// Closes matches that clients created, and finished ones, once nobody sits in or watches them,
   /// and drops those closed otherwise (closeMatch); returns their ids. Empty tables opened by
   /// open() stay.

@@ -38,11 +38,15 @@ MatchReplay::MatchReplay(const MatchSnapshot& stored, std::vector<ShotRecord> co
       tokens_(tokens),
       keys_{protocol::generateKeyPair(), protocol::generateKeyPair()},
       pause_(pause) {
+  // The replay's clock does not run: stored expiries are replayed where they happened.
+  protocol::MatchSettings settings = stored.settings;
+  settings.shot_clock = 0.0;
   for (int s = 0; s < 2; ++s) {
     const auto i = static_cast<std::size_t>(s);
     std::string player = stored.seats[i].player;
     if (player.empty()) player = "seat " + std::to_string(s);
-    target_.takeSeat(s, player, "replay-" + std::to_string(s), tokens_[i], keys_[i].publicKey());
+    target_.takeSeat(s, player, "replay-" + std::to_string(s), tokens_[i], keys_[i].publicKey(),
+                     settings);
   }
 }
 
@@ -72,6 +76,17 @@ std::optional<CommandAnswer> MatchReplay::step(double now) {
     for (int s = 0; s < 2; ++s) target_.seatRequest(signedRematch(s));
   }
   const ShotRecord& stored = commands_[next_++];
+  // A shot clock expiry (no player's command): the clock runs out again at the same point.
+  if (!stored.shoots && stored.command.seq == 0) {
+    auto expired = target_.runOutClock();
+    if (!expired || !expired->accepted()) {
+      differences_.push_back("command " + std::to_string(next_) + ": the clock expiry after shot " +
+                             std::to_string(stored.shot_number) + " cannot be replayed");
+      return expired;
+    }
+    ++replayed_;
+    return expired;
+  }
   protocol::ShotRequest command = stored.command;
   command.match = target_.id();
   command.seat_token = tokens_[static_cast<std::size_t>(command.seat)];

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/ball.h"
+#include "protocol/match_settings.h"
 #include "rules/game_state.h"
 #include "server/match/seat.h"
 
@@ -30,6 +31,7 @@ struct MatchSnapshot {
   rules::GameState game;
   std::vector<physics::Ball> balls;  ///< at rest, id order
   std::array<Seat, 2> seats{};
+  protocol::MatchSettings settings;  ///< game, race, breaks, shot clock
 };
 
 }  // namespace pool::server

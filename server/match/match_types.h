@@ -6,6 +6,7 @@
 #include <string>
 
 #include "physics/events.h"
+#include "protocol/match_settings.h"
 #include "protocol/protocol_enums.h"
 #include "rules/eight_ball.h"
 #include "rules/verdict.h"
@@ -22,7 +23,14 @@ struct MatchOptions {
   bool unpaced = false;         ///< every frame due as soon as the shot is accepted
   double max_shot_time = 60.0;  ///< bound on a shot's simulated time, s
   rules::EightBallConfig rules;
+  /// How a table is played unless the player who opens it says otherwise (`pool-server --game,
+  /// --race, --breaks, --shot-clock`).
+  protocol::MatchSettings settings;
 };
+
+/// What the shooter's view still shows of a shot after its last frame is due: the clients play
+/// frames back 0.1 s behind their arrival; the shot clock starts once that is over.
+inline constexpr double kViewDelay = 0.1;
 
 /// An accepted command once it is done: its events (none for a choice without a shot) and the
 /// verdict.

@@ -9,6 +9,7 @@
 #include "core/result.h"
 #include "physics/ball.h"
 #include "rules/table_context.h"
+#include "table/rack.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
 
@@ -29,8 +30,9 @@ Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name);
 /// head spot.
 inline constexpr double kBreakCueSetback = 0.01;
 
-/// A fresh 8-ball rack at rest: the fifteen object balls from the foot spot, shuffled by `seed`,
-/// and the cue ball kBreakCueSetback behind the head spot. Ids 0–15, in id order.
-std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed);
+/// A fresh rack of `type` at rest: the object balls from the foot spot, shuffled by `seed`, and
+/// the cue ball kBreakCueSetback behind the head spot. In id order.
+std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed,
+                                      table::RackType type = table::RackType::EightBall);
 
 }  // namespace pool::server

@@ -8,11 +8,11 @@ namespace pool::store {
 namespace {
 
 void judgeAgain(const StoredShot& stored, const server::TableKit& kit,
-                const rules::EightBallConfig& config, Audit& audit) {
+                const rules::GameRules& rules, Audit& audit) {
   const server::ShotRecord& r = stored.record;
   const std::string at = "shot " + std::to_string(r.shot_number) + ": ";
   const rules::Shot shot{r.before, r.intent, r.events, r.after, false};
-  const auto verdict = rules::judgeEightBall(r.state, shot, kit.context, config);
+  const auto verdict = rules::judgeShot(rules, r.state, shot, kit.context);
   if (!verdict) {
     audit.problems.push_back(at + "the rules refuse it now: " + verdict.error());
     return;
@@ -25,6 +25,9 @@ void judgeAgain(const StoredShot& stored, const server::TableKit& kit,
     audit.problems.push_back(at + "stored text '" + stored.verdict_text + "' is not its verdict's");
   }
   audit.winner = verdict->game_over ? verdict->winner : -1;
+  if (verdict->game_over && verdict->winner >= 0) {
+    ++audit.racks[static_cast<std::size_t>(verdict->winner)];
+  }
 }
 
 }  // namespace
@@ -40,6 +43,20 @@ Audit auditMatch(MatchStore& store, const std::string& id, const server::TableKi
   for (const auto& stored : store.shots(id)) {
     if (!stored.record.shoots) {
       ++audit.choices;
+      // A shot clock expiry (no command of a player) is judged like a shot without a strike.
+      if (stored.record.command.seq == 0) {
+        const server::ShotRecord& r = stored.record;
+        const rules::Shot shot{r.before, r.intent, {}, r.after, true};
+        const auto verdict =
+            rules::judgeShot({match->settings.game, rules}, r.state, shot, kit.context);
+        if (!verdict || verdictJson(*verdict) != verdictJson(r.verdict)) {
+          audit.problems.push_back("a shot clock expiry after shot " +
+                                   std::to_string(r.shot_number) + " re-judges otherwise");
+        } else if (verdict->game_over && verdict->winner >= 0) {
+          audit.winner = verdict->winner;
+          ++audit.racks[static_cast<std::size_t>(verdict->winner)];
+        }
+      }
       continue;
     }
     if (stored.record.shot_number != audit.shots + 1) {
@@ -47,7 +64,7 @@ Audit auditMatch(MatchStore& store, const std::string& id, const server::TableKi
                                " stored after shot " + std::to_string(audit.shots));
     }
     audit.shots = stored.record.shot_number;
-    judgeAgain(stored, kit, rules, audit);
+    judgeAgain(stored, kit, {match->settings.game, rules}, audit);
   }
   if (match->shot_number != audit.shots) {
     audit.problems.push_back("the match counts " + std::to_string(match->shot_number) + " shots, " +

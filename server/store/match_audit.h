@@ -1,11 +1,12 @@
 // Checks a stored match against the rules engine: shot numbers, re-judged verdicts, the winner.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "rules/eight_ball.h"
+#include "rules/game_rules.h"
 #include "server/match/table_kit.h"
 #include "server/store/match_store.h"
 
@@ -13,9 +14,10 @@ namespace pool::store {
 
 /// What auditMatch found.
 struct Audit {
-  std::uint32_t shots = 0;    ///< stored shots (commands with a shot) re-judged
-  std::uint32_t choices = 0;  ///< stored choices without a shot
-  int winner = -1;            ///< the seat the last re-judged verdict gives the game to, or -1
+  std::uint32_t shots = 0;         ///< stored shots (commands with a shot) re-judged
+  std::uint32_t choices = 0;       ///< stored choices without a shot
+  int winner = -1;                 ///< the seat the last re-judged verdict gives the game to, or -1
+  std::array<int, 2> racks{0, 0};  ///< racks each seat won in the re-judged verdicts
   std::vector<std::string> problems;  ///< one line each; empty: the match is sound
 
   bool sound() const { return problems.empty(); }

@@ -13,7 +13,7 @@ namespace {
 
 constexpr const char* kMatchColumns =
     "id, number, name, table_name, rack_seed, layouts, started, closed, client_made, shot_number, "
-    "rack, revision, last_verdict, game, balls";
+    "rack, revision, last_verdict, game, balls, settings";
 
 std::int64_t i64(std::uint64_t v) {
   return static_cast<std::int64_t>(v);
@@ -39,6 +39,7 @@ server::MatchSnapshot matchAt(const Statement& row) {
   m.last_verdict = row.text(12);
   m.game = gameFrom(row.text(13));
   m.balls = ballsFrom(row.text(14));
+  m.settings = settingsFrom(row.text(15));
   return m;
 }
 
@@ -129,7 +130,7 @@ std::uint64_t MatchStore::opened() {
 
 void MatchStore::writeMatch(const server::MatchSnapshot& m) {
   db_.prepare(std::string("INSERT OR REPLACE INTO matches(") + kMatchColumns +
-              ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+              ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
       .bind(1, m.id)
       .bind(2, i64(m.number))
       .bind(3, m.name)
@@ -145,6 +146,7 @@ void MatchStore::writeMatch(const server::MatchSnapshot& m) {
       .bind(13, m.last_verdict)
       .bind(14, gameJson(m.game))
       .bind(15, ballsJson(m.balls))
+      .bind(16, settingsJson(m.settings))
       .run();
   auto seat = db_.prepare(
       "INSERT OR REPLACE INTO seats(match, seat, player, token, client, last_seq, fouls, "

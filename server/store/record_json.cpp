@@ -93,7 +93,9 @@ Json gameOf(const rules::GameState& s) {
           {"options", enums(s.options)},
           {"dry_turns", s.dry_turns},
           {"winner", s.winner},
-          {"end", num(s.end)}};
+          {"end", num(s.end)},
+          {"fouls_in_row", Json::array({s.fouls_in_row[0], s.fouls_in_row[1]})},
+          {"push_out", s.push_out}};
 }
 
 rules::GameState gameAt(const Json& j) {
@@ -109,6 +111,11 @@ rules::GameState gameAt(const Json& j) {
   s.dry_turns = j.at("dry_turns").get<int>();
   s.winner = j.at("winner").get<int>();
   s.end = enumAt<rules::GameEnd>(j, "end");
+  // Written since 9- and 10-ball (older records: none).
+  if (j.contains("fouls_in_row")) {
+    for (std::size_t i = 0; i < 2; ++i) s.fouls_in_row[i] = j.at("fouls_in_row").at(i).get<int>();
+  }
+  if (j.contains("push_out")) s.push_out = j.at("push_out").get<bool>();
   return s;
 }
 
@@ -125,6 +132,29 @@ std::vector<physics::Ball> ballsFrom(const std::string& text) {
     std::vector<physics::Ball> out;
     for (const auto& b : j) out.push_back(ballAt(b));
     return out;
+  });
+}
+
+std::string settingsJson(const protocol::MatchSettings& s) {
+  return Json{{"game", rules::gameNumber(s.game)},
+              {"race_to", s.race_to},
+              {"breaks", num(s.breaks)},
+              {"shot_clock", s.shot_clock}}
+      .dump();
+}
+
+protocol::MatchSettings settingsFrom(const std::string& text) {
+  return parse(text, "settings", [](const Json& j) {
+    protocol::MatchSettings s;
+    if (j.contains("game")) {
+      const auto game = rules::gameOfNumber(j.at("game").get<int>());
+      if (!game) throw StoreError("stored settings unreadable: not a game");
+      s.game = *game;
+    }
+    if (j.contains("race_to")) s.race_to = j.at("race_to").get<int>();
+    if (j.contains("breaks")) s.breaks = enumAt<protocol::BreakOrder>(j, "breaks");
+    if (j.contains("shot_clock")) s.shot_clock = j.at("shot_clock").get<double>();
+    return s;
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include "physics/ball.h"
 #include "physics/events.h"
+#include "protocol/match_settings.h"
 #include "protocol/shot_request.h"
 #include "rules/game_state.h"
 #include "rules/shot.h"
@@ -18,6 +19,10 @@ namespace pool::store {
 
 std::string ballsJson(const std::vector<physics::Ball>& balls);
 std::vector<physics::Ball> ballsFrom(const std::string& text);
+
+/// A match's settings; "{}" (an older file) reads as the defaults (8-ball, one rack).
+std::string settingsJson(const protocol::MatchSettings& settings);
+protocol::MatchSettings settingsFrom(const std::string& text);
 
 std::string gameJson(const rules::GameState& state);
 rules::GameState gameFrom(const std::string& text);

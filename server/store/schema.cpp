@@ -1,5 +1,5 @@
-// Schema version 1 (matches, seats, shots), 2 (seats' public keys), 3 (banned keys) and 4 (the
-// server's own key), and the refusals.
+// Schema version 1 (matches, seats, shots), 2 (seats' public keys), 3 (banned keys), 4 (the
+// server's own key) and 5 (match settings), and the refusals.
 #include "server/store/schema.h"
 
 #include <array>
@@ -48,8 +48,13 @@ CREATE TABLE server_key(
   id INTEGER PRIMARY KEY CHECK (id = 1), secret_key BLOB NOT NULL, created INTEGER NOT NULL);
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3,
-                                                         kVersion4};
+// Match settings (game, race, breaks, shot clock) as JSON; '{}': an 8-ball match of one rack.
+constexpr const char* kVersion5 = R"sql(
+ALTER TABLE matches ADD COLUMN settings TEXT NOT NULL DEFAULT '{}';
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3, kVersion4,
+                                                         kVersion5};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

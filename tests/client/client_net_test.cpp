@@ -68,6 +68,8 @@ TEST(WireReadTest, StateBecomesTheRulesView) {
   wire.seats[1].group = pool_GROUP_SOLIDS;
   wire.ball_in_hand = pool_IN_HAND_ANYWHERE;
   wire.winner = -1;
+  wire.game = 8;  // since protocol 4 every state names its game and race
+  wire.race_to = 1;
   auto view = net::fromWire(wire);
   ASSERT_TRUE(view) << view.error();
   const rules::GameState game = gameStateOf(*view);
@@ -89,9 +91,13 @@ TEST(WireReadTest, OutOfRangeValuesAreFailuresNotCrashes) {
   EXPECT_FALSE(net::fromWire(reply));
   pool_MatchInfo info{};
   std::memset(info.match, 'x', sizeof info.match);  // unterminated: read up to the bound
+  info.game = 9;
+  info.race_to = 3;
   auto entry = net::fromWire(info);
   ASSERT_TRUE(entry);
   EXPECT_EQ(entry->match.size(), sizeof info.match);
+  info.game = 11;  // no such game: refused, not guessed
+  EXPECT_FALSE(net::fromWire(info));
 }
 
 }  // namespace

@@ -7,37 +7,16 @@
 
 #include "rules/eight_ball.h"
 #include "rules/fixture.h"
+#include "rules/real_play.h"
 #include "rules/shot_facts.h"
 #include "scenario/scenario.h"
 
 namespace pool::rules {
 namespace {
 
-// A scenario's shot, simulated, as the referee receives it.
-struct Played {
-  TableContext table;
-  Shot shot;
-};
-
-Played play(const scenario::Scenario& scene, Intent intent) {
-  auto outcome = scenario::runScenario(scene);
-  EXPECT_TRUE(outcome) << outcome.error();
-  Played played{tableContext(scene.spec, scene.geometry), {}};
-  played.shot.before = scene.balls;
-  played.shot.intent = std::move(intent);
-  if (outcome) {
-    EXPECT_FALSE(outcome->truncated);
-    played.shot.events = outcome->events;
-    played.shot.after = outcome->balls;
-  }
-  return played;
-}
-
-scenario::Scenario parsed(const std::string& json) {
-  auto scene = scenario::parseScenario(json);
-  EXPECT_TRUE(scene) << scene.error();
-  return scene ? *scene : scenario::Scenario{};
-}
+using test::parsed;
+using test::play;
+using test::Played;
 
 Verdict judgedReal(const GameState& state, const Played& played) {
   auto verdict = judgeEightBall(state, played.shot, played.table);

@@ -286,7 +286,9 @@ TEST(MatchRematch, BothPlayersMustAskAndTheOtherSeatBreaks) {
   EXPECT_EQ(m->phase(), MatchPhase::Break);
   EXPECT_EQ(m->rack(), 2u);
   EXPECT_EQ(m->game().breaker, 1);
-  EXPECT_EQ(m->seats()[0].racks_won, 1);
+  // A rematch is a new race: the score starts again.
+  EXPECT_EQ(m->seats()[0].racks_won, 0);
+  EXPECT_EQ(m->seats()[1].racks_won, 0);
 }
 
 }  // namespace

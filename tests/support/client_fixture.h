@@ -38,7 +38,12 @@ enum Domain : std::uint32_t {
   kChangedKey = 207,
   kDuplicateId = 208,
   kForgedMatch = 209,
-  kDatabaseCopy = 213,
+  kDatabaseCopy = 215,
+  // Ways to play (nine_ball_race_test and the shot clock); 216 is the sound test's.
+  kNineBallRace = 217,
+  kTenBallRace = 218,
+  kShotClock = 219,
+  kOpensTable = 123,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

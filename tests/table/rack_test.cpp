@@ -57,7 +57,8 @@ TEST(Spots, QuarterLengthsFromTheCushions) {
   EXPECT_EQ(spots.centre_spot, Vec2(0.0, 0.0));
   EXPECT_EQ(rackTypeFromString("8ball"), RackType::EightBall);
   EXPECT_EQ(rackTypeFromString("9ball"), RackType::NineBall);
-  EXPECT_FALSE(rackTypeFromString("10ball").has_value());
+  EXPECT_EQ(rackTypeFromString("10ball"), RackType::TenBall);
+  EXPECT_FALSE(rackTypeFromString("11ball").has_value());
 }
 
 TEST(EightBallRack, LayoutFollowsTheRules) {
@@ -152,6 +153,32 @@ TEST(NineBallRack, DiamondWithOneAtTheApexAndNineInTheCentre) {
     std::map<long, int> per_row;
     for (const BallPlacement& b : rack) ++per_row[std::lround((b.pos.x() - foot.x()) / row)];
     EXPECT_EQ(per_row, (std::map<long, int>{{0, 1}, {1, 2}, {2, 3}, {3, 2}, {4, 1}}));
+  }
+  EXPECT_GT(distinct.size(), 30u);
+}
+
+TEST(TenBallRack, TriangleWithOneAtTheApexAndTenInTheThirdRow) {
+  const TableSpec s = nineFoot();
+  const Vec2 foot = spotsFor(s).foot_spot;
+  const double row = 2.0 * kR * std::sqrt(3.0) / 2.0;  // a tight rack
+  std::set<std::vector<int>> distinct;
+  for (std::uint64_t seed = 0; seed < 50; ++seed) {
+    const auto rack = rackBalls(RackType::TenBall, s, kR, seed);
+    ASSERT_EQ(rack.size(), 10u);
+    std::set<int> ids;
+    std::vector<int> order;
+    for (const BallPlacement& b : rack) {
+      ids.insert(b.id);
+      order.push_back(b.id);
+    }
+    distinct.insert(order);
+    EXPECT_EQ(ids, (std::set<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+    expectNoOverlap(rack);
+    EXPECT_EQ(ball(rack, 1).pos, foot);
+    EXPECT_LT((ball(rack, 10).pos - (foot + Vec2(2.0 * row, 0.0))).norm(), 1e-12);
+    std::map<long, int> per_row;
+    for (const BallPlacement& b : rack) ++per_row[std::lround((b.pos.x() - foot.x()) / row)];
+    EXPECT_EQ(per_row, (std::map<long, int>{{0, 1}, {1, 2}, {2, 3}, {3, 4}}));
   }
   EXPECT_GT(distinct.size(), 30u);
 }

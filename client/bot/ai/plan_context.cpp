@@ -1,7 +1,7 @@
 // The planner's shared turn state and the layout evaluation used for position and safety play.
 #include "client/bot/ai/plan_context.h"
 
-#include "rules/eight_ball.h"
+#include "rules/game_rules.h"
 
 namespace pool::bot {
 
@@ -19,7 +19,7 @@ PlannedShot PlanContext::blank(ShotKind kind) const {
 }
 
 std::vector<int> PlanContext::legalBalls() const {
-  return rules::legalFirstBalls(play_state, balls);
+  return rules::firstBallsFor(view.rules, play_state, balls);
 }
 
 double shooterChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
@@ -28,7 +28,7 @@ double shooterChances(const std::vector<physics::Ball>& balls, const rules::Game
   if (state.ball_in_hand != rules::BallInHand::None) return 1.0;
   const auto cue = ballAt(balls, physics::kCueBall);
   if (!cue) return 1.0;
-  const auto lines = potLines(*cue, balls, rules::legalFirstBalls(state, balls), view);
+  const auto lines = potLines(*cue, balls, rules::firstBallsFor(view.rules, state, balls), view);
   return lines.empty() ? 0.0 : 1.0 / (1.0 + lines.front().difficulty);
 }
 

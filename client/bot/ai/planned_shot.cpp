@@ -31,7 +31,8 @@ rules::Intent intentOf(const PlannedShot& shot) {
 
 bool shoots(const PlannedShot& shot) {
   return !shot.choice || *shot.choice == rules::Choice::PlayOn ||
-         *shot.choice == rules::Choice::BallInHand || *shot.choice == rules::Choice::RespotEight;
+         *shot.choice == rules::Choice::BallInHand || *shot.choice == rules::Choice::RespotEight ||
+         *shot.choice == rules::Choice::PushOut;
 }
 
 std::string describe(const PlannedShot& shot) {

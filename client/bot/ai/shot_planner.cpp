@@ -21,8 +21,29 @@ rules::GameState stateAfterChoice(rules::GameState state, std::optional<rules::C
   if (!choice) return state;
   if (*choice == rules::Choice::BallInHand)
     state.ball_in_hand = rules::BallInHand::BehindHeadString;
+  state.push_out = *choice == rules::Choice::PushOut;
   state.options.clear();
   return state;
+}
+
+// Below these chances of a clear pot the bot would rather not shoot the table as it lies.
+constexpr double kPushOutBelow = 1e-9;  // no pot line at all for the lowest ball
+constexpr double kPassBackBelow = 0.3;
+
+// 9-/10-ball: push out when the lowest ball has no pot line; after a push-out (or a missed call)
+// play on only from a table that offers a reasonable pot, else hand it back.
+std::optional<rules::Choice> rotationChoice(const std::vector<physics::Ball>& balls,
+                                            const rules::GameState& state, const TableView& view) {
+  rules::GameState as_is = state;
+  as_is.options.clear();
+  const double chances = shooterChances(balls, as_is, view);
+  if (offered(state.options, rules::Choice::PushOut)) {
+    return chances < kPushOutBelow ? rules::Choice::PushOut : rules::Choice::PlayOn;
+  }
+  if (offered(state.options, rules::Choice::PassBack)) {
+    return chances < kPassBackBelow ? rules::Choice::PassBack : rules::Choice::PlayOn;
+  }
+  return std::nullopt;
 }
 
 PlannedShot planPlay(PlanContext& context) {
@@ -50,10 +71,12 @@ ShotPlanner::ShotPlanner(const TableView& view, PlannerOptions options)
 
 PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
                               const rules::GameState& state) {
-  const auto choice = chooseOption(state.options);
+  auto choice = chooseOption(state.options);
+  if (auto rotation = rotationChoice(balls, state, view_)) choice = rotation;
   PlanContext context{view_,  verifier_,        balls, state, stateAfterChoice(state, choice),
                       choice, options_.max_runs};
-  if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand) {
+  if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand &&
+      *choice != rules::Choice::PushOut) {
     // Re-racking answers carry no stroke (a re-spotted 8 is never chosen: re-breaking is simpler).
     return context.blank(ShotKind::Choice);
   }

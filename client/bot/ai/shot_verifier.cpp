@@ -74,7 +74,7 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
   judged_shot.after = outcome->balls;
   judged_shot.after.insert(judged_shot.after.end(), down.begin(), down.end());
   sortById(judged_shot.after);
-  auto verdict = rules::judgeEightBall(state, judged_shot, view_.context);
+  auto verdict = rules::judgeShot(view_.rules, state, judged_shot, view_.context);
   if (!verdict) {
     trial.error = verdict.error();
     return trial;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "rules/game_rules.h"
 #include "rules/table_context.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
@@ -30,6 +31,7 @@ struct TableView {
   table::TableGeometry geometry;
   rules::TableContext context;  ///< spots, ball radius, pocket holes
   std::vector<PocketTarget> pockets;
+  rules::GameRules rules;  ///< the game played on it (8-ball unless the match says otherwise)
 
   double radius() const { return context.ball_radius; }  ///< ball radius, m
   double halfLength() const { return spec.length / 2; }  ///< playing surface half extent in x, m

@@ -1,0 +1,56 @@
+// A match's settings: names, checks and a one-line summary.
+#include "protocol/match_settings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pool::protocol {
+
+const char* toString(BreakOrder order) {
+  switch (order) {
+    case BreakOrder::Alternate:
+      return "alternate";
+    case BreakOrder::Winner:
+      return "winner";
+  }
+  return "unknown";
+}
+
+std::optional<BreakOrder> breakOrderOf(std::string_view name) {
+  if (name == "alternate") return BreakOrder::Alternate;
+  if (name == "winner") return BreakOrder::Winner;
+  return std::nullopt;
+}
+
+double MatchSettings::warningAt() const {
+  return std::min(kShotClockWarning, shot_clock / 3.0);
+}
+
+std::string checkSettings(const MatchSettings& s) {
+  if (s.game != rules::Game::EightBall && s.game != rules::Game::NineBall &&
+      s.game != rules::Game::TenBall) {
+    return "game: must be 8-, 9- or 10-ball";
+  }
+  if (s.race_to < 1 || s.race_to > kMaxRace) {
+    return "race: must be 1 to " + std::to_string(kMaxRace) + " racks";
+  }
+  if (s.breaks != BreakOrder::Alternate && s.breaks != BreakOrder::Winner) {
+    return "breaks: must be alternate or winner";
+  }
+  if (!std::isfinite(s.shot_clock) ||
+      (s.shot_clock != 0.0 && (s.shot_clock < kMinShotClock || s.shot_clock > kMaxShotClock))) {
+    return "shot clock: must be off (0) or " + std::to_string(static_cast<int>(kMinShotClock)) +
+           " to " + std::to_string(static_cast<int>(kMaxShotClock)) + " s";
+  }
+  return "";
+}
+
+std::string describe(const MatchSettings& s) {
+  std::string text = std::string(rules::toString(s.game)) + ", race to " +
+                     std::to_string(s.race_to) + ", " + toString(s.breaks) + " breaks";
+  if (!s.clockOn()) return text + ", no shot clock";
+  const long seconds = std::lround(s.shot_clock);
+  return text + ", shot clock " + std::to_string(seconds) + " s";
+}
+
+}  // namespace pool::protocol

@@ -1,0 +1,89 @@
+// Match settings through the wire module: lobby entries, match states and seat requests keep them;
+// a sample with settings out of range is refused.
+#include <gtest/gtest.h>
+
+#include "net/message_convert.h"
+#include "net/messages.h"
+#include "net/wire_fields.h"
+
+namespace pool::net {
+namespace {
+
+protocol::MatchSettings tenBall() {
+  protocol::MatchSettings s;
+  s.game = rules::Game::TenBall;
+  s.race_to = 5;
+  s.breaks = protocol::BreakOrder::Winner;
+  s.shot_clock = 35.0;
+  return s;
+}
+
+TEST(SettingsConvert, LobbyEntryKeepsSettingsAndScore) {
+  protocol::LobbyEntry entry;
+  entry.match = "srv-1";
+  entry.settings = tenBall();
+  entry.racks_won = {2, 4};
+  const auto sample = toWire(entry);  // owns the sequences the wire sample points into
+  const pool_MatchInfo& wire = *sample;
+  EXPECT_EQ(wire.game, 10);
+  const auto back = fromWire(wire);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(back->settings, tenBall());
+  EXPECT_EQ(back->racks_won, (std::array<int, 2>{2, 4}));
+}
+
+TEST(SettingsConvert, MatchStateKeepsSettingsClockAndFouls) {
+  protocol::MatchView view;
+  view.match = "srv-1";
+  view.settings = tenBall();
+  view.shot_clock = 8.0;
+  view.shot_clock_total = 70.0;
+  view.seats[1].extensions_left = 1;
+  view.seats[0].fouls_in_row = 2;
+  view.options = {rules::Choice::PlayOn, rules::Choice::PassBack};
+  view.end = rules::GameEnd::ThreeFouls;
+  const auto wire = toWire(view);
+  EXPECT_TRUE(wire->shot_clock_warning);  // 8 s left of a 35 s clock
+  const auto back = fromWire(*wire);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(back->settings, tenBall());
+  EXPECT_DOUBLE_EQ(back->shot_clock_total, 70.0);
+  EXPECT_EQ(back->seats[1].extensions_left, 1);
+  EXPECT_EQ(back->seats[0].fouls_in_row, 2);
+  EXPECT_EQ(back->options, view.options);
+  EXPECT_EQ(back->end, rules::GameEnd::ThreeFouls);
+  EXPECT_TRUE(back->clockWarning());
+}
+
+TEST(SettingsConvert, SeatRequestSettingsInAndBadOnesRefused) {
+  protocol::SeatRequest r;
+  r.client = "c0ffee";
+  r.match = "new";
+  r.name = "Ada";
+  r.settings = tenBall();
+  auto wire = toWire(r);
+  EXPECT_TRUE(wire->has_settings);
+  auto back = fromWire(*wire);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(back->settings, tenBall());
+
+  wire->game = 7;
+  EXPECT_EQ(fromWire(*wire).error(), "settings: game: must be 8, 9 or 10");
+  wire->game = 9;
+  wire->race_to = 0;
+  EXPECT_FALSE(fromWire(*wire));
+  wire->race_to = 3;
+  wire->shot_clock = 1.0;
+  EXPECT_FALSE(fromWire(*wire));
+  wire->shot_clock = 0.0;
+  setRawValue(wire->breaks, 7);
+  EXPECT_FALSE(fromWire(*wire));
+  // Without settings the fields are not read.
+  wire->has_settings = false;
+  back = fromWire(*wire);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_FALSE(back->settings);
+}
+
+}  // namespace
+}  // namespace pool::net
