@@ -44,6 +44,11 @@ void ServerLoop::step(double now) {
     registry_.pause(stalled);
   }
   last_step_ = now;
+  // The database going away is noticed at the next write, and at least once a second.
+  if (store_ && now - file_checked_ >= 1.0) {
+    file_checked_ = now;
+    store_->checkStillThere();
+  }
   readJoins(now);
   readCommands(now);
   stepReplay(now);
@@ -245,10 +250,16 @@ void ServerLoop::stepReplay(double now) {
 void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match) {
   const Match* m = registry_.find(match);
   if (!store_ || !answer.record || !m) return;
-  const double ms = timedCommit([&] {
-    store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
-                       registry_.snapshotOf(*m));
-  });
+  double ms = 0.0;
+  try {
+    ms = timedCommit([&] {
+      store_->recordShot(*answer.record, rules::describe(answer.record->verdict),
+                         registry_.snapshotOf(*m));
+    });
+  } catch (const store::StoreError& e) {
+    throw store::StoreError("storing shot " + std::to_string(answer.record->shot_number) + " of " +
+                            match + ": " + e.what());
+  }
   spdlog::info("stored shot {} of {} (seat {} seq {}) in {:.2f} ms", answer.record->shot_number,
                match, answer.seat, answer.seq, ms);
 }

@@ -120,6 +120,7 @@ class ServerLoop {
   JoinRateLimit rate_;         ///< join requests per client
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
+  double file_checked_ = 0.0;        ///< when the store's file was last checked, s
   std::function<std::string(double)> guard_;
   std::string fault_;
   /// A pass later than this after the previous one means the server was not running.

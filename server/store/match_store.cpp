@@ -2,8 +2,10 @@
 #include "server/store/match_store.h"
 
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 
+#include "server/store/online_backup.h"
 #include "server/store/record_json.h"
 #include "server/store/schema.h"
 
@@ -79,7 +81,10 @@ Result<std::unique_ptr<MatchStore>> MatchStore::open(const std::string& path) {
   } catch (const StoreError& e) {
     return Out::fail(path + ": " + e.what());
   }
-  return Out::ok(std::unique_ptr<MatchStore>(new MatchStore(std::move(*db))));
+  std::error_code absolute_ec;
+  const auto where = std::filesystem::absolute(path, absolute_ec);
+  return Out::ok(std::unique_ptr<MatchStore>(
+      new MatchStore(std::move(*db), absolute_ec ? path : where.string())));
 }
 
 // ---- Meta ---------------------------------------------------------------------------------------
@@ -175,10 +180,38 @@ void MatchStore::saveMatches(const std::string& server_id, std::uint64_t opened,
   writeMeta("opened", std::to_string(opened));
   for (const auto& m : matches) writeMatch(m);
   tx.commit();
+  checkStillThere();
 }
 
 void MatchStore::closeMatch(const std::string& id) {
   db_.prepare("UPDATE matches SET closed = 1 WHERE id = ?").bind(1, id).run();
+  checkStillThere();
+}
+
+void MatchStore::checkStillThere() {
+  const std::string problem = watch_.problem();
+  if (problem.empty()) return;
+  throw StoreError(problem + ": stopping; " + rescue());
+}
+
+std::string MatchStore::rescue() {
+  const std::string& path = watch_.path();
+  std::error_code ec;
+  std::string target = path;
+  if (std::filesystem::exists(path, ec)) {
+    // Replaced by someone's file: never overwrite it.
+    target = path + ".rescued-" + std::to_string(std::time(nullptr));
+  } else {
+    const auto folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+  }
+  const auto done = backupTo(db_, target);
+  if (!done) {
+    return "the open database could not be saved (" + done.error() +
+           "): what was stored since the file went is lost with the process";
+  }
+  return "everything stored, the last accepted shot included, is saved in " + target +
+         " (start the server on it)";
 }
 
 void MatchStore::recordShot(const server::ShotRecord& r, const std::string& verdict_text,
@@ -203,6 +236,7 @@ void MatchStore::recordShot(const server::ShotRecord& r, const std::string& verd
       .bind(13, verdict_text)
       .run();
   tx.commit();
+  checkStillThere();
 }
 
 // ---- Reading ------------------------------------------------------------------------------------

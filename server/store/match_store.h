@@ -11,6 +11,7 @@
 #include "protocol/key_pair.h"
 #include "server/match/match_snapshot.h"
 #include "server/match/shot_record.h"
+#include "server/store/file_watch.h"
 #include "server/store/sqlite_db.h"
 
 namespace pool::store {
@@ -67,13 +68,23 @@ class MatchStore {
 
   Database& database() { return db_; }
 
+  /// Throws StoreError when the file was deleted (or its folder) or replaced since it was opened,
+  /// after saving what the open connection still holds (everything committed, the last write
+  /// included) where a restart finds it: at the file's own path when nothing is there (its
+  /// folder made again), else beside the file that replaced it ("<path>.rescued-<time>"). Every
+  /// write calls it after its commit; the server also calls it about once a second.
+  void checkStillThere();
+
  private:
-  explicit MatchStore(Database db) : db_(std::move(db)) {}
+  MatchStore(Database db, const std::string& path) : db_(std::move(db)), watch_(path) {}
+  /// Saves the open database for a restart (see checkStillThere); says where, or why not.
+  std::string rescue();
   void writeMatch(const server::MatchSnapshot& match);
   void writeMeta(const std::string& key, const std::string& value);
   std::string readMeta(const std::string& key);
 
   Database db_;
+  FileWatch watch_;
   std::string table_ = "wpa-9ft";
 };
 

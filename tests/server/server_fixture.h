@@ -32,6 +32,8 @@ enum Domain : std::uint32_t {
   kVersionMismatch,  ///< its own: two servers under one id on one domain refuse to run
   kAdmin,
   kAdminBackup,
+  kStoreDeleted,
+  kStoreDeletedIdle,
 };
 
 /// The flood tests' domain (135–149 are theirs).
