@@ -46,6 +46,8 @@ class Forger {
     net::setText(s->table, "wpa-9ft");
     s->phase = pool_PHASE_OPEN;
     s->protocol_version = protocol::kProtocolVersion;
+    s->game = 8;
+    s->race_to = 1;
     return write(infos_, *s);
   }
 
@@ -63,6 +65,8 @@ class Forger {
     s->rack = 1;
     s->shot_number = shot_number;
     s->shot_clock = -1.0;
+    s->game = 8;  // a well-formed state in every field but what it lies about
+    s->race_to = 1;
     s->winner = winner;
     s->end = pool_END_FORFEIT;
     net::setText(s->last_verdict, "forged: seat 2 wins");
