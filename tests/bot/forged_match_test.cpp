@@ -41,8 +41,9 @@ TEST_F(ForgedMatchTest, BotsAndASpectatorIgnoreForgedSamplesAndFinishTheRealMatc
   const std::vector<std::pair<std::optional<protocol::KeyPair>, std::string>> rounds{
       {std::nullopt, "dropped: unsigned"},
       {protocol::generateKeyPair(), "but the key pinned for that server is"}};
-  for (const auto& [key, line] : rounds) {
-    forger.signWith(key);
+  for (const auto& round : rounds) {
+    const std::string& line = round.second;  // a plain name: clang 14 cannot capture bindings
+    forger.signWith(round.first);
     ASSERT_TRUE(forger.publishState("srv-1", 0xfffffff0u, shots));
     ASSERT_TRUE(forger.publishFrame("srv-1", 0xffffffffu));
     ASSERT_TRUE(forger.publishResult("srv-1", 0, shots + 1));
