@@ -35,10 +35,12 @@ inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& che
     if (!std::isfinite(v)) violated("accepted a non-finite number", check);
   }
   const std::int32_t option = net::rawValue(c.option);
-  if (option < pool_OPTION_NONE || option > pool_OPTION_OPPONENT_REBREAKS) {
+  if (option < pool_OPTION_NONE || option > pool_OPTION_PASS_BACK) {
     violated("accepted an unknown option", check);
   }
-  const bool shoots = option != pool_OPTION_REBREAK && option != pool_OPTION_OPPONENT_REBREAKS;
+  // Re-racks and passing the table back are choices without a shot: no cue to check.
+  const bool shoots = option != pool_OPTION_REBREAK && option != pool_OPTION_OPPONENT_REBREAKS &&
+                      option != pool_OPTION_PASS_BACK;
   if (shoots && (c.speed <= 0.0 || c.speed > limits.max_speed || c.elevation < 0.0 ||
                  c.elevation > limits.max_elevation || std::abs(c.yaw) > limits.max_abs_yaw ||
                  std::hypot(c.tip_side, c.tip_height) > limits.miscue_limit)) {
