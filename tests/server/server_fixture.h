@@ -58,12 +58,8 @@ class ServerTest : public ::testing::Test {
   /// Starts the server on `domain` with server id "t", `args` and `log_level`.
   void start(std::uint32_t domain, std::vector<std::string> args,
              const std::string& log_level = "debug") {
-    if (!claim_ || claim_->domain() != domain) {  // a restart in the same test keeps its claim
-      claim_.reset();
-      claim_ = std::make_unique<pool::test::DomainClaim>(domain);
-    }
-    ASSERT_TRUE(claim_->claimed()) << "domain " << domain << " is in use by another test ("
-                                   << claim_->path() << "): give each test a domain of its own";
+    pool::test::claimDomain(claim_, domain);
+    ASSERT_TRUE(claim_->claimed()) << claim_->refusal();
     args.insert(args.end(), {"--server-id", "t", "--log-level", log_level});
     server_ = std::make_unique<ServerProcess>(domain, args);
     ASSERT_GT(server_->pid(), 0);

@@ -53,12 +53,8 @@ class ClientIntegrationTest : public ::testing::Test {
 
   void open(Domain domain, const std::string& tag) {
     domain_ = domain;
-    if (!claim_ || claim_->domain() != domain) {  // a restart in the same test keeps its claim
-      claim_.reset();
-      claim_ = std::make_unique<pool::test::DomainClaim>(domain);
-    }
-    ASSERT_TRUE(claim_->claimed()) << "domain " << domain << " is in use by another test ("
-                                   << claim_->path() << "): give each test a domain of its own";
+    pool::test::claimDomain(claim_, domain);
+    ASSERT_TRUE(claim_->claimed()) << claim_->refusal();
     scratch_ = std::make_unique<ScratchDir>(tag);
     // The servers' default database goes to the scratch folder, never the real home.
     ::setenv("XDG_DATA_HOME", scratch_->file("data").c_str(), 1);

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 namespace pool::test {
@@ -34,6 +35,11 @@ class DomainClaim {
   DomainClaim& operator=(const DomainClaim&) = delete;
 
   bool claimed() const { return claimed_; }
+  /// The failure message for a test's assertion when claimed() is false.
+  std::string refusal() const {
+    return "domain " + std::to_string(domain_) + " is in use by another test (" + path_ +
+           "): give each test a domain of its own";
+  }
   std::uint32_t domain() const { return domain_; }
   const std::string& path() const { return path_; }
 
@@ -43,5 +49,13 @@ class DomainClaim {
   int fd_ = -1;
   bool claimed_ = false;
 };
+
+/// Makes `held` claim `domain`: kept when it already does (a restart within one test), else
+/// released and claimed afresh. The fixtures assert `held->claimed()`.
+inline void claimDomain(std::unique_ptr<DomainClaim>& held, std::uint32_t domain) {
+  if (held && held->domain() == domain) return;
+  held.reset();
+  held = std::make_unique<DomainClaim>(domain);
+}
 
 }  // namespace pool::test
