@@ -145,7 +145,8 @@ int main(int argc, char** argv) {
   std::string quality;
   app.add_option("--quality", quality,
                  "drawing preset: full, light (the 3-D scene at lower resolution) or auto (light "
-                 "under software OpenGL); default auto in the window, full for --screenshot")
+                 "under software OpenGL); default: the window's settings (auto), full for "
+                 "--screenshot")
       ->check(CLI::IsMember({"auto", "full", "light"}));
   app.add_flag("--wireframe", flags.screenshot.render.wireframe, "--screenshot: polygons as lines");
   bool no_textures = false, no_lighting = false;

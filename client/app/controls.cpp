@@ -136,6 +136,9 @@ void Controls::keyDown(Key key, Mods mods) {
     case Key::R:
     case Key::N:
     case Key::F11:
+    case Key::Q:
+    case Key::Y:
+    case Key::I:
       requests_.push_back(key);
       break;
     case Key::Space:
@@ -145,6 +148,7 @@ void Controls::keyDown(Key key, Mods mods) {
       }
       break;
     case Key::Escape:
+      requests_.push_back(key);  // also says no to a question asked
       charging_ = false;
       aim_.power = 0.0;
       break;

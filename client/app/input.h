@@ -31,6 +31,9 @@ enum class Key : std::uint8_t {
   R,    ///< rematch (game over)
   N,    ///< a new game at a free table (game over)
   F11,  ///< full screen on/off
+  Q,    ///< concede the rack (asks first)
+  Y,    ///< yes (to the question asked)
+  I,    ///< the instant replay of the last shot
   Escape,
 };
 

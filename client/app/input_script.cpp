@@ -44,6 +44,10 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
       step.kind = ScriptStep::Kind::WaitAiming;
       return R::ok(step);
     }
+    if (what == "live") {
+      step.kind = ScriptStep::Kind::WaitLive;
+      return R::ok(step);
+    }
     if (what == "over" || what == "table") {
       step.kind = what == "over" ? ScriptStep::Kind::WaitOver : ScriptStep::Kind::WaitTable;
       return R::ok(step);
@@ -52,7 +56,7 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
       step.kind = ScriptStep::Kind::WaitShot;
       return R::ok(step);
     }
-    return R::fail("wait needs 'aiming', 'shot N', 'over' or 'table'");
+    return R::fail("wait needs 'aiming', 'shot N', 'over', 'table' or 'live'");
   }
   if (verb == "mouse") {
     std::string what;
@@ -132,12 +136,14 @@ std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
     const ScriptStep& step = steps_[next_];
     const bool wait =
         step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot ||
-        step.kind == ScriptStep::Kind::WaitOver || step.kind == ScriptStep::Kind::WaitTable;
+        step.kind == ScriptStep::Kind::WaitOver || step.kind == ScriptStep::Kind::WaitTable ||
+        step.kind == ScriptStep::Kind::WaitLive;
     // `now` was seen before this frame's steps: a wait after one is judged on the next frame.
     if (wait && !due.empty()) return due;
     const bool waiting = (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
                          (step.kind == ScriptStep::Kind::WaitOver && !now.over) ||
                          (step.kind == ScriptStep::Kind::WaitTable && !now.at_table) ||
+                         (step.kind == ScriptStep::Kind::WaitLive && now.replaying) ||
                          (step.kind == ScriptStep::Kind::WaitShot &&
                           now.shot_number < static_cast<std::uint32_t>(step.count));
     if (waiting) return due;

@@ -21,7 +21,10 @@ const std::vector<KeyHelp>& keyHelp() {
       {"always", "S / X, mouse wheel", "zoom in / out"},
       {"always", "G / V", "aim line and ghost ball / direction arrows"},
       {"always", "P / T / L", "wireframe / textures / lighting"},
+      {"playing", "Q, then Y (Esc: no)", "concede the rack: the opponent wins it"},
       {"game over", "R / N", "rematch / a new game at a free table"},
+      {"always", "I",
+       "replay the last shot (the view turns and zooms as ever; a new shot ends it)"},
       {"always", "F11", "full screen, on and off"},
       {"always", "F1", "this help and the settings, on and off"},
   };

@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "client/app/shot_story.h"
+#include "protocol/seat_request.h"
 
 namespace pool::app {
 namespace {
@@ -93,6 +94,8 @@ void MatchSession::leave() {
   frames_due_until_ = 0.0;
   banner_.clear();
   shot_log_.clear();
+  verdict_heard_.clear();
+  replay_.clear();
   names_ = seatNames(nullptr);
 }
 
@@ -100,6 +103,19 @@ void MatchSession::rematch() {
   for (auto& c : clients_) {
     if (c->seat()) c->requestRematch();
   }
+}
+
+bool MatchSession::concede() {
+  const client::MatchView* v = view();
+  if (!v || !client::inPlay(v->phase)) return false;
+  for (auto& c : clients_) {
+    const auto& seat = c->seat();
+    if (!seat || seat->match != match_) continue;
+    if (clients_.size() > 1 && seat->seat != v->shooter) continue;
+    c->requestConcede();
+    return true;
+  }
+  return false;
 }
 
 bool MatchSession::joining() const {
@@ -185,7 +201,12 @@ void MatchSession::onAnswer(const client::JoinAnswer& answer, std::size_t from) 
   if (answer.action == client::JoinAction::Leave && answer.accepted() && identities_[from]) {
     identities_[from]->forgetSeat();
   }
-  if (answer.action == client::JoinAction::Leave || answer.action == client::JoinAction::Rematch) {
+  if (answer.action == client::JoinAction::Concede && !answer.accepted()) {
+    note("concede refused: " + answer.reason, true);
+    return;
+  }
+  if (answer.action == client::JoinAction::Leave || answer.action == client::JoinAction::Rematch ||
+      answer.action == client::JoinAction::Concede) {
     return;
   }
   if (answer.action == client::JoinAction::Rejoin && onRejoinAnswer(answer, from)) return;
@@ -248,6 +269,7 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
     if (frame->match != match_) return;
     if (frame->shot_number >= shots_seen_) frames_due_until_ = 0.0;
     if (listener_) listener_->onFrame(*frame);
+    replay_.record(*frame);
     playback_.push(std::move(*frame), now);
   } else if (auto* view = std::get_if<client::MatchView>(&event)) {
     if (view->match != match_) return;
@@ -266,6 +288,16 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
     }
     if (banner_.empty() && !view->last_verdict.empty()) {
       banner_ = verdictInWords(view->last_verdict, names_);
+    }
+    // A concession is no shot: its words come with the state, once.
+    if (view->last_verdict != verdict_heard_) {
+      verdict_heard_ = view->last_verdict;
+      if (verdict_heard_.find(protocol::kConcededTheRack) != std::string::npos) {
+        banner_ = verdictInWords(verdict_heard_, names_);
+        shot_log_.push_back(banner_);
+        while (shot_log_.size() > kLogKept) shot_log_.pop_front();
+        note(banner_);
+      }
     }
   } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
     onReport(*report);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "client/app/instant_replay.h"
 #include "client/app/playback_clock.h"
 #include "client/app/shot_story.h"
 #include "client/net/game_client.h"
@@ -91,10 +92,17 @@ class MatchSession {
   Result<std::uint32_t> shoot(int seat, protocol::ShotRequest request);
   /// Asks the server for a rematch (every local seat) after a match is over.
   void rematch();
+  /// Concedes the rack in play for the local seat: the only one, or (two seats at this screen)
+  /// the one to shoot. False when no local seat can concede now.
+  bool concede();
   /// `listener` (or null) hears the frames and final shot reports of the match followed.
   void setListener(ShotListener* listener) { listener_ = listener; }
   /// The playback time of the shot being drawn (s since its strike).
   double playTime() const { return playback_.playTime(); }
+
+  /// The last shot's frames and their replay (the live game's frames end a replay).
+  InstantReplay& replay() { return replay_; }
+  const InstantReplay& replay() const { return replay_; }
 
   /// Notes since the last call: join answers, rejections, verdicts.
   std::vector<SessionNote> takeNotes();
@@ -140,6 +148,8 @@ class MatchSession {
   double frames_due_until_ = 0.0;            ///< a new shot's frames are awaited until then, s
   double last_poll_ = 0.0;
   std::string last_verdict_;
+  std::string verdict_heard_;  ///< the last state's verdict, to tell a new one
+  InstantReplay replay_;       ///< the last shot's frames, to play again
   std::string banner_;
   std::deque<std::string> shot_log_;
   SeatNames names_ = seatNames(nullptr);

@@ -38,6 +38,10 @@ std::filesystem::path defaultSettingsPath() {
   return players.parent_path() / "settings.conf";
 }
 
+bool knownQuality(const std::string& name) {
+  return name == "auto" || name == "full" || name == "light";
+}
+
 Result<Settings> loadSettings(const std::filesystem::path& path) {
   using R = Result<Settings>;
   Settings s;
@@ -62,6 +66,9 @@ Result<Settings> loadSettings(const std::filesystem::path& path) {
       ok = readBool(value, s.aim_line);
     } else if (key == "vectors") {
       ok = readBool(value, s.vectors);
+    } else if (key == "quality") {
+      ok = knownQuality(value);
+      if (ok) s.quality = value;
     } else if (key == "volume") {
       std::istringstream v(value);
       std::string rest;
@@ -87,7 +94,8 @@ Result<bool> saveSettings(const std::filesystem::path& path, const Settings& s) 
         << "full_screen = " << (s.full_screen ? "true" : "false") << '\n'
         << "volume = " << s.volume << '\n'
         << "aim_line = " << (s.aim_line ? "true" : "false") << '\n'
-        << "vectors = " << (s.vectors ? "true" : "false") << '\n';
+        << "vectors = " << (s.vectors ? "true" : "false") << '\n'
+        << "quality = " << s.quality << '\n';
     if (!out.flush()) return R::fail("cannot write " + tmp.string());
   }
   std::filesystem::rename(tmp, path, ec);

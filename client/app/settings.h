@@ -1,5 +1,5 @@
-// The player's settings kept between runs: full screen, volume and the aim aids, in a small text
-// file in the user's config folder ($XDG_CONFIG_HOME/pool/settings.conf).
+// The player's settings kept between runs: full screen, volume, the aim aids and the drawing
+// quality, in a small text file in the user's config folder ($XDG_CONFIG_HOME/pool/settings.conf).
 #pragma once
 
 #include <filesystem>
@@ -14,6 +14,8 @@ struct Settings {
   double volume = 1.0;   ///< 0–1, the sound's master gain
   bool aim_line = true;  ///< aim line and ghost ball (G)
   bool vectors = false;  ///< direction arrows (V)
+  /// The drawing preset: "auto" (light under a software renderer, else full), "full" or "light".
+  std::string quality = "auto";
 
   bool operator==(const Settings&) const = default;
 };
@@ -22,9 +24,12 @@ struct Settings {
 /// is set.
 std::filesystem::path defaultSettingsPath();
 
+/// True for the quality names a settings file may hold: auto, full, light.
+bool knownQuality(const std::string& name);
+
 /// Reads `key = value` lines ('#' starts a comment). A missing file gives the defaults. An unknown
-/// key, a bad value or a volume outside [0, 1] fails with the line's number, and nothing of the
-/// file is used.
+/// key, a bad value, a volume outside [0, 1] or a quality not named above fails with the line's
+/// number, and nothing of the file is used.
 Result<Settings> loadSettings(const std::filesystem::path& path);
 
 /// Writes `settings` to `path` (its folder made if needed) through a temporary file renamed over

@@ -129,6 +129,8 @@ int main(int argc, char** argv) {
                  "(the signing key is kept beside it, in FILE.key)");
   app.add_flag("--ignore-shot-clock", flags.bot.ignore_shot_clock,
                "think the full --think even past the shot clock (tests)");
+  app.add_option("--concede-from-rack", flags.bot.concede_from_rack,
+                 "concede every rack from this one on, on the bot's first turn in it (tests)");
   app.add_option("--game", flags.game, "a table the bot opens: 8, 9 or 10 (default: the server's)");
   app.add_option("--race", flags.race, "with --game: racks to win (1-15)");
   app.add_option("--breaks", flags.breaks, "with --game: alternate or winner");

@@ -73,6 +73,15 @@ void BotPlayer::handle(const client::ClientEvent& event, double now) {
 // ---- Joining ------------------------------------------------------------------------------------
 
 void BotPlayer::onAnswer(const client::JoinAnswer& answer, double now) {
+  if (concede_request_ && answer.request == *concede_request_) {
+    concede_request_.reset();
+    if (!answer.accepted()) {
+      spdlog::warn("concession refused: {} {}", client::toString(answer.outcome), answer.reason);
+      conceded_rack_ = 0;  // tried again a little later
+      retry_at_ = now + config_.join_retry;
+    }
+    return;
+  }
   if (!join_request_ || answer.request != *join_request_) return;
   join_request_.reset();
   if (answer.accepted()) {
@@ -252,6 +261,16 @@ void BotPlayer::maybeShoot(double now) {
   }
   const client::MatchView* view = client_.state(seat->match);
   if (!view || now < retry_at_ || !myTurn(*view)) return;
+  if (concede_request_) return;  // no shot while the concession is on its way
+  if (config_.concede_from_rack != 0 && view->rack >= config_.concede_from_rack) {
+    // A rack to concede is never played on, not even on a state older than the concession.
+    if (conceded_rack_ != view->rack) {
+      conceded_rack_ = view->rack;
+      spdlog::info("conceding rack {} of {}", view->rack, seat->match);
+      concede_request_ = client_.requestConcede();
+    }
+    return;
+  }
   if (turn_revision_ != view->revision) {
     turn_revision_ = view->revision;
     turn_since_ = now;

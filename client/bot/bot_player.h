@@ -30,6 +30,9 @@ struct BotConfig {
   /// Tests: think the full `think` even when the shot clock runs out first (it shoots
   /// kClockMargin s before the clock's end otherwise).
   bool ignore_shot_clock = false;
+  /// Concedes every rack from this one on (the match's rack number, from 1) on its first turn in
+  /// it instead of shooting; 0: never.
+  std::uint32_t concede_from_rack = 0;
 };
 
 /// How long before the shot clock runs out the bot shoots at the latest (planning, delivery), s.
@@ -100,7 +103,9 @@ class BotPlayer {
   double turn_since_ = 0.0;
   std::optional<double> clock_deadline_;  ///< when the shot clock of our turn runs out (our clock)
   int rejections_ = 0;
-  std::optional<std::uint32_t> away_revision_;  ///< the state that showed us away (we rejoined)
+  std::optional<std::uint32_t> away_revision_;    ///< the state that showed us away (we rejoined)
+  std::uint32_t conceded_rack_ = 0;               ///< the last rack conceded (--concede-from-rack)
+  std::optional<std::uint32_t> concede_request_;  ///< a concession awaiting its answer
 
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;

@@ -145,6 +145,11 @@ std::uint32_t GameClient::requestRematch() {
   return sendJoin(seat_->match, JoinAction::Rematch, seat_->seat, seat_->token);
 }
 
+std::uint32_t GameClient::requestConcede() {
+  if (!seat_) return 0;
+  return sendJoin(seat_->match, JoinAction::Concede, seat_->seat, seat_->token);
+}
+
 Result<std::uint32_t> GameClient::shoot(protocol::ShotRequest request) {
   if (!seat_) return Result<std::uint32_t>::fail("no seat held");
   request.match = seat_->match;

@@ -83,6 +83,8 @@ class GameClient {
   /// Leaves the seat held (or stops watching `match` when no seat is held there).
   std::uint32_t requestLeave(const std::string& match);
   std::uint32_t requestRematch();
+  /// Gives up the rack in play to the opponent (the seat held); 0 when no seat is held.
+  std::uint32_t requestConcede();
 
   /// The seat held: set by an accepted seat or rejoin answer to one of our requests, cleared by
   /// an accepted leave.

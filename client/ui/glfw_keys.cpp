@@ -52,6 +52,12 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::N;
     case GLFW_KEY_F11:
       return Key::F11;
+    case GLFW_KEY_Q:
+      return Key::Q;
+    case GLFW_KEY_Y:
+      return Key::Y;
+    case GLFW_KEY_I:
+      return Key::I;
     case GLFW_KEY_ESCAPE:
       return Key::Escape;
     default:

@@ -165,6 +165,16 @@ void matchPanel(Say& say, const HudInput& in) {
     clockBar(v);
   }
   if (in.in_motion) say.text("balls moving");
+  if (in.replaying) {
+    say.text("Replay of the last shot");
+  } else if (in.can_replay) {
+    if (say.button("Replay the last shot (I)")) say.out().replay = 1.0;
+    ImGui::SameLine();
+    if (say.button("Slow")) say.out().replay = 0.4;
+  }
+  if (in.can_concede && !in.concede_asked && say.button("Concede the rack (Q)")) {
+    say.out().concede = true;
+  }
   if (ImGui::SmallButton("Leave to the lobby")) say.out().leave = true;
   say.out().texts.push_back("Leave to the lobby");
   ImGui::End();
@@ -289,6 +299,22 @@ void logPanel(Say& say, const HudInput& in) {
   ImGui::End();
 }
 
+void concedePanel(Say& say, const HudInput& in) {
+  if (!in.concede_asked || !in.view) return;
+  const app::SeatNames names = namesOf(in);
+  int mine = in.local_seats.size() == 1 ? in.local_seats.front() : in.view->shooter;
+  if (mine != 0 && mine != 1) return;
+  const std::string& other = names[static_cast<std::size_t>(1 - mine)];
+  anchor(ImVec2(0.5f, 0.5f), 0.5f, 0.4f, std::min(screenSize().x * 0.45f, px(480.0f)));
+  ImGui::Begin("Concede the rack?", nullptr, kPane);
+  say.wrapped(names[static_cast<std::size_t>(mine)] + ", concede this rack to " + other + "? " +
+              other + " wins it; the race goes on, or ends if that was the last rack.");
+  if (say.button("Yes, concede (Y)")) say.out().concede_answer = true;
+  ImGui::SameLine();
+  if (say.button("No, play on (Esc)")) say.out().concede_answer = false;
+  ImGui::End();
+}
+
 void gameOverPanel(Say& say, const HudInput& in) {
   if (!in.view || in.view->phase != client::MatchPhase::Over) return;
   const auto& v = *in.view;
@@ -344,6 +370,17 @@ void settingsLines(Say& say, const HudInput& in) {
     s.volume = volume;
     changed = true;
   }
+  say.text("Quality (at once)");
+  for (const char* q : {"auto", "full", "light"}) {
+    ImGui::SameLine();
+    const std::string label = std::string(q) + "##quality";
+    say.out().texts.push_back(q);
+    if (ImGui::RadioButton(label.c_str(), s.quality == q) && s.quality != q) {
+      s.quality = q;
+      changed = true;
+    }
+  }
+  say.wrapped("auto: light under software OpenGL (the scene at 0.6 of the resolution), else full");
   if (!in.settings_note.empty()) say.wrapped(in.settings_note);
   if (changed) say.out().settings = s;
 }
@@ -387,6 +424,10 @@ void drawTipWidget(double tip_side, double tip_height, double miscue_limit) {
   ImGui::Dummy(ImVec2(size, size));
 }
 
+float hudScale(int height) {
+  return std::clamp(static_cast<float>(height) / 800.0f, 1.0f, 2.0f);
+}
+
 HudActions drawHud(const HudInput& input) {
   HudActions actions;
   Say say(actions);
@@ -396,6 +437,7 @@ HudActions drawHud(const HudInput& input) {
   if (input.controls) shotPanel(say, input);
   logPanel(say, input);
   gameOverPanel(say, input);
+  concedePanel(say, input);
   if (input.help) helpPanel(say, input);
   return actions;
 }

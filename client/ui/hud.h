@@ -35,8 +35,12 @@ struct HudInput {
   bool help = false;                             ///< the help overlay (F1)
   /// The players' names (remembered after a player leaves); empty: read from `view`.
   std::optional<app::SeatNames> names;
-  app::Settings settings;     ///< as they are now (shown with the help)
-  std::string settings_note;  ///< where they are kept, or why they are not
+  app::Settings settings;      ///< as they are now (shown with the help)
+  std::string settings_note;   ///< where they are kept, or why they are not
+  bool can_concede = false;    ///< a player at this screen may concede the rack in play
+  bool concede_asked = false;  ///< the concession waits for the player's yes or no
+  bool can_replay = false;     ///< a last shot is kept and the balls are at rest
+  bool replaying = false;      ///< the instant replay is showing
 };
 
 /// What the player clicked.
@@ -46,9 +50,15 @@ struct HudActions {
   bool leave = false;
   bool visit_room = false;                ///< the winner goes to the Magic Eight Ball room
   bool new_game = false;                  ///< leave this table for a free one
+  bool concede = false;                   ///< asks to concede the rack (a question first)
+  std::optional<bool> concede_answer;     ///< yes or no to conceding
+  std::optional<double> replay;           ///< replay the last shot at this speed (1: real)
   std::optional<app::Settings> settings;  ///< the player changed a setting
   std::vector<std::string> texts;         ///< every text the HUD drew this frame (tests read them)
 };
+
+/// The HUD's text scale (ImGui's FontGlobalScale) for a framebuffer `height` pixels high.
+float hudScale(int height);
 
 /// Draws the HUD windows for this frame (between ImGui::NewFrame and ImGui::Render).
 HudActions drawHud(const HudInput& input);

@@ -101,11 +101,11 @@ class WindowApp {
                   options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
         sound_(options.mute, settings_.settings.volume) {
     session_.setListener(&sound_);
-    // Under a software renderer the light preset keeps the frame budget (--quality overrides).
+    // Under a software renderer the light preset keeps the frame budget (--quality overrides
+    // the settings for this run, until the player chooses another in the settings pane).
     const GLubyte* gl_renderer = glGetString(GL_RENDERER);
-    quality_ = render::resolveQuality(
-        render::parseQualitySetting(options.quality).value_or(render::QualitySetting::Auto),
-        gl_renderer ? reinterpret_cast<const char*>(gl_renderer) : "");
+    gl_renderer_ = gl_renderer ? reinterpret_cast<const char*>(gl_renderer) : "";
+    applyQuality(options.quality.empty() ? settings_.settings.quality : options.quality);
     controls_.setAimAids(settings_.settings.aim_line, settings_.settings.vectors);
     window_.setFullScreen(settings_.settings.full_screen);
     if (!settings_.problem.empty()) addNote({settings_.problem, true});
@@ -285,16 +285,23 @@ class WindowApp {
     glfwGetFramebufferSize(window_.get(), &width, &height);
     if (width <= 0 || height <= 0) return;
     controls_.setViewport(width, height);
-    const auto balls = session_.balls(now);
-    const auto shown = withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
+    const auto replay = replayed(now);
+    const auto balls = replay ? replay : session_.balls(now);
+    const auto shown =
+        replay ? *replay
+               : withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
     if (balls) renderer_.setBalls(sceneBalls(shown));
-    auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
-    placement_problem_ = std::move(overlay.placement_problem);
-    renderer_.setOverlay(overlayLines(overlay.lines));
     renderer_.setCue(std::nullopt);
     renderer_.setGhost(std::nullopt);
-    if (overlay.aim) showCue(*overlay.aim, controls_.toggles().aim_line);
-    if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
+    if (replay) {
+      renderer_.setOverlay({});  // the replay shows the balls only
+    } else {
+      auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
+      placement_problem_ = std::move(overlay.placement_problem);
+      renderer_.setOverlay(overlayLines(overlay.lines));
+      if (overlay.aim) showCue(*overlay.aim, controls_.toggles().aim_line);
+      if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
+    }
     const app::Toggles& t = controls_.toggles();
     renderer_.setOptions(render::withQuality({t.wireframe, t.textures, t.lighting}, quality_));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -321,7 +328,7 @@ class WindowApp {
           camera, width, height,
           glm::vec3(static_cast<float>(b.pos.x()), static_cast<float>(b.pos.y()),
                     static_cast<float>(b.pos.z())));
-      f.cue_px = Eigen::Vector2d(p.x, p.y);
+      if (p.z >= 0.0f) f.cue_px = Eigen::Vector2d(p.x, p.y);  // not when behind the eye
     }
     script_mouse_.cue_ball = f.cue_px;
     if (!options_.json || !options_.log_frames) return;
@@ -331,6 +338,9 @@ class WindowApp {
     f.play_time = session_.playTime();
     f.aiming = controls_.mode() == app::ControlMode::Aiming;
     f.dragging = controls_.draggingCueBall();
+    f.replaying = session_.replay().playing();
+    f.replay_time = session_.replay().replayTime();
+    f.quality = quality_ == render::Quality::Light ? "light" : "full";
     f.mouse = script_mouse_.at;
     const glm::mat4 view = render::viewMatrix(camera);
     const glm::mat4 projection =
@@ -350,7 +360,7 @@ class WindowApp {
     // Text grows with tall windows (1 up to 800 px high, 2 from 1600), so panes stay readable.
     int fb_width = 0, fb_height = 0;
     glfwGetFramebufferSize(window_.get(), &fb_width, &fb_height);
-    ImGui::GetIO().FontGlobalScale = std::clamp(static_cast<float>(fb_height) / 800.0f, 1.0f, 2.0f);
+    ImGui::GetIO().FontGlobalScale = hudScale(fb_height);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -388,6 +398,10 @@ class WindowApp {
     in.help = controls_.toggles().help;
     in.names = session_.names();
     in.settings = currentSettings();
+    in.can_concede = canConcede();
+    in.can_replay = session_.replay().shot().has_value() && !session_.inMotion();
+    in.replaying = session_.replay().playing();
+    in.concede_asked = concede_asked_;
     in.settings_note = !settings_.problem.empty() ? settings_.problem
                        : settings_.path.empty()   ? "settings are not kept (no config folder)"
                                                   : "kept in " + settings_.path.string();
@@ -399,12 +413,19 @@ class WindowApp {
     hud_texts_ = actions.texts;
     if (actions.option) chooseOption(*actions.option);
     if (actions.rematch) rematch();
+    if (actions.concede) concede_asked_ = canConcede();
+    if (actions.replay) startReplay(*actions.replay, now_);
+    if (actions.concede_answer) answerConcede(*actions.concede_answer);
     if (actions.visit_room) in_room_ = true;
     if (actions.new_game) newGame();
     if (actions.settings) {
       controls_.setAimAids(actions.settings->aim_line, actions.settings->vectors);
       window_.setFullScreen(actions.settings->full_screen);
       settings_.settings.volume = actions.settings->volume;
+      if (actions.settings->quality != settings_.settings.quality) {
+        settings_.settings.quality = actions.settings->quality;
+        applyQuality(settings_.settings.quality);
+      }
     }
     keepSettings();
     if (actions.leave) {
@@ -422,6 +443,14 @@ class WindowApp {
     session_.leave();
     session_.play();
     addNote({"looking for a free table for a new game", false});
+  }
+
+  /// Draws with the preset `chosen` (auto, full or light) from the next frame on, and says which.
+  void applyQuality(const std::string& chosen) {
+    const auto setting = render::parseQualitySetting(chosen).value_or(render::QualitySetting::Auto);
+    quality_ = render::resolveQuality(setting, gl_renderer_);
+    const char* preset = quality_ == render::Quality::Light ? "light" : "full";
+    addNote({std::string("drawing quality: ") + preset + " (" + chosen + ")", false});
   }
 
   /// A rematch, unless the opponent has left the table (then the player is told so).
@@ -466,13 +495,61 @@ class WindowApp {
     }
   }
 
-  /// R, N and F11.
+  /// Plays the last shot again at `speed` × real time (never while the balls move).
+  void startReplay(double speed, double now) {
+    if (session_.inMotion()) {
+      addNote({"the balls are moving: the replay waits for them to stop", false});
+      return;
+    }
+    if (!session_.replay().start(now, speed)) {
+      addNote({"no shot to replay yet", false});
+      return;
+    }
+    addNote({"replaying shot " + std::to_string(*session_.replay().shot()), false});
+  }
+
+  /// The balls of the instant replay at `now`; empty when none is showing. A shot in motion
+  /// ends it: the live game is never held up.
+  std::optional<std::vector<physics::Ball>> replayed(double now) {
+    app::InstantReplay& replay = session_.replay();
+    if (!replay.playing()) return std::nullopt;
+    if (session_.inMotion()) replay.stop();
+    return replay.sample(now);
+  }
+
+  /// True when a player at this screen may concede the rack in play (between shots).
+  bool canConcede() const {
+    const client::MatchView* v = session_.view();
+    return v && client::inPlay(v->phase) && session_.stage() == app::SessionStage::Playing &&
+           !session_.localSeats().empty() && !session_.inMotion();
+  }
+
+  /// The player's yes or no to conceding the rack.
+  void answerConcede(bool yes) {
+    concede_asked_ = false;
+    if (!yes) return;
+    if (!canConcede() || !session_.concede()) {
+      addNote({"no rack to concede now", true});
+      return;
+    }
+    controls_.stopAiming();
+    aiming_seat_ = -1;
+    addNote({"concession sent", false});
+  }
+
+  /// R, N, F11; Q, then Y or Esc.
   void requests() {
     const client::MatchView* v = session_.view();
     const bool over =
         v && v->phase == client::MatchPhase::Over && session_.stage() == app::SessionStage::Playing;
+    if (concede_asked_ && !canConcede()) concede_asked_ = false;
     for (const app::Key key : controls_.takeRequests()) {
       if (key == app::Key::F11) window_.setFullScreen(!window_.fullScreen());
+      if (key == app::Key::Q) concede_asked_ = canConcede();
+      if (key == app::Key::I) startReplay(1.0, now_);
+      if (concede_asked_ && (key == app::Key::Y || key == app::Key::Escape)) {
+        answerConcede(key == app::Key::Y);
+      }
       if (!over) continue;
       if (key == app::Key::N) {
         newGame();
@@ -483,6 +560,7 @@ class WindowApp {
   }
 
   void frame(double now, double dt) {
+    now_ = now;
     session_.poll(now);
     if (options_.json) progress_.report(session_);
     for (auto& note : session_.takeNotes()) addNote(std::move(note));
@@ -491,6 +569,7 @@ class WindowApp {
     requests();
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) {
+      session_.replay().stop();  // the live game takes over
       startStroke(*shot, now);
       send(std::move(*shot));
     }
@@ -505,6 +584,8 @@ class WindowApp {
   GlfwWindow window_;
   render::Renderer renderer_;
   render::Quality quality_ = render::Quality::Full;
+  std::string gl_renderer_;  ///< GL_RENDERER, which "auto" quality reads
+  double now_ = 0.0;         ///< the frame's time on the window's clock (s)
   /// The cue going through after a shot: its aim at release and when.
   struct Stroke {
     render::CueAim aim;
@@ -527,6 +608,7 @@ class WindowApp {
   std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)
   std::string placement_problem_;
   bool in_room_ = false;
+  bool concede_asked_ = false;  ///< Q was pressed: the concession waits for Y or Esc
   EightBallRoomState room_;
   std::unique_ptr<render::EightBallRoom> room_scene_;  ///< made on the first visit
   bool quit_ = false;

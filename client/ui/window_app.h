@@ -30,7 +30,9 @@ struct WindowOptions {
   std::string table = "wpa-9ft";
   int width = 1280;
   int height = 720;
-  std::string quality = "auto";  ///< drawing preset: auto, full or light (render_options.h)
+  /// Drawing preset: auto, full or light (render_options.h); empty: the one in the settings file
+  /// (auto without one). The settings pane changes it at once.
+  std::string quality;
 };
 
 /// Runs the window until it is closed, the script quits or `stop` is set. Returns the exit code:

@@ -42,17 +42,13 @@ void printHudLine(const std::vector<std::string>& texts) {
 }
 
 void printDrawnLine(const DrawnFrame& f) {
-  nlohmann::json line{{"event", "drawn"},
-                      {"now", f.now},
-                      {"moving", f.moving},
-                      {"play_time", f.play_time},
-                      {"aiming", f.aiming},
-                      {"dragging", f.dragging},
-                      {"mouse", {f.mouse.x(), f.mouse.y()}},
-                      {"view", f.view},
-                      {"projection", f.projection},
-                      {"width", f.width},
-                      {"height", f.height}};
+  nlohmann::json line{{"event", "drawn"},         {"now", f.now},
+                      {"moving", f.moving},       {"play_time", f.play_time},
+                      {"aiming", f.aiming},       {"dragging", f.dragging},
+                      {"replaying", f.replaying}, {"replay_time", f.replay_time},
+                      {"quality", f.quality},     {"mouse", {f.mouse.x(), f.mouse.y()}},
+                      {"view", f.view},           {"projection", f.projection},
+                      {"width", f.width},         {"height", f.height}};
   line["shot"] = f.shot ? nlohmann::json(*f.shot) : nlohmann::json();
   if (f.cue) line["cue"] = {f.cue->x(), f.cue->y(), f.cue->z()};
   if (f.cue_px) line["cue_px"] = {f.cue_px->x(), f.cue_px->y()};

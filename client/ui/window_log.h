@@ -30,8 +30,12 @@ struct DrawnFrame {
   double play_time = 0.0;             ///< s since that shot's strike, as played back
   bool aiming = false;
   bool dragging = false;                  ///< the cue ball in hand under the mouse
+  bool replaying = false;                 ///< the instant replay is drawn
+  double replay_time = 0.0;               ///< s since the replayed shot's strike
+  std::string quality;                    ///< the drawing preset: full or light
   std::optional<Eigen::Vector3d> cue;     ///< the cue ball as drawn, table frame (m)
-  std::optional<Eigen::Vector2d> cue_px;  ///< and in pixels from the top-left corner
+  std::optional<Eigen::Vector2d> cue_px;  ///< and in pixels from the top-left corner (not when
+                                          ///< behind the eye)
   Eigen::Vector2d mouse = Eigen::Vector2d::Zero();
   std::array<float, 16> view{};        ///< column after column
   std::array<float, 16> projection{};  ///< column after column

@@ -7,6 +7,7 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
                      const app::MatchSession& session, ScriptMouse& mouse) {
   app::ScriptConditions now;
   now.can_aim = controls.mode() == app::ControlMode::Aiming;
+  now.replaying = session.replay().playing();
   if (const auto* v = session.view()) {
     now.shot_number = v->shot_number;
     now.over = v->phase == client::MatchPhase::Over;

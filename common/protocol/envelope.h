@@ -21,7 +21,7 @@ inline constexpr std::size_t kEnvelopeHeaderBytes = 8 + 4 + 4 + 1 + 41 + 4 + 8 +
 /// of message never verifies as another.
 enum class MessageTag : std::uint8_t {
   Shot = 1,         ///< a ShotCommand
-  SeatRequest = 2,  ///< a JoinRequest that changes a seat (take, rejoin, leave, rematch)
+  SeatRequest = 2,  ///< a JoinRequest that changes a seat (take, rejoin, leave, rematch, concede)
   Aim = 3,          ///< the shooter's cue while aiming
   Practice = 4,     ///< a practice-table command
 };

@@ -33,6 +33,8 @@ const char* toString(JoinAction action) {
       return "leave";
     case JoinAction::Rematch:
       return "rematch";
+    case JoinAction::Concede:
+      return "concede";
   }
   return "unknown";
 }

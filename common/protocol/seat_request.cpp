@@ -19,6 +19,7 @@ bool changesSeat(const SeatRequest& r) {
     case JoinAction::Seat:
     case JoinAction::Rejoin:
     case JoinAction::Rematch:
+    case JoinAction::Concede:
       return true;
   }
   return true;

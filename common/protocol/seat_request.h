@@ -1,5 +1,5 @@
-// A client's join request (take a seat, watch, rejoin, leave, rematch) in domain terms, and the
-// signed form of those that change a seat: the envelope with tag SeatRequest.
+// A client's join request (take a seat, watch, rejoin, leave, rematch, concede) in domain terms,
+// and the signed form of those that change a seat: the envelope with tag SeatRequest.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,10 @@ namespace pool::protocol {
 
 /// The match id that asks for a new match.
 inline constexpr const char* kNewMatch = "new";
+
+/// The words of a match state's last verdict after a concession: "seat N" + these (+ what
+/// follows: the next rack, or the match won). Clients tell a concession by them.
+inline constexpr const char* kConcededTheRack = " conceded the rack";
 
 /// One JoinRequest. Every action but Spectate (and Leave by a spectator) changes a seat and must
 /// be signed: Seat by the key it binds, the others by the seat's bound key.

@@ -147,6 +147,9 @@ JoinAnswer Match::seatRequest(const protocol::SeatRequest& r) {
     case JoinAction::Rematch:
       answer = rematchSeat(seat);
       break;
+    case JoinAction::Concede:
+      answer = concedeSeat(seat);
+      break;
     case JoinAction::Seat:
     case JoinAction::Spectate:
       break;
@@ -182,6 +185,27 @@ JoinAnswer Match::rematchSeat(int seat) {
     for (Seat& s : seats_) s.racks_won = 0;
     startRack(nextBreaker(game_.winner >= 0 ? game_.winner : rules::opponentOf(game_.breaker)));
   }
+  return seated(id_, seat, seats_[static_cast<std::size_t>(seat)].token);
+}
+
+JoinAnswer Match::concedeSeat(int seat) {
+  if (!inPlay() || pending_forfeit_) {
+    return JoinAnswer::refuse(JoinOutcome::NotAllowed, "no rack is in play");
+  }
+  if (flight_) return JoinAnswer::refuse(JoinOutcome::NotAllowed, "a shot is in motion");
+  const rules::Verdict verdict = rules::forfeit(game_, seat);
+  game_ = verdict.next;
+  const int winner = verdict.winner;
+  const int won = ++seats_[static_cast<std::size_t>(winner)].racks_won;
+  const std::string said = "seat " + std::to_string(seat) + protocol::kConcededTheRack;
+  if (won < settings_.race_to) {
+    // The race goes on: the next rack, broken as the settings say.
+    startRack(nextBreaker(winner));
+    last_verdict_ = said + "; rack " + std::to_string(rack_) + " to break";
+  } else {
+    last_verdict_ = said + ": seat " + std::to_string(winner) + " won the match";
+  }
+  touch();
   return seated(id_, seat, seats_[static_cast<std::size_t>(seat)].token);
 }
 

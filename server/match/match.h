@@ -56,13 +56,15 @@ class Match {
   JoinAnswer takeSeat(int seat, const std::string& player, const std::string& client,
                       std::uint64_t token, const std::vector<std::uint8_t>& public_key,
                       const std::optional<protocol::MatchSettings>& settings = {});
-  /// A request that changes a held seat (Rejoin, Leave, Rematch), checked in this order: the
-  /// seat (the one named, or the one bound to the request's key) → the holding's token (public,
+  /// A request that changes a held seat (Rejoin, Leave, Rematch, Concede), checked in this order:
+  /// the seat (the one named, or the one bound to the request's key) → the holding's token (public,
   /// but a request signed for an earlier holding of the seat never matches it) → unsigned
   /// → stale sequence → signature by the seat's key. Once the signature checks out the sequence
   /// number is used up, even if the request is then refused. Rejoin gives the seat back to
   /// `request.client`, present again; Leave frees it (a game in play is forfeited to the other
-  /// seat); Rematch asks for a new rack once the match is over (it starts when both asked).
+  /// seat); Rematch asks for a new rack once the match is over (it starts when both asked);
+  /// Concede gives the rack in play to the other seat, between shots only (the race goes on
+  /// with the next rack, or the match is over if that rack won it).
   JoinAnswer seatRequest(const protocol::SeatRequest& request);
   /// `client` watches (counted once however often it asks).
   JoinAnswer addSpectator(const std::string& client);
@@ -177,6 +179,7 @@ class Match {
   JoinAnswer rejoinSeat(int seat, const std::string& client);
   JoinAnswer leaveSeat(int seat);
   JoinAnswer rematchSeat(int seat);
+  JoinAnswer concedeSeat(int seat);
   void touch() { ++revision_; }
   void restartClock(double not_before);
   CommandAnswer timeOut();

@@ -47,7 +47,7 @@ TEST(InputScriptTest, ABadLineNamesItsNumber) {
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
   EXPECT_EQ(parseScript("wait forever\n").error(),
-            "line 1: wait needs 'aiming', 'shot N', 'over' or 'table'");
+            "line 1: wait needs 'aiming', 'shot N', 'over', 'table' or 'live'");
   EXPECT_FALSE(loadScript("/nonexistent/script.txt"));
 }
 
@@ -78,6 +78,17 @@ TEST(InputScriptTest, WaitsHoldTheScriptUntilTheirConditionHolds) {
   EXPECT_EQ(quit[0].kind, Kind::Quit);
 }
 
+TEST(InputScriptTest, WaitLiveHoldsTheScriptWhileTheReplayShows) {
+  ScriptPlayer player(*parseScript("wait live\nquit\n"));
+  ScriptConditions replaying;
+  replaying.replaying = true;
+  EXPECT_TRUE(player.frame(replaying).empty());
+  EXPECT_TRUE(player.frame(replaying).empty());
+  auto quit = player.frame(ScriptConditions{});
+  ASSERT_EQ(quit.size(), 1u);
+  EXPECT_EQ(quit[0].kind, Kind::Quit);
+}
+
 TEST(InputScriptTest, AWaitAfterAStepIsJudgedOnTheNextFrame) {
   // Releasing Space shoots, which ends the aiming the frame's conditions still show.
   ScriptPlayer player(*parseScript("up SPACE\nwait aiming\ndown UP\n"));
@@ -99,8 +110,8 @@ namespace {
 TEST(KeyNamesTest, EveryKeyHasOneNameAndNoNameIsEmpty) {
   std::set<Key> seen;
   for (const char* name :
-       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z",  "S", "X", "G",   "V",     "C",
-        "K",    "P",     "T",  "L",    "B",     "O", "F1", "R", "N", "F11", "ESCAPE"}) {
+       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A",  "Z", "S", "X",   "G", "V", "C", "K",
+        "P",    "T",     "L",  "B",    "O",     "F1", "R", "N", "F11", "Q", "Y", "I", "ESCAPE"}) {
     const auto key = keyFromName(name);
     ASSERT_TRUE(key) << name;
     EXPECT_TRUE(seen.insert(*key).second) << name;

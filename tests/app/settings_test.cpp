@@ -36,11 +36,28 @@ TEST_F(SettingsTest, WhatIsSavedIsLoadedBack) {
   s.volume = 0.35;
   s.aim_line = false;
   s.vectors = true;
+  s.quality = "light";
   ASSERT_TRUE(saveSettings(file(), s));
   const auto back = loadSettings(file());
   ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(*back, s);
   EXPECT_FALSE(std::filesystem::exists(file().string() + ".tmp"));
+}
+
+TEST_F(SettingsTest, EachQualityIsKeptAsChosen) {
+  for (const char* quality : {"auto", "full", "light"}) {
+    Settings s;
+    s.quality = quality;
+    ASSERT_TRUE(saveSettings(file(), s));
+    const auto back = loadSettings(file());
+    ASSERT_TRUE(back) << back.error();
+    EXPECT_EQ(back->quality, quality);
+  }
+  write("quality = full\n");
+  const auto written = loadSettings(file());
+  ASSERT_TRUE(written) << written.error();
+  EXPECT_EQ(written->quality, "full");
+  EXPECT_EQ(Settings{}.quality, "auto") << "a file without the key leaves the choice to the window";
 }
 
 TEST_F(SettingsTest, ABadLineIsRefusedWithItsNumberAndTheFileKept) {
@@ -50,7 +67,7 @@ TEST_F(SettingsTest, ABadLineIsRefusedWithItsNumberAndTheFileKept) {
   ASSERT_FALSE(s);
   EXPECT_EQ(s.error(), file().string() + " line 4: bad value 'maybe' for aim_line");
   for (const char* bad : {"volume = 1.5\n", "volume = nan\n", "volume = 0.5 loud\n",
-                          "colour = red\n", "full_screen\n"}) {
+                          "colour = red\n", "full_screen\n", "quality = ultra\n", "quality = \n"}) {
     write(bad);
     EXPECT_FALSE(loadSettings(file())) << bad;
   }

@@ -291,5 +291,32 @@ TEST(MatchRematch, BothPlayersMustAskAndTheOtherSeatBreaks) {
   EXPECT_EQ(m->seats()[1].racks_won, 0);
 }
 
+TEST(MatchConcede, NotWhileAShotIsInMotionThenTheOpponentWinsTheRack) {
+  auto m = seatedMatch();
+  ASSERT_TRUE(m->handleShot(breakShot(), 0.0).accepted());
+  ASSERT_TRUE(m->inMotion());
+  const JoinAnswer moving = m->seatRequest(seatRequest(JoinAction::Concede, "b", 1, kToken1, 1));
+  EXPECT_EQ(moving.outcome, JoinOutcome::NotAllowed);
+  EXPECT_EQ(moving.reason, "a shot is in motion");
+  ASSERT_TRUE(finishNow(*m));
+  ASSERT_TRUE(m->inPlay());
+  const std::uint32_t shots = m->shotNumber();
+  // The same seat's next number: the refused one was used up.
+  EXPECT_EQ(m->seatRequest(seatRequest(JoinAction::Concede, "b", 1, kToken1, 1)).outcome,
+            JoinOutcome::StaleSequence);
+  ASSERT_TRUE(m->seatRequest(seatRequest(JoinAction::Concede, "b", 1, kToken1, 2)).accepted());
+  // A race to 1: that rack was the match.
+  EXPECT_EQ(m->phase(), MatchPhase::Over);
+  EXPECT_EQ(m->game().winner, 0);
+  EXPECT_EQ(m->game().end, rules::GameEnd::Forfeit);
+  EXPECT_EQ(m->seats()[0].racks_won, 1);
+  EXPECT_EQ(m->seats()[1].racks_won, 0);
+  EXPECT_EQ(m->shotNumber(), shots) << "a concession is no shot";
+  EXPECT_EQ(m->lastVerdict(), "seat 1 conceded the rack: seat 0 won the match");
+  EXPECT_EQ(m->seatRequest(seatRequest(JoinAction::Concede, "a", 0, kToken0, 2)).outcome,
+            JoinOutcome::NotAllowed)
+      << "nothing left to concede";
+}
+
 }  // namespace
 }  // namespace pool::server

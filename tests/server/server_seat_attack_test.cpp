@@ -3,12 +3,26 @@
 #include <gtest/gtest.h>
 
 #include "net/wire_fields.h"
+#include "protocol/seat_request.h"
 #include "server_fixture.h"
 
 namespace pool::server::test {
 namespace {
 
-class ServerSeatAttacks : public ServerTest {};
+class ServerSeatAttacks : public ServerTest {
+ protected:
+  /// Seats `a` and `b` at "t-1" once all three clients see the server, and waits for the break;
+  /// the state of the break, or null (with a failure).
+  const pool_MatchState* seatedAtTheBreak(TestClient& a, TestClient& b, TestClient& eve,
+                                          Seated& s) {
+    EXPECT_TRUE(a.waitForServer() && b.waitForServer() && eve.waitForServer());
+    s = seat(a, b, "t-1");
+    const auto* playing =
+        a.waitState(s.match, [](auto& st) { return st.phase == pool_PHASE_BREAK; });
+    EXPECT_NE(playing, nullptr);
+    return playing;
+  }
+};
 
 /// The token the server gave `victim`'s seat, as any reader of the JoinReply topic sees it.
 std::uint64_t tokenReadOffTheWire(TestClient& eve, const std::string& victim) {
@@ -49,11 +63,8 @@ TEST_F(ServerSeatAttacks, StolenTokensAndKeysLeaveRejoinAndRematchNothing) {
   TestClient a(kSeatAttacks, "a");
   TestClient b(kSeatAttacks, "b");
   TestClient eve(kSeatAttacks, "eve");
-  ASSERT_TRUE(a.waitForServer());
-  ASSERT_TRUE(b.waitForServer());
-  ASSERT_TRUE(eve.waitForServer());
-  const Seated s = seat(a, b, "t-1");
-  const auto* playing = a.waitState(s.match, [](auto& st) { return st.phase == pool_PHASE_BREAK; });
+  Seated s;
+  const auto* playing = seatedAtTheBreak(a, b, eve, s);
   ASSERT_NE(playing, nullptr);
   const std::uint64_t token = tokenReadOffTheWire(eve, "b");
   ASSERT_EQ(token, s.token[1]) << "the token is public: any reader sees it";
@@ -104,6 +115,75 @@ TEST_F(ServerSeatAttacks, StolenTokensAndKeysLeaveRejoinAndRematchNothing) {
   // His earlier signed request replayed now: no seat is bound to his key any more.
   EXPECT_EQ(outcomeOf(eve.joinAsIs(mine)), pool_JOIN_BAD_TOKEN);
   EXPECT_FALSE(a.latestState(s.match)->seats[1].name[0] != '\0') << "the seat stays free";
+}
+
+/// The concession test's DDS domain (80–89 are the concession and replay tests').
+constexpr std::uint32_t kConcedeAttacks = 81;
+
+TEST_F(ServerSeatAttacks, OnlyTheSeatedPlayerConcedesTheirOwnRackAndOnlyOnce) {
+  start(kConcedeAttacks, {"--tables", "1", "--race", "2"});
+  TestClient a(kConcedeAttacks, "a");
+  TestClient b(kConcedeAttacks, "b");
+  TestClient eve(kConcedeAttacks, "eve");
+  Seated s;
+  const auto* playing = seatedAtTheBreak(a, b, eve, s);
+  ASSERT_NE(playing, nullptr);
+  const std::uint64_t token = tokenReadOffTheWire(eve, "b");
+  const std::uint32_t revision = playing->revision;
+  const std::size_t states_before = a.states.size();
+
+  // Eve, in Bob's name: her own key, his key signed by her, no signature at all.
+  protocol::SeatRequest own = eve.request(pool_JOIN_CONCEDE, s.match, "", 1, token);
+  own.seq = 1000000;
+  protocol::signSeatRequest(own, eve.key());
+  EXPECT_EQ(outcomeOf(eve.joinAsIs(own)), pool_JOIN_BAD_TOKEN);
+  EXPECT_EQ(outcomeOf(eve.joinAsIs(craft(eve, pool_JOIN_CONCEDE, s.match, b, token, &eve.key()))),
+            pool_JOIN_BAD_SIGNATURE);
+  EXPECT_EQ(outcomeOf(eve.joinAsIs(craft(eve, pool_JOIN_CONCEDE, s.match, b, token, nullptr))),
+            pool_JOIN_UNSIGNED);
+  // Ada, signing with her own key, concedes for the other seat: no such seat is bound to her key.
+  EXPECT_EQ(outcomeOf(a.join(pool_JOIN_CONCEDE, s.match, "", 1, token)), pool_JOIN_BAD_TOKEN);
+  a.waitUntil([] { return false; }, 300ms);  // time for any (wrong) state change to arrive
+  EXPECT_EQ(a.states.size(), states_before) << "a refused concession changed the match";
+  EXPECT_EQ(a.latestState(s.match)->revision, revision);
+  EXPECT_EQ(a.latestState(s.match)->rack, 1u);
+
+  // Bob concedes his own rack: Ada wins it and the race to 2 goes on with rack 2.
+  protocol::SeatRequest mine = b.request(pool_JOIN_CONCEDE, s.match, "", 1, token);
+  mine.seq = b.seq() + 1;
+  b.setSeq(mine.seq);
+  protocol::signSeatRequest(mine, b.key());
+  EXPECT_EQ(outcomeOf(b.joinAsIs(mine)), pool_JOIN_ACCEPTED);
+  const auto* next = a.waitState(s.match, [](auto& st) { return st.rack == 2; });
+  ASSERT_NE(next, nullptr);
+  EXPECT_EQ(next->seats[0].racks_won, 1);
+  EXPECT_EQ(next->seats[1].racks_won, 0);
+  EXPECT_EQ(next->phase, pool_PHASE_BREAK);
+  EXPECT_EQ(std::string(net::textOf(next->last_verdict)),
+            std::string("seat 1") + protocol::kConcededTheRack + "; rack 2 to break");
+  const std::uint32_t after = next->revision;
+
+  // The same sample published again by Eve is stale: rack 2 stays in play, 1-0.
+  const auto replayed = eve.joinAsIs(mine);
+  EXPECT_EQ(outcomeOf(replayed), pool_JOIN_STALE_SEQUENCE);
+  a.waitUntil([] { return false; }, 300ms);
+  EXPECT_EQ(a.latestState(s.match)->revision, after);
+  EXPECT_EQ(a.latestState(s.match)->seats[0].racks_won, 1);
+
+  // Ada concedes rack 2 (her own, signed): Bob wins it, 1-1, and rack 3 decides the race.
+  EXPECT_EQ(outcomeOf(a.join(pool_JOIN_CONCEDE, s.match, "", 0, s.token[0])), pool_JOIN_ACCEPTED);
+  const auto* third = a.waitState(s.match, [](auto& st) { return st.rack == 3; });
+  ASSERT_NE(third, nullptr);
+  EXPECT_EQ(third->seats[1].racks_won, 1);
+  // Bob concedes rack 3: the match is Ada's, 2-1; nothing is left to concede.
+  EXPECT_EQ(outcomeOf(b.join(pool_JOIN_CONCEDE, s.match, "", 1, token)), pool_JOIN_ACCEPTED);
+  const auto* over = a.waitState(s.match, [](auto& st) { return st.phase == pool_PHASE_OVER; });
+  ASSERT_NE(over, nullptr);
+  EXPECT_EQ(over->winner, 0);
+  EXPECT_EQ(over->end, pool_END_FORFEIT);
+  EXPECT_EQ(over->seats[0].racks_won, 2);
+  EXPECT_EQ(over->seats[1].racks_won, 1);
+  EXPECT_EQ(outcomeOf(b.join(pool_JOIN_CONCEDE, s.match, "", 1, token)), pool_JOIN_NOT_ALLOWED);
 }
 
 TEST_F(ServerSeatAttacks, AClientOfAnotherProtocolVersionIsToldSo) {

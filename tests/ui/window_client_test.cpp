@@ -3,7 +3,9 @@
 // bot match.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <future>
 #include <nlohmann/json.hpp>
@@ -20,6 +22,10 @@ namespace pool::client::test {
 namespace {
 
 using namespace std::chrono_literals;
+
+/// This file's newer tests' DDS domains (80–89 are the concession, replay and settings tests').
+constexpr Domain kWindowReplay = static_cast<Domain>(82);
+constexpr Domain kWindowQuality = static_cast<Domain>(83);
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -44,6 +50,22 @@ class WindowClientTest : public ClientIntegrationTest {
 
   /// The window's exit status (waits for it).
   int windowExit() { return window_.valid() ? window_.get() : -1; }
+
+  /// Runs a hotseat window with `script` (and --log-frames) to its end; returns the match once
+  /// its first shot's final report arrived (empty, with a failure, if none did).
+  std::string playFirstShot(MatchRecorder& recorder, const std::string& script) {
+    startWindow({"--hotseat", "--play", "--log-frames"}, script);
+    std::string match;
+    const bool played = recorder.pump(120s, [&] {
+      match = recorder.firstMatch();
+      return !match.empty() && recorder.finals(match).count(1) != 0;
+    });
+    const int status = windowExit();
+    recorder.pump(2s);
+    EXPECT_TRUE(played) << "no break from the window\n" << windowErr() << logs();
+    EXPECT_EQ(status, 0) << windowErr();
+    return played ? match : std::string();
+  }
 
   std::vector<nlohmann::json> windowLines(const std::string& event) const {
     std::vector<nlohmann::json> out;
@@ -382,6 +404,42 @@ Eigen::Vector3d cueIn(const TableFrame& frame) {
   return Eigen::Vector3d::Constant(std::nan(""));
 }
 
+/// The cue ball's path through a shot's frames as the server sent them.
+struct ServerPath {
+  explicit ServerPath(std::vector<TableFrame> shot) : frames(std::move(shot)) {
+    // Snapshots are 1/60 s apart: where the cue ball is struck or strikes a ball its path turns a
+    // corner that interpolation between two snapshots cuts; those times are kept to skip.
+    turns.push_back(0.0);
+    for (std::size_t i = 2; i < frames.size(); ++i) {
+      const double dt1 = frames[i - 1].sim_time - frames[i - 2].sim_time;
+      const double dt2 = frames[i].sim_time - frames[i - 1].sim_time;
+      const Eigen::Vector3d v1 = (cueIn(frames[i - 1]) - cueIn(frames[i - 2])) / dt1;
+      const Eigen::Vector3d v2 = (cueIn(frames[i]) - cueIn(frames[i - 1])) / dt2;
+      if ((v2 - v1).norm() > 0.2) turns.push_back(frames[i - 1].sim_time);
+    }
+  }
+
+  /// Where the server says the cue ball is at `t` s after the strike.
+  Eigen::Vector3d at(double t) const {
+    if (t <= frames.front().sim_time) return cueIn(frames.front());
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+      if (frames[i].sim_time < t) continue;
+      const double u = (t - frames[i - 1].sim_time) / (frames[i].sim_time - frames[i - 1].sim_time);
+      return Eigen::Vector3d(cueIn(frames[i - 1]) + u * (cueIn(frames[i]) - cueIn(frames[i - 1])));
+    }
+    return cueIn(frames.back());
+  }
+
+  /// True within 50 ms of a corner of the path.
+  bool nearTurn(double t) const {
+    return std::any_of(turns.begin(), turns.end(),
+                       [&](double c) { return std::abs(t - c) < 0.05; });
+  }
+
+  std::vector<TableFrame> frames;
+  std::vector<double> turns;
+};
+
 // The breaker drags the cue ball in hand across the kitchen: in every frame drawn while dragging
 // the ball sits within 2 px of the cursor. Then the break: in every frame drawn, the cue ball is
 // where the server's frames put it at the time played back (within 2 px), from the release on.
@@ -394,16 +452,8 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   script +=
       "mouse release\nframes 10\ndown SPACE\nframes 10\nup SPACE\nwait shot 1\n"
       "frames 30\nquit\n";
-  startWindow({"--hotseat", "--play", "--log-frames"}, script);
-  std::string match;
-  const bool played = recorder.pump(120s, [&] {
-    match = recorder.firstMatch();
-    return !match.empty() && recorder.finals(match).count(1) != 0;
-  });
-  const int status = windowExit();
-  recorder.pump(2s);
-  ASSERT_TRUE(played) << "no break from the window\n" << windowErr() << logs();
-  EXPECT_EQ(status, 0) << windowErr();
+  const std::string match = playFirstShot(recorder, script);
+  ASSERT_FALSE(match.empty());
   const auto drawn = windowLines("drawn");
   ASSERT_FALSE(drawn.empty());
 
@@ -422,36 +472,12 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   EXPECT_GT((last_px - first_px).norm(), 80.0);
 
   // The break (a soft one: it runs long enough to see) as drawn against the server's frames.
-  const auto frames = recorder.frames(match, 1);
+  const ServerPath path(recorder.frames(match, 1));
+  const auto& frames = path.frames;
   ASSERT_GE(frames.size(), 10u);
   const protocol::ShotRequest* sent =
       recorder.nthCommand(match, recorder.latest(match)->breaker, 1);
   ASSERT_TRUE(sent && sent->cue_ball_at);
-  // Where the server says the cue ball is at `t` s after the strike.
-  auto serverCue = [&](double t) {
-    if (t <= frames.front().sim_time) return cueIn(frames.front());
-    for (std::size_t i = 1; i < frames.size(); ++i) {
-      if (frames[i].sim_time < t) continue;
-      const double u = (t - frames[i - 1].sim_time) / (frames[i].sim_time - frames[i - 1].sim_time);
-      return Eigen::Vector3d(cueIn(frames[i - 1]) + u * (cueIn(frames[i]) - cueIn(frames[i - 1])));
-    }
-    return cueIn(frames.back());
-  };
-  // Snapshots are 1/60 s apart: where the cue ball is struck or strikes a ball its path turns a
-  // corner that interpolation between two snapshots cuts, so the 50 ms around each turn are left
-  // out.
-  std::vector<double> turns{0.0};
-  for (std::size_t i = 2; i < frames.size(); ++i) {
-    const double dt1 = frames[i - 1].sim_time - frames[i - 2].sim_time;
-    const double dt2 = frames[i].sim_time - frames[i - 1].sim_time;
-    const Eigen::Vector3d v1 = (cueIn(frames[i - 1]) - cueIn(frames[i - 2])) / dt1;
-    const Eigen::Vector3d v2 = (cueIn(frames[i]) - cueIn(frames[i - 1])) / dt2;
-    if ((v2 - v1).norm() > 0.2) turns.push_back(frames[i - 1].sim_time);
-  }
-  auto nearTurn = [&](double t) {
-    return std::any_of(turns.begin(), turns.end(),
-                       [&](double c) { return std::abs(t - c) < 0.05; });
-  };
   // From the first frame after the release (the last one dragging, then the first not aiming).
   std::size_t from = 0;
   for (std::size_t i = 0; i < drawn.size(); ++i) {
@@ -467,8 +493,8 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
     const bool this_shot = !d["shot"].is_null() && d["shot"].get<std::uint32_t>() == 1;
     if (this_shot && d["moving"].get<bool>()) {
       const double t = d["play_time"].get<double>();
-      if (nearTurn(t)) continue;
-      EXPECT_LT((px - pixelOf(d, serverCue(t))).norm(), 2.0) << "t " << t << " " << d.dump();
+      if (path.nearTurn(t)) continue;
+      EXPECT_LT((px - pixelOf(d, path.at(t))).norm(), 2.0) << "t " << t << " " << d.dump();
       ++compared;
     } else if (!this_shot && compared == 0) {
       // Sent, its frames not here yet: the ball stays where it was put.
@@ -481,6 +507,75 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   EXPECT_GE(compared, 20) << "too few frames of the break drawn";
   EXPECT_GE(before_motion, 1);
   EXPECT_LT((*sent->cue_ball_at - cueIn(frames.front()).head<2>()).norm(), 1e-6);
+}
+
+// After the break, I replays it: the drawn cue ball passes again through the server's frames of
+// that shot (within 2 px, projected through the camera each frame reports), from the strike on,
+// while the view is turned (right drag) during the replay; then the live table is back.
+TEST_F(WindowClientTest, TheInstantReplayDrawsTheLastShotsFramesAgain) {
+  open(kWindowReplay, "window-replay");
+  MatchRecorder recorder(kWindowReplay);
+  startServer({});
+  std::string script =
+      "wait aiming\ndown SPACE\nframes 10\nup SPACE\nwait shot 1\nframes 120\n"
+      "down I\nframes 1\nup I\nframes 20\n";
+  // The view orbits while the replay runs (a right drag is not scripted: Shift + arrows are the
+  // aiming player's orbit).
+  script += "down RIGHT shift\nframes 20\nup RIGHT\nwait live\nframes 10\nquit\n";
+  const std::string match = playFirstShot(recorder, script);
+  ASSERT_FALSE(match.empty());
+  const ServerPath path(recorder.frames(match, 1));
+  ASSERT_GE(path.frames.size(), 10u);
+
+  int compared = 0;
+  double first_time = 1e9, last_time = -1.0;
+  std::set<std::string> views;
+  bool live_after = false;
+  for (const auto& d : windowLines("drawn")) {
+    if (!d.value("replaying", false)) {
+      live_after = live_after || compared > 0;
+      continue;
+    }
+    ASSERT_FALSE(live_after) << "one replay, not two";
+    const double t = d["replay_time"].get<double>();
+    first_time = std::min(first_time, t);
+    last_time = std::max(last_time, t);
+    views.insert(d["view"].dump());
+    if (!d.contains("cue_px")) continue;  // behind the eye
+    if (path.nearTurn(t)) continue;
+    const Eigen::Vector2d px(d["cue_px"][0].get<double>(), d["cue_px"][1].get<double>());
+    EXPECT_LT((px - pixelOf(d, path.at(t))).norm(), 2.0) << "t " << t << " " << d.dump();
+    ++compared;
+  }
+  EXPECT_GE(compared, 20) << "too few replayed frames\n" << windowErr();
+  EXPECT_LT(first_time, 0.1) << "the replay starts at the strike";
+  EXPECT_GT(last_time, 0.3) << "the replay ran on";
+  EXPECT_GT((path.at(last_time) - path.at(first_time)).norm(), 0.05)
+      << "the replayed cue ball moved as it did in the break";
+  EXPECT_GT(views.size(), 5u) << "the view moved during the replay";
+  EXPECT_TRUE(live_after) << "the live table came back after the replay";
+}
+
+// The drawing quality chosen in the settings file is the one the window draws with, whatever
+// the renderer (under Xvfb, auto alone would pick light).
+TEST_F(WindowClientTest, TheWindowDrawsWithTheQualityKeptInTheSettings) {
+  open(kWindowQuality, "window-quality");
+  for (const std::string quality : {"full", "light"}) {
+    SCOPED_TRACE(quality);
+    const std::string dir = file("config") + "/pool";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "/settings.conf") << "volume = 0.5\nquality = " << quality << "\n";
+    startWindow({"--log-frames"}, "frames 5\nquit\n");
+    EXPECT_EQ(windowExit(), 0) << windowErr();
+    const auto drawn = windowLines("drawn");
+    ASSERT_FALSE(drawn.empty()) << windowErr();
+    for (const auto& d : drawn) EXPECT_EQ(d.value("quality", ""), quality) << d.dump();
+    bool said = false;
+    for (const auto& note : windowLines("note")) {
+      said = said || note.value("text", "") == "drawing quality: " + quality + " (" + quality + ")";
+    }
+    EXPECT_TRUE(said);
+  }
 }
 
 }  // namespace
