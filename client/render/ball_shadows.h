@@ -1,6 +1,7 @@
 // The balls' shadows on the felt: for each ball and lamp, the ellipse where the ball hides the
 // lamp's light (the sphere's shadow cone cut by the slate), darker the more of the felt's light
-// that lamp gives; and a soft contact shadow right under each ball. Pure (no GL).
+// that lamp gives; and a soft contact shadow right under each ball. A ball at a cushion also
+// darkens the cushion beside it, away from the nearest lamp. Pure (no GL).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -31,5 +32,14 @@ ShadowBlob castShadow(glm::vec3 lamp, glm::vec3 ball, float radius);
 /// from elsewhere (share of the albedo).
 std::vector<ShadowBlob> ballShadows(std::span<const glm::vec3> lamps,
                                     std::span<const glm::vec3> balls, float radius, float ambient);
+
+/// The balls' shadows on the cushions: for a ball within a radius of a nose line (|x| =
+/// `half_length`, |y| = `half_width`), the cushion beside it darkened as the felt is under a ball
+/// (the light it hides there), the darkest part shifted along the rail away from the nearest lamp,
+/// fading with the gap between ball and cushion. Blobs in the plane of the rails' top (z = `top`),
+/// which the shadow layer draws only past the nose lines.
+std::vector<ShadowBlob> ballShadowsOnCushions(std::span<const glm::vec3> lamps,
+                                              std::span<const glm::vec3> balls, float radius,
+                                              float half_length, float half_width, float top);
 
 }  // namespace pool::render

@@ -146,8 +146,12 @@ void Renderer::updateShadows() {
     if (!b.pocketed) centres.push_back(toGlm(b.pos));
   }
   const auto lamps = lampPositions(scene_.geometry);
-  auto blobs =
-      ballShadows(lamps, centres, static_cast<float>(scene_.ball_radius), SceneShading::kAmbient);
+  const auto radius = static_cast<float>(scene_.ball_radius);
+  auto blobs = ballShadows(lamps, centres, radius, SceneShading::kAmbient);
+  for (const auto& blob : ballShadowsOnCushions(lamps, centres, radius, rails_.half_length,
+                                                rails_.half_width, rails_.top)) {
+    blobs.push_back(blob);
+  }
   if (cue_) {
     for (const auto& piece :
          cueShadow(lamps, *cue_, rails_.half_length, rails_.half_width, SceneShading::kAmbient)) {

@@ -104,8 +104,11 @@ Result<Scene> spreadScene(const std::string& table) {
   auto scene = tableScene(table);
   if (!scene) return scene;
   const double r = scene->ball_radius;
-  // Between and beside the lamps (over x = ±L/4), none straight under one.
-  const double spots[][2] = {{0.0, 0.0}, {-0.3, 0.3}, {0.35, -0.3}, {-0.95, -0.35}, {1.0, 0.4}};
+  // Between and beside the lamps (over x = ±L/4), none straight under one; the last against the
+  // +y cushion, a little toward the middle from the head lamp (it darkens the cushion).
+  const double against = scene->geometry.width / 2 - r;
+  const double spots[][2] = {{0.0, 0.0},     {-0.3, 0.3}, {0.35, -0.3},
+                             {-0.95, -0.35}, {1.0, 0.4},  {-0.45, against}};
   int id = 0;
   for (const auto& spot : spots) {
     scene->balls.push_back({id, Eigen::Vector3d(spot[0], spot[1], r), numberTowardViewer()});

@@ -54,7 +54,7 @@ int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
                      const FrameHook& before_frame = {});
 
 /// A few balls spread over the table, apart from each other and from under the lamps (the top
-/// scene: their shadows fall clear of them).
+/// scene: their shadows fall clear of them), and one against the +y cushion near the head lamp.
 Result<Scene> spreadScene(const std::string& table = "wpa-9ft");
 
 /// The Magic Eight Ball room answering `answer`, from its default camera.

@@ -101,6 +101,7 @@ TEST_F(LightTest, BallShadowsFallAwayFromTheNearestLamp) {
     const double d0 = glm::length(at - glm::dvec2(lamps[0], 0.0));
     const double d1 = glm::length(at - glm::dvec2(lamps[1], 0.0));
     if (std::abs(d0 - d1) < 0.2) continue;  // about as near to both: shadows both ways
+    if (spec.width / 2 - std::abs(at.y) < 2 * r) continue;  // on the cushion: the next test's
     const glm::dvec2 lamp(d0 < d1 ? lamps[0] : lamps[1], 0.0);
     const glm::dvec2 away = glm::normalize(at - lamp);
     // Just outside the ball's outline as the camera sees it, the same distance out on the far and
@@ -128,6 +129,43 @@ TEST_F(LightTest, BallShadowsFallAwayFromTheNearestLamp) {
     ++checked;
   }
   EXPECT_GE(checked, 3);
+}
+
+// The ball against the +y cushion near the head lamp darkens the cushion beside it, on its side
+// away from the lamp: darker there than on its side toward the lamp and than the same cushion
+// 10 cm farther along.
+TEST_F(LightTest, ABallAgainstACushionDarkensTheCushionAwayFromTheLamp) {
+  const Image image = view("--scene top");
+  auto scene = render::spreadScene();
+  ASSERT_TRUE(static_cast<bool>(scene));
+  const auto spec = nineFoot();
+  const double r = spec.params.ball_radius;
+  const render::SceneBall* ball = nullptr;
+  for (const auto& b : scene->balls) {
+    if (spec.width / 2 - b.pos.y() < 1.5 * r) ball = &b;
+  }
+  ASSERT_NE(ball, nullptr) << "the top scene has a ball against the +y cushion";
+  const auto lamps = lampXs(spec);
+  const double lamp =
+      std::abs(lamps[0] - ball->pos.x()) < std::abs(lamps[1] - ball->pos.x()) ? lamps[0] : lamps[1];
+  const double away = ball->pos.x() > lamp ? 1.0 : -1.0;
+  // The cushion's top just past the nose (a quarter radius on), at the cushion's height.
+  const float y = float(spec.width / 2 + 0.25 * r);
+  const float z = float(spec.params.cushion_height);
+  const auto cushion = [&](double x) {
+    const glm::vec3 px = camera_.pixel(glm::vec3(float(x), y, z));
+    EXPECT_TRUE(camera_.inside(px, 3.0f));
+    double sum = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) sum += luminance(image.at(int(px.x) + dx, int(px.y) + dy));
+    }
+    return sum / 9.0;
+  };
+  const double x = ball->pos.x();
+  const double shaded = cushion(x + away * r), toward = cushion(x - away * 1.8 * r);
+  const double beyond = cushion(x + away * 0.1);
+  EXPECT_LT(shaded, 0.85 * beyond) << "beside the ball " << shaded << ", 10 cm on " << beyond;
+  EXPECT_LT(shaded, toward) << "away from the lamp " << shaded << ", toward it " << toward;
 }
 
 /// Mother-of-pearl: bright and nearly grey.
