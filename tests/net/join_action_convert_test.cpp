@@ -1,0 +1,52 @@
+// Join actions through the wire module: a concession crosses as JOIN_CONCEDE and keeps its
+// signature valid; an action past the last one known is refused, in a request and in a reply.
+#include <gtest/gtest.h>
+
+#include "net/message_convert.h"
+#include "net/messages.h"
+#include "net/wire_fields.h"
+#include "protocol/key_pair.h"
+#include "protocol/seat_request.h"
+
+namespace pool::net {
+namespace {
+
+TEST(JoinActionConvert, AConcessionCrossesSignedAndAnUnknownActionIsRefused) {
+  const protocol::KeyPair key = protocol::generateKeyPair();
+  protocol::SeatRequest r;
+  r.client = "c0ffee";
+  r.request = 4;
+  r.match = "srv-1";
+  r.action = protocol::JoinAction::Concede;
+  r.seat = 1;
+  r.token = 77;
+  r.seq = 9;
+  ASSERT_TRUE(protocol::changesSeat(r)) << "a concession must be signed";
+  protocol::signSeatRequest(r, key);
+  auto wire = toWire(r);
+  EXPECT_EQ(wire->action, pool_JOIN_CONCEDE);
+  const auto back = fromWire(*wire);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(back->action, protocol::JoinAction::Concede);
+  EXPECT_EQ(protocol::verifySeatRequest(*back, key.publicKey()), protocol::SignatureCheck::Valid);
+  // Signed as a concession, it is no rematch.
+  protocol::SeatRequest other = *back;
+  other.action = protocol::JoinAction::Rematch;
+  EXPECT_EQ(protocol::verifySeatRequest(other, key.publicKey()),
+            protocol::SignatureCheck::BadSignature);
+
+  setRawValue(wire->action, pool_JOIN_CONCEDE + 1);
+  EXPECT_EQ(fromWire(*wire).error(), "action: not a known join action");
+
+  pool_JoinReply reply{};
+  reply.action = pool_JOIN_CONCEDE;
+  reply.outcome = pool_JOIN_ACCEPTED;
+  const auto answer = fromWire(reply);
+  ASSERT_TRUE(answer) << answer.error();
+  EXPECT_EQ(answer->action, protocol::JoinAction::Concede);
+  setRawValue(reply.action, pool_JOIN_CONCEDE + 1);
+  EXPECT_FALSE(fromWire(reply));
+}
+
+}  // namespace
+}  // namespace pool::net
