@@ -192,12 +192,14 @@ TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
 
   const auto notes = windowLines("note");
   ASSERT_FALSE(notes.empty());
-  // The first note after the server's key is pinned at first sight says what is watched.
+  // The first note after the drawing quality and the server's key pinned at first sight says
+  // what is watched.
   std::size_t first = 0;
-  while (first + 1 < notes.size() && notes[first]["text"].get<std::string>().find(
-                                         "pinned at first sight") != std::string::npos) {
-    ++first;
-  }
+  const auto preamble = [](const std::string& text) {
+    return text.find("pinned at first sight") != std::string::npos ||
+           text.rfind("drawing quality: ", 0) == 0;
+  };
+  while (first + 1 < notes.size() && preamble(notes[first]["text"].get<std::string>())) ++first;
   EXPECT_EQ(notes[first]["text"].get<std::string>().rfind("watching ", 0), 0u);
 
   // Every state the window showed is one the server published, in order, up to the third shot.
