@@ -77,6 +77,11 @@ TEST(ShotStoryTest, TheServersVerdictReadsWithNames) {
   EXPECT_EQ(verdictInWords("game over, seat 0 wins (eight_on_foul)", {"seat_1", "x"}),
             "game over, seat_1 wins (the 8 pocketed on a foul)");
   EXPECT_EQ(verdictInWords("seat 12 to shoot", kNames), "seat 12 to shoot");
+  // A concession, as the server words it (protocol::kConcededTheRack).
+  EXPECT_EQ(verdictInWords("seat 1 conceded the rack; rack 2 to break", kNames),
+            "Bob conceded the rack; rack 2 to break");
+  EXPECT_EQ(verdictInWords("seat 0 conceded the rack: seat 1 won the match", kNames),
+            "Ada conceded the rack: Bob won the match");
 }
 
 TEST(KeyHelpTest, TheHelpNamesEveryKey) {
@@ -86,8 +91,8 @@ TEST(KeyHelpTest, TheHelpNamesEveryKey) {
     EXPECT_EQ(std::string(k.does).find('_'), std::string::npos);
   }
   for (const char* name :
-       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z",  "S", "X", "G",   "V",  "C",
-        "K",    "P",     "T",  "L",    "B",     "O", "F1", "R", "N", "F11", "ESC"}) {
+       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A",  "Z", "S", "X",   "G", "V", "C", "K",
+        "P",    "T",     "L",  "B",    "O",     "F1", "R", "N", "F11", "Q", "Y", "I", "ESC"}) {
     ASSERT_TRUE(std::string(name) == "ESC" || keyFromName(name)) << name;
     std::string word = name;
     std::transform(word.begin() + 1, word.end(), word.begin() + 1,
