@@ -44,8 +44,8 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
       step.kind = ScriptStep::Kind::WaitAiming;
       return R::ok(step);
     }
-    if (what == "live") {
-      step.kind = ScriptStep::Kind::WaitLive;
+    if (what == "live" || what == "rest") {
+      step.kind = what == "live" ? ScriptStep::Kind::WaitLive : ScriptStep::Kind::WaitRest;
       return R::ok(step);
     }
     if (what == "over" || what == "table") {
@@ -56,7 +56,7 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
       step.kind = ScriptStep::Kind::WaitShot;
       return R::ok(step);
     }
-    return R::fail("wait needs 'aiming', 'shot N', 'over', 'table' or 'live'");
+    return R::fail("wait needs 'aiming', 'shot N', 'over', 'table', 'live' or 'rest'");
   }
   if (verb == "mouse") {
     std::string what;
@@ -137,13 +137,14 @@ std::vector<ScriptStep> ScriptPlayer::frame(const ScriptConditions& now) {
     const bool wait =
         step.kind == ScriptStep::Kind::WaitAiming || step.kind == ScriptStep::Kind::WaitShot ||
         step.kind == ScriptStep::Kind::WaitOver || step.kind == ScriptStep::Kind::WaitTable ||
-        step.kind == ScriptStep::Kind::WaitLive;
+        step.kind == ScriptStep::Kind::WaitLive || step.kind == ScriptStep::Kind::WaitRest;
     // `now` was seen before this frame's steps: a wait after one is judged on the next frame.
     if (wait && !due.empty()) return due;
     const bool waiting = (step.kind == ScriptStep::Kind::WaitAiming && !now.can_aim) ||
                          (step.kind == ScriptStep::Kind::WaitOver && !now.over) ||
                          (step.kind == ScriptStep::Kind::WaitTable && !now.at_table) ||
                          (step.kind == ScriptStep::Kind::WaitLive && now.replaying) ||
+                         (step.kind == ScriptStep::Kind::WaitRest && now.moving) ||
                          (step.kind == ScriptStep::Kind::WaitShot &&
                           now.shot_number < static_cast<std::uint32_t>(step.count));
     if (waiting) return due;

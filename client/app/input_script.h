@@ -22,6 +22,7 @@ struct ScriptStep {
     WaitOver,      ///< wait until the match followed is over
     WaitTable,     ///< wait until this screen holds a seat in a match that is not over
     WaitLive,      ///< wait until no instant replay is showing (the live table is drawn)
+    WaitRest,      ///< wait until no shot's motion is being drawn
     Quit,          ///< close the client
     MousePress,    ///< press the left button at (`x`, `y`) (pixels from the top-left corner)
     MouseMove,     ///< move the mouse to (`x`, `y`)
@@ -39,7 +40,8 @@ struct ScriptStep {
 
 /// Parses a script: one step a line, '#' starts a comment.
 ///   down KEY [shift] [ctrl] [alt] | up KEY | frames N | wait aiming | wait shot N | wait over |
-///   wait table | wait live | quit | mouse press X Y | mouse move X Y | mouse release X Y
+///   wait table | wait live | wait rest | quit | mouse press X Y | mouse move X Y | mouse release X
+///   Y
 /// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
 Result<std::vector<ScriptStep>> parseScript(const std::string& text);
 
@@ -53,6 +55,7 @@ struct ScriptConditions {
   bool over = false;              ///< the match followed is over
   bool at_table = false;          ///< seated in a match that is not over
   bool replaying = false;         ///< the instant replay is showing
+  bool moving = false;            ///< a shot's motion is being drawn
 };
 
 /// Plays a script: each frame, the steps due now.

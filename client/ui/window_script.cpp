@@ -8,6 +8,7 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
   app::ScriptConditions now;
   now.can_aim = controls.mode() == app::ControlMode::Aiming;
   now.replaying = session.replay().playing();
+  now.moving = session.inMotion();
   if (const auto* v = session.view()) {
     now.shot_number = v->shot_number;
     now.over = v->phase == client::MatchPhase::Over;

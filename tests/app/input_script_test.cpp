@@ -47,7 +47,7 @@ TEST(InputScriptTest, ABadLineNamesItsNumber) {
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
   EXPECT_EQ(parseScript("wait forever\n").error(),
-            "line 1: wait needs 'aiming', 'shot N', 'over', 'table' or 'live'");
+            "line 1: wait needs 'aiming', 'shot N', 'over', 'table', 'live' or 'rest'");
   EXPECT_FALSE(loadScript("/nonexistent/script.txt"));
 }
 
@@ -78,8 +78,11 @@ TEST(InputScriptTest, WaitsHoldTheScriptUntilTheirConditionHolds) {
   EXPECT_EQ(quit[0].kind, Kind::Quit);
 }
 
-TEST(InputScriptTest, WaitLiveHoldsTheScriptWhileTheReplayShows) {
-  ScriptPlayer player(*parseScript("wait live\nquit\n"));
+TEST(InputScriptTest, WaitRestAndWaitLiveHoldTheScriptWhileBallsMoveOrTheReplayShows) {
+  ScriptPlayer player(*parseScript("wait rest\nwait live\nquit\n"));
+  ScriptConditions moving;
+  moving.moving = true;
+  EXPECT_TRUE(player.frame(moving).empty());
   ScriptConditions replaying;
   replaying.replaying = true;
   EXPECT_TRUE(player.frame(replaying).empty());

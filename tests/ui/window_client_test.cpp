@@ -26,6 +26,8 @@ using namespace std::chrono_literals;
 /// This file's newer tests' DDS domains (80–89 are the concession, replay and settings tests').
 constexpr Domain kWindowReplay = static_cast<Domain>(82);
 constexpr Domain kWindowQuality = static_cast<Domain>(83);
+constexpr Domain kWindowConcede = static_cast<Domain>(84);
+constexpr Domain kWindowSpectatorReplay = static_cast<Domain>(85);
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -580,5 +582,69 @@ TEST_F(WindowClientTest, TheWindowDrawsWithTheQualityKeptInTheSettings) {
   }
 }
 
+// A player concedes from the window: Q asks (naming the opponent), Y concedes; the server gives
+// the rack, here the whole race to 1, to the bot, and the window says so with names.
+TEST_F(WindowClientTest, QThenYConcedesTheRackToTheOpponent) {
+  open(kWindowConcede, "window-concede");
+  MatchRecorder recorder(kWindowConcede);
+  startServer({});
+  startWindow({"--play", "--name", "Wendy"},
+              "wait aiming\nframes 5\ndown Q\nup Q\nframes 5\ndown Y\nup Y\nwait over\n"
+              "frames 20\nquit\n");
+  ASSERT_TRUE(recorder.pump(60s,
+                            [&] {
+                              const MatchView* v = recorder.latest(recorder.firstMatch());
+                              return v && v->seats[0].name == "Wendy";
+                            }))
+      << windowErr() << logs();
+  const std::string match = recorder.firstMatch();
+  startBot("bert", 5, {"--think", "30"});
+  ASSERT_TRUE(recorder.pump(90s,
+                            [&] {
+                              const MatchView* v = recorder.latest(match);
+                              return v && v->phase == MatchPhase::Over;
+                            }))
+      << windowErr() << logs();
+  EXPECT_EQ(windowExit(), 0) << windowErr();
+  const MatchView over = *recorder.latest(match);
+  EXPECT_EQ(over.winner, 1);
+  EXPECT_EQ(over.shot_number, 0u) << "conceded before any shot";
+  EXPECT_EQ(over.last_verdict, "seat 0 conceded the rack: seat 1 won the match");
+  bool asked = false, told = false;
+  for (const auto& hud : windowLines("hud")) {
+    for (const auto& t : hud["texts"]) {
+      const std::string text = t.get<std::string>();
+      asked = asked || text.rfind("Wendy, concede this rack to bert?", 0) == 0;
+      told = told || text == "Wendy conceded the rack: bert won the match";
+    }
+  }
+  EXPECT_TRUE(asked) << "the question names the opponent";
+  EXPECT_TRUE(told) << "the banner says who conceded, by name";
+}
+
+// A spectator replays the last shot while the bots think, and the next shot's frames end the
+// replay: no frame is drawn replaying while a shot moves.
+TEST_F(WindowClientTest, ASpectatorsReplayGivesWayToTheNextShot) {
+  open(kWindowSpectatorReplay, "window-spectator-replay");
+  MatchRecorder recorder(kWindowSpectatorReplay);
+  startServer({});
+  startBot("alice", 5, {"--think", "3"});
+  startBot("bob", 6, {"--think", "3"});
+  startWindow({"--spectate", "any", "--log-frames"},
+              "wait shot 1\nwait rest\ndown I\nframes 1\nup I\nwait shot 2\nwait rest\nquit\n");
+  const int status = windowExit();
+  ASSERT_EQ(status, 0) << windowErr() << logs();
+  int replayed = 0, moving_after = 0;
+  for (const auto& d : windowLines("drawn")) {
+    if (d.value("replaying", false)) {
+      ++replayed;
+      EXPECT_FALSE(d["moving"].get<bool>()) << "a replay drawn over a live shot: " << d.dump();
+    } else if (replayed > 0 && d["moving"].get<bool>()) {
+      ++moving_after;
+    }
+  }
+  EXPECT_GE(replayed, 5) << windowErr();
+  EXPECT_GE(moving_after, 5) << "the next shot was drawn live";
+}
 }  // namespace
 }  // namespace pool::client::test
