@@ -50,6 +50,14 @@ class WindowClientTest : public ClientIntegrationTest {
     window_ = std::async(std::launch::async, [cmd] { return std::system(cmd.c_str()); });
   }
 
+  /// Waits until `name` sits in seat 0 of the server's first match.
+  static bool seatedFirst(MatchRecorder& recorder, const std::string& name) {
+    return recorder.pump(60s, [&] {
+      const MatchView* v = recorder.latest(recorder.firstMatch());
+      return v && v->seats[0].name == name;
+    });
+  }
+
   /// The window's exit status (waits for it).
   int windowExit() { return window_.valid() ? window_.get() : -1; }
 
@@ -238,12 +246,7 @@ TEST_F(WindowClientTest, AWindowKilledMidMatchTakesItsSeatBackAndPlaysOn) {
   startServer({"--grace", "60"});
   // The first window sits down and waits (it never shoots); then a bot takes the other seat.
   startWindow({"--play", "--name", "Wendy"}, "frames 100000\n");
-  ASSERT_TRUE(recorder.pump(60s,
-                            [&] {
-                              const MatchView* v = recorder.latest(recorder.firstMatch());
-                              return v && v->seats[0].name == "Wendy";
-                            }))
-      << windowErr() << logs();
+  ASSERT_TRUE(seatedFirst(recorder, "Wendy")) << windowErr() << logs();
   const std::string match = recorder.firstMatch();
   ChildProcess& bot = startBot("bert", 5);
   ASSERT_TRUE(recorder.pump(30s,
@@ -316,12 +319,7 @@ TEST_F(WindowClientTest, TheGameOverScreenStartsASecondGameAtAFreeTable) {
   startWindow({"--play", "--name", "Wendy"},
               "wait over\nframes 20\ndown R\nup R\nframes 20\ndown N\nup N\n"
               "wait table\nframes 30\nquit\n");
-  ASSERT_TRUE(recorder.pump(60s,
-                            [&] {
-                              const MatchView* v = recorder.latest(recorder.firstMatch());
-                              return v && v->seats[0].name == "Wendy";
-                            }))
-      << windowErr() << logs();
+  ASSERT_TRUE(seatedFirst(recorder, "Wendy")) << windowErr() << logs();
   const std::string first = recorder.firstMatch();
   ChildProcess& bot = startBot("bert_the_bot", 5);
   ASSERT_TRUE(recorder.pump(30s, [&] {
@@ -591,12 +589,7 @@ TEST_F(WindowClientTest, QThenYConcedesTheRackToTheOpponent) {
   startWindow({"--play", "--name", "Wendy"},
               "wait aiming\nframes 5\ndown Q\nup Q\nframes 5\ndown Y\nup Y\nwait over\n"
               "frames 20\nquit\n");
-  ASSERT_TRUE(recorder.pump(60s,
-                            [&] {
-                              const MatchView* v = recorder.latest(recorder.firstMatch());
-                              return v && v->seats[0].name == "Wendy";
-                            }))
-      << windowErr() << logs();
+  ASSERT_TRUE(seatedFirst(recorder, "Wendy")) << windowErr() << logs();
   const std::string match = recorder.firstMatch();
   startBot("bert", 5, {"--think", "30"});
   ASSERT_TRUE(recorder.pump(90s,
