@@ -24,7 +24,7 @@ Gateway::Gateway(client::GameClient& client, double join_retry)
 void Gateway::attach(std::uint64_t browser, Sink sink) {
   browsers_[browser] = Browser{std::move(sink), {}};
   if (!lobby_ || lobby_changed_) {
-    lobby_ = share(lobbyJson(client_.lobby()));
+    lobby_ = share(lobbyJson(lobby_entries_));
     lobby_changed_ = false;
     ++stats_.messages;
   }
@@ -50,7 +50,7 @@ std::size_t Gateway::watchers(const std::string& match) const {
 std::string Gateway::watch(std::uint64_t browser, const std::string& match) {
   const auto it = browsers_.find(browser);
   if (it == browsers_.end()) return "not connected";
-  if (!match.empty() && !client_.lobby().find(match) && !client_.state(match)) {
+  if (!match.empty() && !lobby_entries_.find(match) && !states_.count(match)) {
     ++stats_.refused;
     const std::string why = "no match '" + match + "' on the domain";
     sendTo(browser, share(errorJson(why)));
@@ -66,7 +66,8 @@ std::string Gateway::watch(std::uint64_t browser, const std::string& match) {
   sendTo(browser, share(nlohmann::json{{"type", "watching"}, {"match", match}}.dump()));
   if (const Message table = tableOf(match)) sendTo(browser, table);
   if (!w.state) {
-    if (const auto* view = client_.state(match)) w.state = share(stateJson(*view));
+    const auto state = states_.find(match);
+    if (state != states_.end()) w.state = state->second;
   }
   if (w.state) sendTo(browser, w.state);
   if (w.last_result) sendTo(browser, w.last_result);
@@ -77,7 +78,7 @@ std::string Gateway::watch(std::uint64_t browser, const std::string& match) {
 Message Gateway::tableOf(const std::string& match) {
   Watched& w = watched_[match];
   if (w.table) return w.table;
-  const auto* entry = client_.lobby().find(match);
+  const auto* entry = lobby_entries_.find(match);
   if (!entry) return nullptr;
   const auto cached = tables_.find(entry->table);
   if (cached != tables_.end()) return w.table = cached->second;
@@ -114,7 +115,10 @@ void Gateway::handle(const client::ClientEvent& event) {
   if (std::holds_alternative<client::LobbyEntry>(event) ||
       std::holds_alternative<client::MatchGone>(event)) {
     lobby_changed_ = true;
+    if (const auto* entry = std::get_if<client::LobbyEntry>(&event)) lobby_entries_.update(*entry);
     if (const auto* gone = std::get_if<client::MatchGone>(&event)) {
+      lobby_entries_.remove(gone->match);
+      states_.erase(gone->match);
       const auto w = watched_.find(gone->match);
       if (w != watched_.end()) {
         fanOut(gone->match,
@@ -130,10 +134,13 @@ void Gateway::handle(const client::ClientEvent& event) {
       w->second.request.reset();
     }
   } else if (const auto* view = std::get_if<client::MatchView>(&event)) {
+    Message message = share(stateJson(*view));
+    if (states_.size() < 4096 || states_.count(view->match)) states_[view->match] = message;
     const auto w = watched_.find(view->match);
-    if (w == watched_.end()) return;
-    w->second.state = share(stateJson(*view));
-    fanOut(view->match, w->second.state);
+    if (w != watched_.end()) {
+      w->second.state = message;
+      fanOut(view->match, message);
+    }
   } else if (const auto* report = std::get_if<client::ShotReport>(&event)) {
     const auto w = watched_.find(report->match);
     if (w == watched_.end() || !report->accepted) return;
@@ -161,7 +168,7 @@ void Gateway::fanOut(const std::string& match, const Message& message) {
 }
 
 void Gateway::sendLobby() {
-  lobby_ = share(lobbyJson(client_.lobby()));
+  lobby_ = share(lobbyJson(lobby_entries_));
   lobby_changed_ = false;
   ++stats_.messages;
   for (const auto& [id, browser] : browsers_) sendTo(id, lobby_);

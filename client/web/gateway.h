@@ -77,6 +77,8 @@ class Gateway {
   std::map<std::uint64_t, Browser> browsers_;
   std::map<std::string, Watched> watched_;
   std::map<std::string, Message> tables_;  ///< by table name
+  client::Lobby lobby_entries_;            ///< as the events told it
+  std::map<std::string, Message> states_;  ///< the latest state of every match
   Message lobby_;
   bool lobby_changed_ = true;
   std::set<std::uint64_t> slow_;  ///< browsers whose sink refused a message this pass

@@ -131,7 +131,8 @@ class ChromiumPage {
            call("Page.navigate", {{"url", url}}, timeout);
   }
 
-  /// The viewport in CSS pixels at one device pixel per CSS pixel (`mobile`: a phone's).
+  /// The viewport in CSS pixels (after open()) at one device pixel per CSS pixel (`mobile`: a
+  /// phone's).
   bool setViewport(int width, int height, bool mobile, std::chrono::milliseconds timeout) {
     return call(
                "Emulation.setDeviceMetricsOverride",
