@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # CI stage: a Release build, its Debian packages installed on this machine (root), the installed
-# programs run (help, a shipped scene, a screenshot, a bot match, the web spectator's page), the unit
-# and desktop entry checked, then the packages purged and nothing of them left. Prints each step's time.
+# programs run (help, a shipped scene, a screenshot, a bot match, the web spectator's page), the
+# unit and desktop entry checked, then the packages purged and nothing of them left. Prints each
+# step's time.
 # Usage: scripts/ci-package.sh   (build folder: build-pkg or $POOL_PKG_BUILD_DIR; DDS domain of
 # the match: $POOL_DOMAIN, default 11, over loopback with port base $POOL_DDS_PORT_BASE)
 set -euo pipefail

@@ -97,10 +97,16 @@ void Gateway::step(double now) {
   for (auto it = watched_.begin(); it != watched_.end();) {
     Watched& w = it->second;
     if (w.browsers.empty()) {
-      if (w.joined || w.request) client_.requestLeave(it->first);
-      it = watched_.erase(it);
+      if (!w.empty_since) w.empty_since = now;
+      if (now - *w.empty_since >= kLeaveAfter) {
+        if (w.joined || w.request) client_.requestLeave(it->first);
+        it = watched_.erase(it);
+        continue;
+      }
+      ++it;
       continue;
     }
+    w.empty_since.reset();
     if (!w.joined && now - w.sent_at >= join_retry_) {
       w.request = client_.requestSpectate(it->first);
       w.sent_at = now;

@@ -14,6 +14,9 @@
 
 namespace pool::web {
 
+/// How long a match nobody watches stays joined, s.
+inline constexpr double kLeaveAfter = 10.0;
+
 /// Counters for the log and the benchmark.
 struct GatewayStats {
   std::uint64_t messages = 0;  ///< messages made (each shared by every browser of its match)
@@ -40,7 +43,8 @@ class Gateway {
   std::string watch(std::uint64_t browser, const std::string& match);
 
   /// Takes what DDS received and fans it out; sends spectate requests for newly watched matches
-  /// (again every `join_retry` s until answered) and leaves matches nobody watches.
+  /// (again every `join_retry` s until answered) and leaves matches nobody has watched for
+  /// kLeaveAfter s (a browser hopping between matches makes no flood of requests).
   void step(double now);
   /// Fans out one event as step() does (tests feed events without DDS).
   void handle(const client::ClientEvent& event);
@@ -56,9 +60,10 @@ class Gateway {
     std::optional<std::uint32_t> request;  ///< our spectate request not answered yet
     bool joined = false;
     double sent_at = -1e9;
-    Message table;        ///< the table's drawing (once known)
-    Message state;        ///< the latest state
-    Message last_result;  ///< the latest final shot result
+    std::optional<double> empty_since;  ///< when its last browser left
+    Message table;                      ///< the table's drawing (once known)
+    Message state;                      ///< the latest state
+    Message last_result;                ///< the latest final shot result
   };
   struct Browser {
     Sink sink;
