@@ -37,6 +37,10 @@ namespace {
 
 using State = WebServer::State;
 
+/// A browser socket's kernel send buffer, bytes (Linux doubles it): far more than a match's
+/// stream needs in flight on a LAN (about 80 kB/s while balls move).
+constexpr int kSendBuffer = 128 * 1024;
+
 bool pageFileName(const std::string& name) {
   if (name.empty() || name.size() > 64 || name[0] == '.') return false;
   for (char c : name) {
@@ -54,6 +58,11 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
       : ws_(std::move(socket)), state_(std::move(state)), queue_(state_->options.queue_bytes) {}
 
   void accept(http::request<http::string_body> request) {
+    // A kernel send buffer of its own size (not grown by autotuning up to megabytes): what a
+    // browser has not taken shows in its queue, which decides when it is too slow.
+    beast::error_code ignored;
+    beast::get_lowest_layer(ws_).socket().set_option(
+        asio::socket_base::send_buffer_size(kSendBuffer), ignored);
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(4096);
     ws_.text(true);

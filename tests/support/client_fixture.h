@@ -46,6 +46,7 @@ enum Domain : std::uint32_t {
   kOpensTable = 123,
   kWebPage = 40,  ///< 40–59: the web spectator's tests and benchmark
   kWebGateway = 41,
+  kWebSlowBrowser = 43,  ///< (42: web_bench)
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
