@@ -5,24 +5,22 @@
 /** The window's playback settings (PlaybackConfig). */
 export const PLAYBACK = { delay: 0.1, maxSkew: 0.05, resync: 0.5, capacity: 32 };
 
-/** A frame's ball: [id, x, y, z, qw, qx, qy, qz, onTable]. */
+/** A frame's ball: [id, x, y, z, qw, qx, qy, qz, onTable]. Orientations (indices 4..7) are
+ * blended as Eigen's Quaternion::slerp does, the shorter way round, so the page turns a ball
+ * exactly as the window does. */
 function slerp(a, b, u) {
-  // Quaternions (w, x, y, z) at indices 4..7, the shorter way round (as Eigen's slerp).
-  let dot = a[4] * b[4] + a[5] * b[5] + a[6] * b[6] + a[7] * b[7];
-  const sign = dot < 0 ? -1 : 1;
-  dot = Math.abs(dot);
-  let wa = 1 - u;
-  let wb = u;
-  if (dot < 0.9995) {
-    const theta = Math.acos(Math.min(dot, 1));
-    const s = Math.sin(theta);
-    wa = Math.sin((1 - u) * theta) / s;
-    wb = Math.sin(u * theta) / s;
+  const d = a[4] * b[4] + a[5] * b[5] + a[6] * b[6] + a[7] * b[7];
+  const absD = Math.abs(d);
+  let scale0 = 1 - u;
+  let scale1 = u;
+  if (absD < 1 - Number.EPSILON) {
+    const theta = Math.acos(absD);
+    const sinTheta = Math.sin(theta);
+    scale0 = Math.sin((1 - u) * theta) / sinTheta;
+    scale1 = Math.sin(u * theta) / sinTheta;
   }
-  const q = [0, 0, 0, 0];
-  for (let i = 0; i < 4; ++i) q[i] = wa * a[4 + i] + sign * wb * b[4 + i];
-  const n = Math.hypot(q[0], q[1], q[2], q[3]) || 1;
-  return q.map((v) => v / n);
+  if (d < 0) scale1 = -scale1;
+  return [0, 1, 2, 3].map((i) => scale0 * a[4 + i] + scale1 * b[4 + i]);
 }
 
 function blend(fa, fb, t) {
