@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "client/app/spoken.h"
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/spectate/json_lines.h"
@@ -122,14 +123,17 @@ Result<std::string> tableJson(const std::string& table_name) {
 }
 
 std::string stateJson(const client::MatchView& view) {
-  return fmt::format(R"({{"type":"state","match":{},"state":{},"balls":{},"settings":{}}})",
-                     json(view.match).dump(), client::matchStateLine(view), ballsArray(view.balls),
-                     json(protocol::describe(view.settings)).dump());
+  return fmt::format(
+      R"({{"type":"state","match":{},"state":{},"balls":{},"settings":{},"verdict_words":{}}})",
+      json(view.match).dump(), client::matchStateLine(view), ballsArray(view.balls),
+      json(protocol::describe(view.settings)).dump(),
+      json(app::spokenText(view.last_verdict)).dump());
 }
 
 std::string resultJson(const client::ShotReport& report) {
-  return fmt::format(R"({{"type":"result","match":{},"result":{}}})", json(report.match).dump(),
-                     client::shotResultLine(report));
+  return fmt::format(R"({{"type":"result","match":{},"result":{},"verdict_words":{}}})",
+                     json(report.match).dump(), client::shotResultLine(report),
+                     json(app::spokenText(report.verdict_text)).dump());
 }
 
 std::string frameJson(const client::TableFrame& frame) {

@@ -25,10 +25,10 @@ std::string lobbyJson(const client::Lobby& lobby);
 Result<std::string> tableJson(const std::string& table_name);
 
 /// {"type":"state","match":...,"state":{the spectator's match_state line},"balls":[...],
-/// "settings":"8-ball, race to 1, ..."}.
+/// "settings":"8-ball, race to 1, ...","verdict_words":the last verdict as the HUD says it}.
 std::string stateJson(const client::MatchView& view);
 
-/// {"type":"result","match":...,"result":{the spectator's shot_result line}}.
+/// {"type":"result","match":...,"result":{the spectator's shot_result line},"verdict_words":...}.
 std::string resultJson(const client::ShotReport& report);
 
 /// {"type":"frame","match":...,"shot":n,"frame":k,"t":s,"balls":[[id,x,y,z,qw,qx,qy,qz,on]...]}

@@ -90,10 +90,11 @@ function receive(m) {
     case 'state':
       if (m.match !== app.match) return;
       app.state = m;
+      app.state.state.words = m.verdict_words;
       break;
     case 'result':
       if (m.match !== app.match) return;
-      if (m.result.final) app.result = m.result;
+      if (m.result.final) app.result = { ...m.result, words: m.verdict_words };
       break;
     case 'frame':
       if (m.match !== app.match) return;

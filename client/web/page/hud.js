@@ -17,7 +17,8 @@ function sentence(text) {
 /**
  * The facts of a match: {title, players, score, turn, groups, last}. `state` is the spectator's
  * match_state object, `settings` its one-line settings, `result` the latest final shot result (or
- * null), `entry` the lobby entry (or null).
+ * null), `entry` the lobby entry (or null). `state.words` and `result.words`: their verdicts in
+ * words.
  */
 export function describe(state, settings, result, entry) {
   const a = nameOf(state, 0);
@@ -62,8 +63,10 @@ export function describe(state, settings, result, entry) {
   facts.groups = groups.every((g) => g === null)
     ? (state.phase === 'open' || state.phase === 'break' ? 'Open table: no groups yet.' : '')
     : `${groups.filter((g) => g).join('; ')}.`;
-  const verdict = result && result.verdict ? result.verdict : state.last_verdict;
-  facts.last = verdict ? `Last shot: ${sentence(verdict)}` : 'No shot played yet.';
+  // The verdict as the game's HUD words it, each "seat N" named.
+  const words = state.words || (result ? result.words : '');
+  const named = (words || '').replace(/\bseat ([01])\b/g, (_, n) => nameOf(state, Number(n)));
+  facts.last = named ? `Last shot: ${sentence(named)}` : 'No shot played yet.';
   return facts;
 }
 
