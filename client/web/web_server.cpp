@@ -7,6 +7,7 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
@@ -29,6 +30,7 @@ struct WebServer::State {
   tcp::acceptor acceptor;
   std::uint64_t next_browser = 1;
   std::size_t browsers = 0;
+  std::size_t connections = 0;  ///< open sockets, HTTP and WebSocket
   std::uint64_t dropped = 0;
   std::uint64_t refused = 0;
 };
@@ -51,11 +53,32 @@ bool pageFileName(const std::string& name) {
   return true;
 }
 
+/// Counts an open connection for as long as it lives.
+class Counted {
+ public:
+  explicit Counted(std::shared_ptr<State> state) : state_(std::move(state)) {
+    ++state_->connections;
+  }
+  ~Counted() { --state_->connections; }
+  Counted(const Counted&) = delete;
+  Counted& operator=(const Counted&) = delete;
+  const std::shared_ptr<State>& state() const { return state_; }
+
+ private:
+  std::shared_ptr<State> state_;
+};
+
+/// Connections beyond the browsers allowed: requests for the page, and upgrades under way.
+constexpr std::size_t kSpareConnections = 64;
+
 /// One browser's WebSocket: reads its watch requests, writes the gateway's messages in order.
 class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
  public:
   BrowserSession(tcp::socket&& socket, std::shared_ptr<State> state)
-      : ws_(std::move(socket)), state_(std::move(state)), queue_(state_->options.queue_bytes) {}
+      : counted_connection_(state),
+        ws_(std::move(socket)),
+        state_(std::move(state)),
+        queue_(state_->options.queue_bytes) {}
 
   void accept(http::request<http::string_body> request) {
     // A kernel send buffer of its own size (not grown by autotuning up to megabytes): what a
@@ -125,8 +148,8 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
     if (const auto match = parseWatch(text, error)) {
       state_->gateway.watch(id_, *match);
     } else {
-      push(std::make_shared<const std::string>(R"({"type":"error","text":"bad request: )" + error +
-                                               R"("})"));
+      push(std::make_shared<const std::string>(
+          nlohmann::json{{"type", "error"}, {"text", "bad request: " + error}}.dump()));
     }
     if (!closed_) read();
   }
@@ -143,6 +166,7 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
     beast::get_lowest_layer(ws_).socket().close(ignored);
   }
 
+  Counted counted_connection_;
   websocket::stream<beast::tcp_stream> ws_;
   std::shared_ptr<State> state_;
   OutQueue queue_;
@@ -158,7 +182,7 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
   HttpSession(tcp::socket&& socket, std::shared_ptr<State> state)
-      : stream_(std::move(socket)), state_(std::move(state)) {}
+      : counted_connection_(state), stream_(std::move(socket)), state_(std::move(state)) {}
 
   void read() {
     parser_.emplace();
@@ -228,6 +252,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
                       });
   }
 
+  Counted counted_connection_;
   beast::tcp_stream stream_;
   std::shared_ptr<State> state_;
   beast::flat_buffer buffer_;
@@ -237,8 +262,20 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
 void acceptNext(const std::shared_ptr<State>& state) {
   state->acceptor.async_accept([state](beast::error_code ec, tcp::socket socket) {
     if (!state->acceptor.is_open()) return;
-    if (!ec) std::make_shared<HttpSession>(std::move(socket), state)->read();
-    acceptNext(state);
+    if (!ec) {
+      if (state->connections >= state->options.max_browsers + kSpareConnections) {
+        ++state->refused;  // too many at once: closed unanswered
+        beast::error_code ignored;
+        socket.close(ignored);
+      } else {
+        std::make_shared<HttpSession>(std::move(socket), state)->read();
+      }
+      return acceptNext(state);
+    }
+    // Out of file descriptors, say (a flood of idle connections, each closed within 30 s): try
+    // again a little later rather than spin.
+    auto pause = std::make_shared<asio::steady_timer>(state->io, std::chrono::milliseconds(100));
+    pause->async_wait([state, pause](beast::error_code) { acceptNext(state); });
   });
 }
 

@@ -22,7 +22,9 @@ struct WebServerOptions {
   std::uint16_t port = 8080;   ///< 0: any free port (see WebServer::port)
   std::filesystem::path root;  ///< the page's folder (index.html, app.js, three.module.js, ...)
   std::size_t queue_bytes = 4u << 20;  ///< a browser's queue budget: past it, it is dropped
-  std::size_t max_browsers = 256;      ///< WebSocket connections at once; more are refused
+  /// WebSocket connections at once; more are answered 503 (and past 64 more connections of any
+  /// kind, new ones are closed unanswered).
+  std::size_t max_browsers = 256;
 };
 
 /// The page's files, read once at start: every regular file directly in `root` whose name is
@@ -46,7 +48,7 @@ class WebServer {
   std::string start();
   /// The port listened on (after start).
   std::uint16_t port() const;
-  /// Browsers dropped for being too slow, and WebSocket connections refused for being too many.
+  /// Browsers dropped for being too slow, and connections refused for being too many.
   std::uint64_t dropped() const;
   std::uint64_t refused() const;
 
