@@ -38,6 +38,6 @@ set(CPACK_DEBIAN_CLIENT_PACKAGE_NAME pool-client)
 set(CPACK_DEBIAN_CLIENT_PACKAGE_DEPENDS "${pool_common_dep}, fonts-dejavu-core")
 set(CPACK_DEBIAN_CLIENT_PACKAGE_RECOMMENDS "libgl1-mesa-dri")
 set(CPACK_COMPONENT_CLIENT_DESCRIPTION
-  "3D pool (billiards) game for the LAN: game window, bot and physics lab\npool-client is the game window (OpenGL 3.3): lobby, play and watch matches of a\npool-server on the LAN. Also pool-bot (a headless player), pool-sim (one shot\noffline, JSON out), pool-sound and pool-tablegen.")
+  "3D pool (billiards) game for the LAN: game window, bot and physics lab\npool-client is the game window (OpenGL 3.3): lobby, play and watch matches of a\npool-server on the LAN. Also pool-web (the web spectator: any browser on the\nLAN watches the matches; the page and three.js in /usr/share/pool/web),\npool-bot (a headless player), pool-sim (one shot offline, JSON out),\npool-sound and pool-tablegen.")
 
 include(CPack)

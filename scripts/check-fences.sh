@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fails when a file includes what its folder may not (docs/ARCHITECTURE.md): DDS and the generated
 # wire types outside common/net, ODE outside common/physics, OpenGL outside client/render and
-# client/ui, assimp outside common/table and client/render, or a lower module reaching up.
+# client/ui, assimp outside common/table and client/render, HTTP (Boost.Beast, Asio) outside
+# client/web, or a lower module reaching up.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -35,6 +36,7 @@ fence dds 'dds/|pool\.h|net/' "$net_public" common/net/ tests/
 fence opengl 'glad/|GLFW/|EGL/|GL/|backends/imgui_impl' '' client/render/ client/ui/ tests/
 fence ode 'ode/' '' common/physics/ tests/physics/
 fence assimp 'assimp/' '' common/table/ client/render/ tests/
+fence http 'boost/(beast|asio)' '' client/web/ tests/
 # One way: the shared modules never reach up into the protocol, the transport, the server or
 # the clients; the protocol never reaches into the transport.
 fence shared-modules 'protocol/|net/|client/|server/' '' common/protocol/ common/net/ \
@@ -53,4 +55,5 @@ if ((status)); then
   exit 1
 fi
 echo "fences hold: DDS only in common/net, ODE only in common/physics, OpenGL only in" \
-  "client/render and client/ui, assimp only in common/table and client/render, modules one way"
+  "client/render and client/ui, assimp only in common/table and client/render, HTTP only in" \
+  "client/web, modules one way"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # CI stage: a Release build, its Debian packages installed on this machine (root), the installed
-# programs run (help, a shipped scene, a screenshot, a bot match), the unit and desktop entry
-# checked, then the packages purged and nothing of them left. Prints each step's time.
+# programs run (help, a shipped scene, a screenshot, a bot match, the web spectator's page), the
+# unit and desktop entry checked, then the packages purged and nothing of them left. Prints each
+# step's time.
 # Usage: scripts/ci-package.sh   (build folder: build-pkg or $POOL_PKG_BUILD_DIR; DDS domain of
 # the match: $POOL_DOMAIN, default 11, over loopback with port base $POOL_DDS_PORT_BASE)
 set -euo pipefail
@@ -85,6 +86,10 @@ bot_match() {
   pool-server --domain "$domain" --tables 1 --fast --log-level warn --db "$work/pool.db" &
   local server=$!
   pids+=("$server")
+  # The installed web spectator beside the match, on a free port.
+  pool-web --domain "$domain" --port 0 > web.out 2> web.err &
+  local web=$!
+  pids+=("$web")
   local bots=()
   for player in Ada:1 Bert:2; do
     timeout 150 pool-bot --domain "$domain" --name "${player%%:*}" --skill 0.8 \
@@ -105,12 +110,44 @@ bot_match() {
   if grep -q '^commands_accepted: 0$' status.txt; then echo "no command counted" >&2; return 1; fi
   pool-server admin --db "$work/pool.db" backup "$work/copy.db"
   [[ -s $work/copy.db ]]
+  web_page "$web"
   kill -TERM "$server"
   status=0
   wait "$server" || status=$?
   ((status == 0)) || { echo "pool-server exit $status on SIGTERM" >&2; return 1; }
   echo "pool-server stopped cleanly on SIGTERM"
   unset CYCLONEDDS_URI
+}
+
+# The installed pool-web (started by bot_match, pid $1): its URL line, the page and three.js
+# served from /usr/share/pool/web, then a clean stop on SIGTERM.
+web_page() {
+  local web=$1 port=""
+  for _ in $(seq 100); do
+    port=$(sed -n 's|^pool-web: http://127\.0\.0\.1:\([0-9]*\)/.*|\1|p' web.out)
+    [[ -n $port ]] && break
+    sleep 0.1
+  done
+  [[ -n $port ]] || { echo "pool-web printed no URL" >&2; cat web.err >&2; return 1; }
+  fetch() {  # PATH: the body of GET PATH over plain HTTP/1.0 (no curl needed)
+    exec 3<>"/dev/tcp/127.0.0.1/$port"
+    printf 'GET %s HTTP/1.0\r\nHost: localhost\r\n\r\n' "$1" >&3
+    cat <&3
+    exec 3<&-
+  }
+  fetch / > page.http
+  fetch /three.module.js > three.http
+  fetch /../../etc/passwd > escape.http
+  head -n 1 page.http | grep -q '200 OK'
+  grep -q 'app.js' page.http
+  head -n 1 three.http | grep -q '200 OK'
+  grep -q 'three.core.js' three.http
+  head -n 1 escape.http | grep -q '404'
+  echo "pool-web: served the page ($(wc -c < page.http) bytes) and three.js ($(wc -c < three.http) bytes) on port $port"
+  kill -TERM "$web"
+  local status=0
+  wait "$web" || status=$?
+  ((status == 0)) || { echo "pool-web exit $status on SIGTERM" >&2; return 1; }
 }
 
 # 6. The unit and the desktop entry as installed.

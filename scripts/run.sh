@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds everything and runs the main job on a local pool-server. With a display: the game window,
+# Builds everything and runs the main job on a local pool-server and the web spectator pool-web
+# (its URL printed; POOL_WEB_PORT, default 8080). With a display: the game window,
 # you against a bot (--hotseat: two players on this screen; --watch: watch two bots). Without a
 # display (or with --headless): two bots play and a spectator prints the match in this terminal.
 set -euo pipefail
@@ -36,6 +37,12 @@ trap cleanup EXIT INT TERM
 
 "$bin/pool-server" --domain "$domain" --tables 1 --log-level warn --db "$data/pool.db" &
 pids+=($!)
+
+# The web spectator on loopback: any browser on this machine can watch at its URL.
+web_port=${POOL_WEB_PORT:-8080}
+"$bin/pool-web" --domain "$domain" --port "$web_port" > /dev/null &
+pids+=($!)
+echo "Watch from a browser: http://127.0.0.1:$web_port/ (pool-web; --bind 0.0.0.0 for the LAN)" >&2
 
 bot() {  # name seed
   "$bin/pool-bot" --domain "$domain" --name "$1" --skill 0.8 --seed "$2" --think 0.8 \

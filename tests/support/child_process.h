@@ -99,6 +99,7 @@ class ChildProcess {
   }
 
   bool running() { return !waitExit(0ms); }
+  pid_t pid() const { return pid_; }
   std::string out() const { return slurp(out_path_); }
   std::string err() const { return slurp(err_path_); }
   /// The last non-empty line of stdout.

@@ -44,6 +44,10 @@ enum Domain : std::uint32_t {
   kTenBallRace = 218,
   kShotClock = 219,
   kOpensTable = 123,
+  kWebPage = 40,  ///< 40–59: the web spectator's tests and benchmark
+  kWebGateway = 41,
+  kWebSlowBrowser = 43,  ///< (42: web_bench)
+  kWebLimits = 44,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

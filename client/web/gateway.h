@@ -1,0 +1,97 @@
+// The DDS side of pool-web: one spectator session on the domain whose lobby, states, results and
+// frames are fanned out to the browsers watching each match.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "client/net/game_client.h"
+#include "client/web/out_queue.h"
+
+namespace pool::web {
+
+/// How long a match nobody watches stays joined, s.
+inline constexpr double kLeaveAfter = 10.0;
+
+/// Counters for the log and the benchmark.
+struct GatewayStats {
+  std::uint64_t messages = 0;  ///< messages made (each shared by every browser of its match)
+  std::uint64_t deliveries = 0;
+  std::uint64_t refused = 0;  ///< watch requests refused (unknown match, bad input)
+};
+
+/// Fans out one GameClient (a spectator: it sends spectate and leave requests only, never seat
+/// requests or shots, and holds no seat) to browsers. Not thread-safe; time is passed in.
+class Gateway {
+ public:
+  /// Hands a message to a browser; false when the browser cannot take it (too slow: it is then
+  /// detached by the gateway, and its connection closed by the caller).
+  using Sink = std::function<bool(const Message&)>;
+
+  explicit Gateway(client::GameClient& client, double join_retry = 1.0);
+
+  /// A browser connected: it gets the lobby at once.
+  void attach(std::uint64_t browser, Sink sink);
+  void detach(std::uint64_t browser);
+  /// The browser watches `match` (empty: none). It gets the table, the latest state and the last
+  /// shot's result at once (late join), then everything of that match. Empty when done, else why
+  /// not (nothing changes then).
+  std::string watch(std::uint64_t browser, const std::string& match);
+
+  /// Takes what DDS received and fans it out; sends spectate requests for newly watched matches
+  /// (again every `join_retry` s until answered) and leaves matches nobody has watched for
+  /// kLeaveAfter s (a browser hopping between matches makes no flood of requests).
+  void step(double now);
+  /// Fans out one event as step() does (tests feed events without DDS).
+  void handle(const client::ClientEvent& event);
+
+  std::size_t browsers() const { return browsers_.size(); }
+  /// Browsers watching `match`.
+  std::size_t watchers(const std::string& match) const;
+  const GatewayStats& stats() const { return stats_; }
+
+ private:
+  struct Watched {
+    std::set<std::uint64_t> browsers;
+    std::optional<std::uint32_t> request;  ///< our spectate request not answered yet
+    bool joined = false;
+    double sent_at = -1e9;
+    std::optional<double> empty_since;  ///< when its last browser left
+    Message table;                      ///< the table's drawing (once known)
+    Message state;                      ///< the latest state
+    Message last_result;                ///< the latest final shot result
+  };
+  struct Browser {
+    Sink sink;
+    std::string match;
+  };
+
+  void sendTo(std::uint64_t browser, const Message& message);
+  void fanOut(const std::string& match, const Message& message);
+  void sendLobby();
+  /// The table message of `match` from its lobby entry (cached by table name).
+  Message tableOf(const std::string& match);
+  void dropSlow();
+
+  client::GameClient& client_;
+  double join_retry_;
+  std::map<std::uint64_t, Browser> browsers_;
+  std::map<std::string, Watched> watched_;
+  std::map<std::string, Message> tables_;  ///< by table name
+  client::Lobby lobby_entries_;            ///< as the events told it
+  std::map<std::string, Message> states_;  ///< the latest state of every match
+  Message lobby_;
+  bool lobby_changed_ = true;
+  std::set<std::uint64_t> slow_;  ///< browsers whose sink refused a message this pass
+  GatewayStats stats_;
+};
+
+/// Parses a browser's request: {"watch":"<match id>"} (1–64 printable characters, or empty to
+/// stop watching). Empty optional and `error` set when it is not one.
+std::optional<std::string> parseWatch(const std::string& text, std::string& error);
+
+}  // namespace pool::web

@@ -1,0 +1,79 @@
+// The HUD's facts in plain words: the players, whose turn, groups, the score of the race and
+// what happened on the last shot, from the gateway's state, result and lobby messages.
+
+const GROUP = { solids: 'solids', stripes: 'stripes' };
+
+function nameOf(state, seat) {
+  const s = state.seats[seat];
+  return s && s.name ? s.name : `seat ${seat + 1} (free)`;
+}
+
+function sentence(text) {
+  if (!text) return '';
+  const t = text.charAt(0).toUpperCase() + text.slice(1);
+  return /[.!?]$/.test(t) ? t : `${t}.`;
+}
+
+/**
+ * The facts of a match: {title, players, score, turn, groups, last}. `state` is the spectator's
+ * match_state object, `settings` its one-line settings, `result` the latest final shot result (or
+ * null), `entry` the lobby entry (or null). `state.words` and `result.words`: their verdicts in
+ * words.
+ */
+export function describe(state, settings, result, entry) {
+  const a = nameOf(state, 0);
+  const b = nameOf(state, 1);
+  const facts = {};
+  facts.title = `${a} vs ${b}`;
+  facts.players = `${a} against ${b}${settings ? `: ${settings}` : ''}`;
+  const raceTo = entry ? entry.race_to : null;
+  facts.score = `Racks won: ${a} ${state.seats[0].racks_won}, ${b} ${state.seats[1].racks_won}` +
+    (raceTo ? ` (first to ${raceTo} wins)` : '');
+  const shooter = state.shooter >= 0 ? nameOf(state, state.shooter) : null;
+  switch (state.phase) {
+    case 'lobby':
+      facts.turn = 'Waiting for players to sit down.';
+      break;
+    case 'over':
+      facts.turn = state.winner >= 0 ? `${nameOf(state, state.winner)} won the match.`
+        : 'The match is over.';
+      break;
+    case 'closed':
+      facts.turn = 'The match was closed.';
+      break;
+    default: {
+      if (!shooter) {
+        facts.turn = 'Waiting for the next shot.';
+      } else if (state.phase === 'break') {
+        facts.turn = `${shooter} to break (rack ${state.rack + 1}).`;
+      } else if (state.ball_in_hand === 'anywhere') {
+        facts.turn = `${shooter} to shoot, with the cue ball in hand anywhere on the table.`;
+      } else if (state.ball_in_hand === 'behind_head_string') {
+        facts.turn = `${shooter} to shoot, with the cue ball in hand behind the head string.`;
+      } else {
+        facts.turn = `${shooter} to shoot.`;
+      }
+    }
+  }
+  const groups = state.seats.map((s, i) => {
+    const g = GROUP[s.group];
+    const fouls = s.fouls ? `, ${s.fouls} foul${s.fouls === 1 ? '' : 's'}` : '';
+    return g ? `${nameOf(state, i)} has the ${g}, ${s.balls_left} left${fouls}` : null;
+  });
+  facts.groups = groups.every((g) => g === null)
+    ? (state.phase === 'open' || state.phase === 'break' ? 'Open table: no groups yet.' : '')
+    : `${groups.filter((g) => g).join('; ')}.`;
+  // The verdict as the game's HUD words it, each "seat N" named.
+  const words = state.words || (result ? result.words : '');
+  const named = (words || '').replace(/\bseat ([01])\b/g, (_, n) => nameOf(state, Number(n)));
+  facts.last = named ? `Last shot: ${sentence(named)}` : 'No shot played yet.';
+  return facts;
+}
+
+/** A lobby entry in words: "Alice vs Bob, 8-ball, race to 1 (in play)". */
+export function describeEntry(entry) {
+  const [a, b] = entry.players;
+  const who = a || b ? `${a || 'a free seat'} vs ${b || 'a free seat'}` : 'a free table';
+  const phase = entry.in_play ? 'in play' : entry.phase === 'over' ? 'over' : 'waiting';
+  return `${who}, ${entry.settings} (${phase})`;
+}

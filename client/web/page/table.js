@@ -1,0 +1,169 @@
+// The table and balls in three.js, from the gateway's table message: felt, cushions along the
+// nose lines, wooden rails, pocket holes, the two lamps' spot light and numbered balls, in the
+// game window's colours (linear RGB, as its palette gives them).
+import * as THREE from './three.module.js';
+
+const RAIL_HEIGHT_OVER_NOSE = 1.15;
+
+function linear(rgb) {
+  return new THREE.Color().setRGB(rgb[0], rgb[1], rgb[2], THREE.LinearSRGBColorSpace);
+}
+
+/** A ball's texture: its colour (a band around the body's z for stripes), a white circle with
+ * the number on the body's +x and -x sides, as the game's ball shader draws it. */
+function ballTexture(id, look) {
+  const canvas = document.createElement('canvas');
+  canvas.width = 256;
+  canvas.height = 128;
+  const g = canvas.getContext('2d');
+  const colour = linear(look.colour).getStyle();
+  if (id === 0) {
+    g.fillStyle = linear([0.95, 0.95, 0.92]).getStyle();
+    g.fillRect(0, 0, 256, 128);
+  } else if (look.striped) {
+    g.fillStyle = linear([0.95, 0.95, 0.92]).getStyle();
+    g.fillRect(0, 0, 256, 128);
+    g.fillStyle = colour;
+    g.fillRect(0, 128 / 3, 256, 128 / 3);
+  } else {
+    g.fillStyle = colour;
+    g.fillRect(0, 0, 256, 128);
+  }
+  if (id > 0) {
+    for (const cx of [0, 128, 256]) {
+      g.fillStyle = '#f2f2ea';
+      g.beginPath();
+      g.arc(cx, 64, 17, 0, 2 * Math.PI);
+      g.fill();
+      g.fillStyle = '#101010';
+      g.font = 'bold 20px sans-serif';
+      g.textAlign = 'center';
+      g.textBaseline = 'middle';
+      g.fillText(String(id), cx, 65);
+    }
+  }
+  const texture = new THREE.CanvasTexture(canvas);
+  texture.colorSpace = THREE.SRGBColorSpace;
+  texture.anisotropy = 4;
+  return texture;
+}
+
+/** Builds the scene of one table; returns {scene, balls: Map(id → mesh), outer: [x, y]}. */
+export function buildTable(table) {
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0x151210);
+  const c = table.colours;
+  const cw = table.cushion_width;
+  const rw = table.rail_width;
+  const railTop = table.nose_height * RAIL_HEIGHT_OVER_NOSE;
+  const outer = [table.length / 2 + cw + rw, table.width / 2 + cw + rw];
+
+  // The game's light: an ambient share (0.22 of the albedo) and each lamp's spot cone with its
+  // gain over a felt straight below it. three's Lambert term divides by π: the intensities below
+  // make a point straight under a lamp get `gain` of its albedo, as in the game's shader.
+  scene.add(new THREE.AmbientLight(0xffffff, 0.22 * Math.PI));
+  const lamps = table.lamps;
+  for (const p of lamps.positions) {
+    const spot = new THREE.SpotLight(0xffffff, lamps.gain * Math.PI * p[2] * p[2]);
+    spot.position.set(p[0], p[1], p[2]);
+    spot.target.position.set(p[0], p[1], 0);
+    spot.angle = THREE.MathUtils.degToRad(lamps.outer_deg);
+    spot.penumbra = 1 - lamps.inner_deg / lamps.outer_deg;
+    spot.decay = 2;
+    scene.add(spot, spot.target);
+  }
+
+  const felt = new THREE.MeshLambertMaterial({ color: linear(c.felt) });
+  const cushion = new THREE.MeshLambertMaterial({ color: linear(c.cushion) });
+  const wood = new THREE.MeshLambertMaterial({ color: linear(c.wood) });
+  const pocket = new THREE.MeshBasicMaterial({ color: linear(c.pocket) });
+
+  const bed = new THREE.Mesh(new THREE.PlaneGeometry(table.length + 2 * cw, table.width + 2 * cw),
+    felt);
+  scene.add(bed);
+
+  // Cushions: each nose segment pushed back by the cushion's width, up to the rail's top.
+  for (const nose of table.noses) {
+    const [ax, ay] = nose.a;
+    const [bx, by] = nose.b;
+    const [nx, ny] = nose.normal;
+    const shape = new THREE.Shape([
+      new THREE.Vector2(ax, ay), new THREE.Vector2(bx, by),
+      new THREE.Vector2(bx - nx * cw, by - ny * cw), new THREE.Vector2(ax - nx * cw, ay - ny * cw),
+    ]);
+    const geometry = new THREE.ExtrudeGeometry(shape, { depth: railTop * 0.97, bevelEnabled: false });
+    scene.add(new THREE.Mesh(geometry, cushion));
+  }
+
+  // Rails: a wooden frame round the cushions.
+  const railBox = (sx, sy, x, y) => {
+    const m = new THREE.Mesh(new THREE.BoxGeometry(sx, sy, railTop), wood);
+    m.position.set(x, y, railTop / 2);
+    scene.add(m);
+  };
+  const ix = table.length / 2 + cw;
+  const iy = table.width / 2 + cw;
+  railBox(2 * outer[0], rw, 0, iy + rw / 2);
+  railBox(2 * outer[0], rw, 0, -iy - rw / 2);
+  railBox(rw, 2 * iy, ix + rw / 2, 0);
+  railBox(rw, 2 * iy, -ix - rw / 2, 0);
+
+  // Pockets: the holes, dark, on the bed and over the rails round them.
+  for (const hole of table.holes) {
+    for (const z of [0.0005, railTop + 0.0005]) {
+      const disc = new THREE.Mesh(new THREE.CircleGeometry(hole.radius, 32), pocket);
+      disc.position.set(hole.centre[0], hole.centre[1], z);
+      scene.add(disc);
+    }
+  }
+
+  const balls = new Map();
+  const sphere = new THREE.SphereGeometry(table.ball_radius, 32, 16);
+  sphere.rotateX(Math.PI / 2); // the texture's poles on the body's z, as the game's balls
+  c.balls.forEach((look, id) => {
+    const material = new THREE.MeshLambertMaterial({ map: ballTexture(id, look) });
+    const mesh = new THREE.Mesh(sphere, material);
+    mesh.visible = false;
+    balls.set(id, mesh);
+    scene.add(mesh);
+  });
+  return { scene, balls, outer, railTop };
+}
+
+/** Places the balls: [id, x, y, z, qw, qx, qy, qz, onTable] each; balls off the table hidden. */
+export function placeBalls(balls, list) {
+  const seen = new Set();
+  for (const b of list) {
+    const mesh = balls.get(b[0]);
+    if (!mesh) continue;
+    seen.add(b[0]);
+    mesh.visible = b[8] === 1;
+    mesh.position.set(b[1], b[2], b[3]);
+    mesh.quaternion.set(b[5], b[6], b[7], b[4]);
+  }
+  for (const [id, mesh] of balls) if (!seen.has(id)) mesh.visible = false;
+}
+
+/** A camera looking down on the table, a little tilted, the table's length across the wider side
+ * of the view; fitted so the whole table shows. */
+export function fitCamera(camera, outer, aspect) {
+  const tilt = THREE.MathUtils.degToRad(18);
+  const half = Math.tan(THREE.MathUtils.degToRad(camera.fov / 2));
+  const portrait = aspect < 1;
+  const across = portrait ? outer[1] : outer[0];
+  const along = portrait ? outer[0] : outer[1];
+  const distance = 1.08 * Math.max(along / half, across / (half * aspect)) + 0.1;
+  camera.aspect = aspect;
+  camera.up.set(0, 0, 1);
+  if (portrait) camera.position.set(-distance * Math.sin(tilt), 0, distance * Math.cos(tilt));
+  else camera.position.set(0, -distance * Math.sin(tilt), distance * Math.cos(tilt));
+  camera.lookAt(0, 0, 0);
+  if (portrait) {
+    // Long side up the screen: roll the view so the table's +x points up.
+    camera.up.set(1, 0, 0);
+    camera.lookAt(0, 0, 0);
+  }
+  camera.near = 0.05;
+  camera.far = 20;
+  camera.updateProjectionMatrix();
+}

@@ -1,0 +1,145 @@
+// JSON text of the lobby, tables, states, results and frames for the web page.
+#include "client/web/web_json.h"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "client/app/spoken.h"
+#include "client/render/lamps.h"
+#include "client/render/palette.h"
+#include "client/spectate/json_lines.h"
+#include "protocol/match_settings.h"
+#include "table/table_geometry.h"
+#include "table/table_spec.h"
+
+namespace pool::web {
+namespace {
+
+using nlohmann::json;
+
+json rgb(const glm::vec3& c) {
+  return json::array({c.r, c.g, c.b});
+}
+
+json vec2(const Eigen::Vector2d& v) {
+  return json::array({v.x(), v.y()});
+}
+
+/// One ball as a compact array: id, position (m), orientation (w, x, y, z), on the table (1/0).
+void appendBall(std::string& out, const physics::Ball& b) {
+  fmt::format_to(std::back_inserter(out),
+                 "[{},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{:.5f},{}]", b.id, b.pos.x(),
+                 b.pos.y(), b.pos.z(), b.orient.w(), b.orient.x(), b.orient.y(), b.orient.z(),
+                 physics::onTable(b.state) ? 1 : 0);
+}
+
+std::string ballsArray(const std::vector<physics::Ball>& balls) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (i) out += ',';
+    appendBall(out, balls[i]);
+  }
+  out += ']';
+  return out;
+}
+
+}  // namespace
+
+bool validTableName(const std::string& name) {
+  if (name.empty() || name.size() > 32) return false;
+  for (char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+std::string lobbyJson(const client::Lobby& lobby) {
+  json matches = json::array();
+  for (const auto* e : lobby.entries()) {
+    matches.push_back({{"match", e->match},
+                       {"server", e->server},
+                       {"name", e->name},
+                       {"table", e->table},
+                       {"phase", toString(e->phase)},
+                       {"in_play", protocol::inPlay(e->phase)},
+                       {"players", json::array({e->players[0], e->players[1]})},
+                       {"racks_won", json::array({e->racks_won[0], e->racks_won[1]})},
+                       {"race_to", e->settings.race_to},
+                       {"settings", protocol::describe(e->settings)},
+                       {"spectators", e->spectators}});
+  }
+  return json{{"type", "lobby"}, {"matches", matches}}.dump();
+}
+
+Result<std::string> tableJson(const std::string& table_name) {
+  if (!validTableName(table_name))
+    return Result<std::string>::fail("not a table name: '" + table_name + "'");
+  auto spec = table::loadTableSpec(table_name);
+  if (!spec) return Result<std::string>::fail(spec.error());
+  const table::TableGeometry geometry = table::buildTableGeometry(*spec);
+  json noses = json::array();
+  for (const auto& n : geometry.noses) {
+    noses.push_back(
+        {{"name", n.name}, {"a", vec2(n.a)}, {"b", vec2(n.b)}, {"normal", vec2(n.normal)}});
+  }
+  json holes = json::array();
+  for (const auto& h : geometry.holes) {
+    holes.push_back({{"name", h.name}, {"centre", vec2(h.centre)}, {"radius", h.radius}});
+  }
+  json lamps = json::array();
+  for (const auto& p : render::lampPositions(geometry))
+    lamps.push_back(json::array({p.x, p.y, p.z}));
+  json balls = json::array();
+  for (int id = 0; id <= physics::kMaxBallId; ++id) {
+    const render::BallLook look = render::ballLook(id);
+    balls.push_back({{"colour", rgb(look.colour)}, {"striped", look.striped}});
+  }
+  const json out{{"type", "table"},
+                 {"name", spec->name},
+                 {"length", spec->length},
+                 {"width", spec->width},
+                 {"cushion_width", spec->cushion_width},
+                 {"rail_width", spec->rail_width},
+                 {"nose_height", geometry.nose_height},
+                 {"ball_radius", spec->params.ball_radius},
+                 {"noses", noses},
+                 {"holes", holes},
+                 {"lamps",
+                  {{"positions", lamps},
+                   {"inner_deg", render::kSpotInnerDeg},
+                   {"outer_deg", render::kSpotOuterDeg},
+                   {"gain", render::kLampGain},
+                   {"shade", rgb(render::shadeColour())},
+                   {"bulb", rgb(render::bulbColour())}}},
+                 {"colours",
+                  {{"felt", rgb(render::partLook("slate").colour)},
+                   {"cushion", rgb(render::partLook("cushion_head").colour)},
+                   {"wood", rgb(render::woodColour())},
+                   {"pocket", rgb(render::partLook("pocket_head_left_corner").colour)},
+                   {"balls", balls}}}};
+  return Result<std::string>::ok(out.dump());
+}
+
+std::string stateJson(const client::MatchView& view) {
+  return fmt::format(
+      R"({{"type":"state","match":{},"state":{},"balls":{},"settings":{},"verdict_words":{}}})",
+      json(view.match).dump(), client::matchStateLine(view), ballsArray(view.balls),
+      json(protocol::describe(view.settings)).dump(),
+      json(app::spokenText(view.last_verdict)).dump());
+}
+
+std::string resultJson(const client::ShotReport& report) {
+  return fmt::format(R"({{"type":"result","match":{},"result":{},"verdict_words":{}}})",
+                     json(report.match).dump(), client::shotResultLine(report),
+                     json(app::spokenText(report.verdict_text)).dump());
+}
+
+std::string frameJson(const client::TableFrame& frame) {
+  return fmt::format(R"({{"type":"frame","match":{},"shot":{},"frame":{},"t":{:.5f},"balls":{}}})",
+                     json(frame.match).dump(), frame.shot_number, frame.frame, frame.sim_time,
+                     ballsArray(frame.balls));
+}
+
+}  // namespace pool::web

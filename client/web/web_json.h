@@ -1,0 +1,38 @@
+// The messages pool-web sends to browsers, as JSON text: the lobby, a table's drawing, match
+// states, shot results and table frames.
+#pragma once
+
+#include <string>
+
+#include "client/net/lobby.h"
+#include "client/net/match_types.h"
+#include "core/result.h"
+
+namespace pool::web {
+
+/// True for a table name the gateway may look up: 1–32 of [a-z0-9-], so a name a sample carries
+/// can never reach outside assets/tables.
+bool validTableName(const std::string& name);
+
+/// {"type":"lobby","matches":[{match, server, name, table, phase, players, racks_won, game,
+/// race_to, settings, spectators, in_play}...]}, lowest-numbered first.
+std::string lobbyJson(const client::Lobby& lobby);
+
+/// {"type":"table","name":...,"length","width","cushion_width","rail_width","nose_height",
+/// "ball_radius","noses":[{a,b,normal}],"holes":[{name,centre,radius}],"lamps":{...},
+/// "colours":{...}}: what the page needs to draw the table as the game does (its geometry from
+/// the table spec, the game window's palette and lamps). Fails for an unknown or invalid name.
+Result<std::string> tableJson(const std::string& table_name);
+
+/// {"type":"state","match":...,"state":{the spectator's match_state line},"balls":[...],
+/// "settings":"8-ball, race to 1, ...","verdict_words":the last verdict as the HUD says it}.
+std::string stateJson(const client::MatchView& view);
+
+/// {"type":"result","match":...,"result":{the spectator's shot_result line},"verdict_words":...}.
+std::string resultJson(const client::ShotReport& report);
+
+/// {"type":"frame","match":...,"shot":n,"frame":k,"t":s,"balls":[[id,x,y,z,qw,qx,qy,qz,on]...]}
+/// with positions to 0.01 mm and orientations to 1e-5.
+std::string frameJson(const client::TableFrame& frame);
+
+}  // namespace pool::web

@@ -1,0 +1,100 @@
+// pool-web: the web spectator's gateway. Joins the DDS domain as a spectator and serves the page
+// and its WebSocket stream over HTTP.
+#include <CLI/CLI.hpp>
+#include <boost/asio.hpp>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "client/net/game_client.h"
+#include "client/web/gateway.h"
+#include "client/web/web_server.h"
+
+namespace {
+
+/// The page's folder beside the program: <bin>/../web in a build tree, <bin>/../share/pool/web
+/// installed.
+std::filesystem::path defaultRoot() {
+  std::error_code ec;
+  const auto bin = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
+  for (const auto& candidate : {bin / ".." / "web", bin / ".." / "share" / "pool" / "web"}) {
+    if (std::filesystem::exists(candidate / "index.html", ec)) return candidate.lexically_normal();
+  }
+  return bin / ".." / "share" / "pool" / "web";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::uint32_t domain = 0;
+  pool::web::WebServerOptions options;
+  std::string pins;
+  double stats_every = 0.0;
+  CLI::App app{"pool-web: watch the matches of the DDS domain from a browser"};
+  app.add_option("--domain", domain, "DDS domain id")->check(CLI::Range(0, 232));
+  app.add_option("--bind", options.bind, "address to listen on (default: loopback only)");
+  app.add_option("--port", options.port, "TCP port (0: any free port; the URL is printed)");
+  std::string root;
+  app.add_option("--root", root, "the page's folder (default: beside the program)");
+  app.add_option("--server-pins", pins,
+                 "file of pinned server keys (default: pinned in memory for this run)");
+  std::size_t queue_kib = options.queue_bytes / 1024;
+  app.add_option("--queue-kib", queue_kib,
+                 "a browser's queue of unsent messages, KiB: past it the browser is dropped")
+      ->check(CLI::Range(16, 1 << 20));
+  app.add_option("--max-browsers", options.max_browsers, "WebSocket connections at once")
+      ->check(CLI::Range(1, 10000));
+  app.add_option("--stats", stats_every, "print counters to stderr every S seconds (0: never)");
+  CLI11_PARSE(app, argc, argv);
+  options.queue_bytes = queue_kib * 1024;
+  options.root = root.empty() ? defaultRoot() : std::filesystem::path(root);
+
+  auto files = pool::web::loadPage(options.root);
+  if (!files) {
+    std::cerr << "pool-web: " << files.error() << '\n';
+    return 1;
+  }
+  try {
+    pool::client::GameClient client(
+        {domain, "", "web", pins, [](const std::string& line, bool problem) {
+           std::cerr << "pool-web: " << (problem ? "dropped: " : "") << line << '\n';
+         }});
+    pool::web::Gateway gateway(client);
+    boost::asio::io_context io;
+    pool::web::WebServer server(io, gateway, options, std::move(*files));
+    if (const std::string problem = server.start(); !problem.empty()) {
+      std::cerr << "pool-web: " << problem << '\n';
+      return 1;
+    }
+    std::cout << "pool-web: http://" << options.bind << ":" << server.port() << "/ (domain "
+              << domain << ")" << std::endl;
+
+    boost::asio::signal_set signals(io, SIGINT, SIGTERM);
+    signals.async_wait([&](const boost::system::error_code&, int) { io.stop(); });
+    // DDS is polled on the same thread as the sockets: every 5 ms, a frame's latency at most.
+    const auto start = std::chrono::steady_clock::now();
+    boost::asio::steady_timer tick(io);
+    double last_stats = 0.0;
+    std::function<void()> poll = [&] {
+      const double now =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      gateway.step(now);
+      if (stats_every > 0 && now - last_stats >= stats_every) {
+        last_stats = now;
+        std::cerr << "pool-web: browsers " << gateway.browsers() << ", messages "
+                  << gateway.stats().messages << ", deliveries " << gateway.stats().deliveries
+                  << ", dropped " << server.dropped() << '\n';
+      }
+      tick.expires_after(std::chrono::milliseconds(5));
+      tick.async_wait([&](const boost::system::error_code& ec) {
+        if (!ec) poll();
+      });
+    };
+    poll();
+    io.run();
+  } catch (const std::exception& e) {
+    std::cerr << "pool-web: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

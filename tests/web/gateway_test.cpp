@@ -1,0 +1,202 @@
+// The gateway's fan-out with browsers faked as sinks: late join, one message shared by every
+// browser of a match, bad requests refused without a change, slow browsers dropped alone, table
+// names from the wire kept inside assets/tables.
+#include "client/web/gateway.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "client/web/out_queue.h"
+#include "client/web/web_json.h"
+#include "support/client_fixture.h"
+
+namespace pool::web {
+namespace {
+
+using client::test::ClientIntegrationTest;
+using nlohmann::json;
+
+/// A browser that keeps what it was sent (up to `room` messages; then it says it is full).
+struct FakeBrowser {
+  std::vector<Message> got;
+  std::size_t room = 1000;
+
+  Gateway::Sink sink() {
+    return [this](const Message& m) {
+      if (got.size() >= room) return false;
+      got.push_back(m);
+      return true;
+    };
+  }
+  std::vector<std::string> types() const {
+    std::vector<std::string> out;
+    for (const auto& m : got) out.push_back(json::parse(*m).value("type", ""));
+    return out;
+  }
+  json last() const { return json::parse(*got.back()); }
+};
+
+client::LobbyEntry entry(const std::string& match, const std::string& table = "wpa-9ft") {
+  client::LobbyEntry e;
+  e.match = match;
+  e.server = "srv";
+  e.table = table;
+  e.phase = protocol::MatchPhase::Open;
+  e.players = {"alice", "bob"};
+  e.seats_taken = 2;
+  return e;
+}
+
+client::MatchView state(const std::string& match, std::uint32_t revision) {
+  client::MatchView v;
+  v.match = match;
+  v.revision = revision;
+  v.phase = protocol::MatchPhase::Open;
+  v.seats[0].name = "alice";
+  v.seats[1].name = "bob";
+  v.shooter = 1;
+  v.balls.push_back(physics::restingBall(0, {-0.6, 0.1}, 0.028575));
+  return v;
+}
+
+client::TableFrame frame(const std::string& match, std::uint32_t k) {
+  client::TableFrame f;
+  f.match = match;
+  f.frame = k;
+  f.sim_time = k / 60.0;
+  f.shot_number = 1;
+  f.balls.push_back(physics::restingBall(0, {-0.6 + 0.01 * k, 0.1}, 0.028575));
+  return f;
+}
+
+class GatewayTest : public ClientIntegrationTest {
+ protected:
+  void SetUp() override {
+    ClientIntegrationTest::SetUp();
+    open(client::test::kWebGateway, "web-gateway");
+    client_ = std::make_unique<client::GameClient>(
+        client::ClientOptions{client::test::kWebGateway, "", "web", {}, [](auto&&...) {}});
+    gateway_ = std::make_unique<Gateway>(*client_);
+  }
+  std::unique_ptr<client::GameClient> client_;
+  std::unique_ptr<Gateway> gateway_;
+};
+
+TEST_F(GatewayTest, ALateBrowserGetsTheTableTheLatestStateAndResultThenTheMatchOnly) {
+  FakeBrowser early, late, elsewhere;
+  gateway_->attach(1, early.sink());
+  ASSERT_EQ(early.types(), std::vector<std::string>{"lobby"});
+  gateway_->handle(entry("srv-1"));
+  gateway_->handle(entry("srv-2"));
+  gateway_->step(0.0);  // the lobby changed: every browser hears it
+  EXPECT_EQ(early.last()["matches"].size(), 2u);
+
+  EXPECT_EQ(gateway_->watch(1, "srv-1"), "");
+  gateway_->handle(state("srv-1", 5));
+  client::ShotReport report;
+  report.match = "srv-1";
+  report.accepted = true;
+  report.shot_number = 1;
+  report.verdict_text = "legal; open, seat 1 to shoot";
+  gateway_->handle(report);
+  gateway_->handle(state("srv-2", 9));  // another match: not for this browser
+
+  gateway_->attach(2, late.sink());
+  gateway_->attach(3, elsewhere.sink());
+  ASSERT_EQ(gateway_->watch(2, "srv-1"), "");
+  ASSERT_EQ(gateway_->watch(3, "srv-2"), "");
+  EXPECT_EQ(late.types(),
+            (std::vector<std::string>{"lobby", "watching", "table", "state", "result"}));
+  const json table = json::parse(*late.got[2]);
+  EXPECT_EQ(table["name"], "wpa-9ft");
+  EXPECT_EQ(table["holes"].size(), 6u);
+  EXPECT_EQ(table["colours"]["balls"].size(), 16u);
+  EXPECT_EQ(json::parse(*late.got[3])["state"]["revision"], 5);
+  EXPECT_EQ(json::parse(*elsewhere.got[3])["state"]["revision"], 9);
+
+  // One frame: the same bytes for both watchers of srv-1, nothing for srv-2's.
+  const std::size_t before = elsewhere.got.size();
+  gateway_->handle(frame("srv-1", 3));
+  ASSERT_EQ(early.types().back(), "frame");
+  ASSERT_EQ(late.types().back(), "frame");
+  EXPECT_EQ(early.got.back().get(), late.got.back().get()) << "one message shared, not copied";
+  EXPECT_EQ(elsewhere.got.size(), before);
+  const json f = late.last();
+  EXPECT_EQ(f["shot"], 1);
+  EXPECT_NEAR(f["balls"][0][1].get<double>(), -0.57, 1e-9);
+}
+
+TEST_F(GatewayTest, BadRequestsAreRefusedAndChangeNothing) {
+  FakeBrowser b;
+  gateway_->attach(1, b.sink());
+  gateway_->handle(entry("srv-1"));
+  ASSERT_EQ(gateway_->watch(1, "srv-1"), "");
+  const std::size_t got = b.got.size();
+  EXPECT_NE(gateway_->watch(1, "srv-404"), "");
+  EXPECT_EQ(b.last()["type"], "error");
+  EXPECT_EQ(b.got.size(), got + 1);
+  EXPECT_EQ(gateway_->watchers("srv-1"), 1u) << "a refused watch keeps the match watched";
+
+  std::string error;
+  for (const char* bad : {"", "[]", "{\"watch\":3}", "{\"watch\":\"a b\"}", "{\"seat\":\"srv-1\"}",
+                          "{\"watch\":\"srv-1\",\"shoot\":1}", "not json"}) {
+    EXPECT_FALSE(parseWatch(bad, error)) << bad;
+    EXPECT_FALSE(error.empty()) << bad;
+  }
+  EXPECT_FALSE(parseWatch("{\"watch\":\"" + std::string(65, 'x') + "\"}", error));
+  EXPECT_EQ(parseWatch("{\"watch\":\"srv-1\"}", error).value_or("?"), "srv-1");
+  EXPECT_EQ(parseWatch("{\"watch\":\"\"}", error).value_or("?"), "");
+}
+
+TEST_F(GatewayTest, ATableNameFromTheWireNeverLeavesAssetsTables) {
+  for (const char* bad : {"../../etc/passwd", "/etc/passwd", "wpa-9ft.json", "WPA", "",
+                          "a-very-long-table-name-that-goes-on-and-on"}) {
+    EXPECT_FALSE(validTableName(bad)) << bad;
+    EXPECT_FALSE(tableJson(bad)) << bad;
+  }
+  EXPECT_FALSE(tableJson("no-such-table"));
+  ASSERT_TRUE(tableJson("wpa-7ft"));
+
+  FakeBrowser b;
+  gateway_->attach(1, b.sink());
+  gateway_->handle(entry("srv-1", "../../../etc/passwd"));
+  ASSERT_EQ(gateway_->watch(1, "srv-1"), "");
+  const json said = json::parse(*b.got[2]);
+  EXPECT_EQ(said["type"], "error");
+  EXPECT_NE(said["text"].get<std::string>().find("cannot draw table"), std::string::npos);
+}
+
+TEST_F(GatewayTest, ASlowBrowserIsDroppedAndTheOthersGetEverything) {
+  FakeBrowser slow, fast;
+  gateway_->attach(1, slow.sink());
+  gateway_->attach(2, fast.sink());
+  gateway_->handle(entry("srv-1"));
+  ASSERT_EQ(gateway_->watch(1, "srv-1"), "");
+  ASSERT_EQ(gateway_->watch(2, "srv-1"), "");
+  slow.room = slow.got.size() + 5;
+  for (std::uint32_t k = 1; k <= 50; ++k) gateway_->handle(frame("srv-1", k));
+  EXPECT_EQ(gateway_->browsers(), 1u);
+  EXPECT_EQ(gateway_->watchers("srv-1"), 1u);
+  int frames = 0;
+  for (const auto& t : fast.types()) frames += t == "frame" ? 1 : 0;
+  EXPECT_EQ(frames, 50);
+  EXPECT_EQ(slow.got.size(), slow.room);
+}
+
+TEST(OutQueueTest, HoldsMessagesUpToItsBudgetAndRefusesPastIt) {
+  OutQueue queue(100);
+  const auto msg = [](std::size_t n) { return std::make_shared<const std::string>(n, 'x'); };
+  EXPECT_TRUE(queue.push(msg(60)));
+  EXPECT_TRUE(queue.push(msg(40)));
+  EXPECT_FALSE(queue.push(msg(1)));
+  EXPECT_EQ(queue.size(), 2u);
+  EXPECT_EQ(queue.bytes(), 100u);
+  queue.pop();
+  EXPECT_TRUE(queue.push(msg(50)));
+  EXPECT_EQ(queue.bytes(), 90u);
+  EXPECT_EQ(queue.front()->size(), 40u);
+}
+
+}  // namespace
+}  // namespace pool::web

@@ -1,0 +1,251 @@
+// The web spectator end to end: a server, two bots and pool-web, the page in headless Chromium.
+// Its screenshots show the felt, the balls where the server published them (by the page's own
+// projection) and the players' names; the phone-sized page too.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <thread>
+
+#include "support/chromium_page.h"
+#include "support/client_fixture.h"
+#include "support/display_check.h"
+#include "support/match_recorder.h"
+#include "support/png_image.h"
+
+namespace pool::client::test {
+namespace {
+
+using nlohmann::json;
+
+class WebPageTest : public ClientIntegrationTest {
+ protected:
+  /// pool-web on a free port; its URL once it prints it (empty if it does not in time).
+  std::string startWeb() {
+    ChildProcess& web = start("pool-web",
+                              {"--domain", std::to_string(domain_), "--port", "0", "--root",
+                               std::string(POOL_BIN_DIR) + "/../web"},
+                              "web");
+    const std::regex url("(http://127\\.0\\.0\\.1:[0-9]+/)");
+    const auto deadline = std::chrono::steady_clock::now() + 20s;
+    while (std::chrono::steady_clock::now() < deadline && web.running()) {
+      std::smatch m;
+      const std::string out = web.out();
+      if (std::regex_search(out, m, url)) return m[1];
+      std::this_thread::sleep_for(50ms);
+    }
+    return {};
+  }
+
+  /// Saves `png` beside the test's logs and decodes it.
+  Image decode(const std::string& png, const std::string& name) {
+    const std::string path = file(name);
+    std::ofstream(path, std::ios::binary) << png;
+    ::testing::Test::RecordProperty(name, path);
+    return loadPng(path);
+  }
+};
+
+/// Lit felt: green well above red, blue about 0.72 of green (the game's felt is 0.05, 0.42, 0.20
+/// linear; the green 6 and 14, 0.02, 0.55, 0.08, have blue at about 0.4 of green).
+bool isFelt(const Rgb& p) {
+  return p[1] > 60 && p[1] > p[0] + 40 && p[2] > 0.58 * p[1] && p[2] < 0.88 * p[1];
+}
+
+/// Share of the pixels within `radius` of (cx, cy) for which `test` holds.
+template <class Test>
+double shareIn(const Image& image, double cx, double cy, double radius, Test test) {
+  int all = 0, hits = 0;
+  for (int y = static_cast<int>(cy - radius); y <= static_cast<int>(cy + radius); ++y) {
+    for (int x = static_cast<int>(cx - radius); x <= static_cast<int>(cx + radius); ++x) {
+      if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+      if ((x - cx) * (x - cx) + (y - cy) * (y - cy) > radius * radius) continue;
+      ++all;
+      hits += test(image.at(x, y)) ? 1 : 0;
+    }
+  }
+  return all ? double(hits) / all : 0.0;
+}
+
+TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayers) {
+  if (chromiumPath().empty()) POOL_NO_DISPLAY("no chromium (Debian's chromium package)");
+  open(kWebPage, "web-page");
+  MatchRecorder recorder(kWebPage);
+  startServer({});
+  // Bots that think between shots leave the table at rest long enough to look at it.
+  startBot("alice", 3, {"--think", "2"});
+  startBot("bob", 4, {"--think", "2"});
+  const std::string url = startWeb();
+  ASSERT_FALSE(url.empty()) << logs();
+
+  ASSERT_TRUE(recorder.pump(30s,
+                            [&] {
+                              const MatchView* v = recorder.latest(recorder.firstMatch());
+                              return v && inPlay(v->phase) && v->shot_number >= 1;
+                            }))
+      << "no match in play past its break\n"
+      << logs();
+  const std::string match = recorder.firstMatch();
+
+  ChromiumPage page(file("chromium"), 1100, 700);
+  ASSERT_TRUE(page.started());
+  ASSERT_TRUE(page.open(url + "?match=" + match, 20s)) << page.lastError();
+  ASSERT_TRUE(page.setViewport(1100, 700, false, 20s)) << page.lastError();
+
+  // Wait until the page shows, at rest, the latest state the server published; take the
+  // screenshot then, and keep it only if the state did not change meanwhile.
+  Image shot;
+  MatchView shown;
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  std::string last_status;
+  while (shot.pixels.empty() && std::chrono::steady_clock::now() < deadline) {
+    recorder.pump(100ms);
+    const MatchView* latest = recorder.latest(match);
+    const auto status = page.evaluate("window.poolTest && window.poolTest.status()", 10s);
+    if (!latest || !status || status->is_null()) continue;
+    last_status = status->dump();
+    if ((*status)["revision"] != latest->revision || (*status)["inMotion"] != false ||
+        (*status)["frames"].get<int>() < 3) {
+      continue;
+    }
+    shown = *latest;
+    const std::string png = page.screenshot(20s);
+    const auto after = page.evaluate("window.poolTest.status()", 10s);
+    recorder.pump(10ms);
+    if (png.empty() || !after || (*after)["revision"] != shown.revision ||
+        (*after)["inMotion"] != false || recorder.latest(match)->revision != shown.revision) {
+      continue;
+    }
+    shot = decode(png, "web-page.png");
+  }
+  ASSERT_FALSE(shot.pixels.empty())
+      << "the page never showed the latest state at rest; last " << last_status << "\n"
+      << page.lastError() << logs();
+  ASSERT_EQ(shot.width, 1100);
+
+  // Every ball on the table, projected by the page: a disc of ball there, not felt.
+  const double r = 0.028575;
+  int checked = 0, rings = 0;
+  std::vector<std::array<double, 3>> discs;  // x, y, radius in pixels
+  for (const auto& ball : shown.balls) {
+    if (!physics::onTable(ball.state)) continue;
+    const auto c =
+        page.evaluate("window.poolTest.project(" + std::to_string(ball.pos.x()) + "," +
+                          std::to_string(ball.pos.y()) + "," + std::to_string(ball.pos.z()) + ")",
+                      10s);
+    const auto e =
+        page.evaluate("window.poolTest.project(" + std::to_string(ball.pos.x() + r) + "," +
+                          std::to_string(ball.pos.y()) + "," + std::to_string(ball.pos.z()) + ")",
+                      10s);
+    ASSERT_TRUE(c && e) << page.lastError();
+    const double cx = (*c)[0], cy = (*c)[1];
+    const double pr = std::hypot((*e)[0].get<double>() - cx, (*e)[1].get<double>() - cy);
+    ASSERT_GT(pr, 4.0) << "balls too small to check";
+    discs.push_back({cx, cy, pr});
+    // The inner half of the ball's disc is ball, and a ring just outside it is felt (when no other
+    // ball or pocket is near): a ball drawn more than a few pixels off fails one or the other.
+    const double not_felt =
+        shareIn(shot, cx, cy, 0.55 * pr, [](const Rgb& p) { return !isFelt(p); });
+    EXPECT_GE(not_felt, 0.8) << "ball " << ball.id << " at (" << cx << ", " << cy << ")";
+    bool alone = true;
+    for (const auto& other : shown.balls) {
+      if (other.id == ball.id || !physics::onTable(other.state)) continue;
+      alone = alone && (other.pos - ball.pos).head<2>().norm() > 3.5 * r;
+    }
+    for (double px : {-1.27, 0.0, 1.27}) {
+      for (double py : {-0.635, 0.635}) {
+        alone = alone && std::hypot(ball.pos.x() - px, ball.pos.y() - py) > 0.16;
+      }
+    }
+    if (alone) {
+      int ring = 0, felt = 0;
+      for (int a = 0; a < 48; ++a) {
+        const double t = a * 2 * M_PI / 48;
+        const int x = static_cast<int>(std::lround(cx + 1.3 * pr * std::cos(t)));
+        const int y = static_cast<int>(std::lround(cy + 1.3 * pr * std::sin(t)));
+        if (x < 0 || y < 0 || x >= shot.width || y >= shot.height) continue;
+        ++ring;
+        felt += isFelt(shot.at(x, y)) ? 1 : 0;
+      }
+      EXPECT_GE(felt, 0.9 * ring) << "felt round ball " << ball.id << " at (" << cx << ", " << cy
+                                  << ")";
+      ++rings;
+    }
+    if (ball.id == 0) {
+      EXPECT_GE(shareIn(shot, cx, cy, 0.55 * pr,
+                        [](const Rgb& p) {
+                          return std::min({p[0], p[1], p[2]}) > 150;
+                        }),
+                0.8)
+          << "the cue ball is white";
+    }
+    if (ball.id == 8) {
+      EXPECT_GE(shareIn(shot, cx, cy, 0.55 * pr,
+                        [](const Rgb& p) {
+                          return std::max({p[0], p[1], p[2]}) < 60;
+                        }),
+                0.4)
+          << "the 8 is black";
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 2);
+  EXPECT_GE(rings, 1);
+
+  // The felt: away from every ball, between the lamps and under them.
+  int felt_points = 0;
+  std::vector<std::pair<double, double>> felt_spots;  // table points seen as felt
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {0.0, 0.0}, {-0.6, 0.3}, {0.6, -0.3}, {-0.9, -0.4}, {0.9, 0.4}, {0.3, 0.45}}) {
+    const auto p = page.evaluate(
+        "window.poolTest.project(" + std::to_string(x) + "," + std::to_string(y) + ",0)", 10s);
+    ASSERT_TRUE(p);
+    const double px = (*p)[0], py = (*p)[1];
+    bool clear = true;
+    for (const auto& d : discs) clear = clear && std::hypot(d[0] - px, d[1] - py) > 2.5 * d[2];
+    if (!clear) continue;
+    ++felt_points;
+    felt_spots.emplace_back(x, y);
+    EXPECT_GE(shareIn(shot, px, py, 3, isFelt), 0.9) << "felt at (" << x << ", " << y << ")";
+  }
+  EXPECT_GE(felt_points, 2);
+
+  // The players' names and the turn in words.
+  const auto text = page.evaluate("document.body.innerText", 10s);
+  ASSERT_TRUE(text);
+  const std::string words = text->get<std::string>();
+  EXPECT_NE(words.find("alice"), std::string::npos) << words;
+  EXPECT_NE(words.find("bob"), std::string::npos) << words;
+  ASSERT_GE(shown.shooter, 0);
+  const std::string shooter = shown.seats[static_cast<std::size_t>(shown.shooter)].name;
+  EXPECT_NE(words.find(shooter + " to "), std::string::npos) << words;
+
+  // On a phone: the table above the facts, the whole table in view, the names still there.
+  ASSERT_TRUE(page.setViewport(390, 844, true, 20s)) << page.lastError();
+  std::this_thread::sleep_for(500ms);  // a few animation frames at the new size
+  const auto corner = page.evaluate("window.poolTest.project(1.27, 0.635, 0)", 10s);
+  const auto other = page.evaluate("window.poolTest.project(-1.27, -0.635, 0)", 10s);
+  ASSERT_TRUE(corner && other);
+  for (const auto& p : {*corner, *other}) {
+    EXPECT_GE(p[0].get<double>(), 0.0);
+    EXPECT_LE(p[0].get<double>(), 390.0);
+    EXPECT_GE(p[1].get<double>(), 0.0);
+    EXPECT_LE(p[1].get<double>(), 844.0);
+  }
+  const Image phone = decode(page.screenshot(20s), "web-page-phone.png");
+  ASSERT_EQ(phone.width, 390);
+  ASSERT_FALSE(felt_spots.empty());
+  const auto spot = page.evaluate("window.poolTest.project(" + std::to_string(felt_spots[0].first) +
+                                      "," + std::to_string(felt_spots[0].second) + ",0)",
+                                  10s);
+  ASSERT_TRUE(spot);
+  EXPECT_GE(shareIn(phone, (*spot)[0], (*spot)[1], 3, isFelt), 0.9);
+  const auto phone_text = page.evaluate("document.body.innerText", 10s);
+  ASSERT_TRUE(phone_text);
+  EXPECT_NE(phone_text->get<std::string>().find("alice"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pool::client::test
