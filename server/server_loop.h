@@ -80,6 +80,8 @@ class ServerLoop {
   std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
   void readCommands(double now);
+  /// Practice commands: checked, carried out, answered (never stored).
+  void readPractice(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
   void refused(const std::string& match, const CommandAnswer& answer, double now);

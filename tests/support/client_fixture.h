@@ -44,6 +44,9 @@ enum Domain : std::uint32_t {
   kTenBallRace = 218,
   kShotClock = 219,
   kOpensTable = 123,
+  // Practice tables (practice_table_test): 90–99 are theirs.
+  kPractice = 90,
+  kPracticeAttacks = 91,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
