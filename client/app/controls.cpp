@@ -136,6 +136,17 @@ void Controls::keyDown(Key key, Mods mods) {
     case Key::R:
     case Key::N:
     case Key::F11:
+    case Key::U:
+    case Key::Y:
+    case Key::J:
+    case Key::H:
+    case Key::Num8:
+    case Key::Num9:
+    case Key::Num0:
+    case Key::Backspace:
+    case Key::F5:
+    case Key::F6:
+    case Key::F7:
       requests_.push_back(key);
       break;
     case Key::Space:

@@ -102,8 +102,8 @@ class Controls {
   /// Applies the held keys for `dt` seconds (cue, tip, elevation, power, camera).
   void advance(double dt);
 
-  /// The keys that ask the window for something (R: rematch, N: new game, F11: full screen)
-  /// pressed since the last call, in order.
+  /// The keys that ask the window for something (R: rematch, N: new game, F11: full screen, and
+  /// a practice table's keys) pressed since the last call, in order.
   std::vector<Key> takeRequests();
 
   /// The command of the shot released with Space since the last call, if any.

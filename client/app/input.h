@@ -32,6 +32,18 @@ enum class Key : std::uint8_t {
   N,    ///< a new game at a free table (game over)
   F11,  ///< full screen on/off
   Escape,
+  // A practice table's keys (the window's requests).
+  U,          ///< undo the last change
+  Y,          ///< the last shot again, from the table it was played on
+  J,          ///< the last shot sent (or loaded) from the table as it is
+  H,          ///< ask the bot what it would play
+  Num8,       ///< re-rack 8-ball
+  Num9,       ///< re-rack 9-ball
+  Num0,       ///< re-rack 10-ball
+  Backspace,  ///< clear the table (the cue ball alone)
+  F5,         ///< save the table and the last shot as a scenario file
+  F6,         ///< load a scenario file
+  F7,         ///< the physics pane on/off
 };
 
 /// Modifier keys held with a key.

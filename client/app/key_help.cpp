@@ -22,6 +22,13 @@ const std::vector<KeyHelp>& keyHelp() {
       {"always", "G / V", "aim line and ghost ball / direction arrows"},
       {"always", "P / T / L", "wireframe / textures / lighting"},
       {"game over", "R / N", "rematch / a new game at a free table"},
+      {"practice", "drag the cue ball", "place it anywhere on the slate, always"},
+      {"practice", "U", "undo the last change (a shot, a layout, a rack)"},
+      {"practice", "Y / J", "the last shot again from its table / from the table as it is"},
+      {"practice", "H", "ask the bot what it would play (the cue turns to its aim)"},
+      {"practice", "8 / 9 / 0, Backspace", "re-rack 8-, 9- or 10-ball / clear the table"},
+      {"practice", "F5 / F6", "save the table and the last shot as a scenario / load one"},
+      {"practice", "F7", "the physics pane: this table's coefficients"},
       {"always", "F11", "full screen, on and off"},
       {"always", "F1", "this help and the settings, on and off"},
   };

@@ -43,6 +43,7 @@
 #include "client/ui/window_input.h"
 #include "client/ui/window_log.h"
 #include "client/ui/window_overlay.h"
+#include "client/ui/window_practice.h"
 #include "client/ui/window_script.h"
 #include "client/ui/window_sound.h"
 #include "net/dds_error.h"
@@ -98,8 +99,10 @@ class WindowApp {
                   app::CameraRig(view_.spec.length, view_.spec.width,
                                  static_cast<double>(options.width) / options.height)),
         session_({options.domain, options.name, options.hotseat,
-                  options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
-        sound_(options.mute, settings_.settings.volume) {
+                  options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path(),
+                  std::nullopt}),
+        sound_(options.mute, settings_.settings.volume),
+        practice_(view_, options.practice_file) {
     session_.setListener(&sound_);
     // Under a software renderer the light preset keeps the frame budget (--quality overrides).
     const GLubyte* gl_renderer = glGetString(GL_RENDERER);
@@ -112,7 +115,13 @@ class WindowApp {
     installInput(window_.get(), controls_);
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
-    if (options.play) session_.play(options.match);
+    if (options.practice) {
+      table_options_.practice = true;
+      session_.setTableSettings(table_options_.settings());
+      session_.play("new");
+    } else if (options.play) {
+      session_.play(options.match);
+    }
     if (!options.spectate.empty()) session_.spectate(options.spectate);
   }
 
@@ -166,9 +175,14 @@ class WindowApp {
       aiming_seat_ = -1;
       return;
     }
-    if (controls_.mode() == app::ControlMode::Aiming && shooter == aiming_seat_) return;
+    // A practice table's layout may change under the aim (undo, a rack): the turn starts again.
+    const bool same_table = !v->settings.practice || v->revision == aimed_revision_;
+    if (controls_.mode() == app::ControlMode::Aiming && shooter == aiming_seat_ && same_table) {
+      return;
+    }
     controls_.startTurn(cueBallOf(*v), v->ball_in_hand);
     aiming_seat_ = shooter;
+    aimed_revision_ = v->revision;
     // Ball in hand starts where the rules accept it; the first choice that shoots is preselected.
     if (const auto& at = controls_.aim().cue_ball_at) {
       const auto legal = app::nearestLegalPlacement(v->ball_in_hand, *at, v->balls, view_.context);
@@ -358,14 +372,21 @@ class WindowApp {
     if (in_room_) {
       in_room_ = drawEightBallRoom(room_);
     } else if (stage == app::SessionStage::Lobby || stage == app::SessionStage::Joining) {
-      if (const auto choice =
-              drawLobby(session_.lobby(), stage == app::SessionStage::Joining, options_.hotseat)) {
-        if (choice->kind == LobbyChoice::Kind::Play) session_.play(choice->match);
+      if (const auto choice = drawLobby(session_.lobby(), stage == app::SessionStage::Joining,
+                                        options_.hotseat, table_options_)) {
+        if (choice->kind == LobbyChoice::Kind::Play) {
+          session_.setTableSettings(table_options_.settings());
+          session_.play(choice->match);
+        }
         if (choice->kind == LobbyChoice::Kind::Spectate) session_.spectate(choice->match);
         if (choice->kind == LobbyChoice::Kind::Cancel) session_.leave();
       }
     } else {
-      hudActions(drawHud(hudInput()));
+      HudActions actions = drawHud(hudInput());
+      if (const client::MatchView* v = session_.view()) {
+        practice_.drawPhysicsPane(*v, actions.texts);
+      }
+      hudActions(actions);
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -473,6 +494,14 @@ class WindowApp {
         v && v->phase == client::MatchPhase::Over && session_.stage() == app::SessionStage::Playing;
     for (const app::Key key : controls_.takeRequests()) {
       if (key == app::Key::F11) window_.setFullScreen(!window_.fullScreen());
+      if (session_.stage() == app::SessionStage::Playing) {
+        PracticeOutcome outcome = practice_.key(key, session_, controls_);
+        if (outcome.note) addNote(std::move(*outcome.note));
+        if (outcome.shot && aiming_seat_ >= 0) {
+          controls_.stopAiming();
+          send(std::move(*outcome.shot));
+        }
+      }
       if (!over) continue;
       if (key == app::Key::N) {
         newGame();
@@ -489,6 +518,7 @@ class WindowApp {
     followTurn();
     applyScript();
     requests();
+    if (auto note = practice_.step(session_)) addNote(std::move(*note));
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) {
       startStroke(*shot, now);
@@ -523,6 +553,9 @@ class WindowApp {
   std::optional<app::ScriptPlayer> script_;
   ScriptMouse script_mouse_;
   int aiming_seat_ = -1;
+  std::uint32_t aimed_revision_ = 0;  ///< the state the aim started from (practice tables)
+  TableOptions table_options_;        ///< the lobby's options for a fresh table
+  PracticeDesk practice_;
   std::deque<app::SessionNote> notes_;
   std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)
   std::string placement_problem_;

@@ -31,6 +31,10 @@ struct WindowOptions {
   int width = 1280;
   int height = 720;
   std::string quality = "auto";  ///< drawing preset: auto, full or light (render_options.h)
+  /// Open a practice table of this window's own at once (`pool-client --practice`).
+  bool practice = false;
+  /// Where a practice table's F5 saves and F6 loads a scenario file.
+  std::string practice_file = "practice.json";
 };
 
 /// Runs the window until it is closed, the script quits or `stop` is set. Returns the exit code:

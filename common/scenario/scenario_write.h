@@ -21,7 +21,9 @@ struct ScenarioSource {
 
 /// The scenario as JSON text that parseScenario and `pool-sim` accept: balls at their (x, y),
 /// the shot's yaw and elevation in degrees; every number with the digits that read back to the
-/// same double (the degrees are the one conversion that may move a last bit).
+/// same double, and the degrees chosen (among the neighbours of the plain conversion) so that the
+/// parser's conversion gives back the very radians when such degrees exist: the file then
+/// replays the shot bit for bit.
 std::string scenarioJson(const ScenarioSource& source);
 
 }  // namespace pool::scenario

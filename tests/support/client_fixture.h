@@ -47,6 +47,7 @@ enum Domain : std::uint32_t {
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,
+  kWindowPractice = 92,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
