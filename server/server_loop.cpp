@@ -302,7 +302,10 @@ void ServerLoop::storeChanges(const std::vector<std::string>& closed) {
     stored_.erase(id);
     timedCommit([&] { store_->closeMatch(id); });
   }
-  if (!changed.empty()) {
+  // A practice table is not stored, but its number is used: the counter is kept all the same,
+  // so no id is given twice across a restart.
+  if (!changed.empty() || registry_.opened() != stored_opened_) {
+    stored_opened_ = registry_.opened();
     timedCommit([&] { store_->saveMatches(registry_.serverId(), registry_.opened(), changed); });
   }
 }

@@ -114,6 +114,7 @@ class ServerLoop {
   };
   std::map<std::string, Published> published_;   ///< by match id
   std::map<std::string, std::uint64_t> stored_;  ///< match id -> revision last stored
+  std::uint64_t stored_opened_ = 0;              ///< the match counter as last stored
   admin::AdminListener* admin_ = nullptr;
   AdminDesk* desk_ = nullptr;
   ServerCounters counters_;

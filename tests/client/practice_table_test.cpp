@@ -33,6 +33,7 @@ struct Player {
     for (;;) {
       for (auto& e : client.poll()) {
         if (auto* r = std::get_if<ShotReport>(&e)) reports.push_back(*r);
+        if (auto* a = std::get_if<JoinAnswer>(&e)) answers.push_back(*a);
       }
       if (done()) return true;
       if (std::chrono::steady_clock::now() >= deadline) return false;
@@ -63,6 +64,7 @@ struct Player {
 
   GameClient client;
   std::vector<ShotReport> reports;
+  std::vector<JoinAnswer> answers;
 };
 
 PracticeRequest action(PracticeAction what) {
@@ -351,6 +353,81 @@ TEST_F(PracticeTableTest, StrangersReplaysAndBadValuesAreRefusedAndChangeNothing
     return entry && !entry->standard_physics;
   }));
   EXPECT_TRUE(bitIdentical(ada.state()->balls, before));
+}
+
+TEST_F(PracticeTableTest, AFriendShootsTooAndASpectatorWatches) {
+  open(kPracticeFriend, "practice-friend");
+  startServer({"--fast"});
+  Player ada(kPracticeFriend, "Ada");
+  const std::string match = openPractice(ada);
+  ASSERT_FALSE(match.empty());
+  Player bob(kPracticeFriend, "Bob");
+  Player eve(kPracticeFriend, "Eve");
+  bob.client.requestSeat(match);
+  eve.client.requestSpectate(match);
+  ASSERT_TRUE(bob.pumpUntil([&] { return bob.client.seat() && bob.state(); })) << logs();
+  EXPECT_EQ(bob.client.seat()->seat, 1);
+  // Bob lays out and shoots though Ada shot nothing; Ada's undo takes his shot back; Eve sees it.
+  auto laid = bob.practice(layout());
+  ASSERT_TRUE(laid && laid->accepted) << (laid ? laid->reject_text : "") << logs();
+  auto seq = bob.client.shoot(shot());
+  ASSERT_TRUE(seq);
+  auto bobs = bob.answer(*seq);
+  ASSERT_TRUE(bobs && bobs->accepted) << (bobs ? bobs->reject_text : "") << logs();
+  ASSERT_TRUE(ada.pumpUntil([&] { return ada.state()->shot_number == 1; })) << logs();
+  auto undone = ada.practice(action(PracticeAction::Undo));
+  ASSERT_TRUE(undone && undone->accepted) << logs();
+  ASSERT_TRUE(eve.pumpUntil([&] {
+    const MatchView* v = eve.client.state(match);
+    return v && v->shot_number == 1 && v->undo_depth == 1;
+  })) << logs();
+  EXPECT_EQ(eve.client.state(match)->balls.size(), 3u);
+  EXPECT_EQ(eve.client.state(match)->seats[1].name, "Bob");
+}
+
+TEST_F(PracticeTableTest, ARestartEndsPracticeTablesAndTheServerGoesOn) {
+  open(kPracticeRestart, "practice-restart");
+  const std::string db = file("pool.db");
+  const auto serverRun = [&](int run) -> ChildProcess& {
+    return start("pool-server",
+                 {"--domain", std::to_string(domain_), "--tables", "1", "--server-id", "srv",
+                  "--fast", "--db", db},
+                 "server" + std::to_string(run));
+  };
+  ChildProcess* server = &serverRun(1);
+  Player ada(kPracticeRestart, "Ada");
+  const std::string match = openPractice(ada);
+  ASSERT_FALSE(match.empty());
+  auto laid = ada.practice(layout());
+  ASSERT_TRUE(laid && laid->accepted) << logs();
+  auto seq = ada.client.shoot(shot());
+  ASSERT_TRUE(seq && ada.answer(*seq)) << logs();
+  const std::uint64_t token = ada.client.seat()->token;
+
+  server->kill(SIGKILL);
+  server = &serverRun(2);
+  // The restarted server opens its free table under the next id (srv-1 was its free table, srv-2
+  // the practice table: their numbers are not given again).
+  Player again(kPracticeRestart, "Ada");
+  ASSERT_TRUE(again.pumpUntil([&] { return again.client.lobby().find("srv-3") != nullptr; }))
+      << server->out() << server->err();
+  // The practice table is gone: taking it back is refused.
+  std::optional<JoinAnswer> answer;
+  const std::uint32_t asked = again.client.requestRejoin(match, token, 0);
+  ASSERT_TRUE(again.pumpUntil([&] {
+    for (const auto& a : again.answers) {
+      if (a.request == asked) answer = a;
+    }
+    return answer.has_value();
+  })) << logs();
+  EXPECT_EQ(answer->outcome, JoinOutcome::NoSuchMatch) << answer->reason;
+  // A new practice table opens and works after the restart.
+  const std::string fresh = openPractice(again);
+  ASSERT_FALSE(fresh.empty());
+  EXPECT_NE(fresh, match);  // ids are not reused
+  auto relaid = again.practice(layout());
+  ASSERT_TRUE(relaid && relaid->accepted) << logs();
+  EXPECT_TRUE(server->running());
 }
 
 }  // namespace

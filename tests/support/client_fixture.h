@@ -48,6 +48,8 @@ enum Domain : std::uint32_t {
   kPractice = 90,
   kPracticeAttacks = 91,
   kWindowPractice = 92,
+  kPracticeRestart = 93,
+  kPracticeFriend = 94,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

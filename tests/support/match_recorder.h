@@ -74,15 +74,6 @@ class MatchRecorder {
     }
     return out;
   }
-  /// Every final report of `match`, in arrival order (a practice table's changes share the shot
-  /// number of the last shot, so finals() keeps only the latest of them).
-  std::vector<ShotReport> finalReports(const std::string& match) const {
-    std::vector<ShotReport> out;
-    for (const auto& r : reports_) {
-      if (r.match == match && r.final()) out.push_back(r);
-    }
-    return out;
-  }
   /// The frames of shot `shot` of `match` received, by simulated time.
   std::vector<TableFrame> frames(const std::string& match, std::uint32_t shot) const {
     std::vector<TableFrame> out;

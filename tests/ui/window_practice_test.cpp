@@ -92,8 +92,8 @@ TEST_F(WindowPracticeTest, KeysShootUndoSaveAndRerackAtAPracticeTable) {
 
   // F5 saved the table as it was (after the undo) and the shot: pool-sim gives its events.
   std::optional<ShotReport> stroke;
-  for (const auto& r : recorder.finalReports(match)) {
-    if (!r.events.empty() && !stroke) stroke = r;
+  for (const auto& r : recorder.reports()) {
+    if (r.match == match && r.final() && !r.events.empty() && !stroke) stroke = r;
   }
   ASSERT_TRUE(stroke);
   const ShotReport& shot = *stroke;
