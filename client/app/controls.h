@@ -115,6 +115,15 @@ class Controls {
   /// The ball clicked, waiting for its pocket.
   std::optional<int> pickedBall() const { return picked_ball_; }
 
+  /// A practice table lets the player drag any object ball (a press on one that then moves);
+  /// off, a press on an object ball turns the cue as anywhere else.
+  void setBallDragging(bool on) { ball_dragging_ = on; }
+  /// An object ball dragged and let go since the last call: its id and where it was let go (m,
+  /// kept on the slate; whether the spot is legal is the server's).
+  std::optional<std::pair<int, Eigen::Vector2d>> takeBallMove();
+  /// The object ball being dragged and where it is now, if any.
+  std::optional<std::pair<int, Eigen::Vector2d>> draggedBall() const;
+
   /// The automatic call for the current aim; ignored once the player chose one.
   void suggestCall(const ShotCall& call);
   /// The answer to the rules' pending choice that goes with the next shot.
@@ -137,7 +146,7 @@ class Controls {
   const protocol::CommandLimits& limits() const { return limits_; }
 
  private:
-  enum class Drag : std::uint8_t { None, Cue, View, CueBall };
+  enum class Drag : std::uint8_t { None, Cue, View, CueBall, Ball };
 
   void advanceAim(double dt, int side, int updown, Mods mods);
   /// The heading's change from the arrows held this advance (past their repeat delay).
@@ -180,6 +189,9 @@ class Controls {
   void click(double x, double y);
   ClickTargets targets_;
   std::optional<int> picked_ball_;
+  bool ball_dragging_ = false;
+  std::pair<int, Eigen::Vector2d> dragged_{0, Eigen::Vector2d::Zero()};  ///< with Drag::Ball
+  std::optional<std::pair<int, Eigen::Vector2d>> ball_move_;
   Eigen::Vector2d mouse_ = Eigen::Vector2d::Zero();
   int width_ = 1280;
   int height_ = 720;

@@ -22,7 +22,7 @@ const std::vector<KeyHelp>& keyHelp() {
       {"always", "G / V", "aim line and ghost ball / direction arrows"},
       {"always", "P / T / L", "wireframe / textures / lighting"},
       {"game over", "R / N", "rematch / a new game at a free table"},
-      {"practice", "drag the cue ball", "place it anywhere on the slate, always"},
+      {"practice", "drag any ball", "put it anywhere on the slate (the server checks the spot)"},
       {"practice", "U", "undo the last change (a shot, a layout, a rack)"},
       {"practice", "Y / J", "the last shot again from its table / from the table as it is"},
       {"practice", "H", "ask the bot what it would play (the cue turns to its aim)"},

@@ -300,7 +300,13 @@ class WindowApp {
     if (width <= 0 || height <= 0) return;
     controls_.setViewport(width, height);
     const auto balls = session_.balls(now);
-    const auto shown = withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
+    auto shown = withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
+    // A practice table's ball being dragged is drawn under the cursor.
+    if (const auto dragged = controls_.draggedBall()) {
+      for (auto& b : shown) {
+        if (b.id == dragged->first) b.pos.head<2>() = dragged->second;
+      }
+    }
     if (balls) renderer_.setBalls(sceneBalls(shown));
     auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
     placement_problem_ = std::move(overlay.placement_problem);
@@ -518,6 +524,10 @@ class WindowApp {
     followTurn();
     applyScript();
     requests();
+    controls_.setBallDragging(session_.practiceTable());
+    if (const auto move = controls_.takeBallMove(); move && session_.view()) {
+      practice_.moveBall(*session_.view(), move->first, move->second);
+    }
     if (auto note = practice_.step(session_)) addNote(std::move(*note));
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) {

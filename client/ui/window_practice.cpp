@@ -99,6 +99,18 @@ PracticeOutcome PracticeDesk::key(app::Key key, app::MatchSession& session,
   return out;
 }
 
+void PracticeDesk::moveBall(const client::MatchView& view, int id, const Eigen::Vector2d& at) {
+  PracticeRequest layout = command(PracticeAction::Layout);
+  for (const auto& b : view.balls) {
+    if (b.id == id) {
+      layout.balls.push_back({id, at.x(), at.y()});
+    } else if (physics::onTable(b.state)) {
+      layout.balls.push_back({b.id, b.pos.x(), b.pos.y()});
+    }
+  }
+  queue(std::move(layout));
+}
+
 std::optional<app::SessionNote> PracticeDesk::step(app::MatchSession& session) {
   if (waiting_.empty() || session.inMotion() || session.localShooter() < 0) return std::nullopt;
   PracticeRequest next = std::move(waiting_.front());

@@ -32,6 +32,9 @@ class PracticeDesk {
 
   /// Handles practice key `key` at the session's practice table (nothing elsewhere).
   PracticeOutcome key(app::Key key, app::MatchSession& session, app::Controls& controls);
+  /// Ball `id` dragged to `at` (m): the table as `view` shows it with that ball there, as a
+  /// layout command (the server refuses a spot the rules do not allow).
+  void moveBall(const client::MatchView& view, int id, const Eigen::Vector2d& at);
   /// Sends the next waiting command once the table is free; a refusal to send is a note.
   std::optional<app::SessionNote> step(app::MatchSession& session);
   /// The physics pane (F7) for this frame: sliders of the table's coefficients, Apply and

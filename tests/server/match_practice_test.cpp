@@ -228,6 +228,42 @@ TEST(MatchPracticeTest, CoefficientsChangeThatTableOnly) {
   EXPECT_TRUE(slow->standardPhysics());
 }
 
+TEST(MatchPracticeTest, AnyBallOfARackedTableMovesToAFreeSpot) {
+  // What the window sends when a ball is dragged: every ball where the state shows it, one moved.
+  auto m = practiceTable();
+  ASSERT_TRUE(m->handleShot(stroke(1), 0.0).accepted());  // the break: balls at rest anywhere
+  land(*m);
+  PracticeRequest layout = practice(PracticeAction::Layout, 2);
+  for (const auto& b : m->balls()) {
+    if (!physics::onTable(b.state)) continue;
+    if (b.id == 8) continue;
+    layout.balls.push_back({b.id, b.pos.x(), b.pos.y()});
+  }
+  // The 8 (wherever it went) to a spot no ball covers: the head string's far end.
+  layout.balls.push_back({8, -0.635, 0.6});
+  for (const auto& b : m->balls()) {
+    ASSERT_GT((b.pos.head<2>() - Eigen::Vector2d(-0.635, 0.6)).norm(), 0.06) << "ball " << b.id;
+  }
+  protocol::signPractice(layout, keyOf("a"));
+  const CommandAnswer moved = m->handlePractice(layout, 0.0);
+  ASSERT_TRUE(moved.accepted()) << moved.rejection.text;
+  for (const auto& b : m->balls()) {
+    if (b.id == 8) {
+      EXPECT_EQ(b.pos.head<2>(), Eigen::Vector2d(-0.635, 0.6));
+    }
+  }
+  // And a frozen rack as laid out, one ball dragged off it.
+  auto fresh = practiceTable();
+  PracticeRequest rack_layout = practice(PracticeAction::Layout, 1);
+  for (const auto& b : fresh->balls()) {
+    rack_layout.balls.push_back({b.id, b.pos.x(), b.pos.y()});
+    if (b.id == 5) rack_layout.balls.back() = {5, 0.0, -0.4};
+  }
+  protocol::signPractice(rack_layout, keyOf("a"));
+  const CommandAnswer dragged = fresh->handlePractice(rack_layout, 0.0);
+  EXPECT_TRUE(dragged.accepted()) << dragged.rejection.text;
+}
+
 TEST(MatchPracticeTest, RacksAndClearingAreUndone) {
   auto m = practiceTable();
   const auto eight = m->balls();
