@@ -129,7 +129,10 @@ void MatchSession::startPending() {
     if (!found) return;
     wanted_match_ = *found;
   }
-  const std::size_t count = want_ == Want::Play ? clients_.size() : 1;
+  // A practice table is opened by one player (with two on this screen, the first): two "new"
+  // requests would open two tables.
+  const bool practice = options_.table_settings && options_.table_settings->practice;
+  const std::size_t count = want_ == Want::Play && !practice ? clients_.size() : 1;
   for (std::size_t i = 0; i < count; ++i) sendJoin(i);
 }
 
