@@ -106,6 +106,11 @@ int main(int argc, char** argv) {
                "in $XDG_CONFIG_HOME/pool/players, so a restarted window takes its seat back)");
   app.add_flag("--mute", flags.window.mute, "no sound (window)");
   app.add_flag("--play", flags.window.play, "take a seat at once, skipping the lobby (window)");
+  app.add_flag("--practice", flags.window.practice,
+               "open a practice table of your own at once, skipping the lobby (window)");
+  app.add_option("--practice-file", flags.window.practice_file,
+                 "where a practice table saves (F5) and loads (F6) its scenario file")
+      ->capture_default_str();
   app.add_option("--match", flags.window.match, "with --play: the match to join");
   app.add_option("--script", flags.window.script, "play timed key presses from FILE (window)");
   app.add_option("--capture", flags.window.capture, "write the window's last frame to this PNG");

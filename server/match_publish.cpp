@@ -59,6 +59,7 @@ protocol::LobbyEntry lobbyEntryOf(const Match& match, const std::string& server_
   info.protocol_version = protocol::kProtocolVersion;
   info.settings = match.settings();
   info.racks_won = {match.seats()[0].racks_won, match.seats()[1].racks_won};
+  info.standard_physics = match.standardPhysics();
   return info;
 }
 
@@ -80,6 +81,9 @@ protocol::MatchView matchViewOf(const Match& match, std::optional<double> now) {
   st.shot_clock = left.value_or(-1.0);
   st.shot_clock_total = match.clockTotal();
   st.settings = match.settings();
+  st.standard_physics = match.standardPhysics();
+  st.coefficients = protocol::coefficientsOf(match.table().spec.params);
+  st.undo_depth = static_cast<int>(match.undoDepth());
   st.winner = game.winner;
   st.end = game.end;
   st.last_verdict = match.lastVerdict();
@@ -119,7 +123,7 @@ protocol::ShotReport finalReport(const std::string& match, const ShotReport& rep
   r.game_over = v.game_over;
   r.winner = v.winner;
   r.end = v.end;
-  r.verdict_text = rules::describe(v);
+  r.verdict_text = report.text.empty() ? rules::describe(v) : report.text;
   return r;
 }
 

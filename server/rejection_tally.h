@@ -28,7 +28,7 @@ class RejectionTally {
 
  private:
   static constexpr std::size_t kReasons =
-      static_cast<std::size_t>(protocol::RejectReason::Unsigned) + 1;
+      static_cast<std::size_t>(protocol::RejectReason::BadPractice) + 1;
 
   double period_;
   std::optional<double> since_;  ///< when the first refusal of this period was counted

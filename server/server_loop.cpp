@@ -205,7 +205,30 @@ void ServerLoop::readCommands(double now) {
                  answer.shot_number);
     publishResult(in.match, answer);
   }
+  readPractice(now);
   if (auto summary = rejections_.summary(now)) spdlog::info("{}", *summary);
+}
+
+void ServerLoop::readPractice(double now) {
+  for (auto& in : transport_.takePractice(limits_)) {
+    if (!in.request) {
+      CommandAnswer refusal;
+      refusal.seat = in.seat;
+      refusal.seq = in.seq;
+      refusal.rejection = {in.bad_signature ? Reject::BadSignature : Reject::Malformed, in.problem};
+      refused(in.match, refusal, now);
+      continue;
+    }
+    const CommandAnswer answer = registry_.practice(*in.request, now);
+    if (!answer.accepted()) {
+      refused(in.match, answer, now);
+      continue;
+    }
+    ++counters_.commands_accepted;
+    spdlog::info("practice {} seat {} seq {}: {}", in.match, answer.seat, answer.seq,
+                 protocol::toString(in.request->action));
+    publishResult(in.match, answer);
+  }
 }
 
 void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, double now) {
@@ -249,7 +272,8 @@ void ServerLoop::stepReplay(double now) {
 
 void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match) {
   const Match* m = registry_.find(match);
-  if (!store_ || !answer.record || !m) return;
+  // Practice tables are not kept: a restart ends them (server/README.md).
+  if (!store_ || !answer.record || !m || m->practice()) return;
   double ms = 0.0;
   try {
     ms = timedCommit([&] {
@@ -268,6 +292,7 @@ void ServerLoop::storeChanges(const std::vector<std::string>& closed) {
   if (!store_) return;
   std::vector<MatchSnapshot> changed;
   for (Match* m : registry_.matches()) {
+    if (m->practice()) continue;  // not kept across restarts
     auto& stored = stored_[m->id()];
     if (stored == m->revision()) continue;
     stored = m->revision();
@@ -277,7 +302,10 @@ void ServerLoop::storeChanges(const std::vector<std::string>& closed) {
     stored_.erase(id);
     timedCommit([&] { store_->closeMatch(id); });
   }
-  if (!changed.empty()) {
+  // A practice table is not stored, but its number is used: the counter is kept all the same,
+  // so no id is given twice across a restart.
+  if (!changed.empty() || registry_.opened() != stored_opened_) {
+    stored_opened_ = registry_.opened();
     timedCommit([&] { store_->saveMatches(registry_.serverId(), registry_.opened(), changed); });
   }
 }

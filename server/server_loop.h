@@ -80,6 +80,8 @@ class ServerLoop {
   std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
   void readCommands(double now);
+  /// Practice commands: checked, carried out, answered (never stored).
+  void readPractice(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
   void refused(const std::string& match, const CommandAnswer& answer, double now);
@@ -112,6 +114,7 @@ class ServerLoop {
   };
   std::map<std::string, Published> published_;   ///< by match id
   std::map<std::string, std::uint64_t> stored_;  ///< match id -> revision last stored
+  std::uint64_t stored_opened_ = 0;              ///< the match counter as last stored
   admin::AdminListener* admin_ = nullptr;
   AdminDesk* desk_ = nullptr;
   ServerCounters counters_;

@@ -80,8 +80,8 @@ void Controls::stopAiming() {
   mode_ = ControlMode::Watching;
   charging_ = false;
   aim_.power = 0.0;
-  if (drag_ == Drag::CueBall) camera_.hold(false);
-  if (drag_ == Drag::Cue || drag_ == Drag::CueBall) drag_ = Drag::None;
+  if (drag_ == Drag::CueBall || drag_ == Drag::Ball) camera_.hold(false);
+  if (drag_ == Drag::Cue || drag_ == Drag::CueBall || drag_ == Drag::Ball) drag_ = Drag::None;
   camera_.setAiming(false);
 }
 
@@ -137,8 +137,18 @@ void Controls::keyDown(Key key, Mods mods) {
     case Key::N:
     case Key::F11:
     case Key::Q:
-    case Key::Y:
     case Key::I:
+    case Key::U:
+    case Key::Y:
+    case Key::J:
+    case Key::H:
+    case Key::Num8:
+    case Key::Num9:
+    case Key::Num0:
+    case Key::Backspace:
+    case Key::F5:
+    case Key::F6:
+    case Key::F7:
       requests_.push_back(key);
       break;
     case Key::Space:
@@ -278,6 +288,14 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mo
   mouse_ = {x, y};
   if (!down) {
     if (drag_ == Drag::Cue && !moved_) click(x, y);
+    if (drag_ == Drag::Ball) {
+      camera_.hold(false);
+      if (moved_) {
+        ball_move_ = dragged_;
+      } else {
+        click(x, y);  // a press that did not move is a click (a call)
+      }
+    }
     if (drag_ == Drag::CueBall) {
       // The view glides from where it held to behind the ball's new spot.
       camera_.hold(false);
@@ -293,10 +311,21 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mo
     drag_ = Drag::View;
     return;
   }
-  // A press on the cue ball in hand picks it up; anywhere else it turns the cue.
+  // A press on the cue ball in hand picks it up (at a practice table, on any ball); anywhere
+  // else it turns the cue.
   drag_ = Drag::Cue;
-  if (in_hand_ == rules::BallInHand::None) return;
   const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
+  if (ball_dragging_ && hit) {
+    for (const auto& [id, at] : targets_.balls) {
+      if ((*hit - at).norm() < 1.3 * area_.ball_radius) {
+        drag_ = Drag::Ball;
+        dragged_ = {id, at};
+        camera_.hold(true);
+        return;
+      }
+    }
+  }
+  if (in_hand_ == rules::BallInHand::None) return;
   if (hit && (*hit - cueBall().head<2>()).norm() < 2.5 * area_.ball_radius) {
     // The camera holds still while the ball is dragged, so the ball stays under the cursor.
     drag_ = Drag::CueBall;
@@ -328,6 +357,15 @@ void Controls::mouseMove(double x, double y) {
       aim_.yaw -= delta.x() * (fine_drag_ ? rates_.fine_mouse_yaw : rates_.mouse_yaw);
       clampAim(aim_, limits_);
       break;
+    case Drag::Ball:
+      if ((mouse_ - pressed_at_).norm() >= kClickSlop) moved_ = true;
+      if (const auto hit =
+              pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius)) {
+        const double r = area_.ball_radius;
+        dragged_.second = {std::clamp(hit->x(), -(area_.half_length - r), area_.half_length - r),
+                           std::clamp(hit->y(), -(area_.half_width - r), area_.half_width - r)};
+      }
+      return;
     case Drag::CueBall:
       // The view is held, so the ray under the cursor is the one drawn.
       if (const auto hit =
@@ -369,6 +407,17 @@ void Controls::setViewport(int width, int height) {
   width_ = width;
   height_ = height;
   camera_.setAspect(static_cast<double>(width) / height);
+}
+
+std::optional<std::pair<int, Eigen::Vector2d>> Controls::takeBallMove() {
+  auto move = std::move(ball_move_);
+  ball_move_.reset();
+  return move;
+}
+
+std::optional<std::pair<int, Eigen::Vector2d>> Controls::draggedBall() const {
+  if (drag_ != Drag::Ball) return std::nullopt;
+  return dragged_;
 }
 
 std::vector<Key> Controls::takeRequests() {

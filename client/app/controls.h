@@ -103,8 +103,8 @@ class Controls {
   void advance(double dt);
 
   /// The keys that ask the window for something (R: rematch, N: new game, F11: full screen, Q:
-  /// concede, Y / Esc: yes / no to the question asked, I: the instant replay) pressed since the
-  /// last call, in order.
+  /// concede, Y / Esc: yes / no to the question asked, I: the instant replay, and a practice
+  /// table's keys) pressed since the last call, in order.
   std::vector<Key> takeRequests();
 
   /// The command of the shot released with Space since the last call, if any.
@@ -115,6 +115,15 @@ class Controls {
   void setClickTargets(ClickTargets targets) { targets_ = std::move(targets); }
   /// The ball clicked, waiting for its pocket.
   std::optional<int> pickedBall() const { return picked_ball_; }
+
+  /// A practice table lets the player drag any object ball (a press on one that then moves);
+  /// off, a press on an object ball turns the cue as anywhere else.
+  void setBallDragging(bool on) { ball_dragging_ = on; }
+  /// An object ball dragged and let go since the last call: its id and where it was let go (m,
+  /// kept on the slate; whether the spot is legal is the server's).
+  std::optional<std::pair<int, Eigen::Vector2d>> takeBallMove();
+  /// The object ball being dragged and where it is now, if any.
+  std::optional<std::pair<int, Eigen::Vector2d>> draggedBall() const;
 
   /// The automatic call for the current aim; ignored once the player chose one.
   void suggestCall(const ShotCall& call);
@@ -138,7 +147,7 @@ class Controls {
   const protocol::CommandLimits& limits() const { return limits_; }
 
  private:
-  enum class Drag : std::uint8_t { None, Cue, View, CueBall };
+  enum class Drag : std::uint8_t { None, Cue, View, CueBall, Ball };
 
   void advanceAim(double dt, int side, int updown, Mods mods);
   /// The heading's change from the arrows held this advance (past their repeat delay).
@@ -181,6 +190,9 @@ class Controls {
   void click(double x, double y);
   ClickTargets targets_;
   std::optional<int> picked_ball_;
+  bool ball_dragging_ = false;
+  std::pair<int, Eigen::Vector2d> dragged_{0, Eigen::Vector2d::Zero()};  ///< with Drag::Ball
+  std::optional<std::pair<int, Eigen::Vector2d>> ball_move_;
   Eigen::Vector2d mouse_ = Eigen::Vector2d::Zero();
   int width_ = 1280;
   int height_ = 720;

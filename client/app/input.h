@@ -32,9 +32,20 @@ enum class Key : std::uint8_t {
   N,    ///< a new game at a free table (game over)
   F11,  ///< full screen on/off
   Q,    ///< concede the rack (asks first)
-  Y,    ///< yes (to the question asked)
+  Y,    ///< yes (to the question asked); on a practice table with none asked, the last shot again
   I,    ///< the instant replay of the last shot
   Escape,
+  // A practice table's keys (the window's requests).
+  U,          ///< undo the last change
+  J,          ///< the last shot sent (or loaded) from the table as it is
+  H,          ///< ask the bot what it would play
+  Num8,       ///< re-rack 8-ball
+  Num9,       ///< re-rack 9-ball
+  Num0,       ///< re-rack 10-ball
+  Backspace,  ///< clear the table (the cue ball alone)
+  F5,         ///< save the table and the last shot as a scenario file
+  F6,         ///< load a scenario file
+  F7,         ///< the physics pane on/off
 };
 
 /// Modifier keys held with a key.

@@ -25,6 +25,13 @@ const std::vector<KeyHelp>& keyHelp() {
       {"game over", "R / N", "rematch / a new game at a free table"},
       {"always", "I",
        "replay the last shot (the view turns and zooms as ever; a new shot ends it)"},
+      {"practice", "drag any ball", "put it anywhere on the slate (the server checks the spot)"},
+      {"practice", "U", "undo the last change (a shot, a layout, a rack)"},
+      {"practice", "Y / J", "the last shot again from its table / from the table as it is"},
+      {"practice", "H", "ask the bot what it would play (the cue turns to its aim)"},
+      {"practice", "8 / 9 / 0, Backspace", "re-rack 8-, 9- or 10-ball / clear the table"},
+      {"practice", "F5 / F6", "save the table and the last shot as a scenario / load one"},
+      {"practice", "F7", "the physics pane: this table's coefficients"},
       {"always", "F11", "full screen, on and off"},
       {"always", "F1", "this help and the settings, on and off"},
   };

@@ -42,6 +42,7 @@ MatchSession::MatchSession(SessionOptions options) : options_(std::move(options)
     }
     client_options.log = [this](const std::string& line, bool problem) { note(line, problem); };
     clients_.push_back(std::make_unique<client::GameClient>(std::move(client_options), key));
+    clients_.back()->setTableSettings(options_.table_settings);
     saved_.push_back(identity ? identity->seat() : std::nullopt);
     if (saved_.back()) clients_.back()->noteSequence(saved_.back()->last_seq);
     identities_.push_back(std::move(identity));
@@ -144,7 +145,10 @@ void MatchSession::startPending() {
     if (!found) return;
     wanted_match_ = *found;
   }
-  const std::size_t count = want_ == Want::Play ? clients_.size() : 1;
+  // A practice table is opened by one player (with two on this screen, the first): two "new"
+  // requests would open two tables.
+  const bool practice = options_.table_settings && options_.table_settings->practice;
+  const std::size_t count = want_ == Want::Play && !practice ? clients_.size() : 1;
   for (std::size_t i = 0; i < count; ++i) sendJoin(i);
 }
 
@@ -243,7 +247,7 @@ void MatchSession::onReport(const client::ShotReport& report) {
   if (!report.accepted) {
     if (ours && unanswered_ == report.seq) {
       unanswered_.reset();
-      note("shot refused: " + std::string(client::toString(report.reject_reason)) + " " +
+      note("refused: " + std::string(client::toString(report.reject_reason)) + " " +
                report.reject_text,
            true);
     }
@@ -251,7 +255,9 @@ void MatchSession::onReport(const client::ShotReport& report) {
   }
   if (report.final()) {
     last_verdict_ = report.verdict_text;
-    banner_ = shotStory(report, names_);
+    // A practice table's change (no stroke) says what it did in its own words.
+    const bool change = report.events.empty() && practiceTable();
+    banner_ = change ? report.verdict_text : shotStory(report, names_);
     shot_log_.push_back(banner_);
     while (shot_log_.size() > kLogKept) shot_log_.pop_front();
     if (listener_) listener_->onShot(report);
@@ -343,10 +349,40 @@ std::vector<int> MatchSession::localSeats() const {
   return seats;
 }
 
+void MatchSession::setTableSettings(std::optional<protocol::MatchSettings> settings) {
+  options_.table_settings = settings;
+  for (auto& c : clients_) c->setTableSettings(settings);
+}
+
+bool MatchSession::practiceTable() const {
+  const auto* v = view();
+  return v && v->settings.practice;
+}
+
+Result<std::uint32_t> MatchSession::practice(protocol::PracticeRequest request) {
+  const auto* v = view();
+  if (!v || !v->settings.practice) return Result<std::uint32_t>::fail("not a practice table");
+  if (inMotion() || unanswered_) return Result<std::uint32_t>::fail("wait: the table is busy");
+  for (auto& c : clients_) {
+    if (!c->seat() || c->seat()->match != match_) continue;
+    const bool shoots = request.action == protocol::PracticeAction::Again;
+    auto sent = c->practice(std::move(request));
+    if (sent) {
+      unanswered_ = *sent;
+      // Again is a stroke, counted by the next shot number; the others by any new state.
+      awaited_shots_ = shoots ? v->shot_number + 1 : 0;
+    }
+    return sent;
+  }
+  return Result<std::uint32_t>::fail("no seat held here");
+}
+
 int MatchSession::localShooter() const {
   const auto* v = view();
   if (!v || !client::inPlay(v->phase) || v->shooter < 0 || inMotion() || unanswered_) return -1;
   const auto seats = localSeats();
+  // At a practice table every local seat may shoot at any time: the first one aims.
+  if (v->settings.practice) return seats.empty() ? -1 : seats.front();
   return std::find(seats.begin(), seats.end(), v->shooter) != seats.end() ? v->shooter : -1;
 }
 
@@ -355,8 +391,10 @@ Result<std::uint32_t> MatchSession::shoot(int seat, protocol::ShotRequest reques
     if (!c->seat() || c->seat()->match != match_ || c->seat()->seat != seat) continue;
     const client::MatchView* v = view();
     const bool shoots = protocol::optionShoots(request.option);
+    const protocol::ShotRequest copy = request;
     auto sent = c->shoot(std::move(request));
     if (sent) {
+      if (shoots) last_shot_ = copy;
       unanswered_ = *sent;
       // A stroke is counted by the next state's shot number; a re-rack by any new state.
       awaited_shots_ = v && shoots ? v->shot_number + 1 : 0;

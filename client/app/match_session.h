@@ -16,6 +16,8 @@
 #include "client/net/game_client.h"
 #include "client/net/player_identity.h"
 #include "core/result.h"
+#include "protocol/match_settings.h"
+#include "protocol/practice_request.h"
 #include "protocol/shot_request.h"
 
 namespace pool::app {
@@ -28,6 +30,9 @@ struct SessionOptions {
   /// Where each player's key pair and held seat are kept (client/net/player_identity.h), so a
   /// restarted window takes its seat back; empty: a fresh key each run, nothing kept.
   std::filesystem::path identity_dir;
+  /// How to play a table this window opens (game, race, breaks, shot clock, practice); empty:
+  /// the server's defaults.
+  std::optional<protocol::MatchSettings> table_settings;
 };
 
 /// What the session is doing.
@@ -90,6 +95,17 @@ class MatchSession {
   std::vector<int> localSeats() const;
   /// Sends `request` for seat `seat` (one of localSeats). Returns the sequence number.
   Result<std::uint32_t> shoot(int seat, protocol::ShotRequest request);
+  /// How tables this window opens are played from now on (the lobby's options).
+  void setTableSettings(std::optional<protocol::MatchSettings> settings);
+  /// True when the match followed is a practice table.
+  bool practiceTable() const;
+  /// Sends a practice command for the first local seat of the match (a practice table). Returns
+  /// the sequence number; until its answer no shot or other command is sent.
+  Result<std::uint32_t> practice(protocol::PracticeRequest request);
+  /// The last shot this window sent (or a loaded one, setLastShot): what "save" writes and
+  /// "shoot it again from here" plays.
+  const std::optional<protocol::ShotRequest>& lastShot() const { return last_shot_; }
+  void setLastShot(protocol::ShotRequest shot) { last_shot_ = std::move(shot); }
   /// Asks the server for a rematch (every local seat) after a match is over.
   void rematch();
   /// Concedes the rack in play for the local seat: the only one, or (two seats at this screen)
@@ -155,6 +171,7 @@ class MatchSession {
   SeatNames names_ = seatNames(nullptr);
   std::vector<SessionNote> notes_;
   ShotListener* listener_ = nullptr;
+  std::optional<protocol::ShotRequest> last_shot_;
 };
 
 }  // namespace pool::app

@@ -163,6 +163,19 @@ Result<std::uint32_t> GameClient::shoot(protocol::ShotRequest request) {
   return Result<std::uint32_t>::ok(request.seq);
 }
 
+Result<std::uint32_t> GameClient::practice(protocol::PracticeRequest request) {
+  if (!seat_) return Result<std::uint32_t>::fail("no seat held");
+  request.match = seat_->match;
+  request.seat = seat_->seat;
+  request.seat_token = seat_->token;
+  request.seq = ++last_seq_;
+  protocol::signPractice(request, key());
+  if (auto error = transport_->send(request); !error.empty()) {
+    return Result<std::uint32_t>::fail("practice command: " + error);
+  }
+  return Result<std::uint32_t>::ok(request.seq);
+}
+
 void GameClient::noteSequence(std::uint32_t seq) {
   last_seq_ = std::max(last_seq_, seq);
 }

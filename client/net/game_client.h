@@ -21,6 +21,7 @@
 #include "core/result.h"
 #include "net/client_transport.h"
 #include "protocol/key_pair.h"
+#include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
 
@@ -95,6 +96,9 @@ class GameClient {
   /// number, signed with the client's key. Returns the sequence number used, or why nothing was
   /// sent.
   Result<std::uint32_t> shoot(protocol::ShotRequest request);
+  /// Sends a practice command for the seat held, as shoot does (the same sequence); the answer
+  /// is a shot result of that number.
+  Result<std::uint32_t> practice(protocol::PracticeRequest request);
   /// Makes the next sequence number larger than `seq` (after a restart, from a saved number or
   /// from the server's last result for the seat).
   void noteSequence(std::uint32_t seq);

@@ -60,6 +60,26 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::I;
     case GLFW_KEY_ESCAPE:
       return Key::Escape;
+    case GLFW_KEY_U:
+      return Key::U;
+    case GLFW_KEY_J:
+      return Key::J;
+    case GLFW_KEY_H:
+      return Key::H;
+    case GLFW_KEY_8:
+      return Key::Num8;
+    case GLFW_KEY_9:
+      return Key::Num9;
+    case GLFW_KEY_0:
+      return Key::Num0;
+    case GLFW_KEY_BACKSPACE:
+      return Key::Backspace;
+    case GLFW_KEY_F5:
+      return Key::F5;
+    case GLFW_KEY_F6:
+      return Key::F6;
+    case GLFW_KEY_F7:
+      return Key::F7;
     default:
       return std::nullopt;
   }

@@ -152,14 +152,22 @@ void matchPanel(Say& say, const HudInput& in) {
   seatLines(say, v, in, names);
   if (client::inPlay(v.phase) && v.shooter >= 0) {
     const std::string& who = names[static_cast<std::size_t>(v.shooter)];
-    std::string turn = who + " to shoot";
+    std::string turn = v.settings.practice ? "shoot when you like" : who + " to shoot";
     const std::string where = app::inHandWhere(v.ball_in_hand);
     if (!where.empty()) turn += ", cue ball in hand " + where;
     say.wrapped(turn);
   }
-  say.text(app::spoken(rules::toString(v.settings.game)) + ", race to " +
-           std::to_string(v.settings.race_to) + ": " + std::to_string(v.seats[0].racks_won) + "-" +
-           std::to_string(v.seats[1].racks_won));
+  if (v.settings.practice) {
+    say.text("practice table, " + app::spoken(rules::toString(v.settings.game)) + " rack, " +
+             std::to_string(v.undo_depth) + " to undo");
+    if (!v.standard_physics) {
+      say.coloured(kBannerFoul, "not a standard table: its coefficients were changed (F7)");
+    }
+  } else {
+    say.text(app::spoken(rules::toString(v.settings.game)) + ", race to " +
+             std::to_string(v.settings.race_to) + ": " + std::to_string(v.seats[0].racks_won) +
+             "-" + std::to_string(v.seats[1].racks_won));
+  }
   if (v.shot_clock >= 0) {
     say.out().texts.push_back("shot clock: " + fixed(v.shot_clock, 0) + " s");
     clockBar(v);

@@ -14,9 +14,40 @@ std::string playersOf(const client::LobbyEntry& e) {
   return text;
 }
 
+void tableOptions(TableOptions& options) {
+  ImGui::TextUnformatted("A fresh table:");
+  ImGui::SameLine();
+  ImGui::RadioButton("8-ball", &options.game, 8);
+  ImGui::SameLine();
+  ImGui::RadioButton("9-ball", &options.game, 9);
+  ImGui::SameLine();
+  ImGui::RadioButton("10-ball", &options.game, 10);
+  ImGui::SetNextItemWidth(160);
+  ImGui::SliderInt("race to", &options.race_to, 1, protocol::kMaxRace);
+  ImGui::SameLine();
+  ImGui::Checkbox("winner breaks", &options.winner_breaks);
+  ImGui::SetNextItemWidth(160);
+  ImGui::SliderInt("shot clock, s (0: off)", &options.shot_clock, 0, 120);
+  if (options.shot_clock > 0 && options.shot_clock < protocol::kMinShotClock) {
+    options.shot_clock = static_cast<int>(protocol::kMinShotClock);
+  }
+}
+
 }  // namespace
 
-std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, bool hotseat) {
+protocol::MatchSettings TableOptions::settings() const {
+  protocol::MatchSettings s;
+  s.game = rules::gameOfNumber(game).value_or(rules::Game::EightBall);
+  s.practice = practice;
+  if (practice) return s;  // a practice table has no race and no clock
+  s.race_to = race_to;
+  s.breaks = winner_breaks ? protocol::BreakOrder::Winner : protocol::BreakOrder::Alternate;
+  s.shot_clock = shot_clock;
+  return s;
+}
+
+std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, bool hotseat,
+                                     TableOptions& options) {
   std::optional<LobbyChoice> choice;
   const ImGuiViewport* screen = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(screen->WorkSize.x * 0.5f, screen->WorkSize.y * 0.5f),
@@ -29,10 +60,19 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
   } else {
     const char* play = hotseat ? "New game: two players here, first free table"
                                : "New game at the first free table";
-    if (ImGui::Button(play)) choice = LobbyChoice{LobbyChoice::Kind::Play, ""};
+    if (ImGui::Button(play)) {
+      options.practice = false;
+      choice = LobbyChoice{LobbyChoice::Kind::Play, ""};
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Practice at a table of my own")) {
+      options.practice = true;
+      choice = LobbyChoice{LobbyChoice::Kind::Play, "new"};
+    }
     ImGui::SameLine();
     if (ImGui::Button("Watch a match in play"))
       choice = LobbyChoice{LobbyChoice::Kind::Spectate, ""};
+    tableOptions(options);
   }
   ImGui::Separator();
   if (lobby.empty()) ImGui::TextUnformatted("no server found yet (is pool-server running?)");

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "client/net/lobby.h"
+#include "protocol/match_settings.h"
 
 namespace pool::ui {
 
@@ -15,7 +16,23 @@ struct LobbyChoice {
                       ///< (Spectate); Cancel: stop waiting for a match to join
 };
 
-/// Draws the lobby for this frame; `joining` greys the buttons while answers are pending.
-std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, bool hotseat);
+/// How a fresh table is to be played, as the lobby's options set it: game, race, breaks, shot
+/// clock (0: off), or a practice table. Kept by the window between frames.
+struct TableOptions {
+  int game = 8;  ///< 8, 9 or 10
+  int race_to = 1;
+  bool winner_breaks = false;
+  int shot_clock = 0;  ///< s; 0: off
+  bool practice = false;
+
+  /// As the match settings a seat request carries (checked by protocol::checkSettings).
+  protocol::MatchSettings settings() const;
+};
+
+/// Draws the lobby for this frame; `joining` greys the buttons while answers are pending. The
+/// options of a fresh table are edited in `options`; "Practice" sets its `practice` and plays at a
+/// new table, "New game" clears it.
+std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, bool hotseat,
+                                     TableOptions& options);
 
 }  // namespace pool::ui

@@ -43,6 +43,7 @@
 #include "client/ui/window_input.h"
 #include "client/ui/window_log.h"
 #include "client/ui/window_overlay.h"
+#include "client/ui/window_practice.h"
 #include "client/ui/window_script.h"
 #include "client/ui/window_sound.h"
 #include "net/dds_error.h"
@@ -98,8 +99,10 @@ class WindowApp {
                   app::CameraRig(view_.spec.length, view_.spec.width,
                                  static_cast<double>(options.width) / options.height)),
         session_({options.domain, options.name, options.hotseat,
-                  options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path()}),
-        sound_(options.mute, settings_.settings.volume) {
+                  options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path(),
+                  std::nullopt}),
+        sound_(options.mute, settings_.settings.volume),
+        practice_(view_, options.practice_file) {
     session_.setListener(&sound_);
     // Under a software renderer the light preset keeps the frame budget (--quality overrides
     // the settings for this run, until the player chooses another in the settings pane).
@@ -112,7 +115,13 @@ class WindowApp {
     installInput(window_.get(), controls_);
     window_.startImGui();
     controls_.setViewport(options.width, options.height);
-    if (options.play) session_.play(options.match);
+    if (options.practice) {
+      table_options_.practice = true;
+      session_.setTableSettings(table_options_.settings());
+      session_.play("new");
+    } else if (options.play) {
+      session_.play(options.match);
+    }
     if (!options.spectate.empty()) session_.spectate(options.spectate);
   }
 
@@ -166,9 +175,14 @@ class WindowApp {
       aiming_seat_ = -1;
       return;
     }
-    if (controls_.mode() == app::ControlMode::Aiming && shooter == aiming_seat_) return;
+    // A practice table's layout may change under the aim (undo, a rack): the turn starts again.
+    const bool same_table = !v->settings.practice || v->revision == aimed_revision_;
+    if (controls_.mode() == app::ControlMode::Aiming && shooter == aiming_seat_ && same_table) {
+      return;
+    }
     controls_.startTurn(cueBallOf(*v), v->ball_in_hand);
     aiming_seat_ = shooter;
+    aimed_revision_ = v->revision;
     // Ball in hand starts where the rules accept it; the first choice that shoots is preselected.
     if (const auto& at = controls_.aim().cue_ball_at) {
       const auto legal = app::nearestLegalPlacement(v->ball_in_hand, *at, v->balls, view_.context);
@@ -287,9 +301,15 @@ class WindowApp {
     controls_.setViewport(width, height);
     const auto replay = replayed(now);
     const auto balls = replay ? replay : session_.balls(now);
-    const auto shown =
-        replay ? *replay
-               : withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
+    auto shown = replay
+                     ? *replay
+                     : withCueBallAt(balls.value_or(std::vector<physics::Ball>{}), cueBallHeld());
+    // A practice table's ball being dragged is drawn under the cursor.
+    if (const auto dragged = controls_.draggedBall(); dragged && !replay) {
+      for (auto& b : shown) {
+        if (b.id == dragged->first) b.pos.head<2>() = dragged->second;
+      }
+    }
     if (balls) renderer_.setBalls(sceneBalls(shown));
     renderer_.setCue(std::nullopt);
     renderer_.setGhost(std::nullopt);
@@ -368,14 +388,21 @@ class WindowApp {
     if (in_room_) {
       in_room_ = drawEightBallRoom(room_);
     } else if (stage == app::SessionStage::Lobby || stage == app::SessionStage::Joining) {
-      if (const auto choice =
-              drawLobby(session_.lobby(), stage == app::SessionStage::Joining, options_.hotseat)) {
-        if (choice->kind == LobbyChoice::Kind::Play) session_.play(choice->match);
+      if (const auto choice = drawLobby(session_.lobby(), stage == app::SessionStage::Joining,
+                                        options_.hotseat, table_options_)) {
+        if (choice->kind == LobbyChoice::Kind::Play) {
+          session_.setTableSettings(table_options_.settings());
+          session_.play(choice->match);
+        }
         if (choice->kind == LobbyChoice::Kind::Spectate) session_.spectate(choice->match);
         if (choice->kind == LobbyChoice::Kind::Cancel) session_.leave();
       }
     } else {
-      hudActions(drawHud(hudInput()));
+      HudActions actions = drawHud(hudInput());
+      if (const client::MatchView* v = session_.view()) {
+        practice_.drawPhysicsPane(*v, actions.texts);
+      }
+      hudActions(actions);
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -521,7 +548,7 @@ class WindowApp {
   bool canConcede() const {
     const client::MatchView* v = session_.view();
     return v && client::inPlay(v->phase) && session_.stage() == app::SessionStage::Playing &&
-           !session_.localSeats().empty() && !session_.inMotion();
+           !session_.practiceTable() && !session_.localSeats().empty() && !session_.inMotion();
   }
 
   /// The player's yes or no to conceding the rack.
@@ -549,6 +576,15 @@ class WindowApp {
       if (key == app::Key::I) startReplay(1.0, now_);
       if (concede_asked_ && (key == app::Key::Y || key == app::Key::Escape)) {
         answerConcede(key == app::Key::Y);
+        continue;  // the answer to the question, nothing else
+      }
+      if (session_.stage() == app::SessionStage::Playing) {
+        PracticeOutcome outcome = practice_.key(key, session_, controls_);
+        if (outcome.note) addNote(std::move(*outcome.note));
+        if (outcome.shot && aiming_seat_ >= 0) {
+          controls_.stopAiming();
+          send(std::move(*outcome.shot));
+        }
       }
       if (!over) continue;
       if (key == app::Key::N) {
@@ -567,6 +603,11 @@ class WindowApp {
     followTurn();
     applyScript();
     requests();
+    controls_.setBallDragging(session_.practiceTable());
+    if (const auto move = controls_.takeBallMove(); move && session_.view()) {
+      practice_.moveBall(*session_.view(), move->first, move->second);
+    }
+    if (auto note = practice_.step(session_)) addNote(std::move(*note));
     controls_.advance(dt);
     if (auto shot = controls_.takeShot()) {
       session_.replay().stop();  // the live game takes over
@@ -604,6 +645,9 @@ class WindowApp {
   std::optional<app::ScriptPlayer> script_;
   ScriptMouse script_mouse_;
   int aiming_seat_ = -1;
+  std::uint32_t aimed_revision_ = 0;  ///< the state the aim started from (practice tables)
+  TableOptions table_options_;        ///< the lobby's options for a fresh table
+  PracticeDesk practice_;
   std::deque<app::SessionNote> notes_;
   std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)
   std::string placement_problem_;

@@ -33,6 +33,10 @@ struct WindowOptions {
   /// Drawing preset: auto, full or light (render_options.h); empty: the one in the settings file
   /// (auto without one). The settings pane changes it at once.
   std::string quality;
+  /// Open a practice table of this window's own at once (`pool-client --practice`).
+  bool practice = false;
+  /// Where a practice table's F5 saves and F6 loads a scenario file.
+  std::string practice_file = "practice.json";
 };
 
 /// Runs the window until it is closed, the script quits or `stop` is set. Returns the exit code:

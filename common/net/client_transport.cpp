@@ -5,6 +5,7 @@
 #include "net/convert.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
+#include "net/practice_convert.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
@@ -37,6 +38,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         states(participant, state_topic, deeper(qos::state())),
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
+        practice(participant, practice_topic, qos::command()),
         waitset(participant) {
     waitset.attachData(match_info, kLobby);
     waitset.attachData(join_replies, kReplies);
@@ -74,6 +76,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   Reader<pool_MatchState> states;
   Writer<pool_JoinRequest> join_requests;
   Writer<pool_ShotCommand> commands;
+  Writer<pool_PracticeCommand> practice;
   WaitSet waitset;
 };
 
@@ -92,6 +95,10 @@ std::string ClientTransport::send(const protocol::SeatRequest& request) {
 
 std::string ClientTransport::send(const protocol::ShotRequest& command) {
   return e_->commands.writeOrWhy(*toWire(command));
+}
+
+std::string ClientTransport::send(const protocol::PracticeRequest& command) {
+  return e_->practice.writeOrWhy(*toWire(command));
 }
 
 std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {

@@ -12,6 +12,7 @@
 
 #include "core/result.h"
 #include "protocol/match_messages.h"
+#include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
 #include "protocol/server_signature.h"
 #include "protocol/shot_request.h"
@@ -51,6 +52,7 @@ class ClientTransport {
   /// server we are here). Empty when written, else why not.
   std::string send(const protocol::SeatRequest& request);
   std::string send(const protocol::ShotRequest& command);
+  std::string send(const protocol::PracticeRequest& command);
 
   std::vector<Result<LobbyEvent>> takeLobby();
   std::vector<Result<protocol::JoinAnswer>> takeReplies();

@@ -2,6 +2,7 @@
 // strings bounded, balls and events through convert.h.
 #include "net/message_convert.h"
 
+#include <algorithm>
 #include <string_view>
 
 #include "net/convert.h"
@@ -31,6 +32,7 @@ static_assert(pool_REJECT_BAD_CALL == static_cast<int>(RejectReason::BadCall));
 static_assert(pool_REJECT_MATCH_OVER == static_cast<int>(RejectReason::MatchOver));
 static_assert(pool_REJECT_BAD_SIGNATURE == static_cast<int>(RejectReason::BadSignature));
 static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
+static_assert(pool_REJECT_BAD_PRACTICE == static_cast<int>(RejectReason::BadPractice));
 static_assert(pool_END_THREE_FOULS == static_cast<int>(rules::GameEnd::ThreeFouls));
 static_assert(pool_IN_HAND_BEHIND_HEAD_STRING ==
               static_cast<int>(rules::BallInHand::BehindHeadString));
@@ -128,7 +130,7 @@ static_assert(pool_BREAK_WINNER == static_cast<int>(BreakOrder::Winner));
 
 // Settings from their wire fields, checked as the server checks a table's settings.
 Result<MatchSettings> settingsOf(std::uint8_t game, std::uint16_t race_to,
-                                 const pool_BreakOrder& breaks, double shot_clock) {
+                                 const pool_BreakOrder& breaks, double shot_clock, bool practice) {
   MatchSettings s;
   const auto g = rules::gameOfNumber(game);
   const auto order = enumOf<BreakOrder>(breaks, pool_BREAK_WINNER + 1);
@@ -138,6 +140,7 @@ Result<MatchSettings> settingsOf(std::uint8_t game, std::uint16_t race_to,
   s.race_to = race_to;
   s.breaks = *order;
   s.shot_clock = shot_clock;
+  s.practice = practice;
   if (std::string why = checkSettings(s); !why.empty()) return Result<MatchSettings>::fail(why);
   return Result<MatchSettings>::ok(s);
 }
@@ -156,10 +159,12 @@ Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
   for (std::size_t i = 0; i < 2; ++i) entry.players[i] = std::string(textOf(info.players[i]));
   entry.seats_taken = info.seats_taken;
   entry.spectators = info.spectators;
-  auto settings = settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit);
+  auto settings =
+      settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit, info.practice);
   if (!settings) return fail<LobbyEntry>("match info " + entry.match, settings.error());
   entry.settings = *settings;
   entry.racks_won = {info.racks_won[0], info.racks_won[1]};
+  entry.standard_physics = info.standard_physics;
   entry.protocol_version = info.protocol_version;
   return Result<LobbyEntry>::ok(std::move(entry));
 }
@@ -203,10 +208,15 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
     view.seats[i].extensions_left = state.extensions_left[i];
     view.seats[i].fouls_in_row = state.fouls_in_row[i];
   }
-  auto settings = settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit);
+  auto settings =
+      settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit, state.practice);
   if (!settings) return fail<MatchView>(what, settings.error());
   view.settings = *settings;
   view.shot_clock_total = state.shot_clock_total;
+  view.standard_physics = state.standard_physics;
+  std::copy(std::begin(state.coefficients), std::end(state.coefficients),
+            view.coefficients.begin());
+  view.undo_depth = state.undo_depth;
   view.shooter = seatNumber(state.shooter);
   view.breaker = seatNumber(state.breaker);
   view.rack = state.rack;
@@ -231,7 +241,7 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   report.seq = result.seq;
   report.shot_number = result.shot_number;
   report.accepted = result.accepted;
-  const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_UNSIGNED + 1);
+  const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_BAD_PRACTICE + 1);
   const auto in_hand =
       enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
   const auto end = enumOf<rules::GameEnd>(result.end, pool_END_THREE_FOULS + 1);
@@ -290,6 +300,7 @@ Sample<pool_JoinRequest> toWire(const SeatRequest& fields) {
     request.race_to = static_cast<std::uint16_t>(fields.settings->race_to);
     request.breaks = wireOf<pool_BreakOrder>(fields.settings->breaks);
     request.shot_clock = fields.settings->shot_clock;
+    request.practice = fields.settings->practice;
   }
   return sample;
 }
@@ -315,7 +326,7 @@ Result<SeatRequest> fromWire(const pool_JoinRequest& r) {
   const auto signature = elementsOf(r.signature);
   c.signature.assign(signature.begin(), signature.end());
   if (r.has_settings) {
-    auto settings = settingsOf(r.game, r.race_to, r.breaks, r.shot_clock);
+    auto settings = settingsOf(r.game, r.race_to, r.breaks, r.shot_clock, r.practice);
     if (!settings) return Result<SeatRequest>::fail("settings: " + settings.error());
     c.settings = *settings;
   }
@@ -338,6 +349,8 @@ Sample<pool_MatchInfo> toWire(const LobbyEntry& entry) {
   info.race_to = static_cast<std::uint16_t>(entry.settings.race_to);
   info.breaks = wireOf<pool_BreakOrder>(entry.settings.breaks);
   info.shot_clock_limit = entry.settings.shot_clock;
+  info.practice = entry.settings.practice;
+  info.standard_physics = entry.standard_physics;
   for (std::size_t s = 0; s < 2; ++s) {
     info.racks_won[s] = static_cast<std::uint16_t>(entry.racks_won[s]);
   }
@@ -378,6 +391,10 @@ Sample<pool_MatchState> toWire(const MatchView& view) {
   st.shot_clock_limit = view.settings.shot_clock;
   st.shot_clock_total = view.shot_clock_total;
   st.shot_clock_warning = view.clockWarning();
+  st.practice = view.settings.practice;
+  st.standard_physics = view.standard_physics;
+  std::copy(view.coefficients.begin(), view.coefficients.end(), st.coefficients);
+  st.undo_depth = static_cast<std::uint16_t>(view.undo_depth);
   st.shooter = static_cast<std::int16_t>(view.shooter);
   st.breaker = static_cast<std::int16_t>(view.breaker);
   st.rack = view.rack;

@@ -28,6 +28,7 @@ POOL_NET_MESSAGE(pool_ShotCommand, topics::kShotCommand);
 POOL_NET_MESSAGE(pool_ShotResult, topics::kShotResult);
 POOL_NET_MESSAGE(pool_TableSnapshot, topics::kTableSnapshot);
 POOL_NET_MESSAGE(pool_MatchState, topics::kMatchState);
+POOL_NET_MESSAGE(pool_PracticeCommand, topics::kPracticeCommand);
 
 #undef POOL_NET_MESSAGE
 

@@ -11,6 +11,7 @@ ProtocolTopics::ProtocolTopics(std::uint32_t domain)
       command_topic(participant),
       result_topic(participant),
       snapshot_topic(participant),
-      state_topic(participant) {}
+      state_topic(participant),
+      practice_topic(participant) {}
 
 }  // namespace pool::net

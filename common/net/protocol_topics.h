@@ -10,7 +10,7 @@
 
 namespace pool::net {
 
-/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's seven topics.
+/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's eight topics.
 /// Endpoint sets derive from it, so their readers and writers are destroyed before the topics
 /// and the participant. Throws DdsError when DDS refuses one.
 struct ProtocolTopics {
@@ -24,6 +24,7 @@ struct ProtocolTopics {
   Topic<pool_ShotResult> result_topic;
   Topic<pool_TableSnapshot> snapshot_topic;
   Topic<pool_MatchState> state_topic;
+  Topic<pool_PracticeCommand> practice_topic;
 };
 
 }  // namespace pool::net

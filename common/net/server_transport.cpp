@@ -5,6 +5,7 @@
 
 #include "net/message_convert.h"
 #include "net/participant.h"
+#include "net/practice_convert.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
@@ -19,7 +20,7 @@ namespace pool::net {
 
 namespace {
 
-enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2 };
+enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2, kPracticeTag = 3 };
 
 }  // namespace
 
@@ -29,6 +30,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         key(server_key),
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
+        practice(participant, practice_topic, qos::command()),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         results(participant, result_topic, qos::result()),
@@ -37,6 +39,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
+    waitset.attachData(practice, kPracticeTag);
   }
 
   /// Seals `sample` with the server's key and writes it; empty when written, else why not.
@@ -49,6 +52,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   protocol::KeyPair key;
   Reader<pool_JoinRequest> join_requests;
   Reader<pool_ShotCommand> commands;
+  Reader<pool_PracticeCommand> practice;
   Writer<pool_MatchInfo> match_info;
   Writer<pool_JoinReply> join_replies;
   Writer<pool_ShotResult> results;
@@ -98,6 +102,12 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
 std::vector<IncomingCommand> ServerTransport::takeCommands(const protocol::CommandLimits& limits) {
   std::vector<IncomingCommand> out;
   for (auto& sample : e_->commands.take()) out.push_back(readCommand(*sample, limits));
+  return out;
+}
+
+std::vector<IncomingPractice> ServerTransport::takePractice(const protocol::CommandLimits& limits) {
+  std::vector<IncomingPractice> out;
+  for (auto& sample : e_->practice.take()) out.push_back(readPractice(*sample, limits));
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "net/incoming_command.h"
+#include "net/incoming_practice.h"
 #include "protocol/command_limits.h"
 #include "protocol/key_pair.h"
 #include "protocol/match_messages.h"
@@ -53,6 +54,7 @@ class ServerTransport {
 
   std::vector<JoinEvent> takeJoins();
   std::vector<IncomingCommand> takeCommands(const protocol::CommandLimits& limits);
+  std::vector<IncomingPractice> takePractice(const protocol::CommandLimits& limits);
 
   std::string publish(const protocol::LobbyEntry& entry);
   std::string publish(const protocol::MatchView& view);

@@ -5,12 +5,13 @@
 
 namespace pool::net::topics {
 
-inline constexpr std::string_view kMatchInfo = "pool/MatchInfo";          ///< lobby, key match
-inline constexpr std::string_view kJoinRequest = "pool/JoinRequest";      ///< key client
-inline constexpr std::string_view kJoinReply = "pool/JoinReply";          ///< key client
-inline constexpr std::string_view kShotCommand = "pool/ShotCommand";      ///< key match + seat
-inline constexpr std::string_view kShotResult = "pool/ShotResult";        ///< key match + seat
-inline constexpr std::string_view kTableSnapshot = "pool/TableSnapshot";  ///< key match
-inline constexpr std::string_view kMatchState = "pool/MatchState";        ///< key match
+inline constexpr std::string_view kMatchInfo = "pool/MatchInfo";              ///< lobby, key match
+inline constexpr std::string_view kJoinRequest = "pool/JoinRequest";          ///< key client
+inline constexpr std::string_view kJoinReply = "pool/JoinReply";              ///< key client
+inline constexpr std::string_view kShotCommand = "pool/ShotCommand";          ///< key match + seat
+inline constexpr std::string_view kShotResult = "pool/ShotResult";            ///< key match + seat
+inline constexpr std::string_view kTableSnapshot = "pool/TableSnapshot";      ///< key match
+inline constexpr std::string_view kMatchState = "pool/MatchState";            ///< key match
+inline constexpr std::string_view kPracticeCommand = "pool/PracticeCommand";  ///< key match + seat
 
 }  // namespace pool::net::topics

@@ -12,7 +12,7 @@
 namespace pool::protocol {
 
 /// The version of the envelope's byte layout; raised whenever any message's layout changes.
-inline constexpr std::uint32_t kEnvelopeLayoutVersion = 2;
+inline constexpr std::uint32_t kEnvelopeLayoutVersion = 3;
 
 /// Bytes of the header every signed message starts with.
 inline constexpr std::size_t kEnvelopeHeaderBytes = 8 + 4 + 4 + 1 + 41 + 4 + 8 + 4;

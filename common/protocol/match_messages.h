@@ -11,6 +11,7 @@
 #include "physics/ball.h"
 #include "physics/events.h"
 #include "protocol/match_settings.h"
+#include "protocol/practice_request.h"
 #include "protocol/protocol_enums.h"
 #include "protocol/shot_request.h"
 #include "rules/game_state.h"
@@ -32,8 +33,9 @@ struct LobbyEntry {
   int seats_taken = 0;
   std::uint32_t spectators = 0;
   std::uint32_t protocol_version = 0;
-  MatchSettings settings;              ///< game, race, breaks, shot clock
+  MatchSettings settings;              ///< game, race, breaks, shot clock, practice
   std::array<int, 2> racks_won{0, 0};  ///< the score of the race
+  bool standard_physics = true;        ///< false: a practice table's coefficients were changed
 };
 
 /// The answer to a join request (JoinReply).
@@ -82,8 +84,11 @@ struct MatchView {
   int winner = -1;
   rules::GameEnd end = rules::GameEnd::None;
   std::string last_verdict;
-  std::vector<physics::Ball> balls;  ///< the layout at rest, pocketed balls included
-  MatchSettings settings;            ///< game, race, breaks, shot clock
+  std::vector<physics::Ball> balls;     ///< the layout at rest, pocketed balls included
+  MatchSettings settings;               ///< game, race, breaks, shot clock, practice
+  bool standard_physics = true;         ///< false: a practice table's coefficients were changed
+  PracticeCoefficients coefficients{};  ///< the table's, in kPracticeCoefficients' order
+  int undo_depth = 0;                   ///< practice: shots the table can undo
 
   /// The warning is on: the clock runs and little time is left.
   bool clockWarning() const {

@@ -42,10 +42,14 @@ std::string checkSettings(const MatchSettings& s) {
     return "shot clock: must be off (0) or " + std::to_string(static_cast<int>(kMinShotClock)) +
            " to " + std::to_string(static_cast<int>(kMaxShotClock)) + " s";
   }
+  if (s.practice && (s.race_to != 1 || s.shot_clock != 0.0)) {
+    return "practice: a practice table has no race and no shot clock";
+  }
   return "";
 }
 
 std::string describe(const MatchSettings& s) {
+  if (s.practice) return std::string("practice, ") + rules::toString(s.game) + " rack";
   std::string text = std::string(rules::toString(s.game)) + ", race to " +
                      std::to_string(s.race_to) + ", " + toString(s.breaks) + " breaks";
   if (!s.clockOn()) return text + ", no shot clock";

@@ -30,6 +30,10 @@ struct MatchSettings {
   int race_to = 1;  ///< racks to win the match, 1..kMaxRace
   BreakOrder breaks = BreakOrder::Alternate;
   double shot_clock = 0.0;  ///< s per shot; 0: no clock; else kMinShotClock..kMaxShotClock
+  /// A practice table: its players shoot as they like, ball in hand anywhere, and may lay out,
+  /// re-rack and undo (protocol/practice_request.h); `game` is the rack it starts with, and it
+  /// has no race and no shot clock.
+  bool practice = false;
 
   bool clockOn() const { return shot_clock > 0.0; }
   /// s left on the clock from which the warning shows: a third of the time, at most 10 s.

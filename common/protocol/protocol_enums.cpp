@@ -101,6 +101,10 @@ const char* toString(RejectReason reason) {
       return "bad_signature";
     case RejectReason::Unsigned:
       return "unsigned";
+    case RejectReason::NotPractice:
+      return "not_practice";
+    case RejectReason::BadPractice:
+      return "bad_practice";
   }
   return "unknown";
 }
@@ -114,6 +118,8 @@ bool refusedAfterSignature(RejectReason reason) {
     case RejectReason::OptionNotOffered:
     case RejectReason::IllegalPlacement:
     case RejectReason::BadCall:
+    case RejectReason::NotPractice:
+    case RejectReason::BadPractice:
       return true;
     default:
       return false;

@@ -45,6 +45,8 @@ enum class RejectReason : std::uint8_t {
   MatchOver,         ///< the match has a winner (or was closed)
   BadSignature,      ///< not the seat key's signature of the command's fields
   Unsigned,          ///< no signature at all
+  NotPractice,       ///< a practice command at a table that is not a practice table
+  BadPractice,       ///< a practice command the table cannot carry out (nothing to undo, ...)
 };
 
 /// True for the refusals the server makes after a command's signature checked out (its sequence

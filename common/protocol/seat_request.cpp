@@ -39,6 +39,7 @@ std::vector<std::uint8_t> signedBytes(const SeatRequest& r) {
   e.u32(r.settings ? static_cast<std::uint32_t>(s.race_to) : 0);
   e.u8(r.settings ? static_cast<std::uint8_t>(s.breaks) : 0);
   e.f64(r.settings ? s.shot_clock : 0.0);
+  e.u8(r.settings && s.practice ? 1 : 0);
   return e.message();
 }
 

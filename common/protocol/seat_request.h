@@ -47,7 +47,7 @@ bool changesSeat(const SeatRequest& request);
 /// The bytes a seat request's signature covers: the envelope header (tag SeatRequest, match,
 /// seat, token, seq), then action u8 | client length u8 + 40 | request u32 | name length u8 + 32
 /// | public key 32 bytes (zero-padded) | settings given u8 | game number u8 | race u32 | breaks u8
-/// | shot clock f64 (all 0 without settings).
+/// | shot clock f64 | practice u8 (all 0 without settings).
 std::vector<std::uint8_t> signedBytes(const SeatRequest& request);
 
 /// Fills in `request.public_key` with `key`'s public half and `request.signature` with its

@@ -34,29 +34,6 @@ Check checkValues(const Match& match, const protocol::ShotRequest& c) {
   return std::nullopt;
 }
 
-Check checkSeat(const Match& match, const protocol::ShotRequest& c) {
-  if (c.seat != 0 && c.seat != 1) return refuse(Reject::WrongSeat, "seat: must be 0 or 1");
-  const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
-  if (!seat.taken()) return refuse(Reject::WrongSeat, seatName(c.seat) + " is free");
-  if (seat.token != c.seat_token) {
-    return refuse(Reject::BadToken, "the token is not " + seatName(c.seat) + "'s");
-  }
-  return std::nullopt;
-}
-
-Check checkSigned(const protocol::ShotRequest& c) {
-  if (c.signature.empty()) return refuse(Reject::Unsigned, "signature: commands must be signed");
-  return std::nullopt;
-}
-
-Check checkSignature(const Match& match, const protocol::ShotRequest& c) {
-  const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
-  if (protocol::verifyCommand(c, seat.public_key) != protocol::SignatureCheck::Valid) {
-    return refuse(Reject::BadSignature, "signature: not " + seatName(c.seat) + "'s key");
-  }
-  return std::nullopt;
-}
-
 Check checkTurn(const Match& match, const protocol::ShotRequest& c) {
   const MatchPhase phase = match.phase();
   if (phase == MatchPhase::Over || phase == MatchPhase::Closed) {
@@ -65,21 +42,13 @@ Check checkTurn(const Match& match, const protocol::ShotRequest& c) {
   if (phase == MatchPhase::Lobby) {
     return refuse(Reject::NotYourTurn, "the match has not started");
   }
-  if (match.game().shooter != c.seat) {
+  // At a practice table either seated player may shoot at any time.
+  if (!match.practice() && match.game().shooter != c.seat) {
     return refuse(Reject::NotYourTurn, seatName(match.game().shooter) + " is to shoot");
   }
   if (match.inMotion()) {
     return refuse(Reject::BallsMoving,
                   "shot " + std::to_string(match.shotInMotion()) + " is still moving");
-  }
-  return std::nullopt;
-}
-
-Check checkSequence(const Match& match, const protocol::ShotRequest& c) {
-  const std::uint32_t last = match.seats()[static_cast<std::size_t>(c.seat)].last_seq;
-  if (c.seq <= last) {
-    return refuse(Reject::StaleSequence, "seq " + std::to_string(c.seq) +
-                                             " is not above the last used " + std::to_string(last));
   }
   return std::nullopt;
 }
@@ -172,20 +141,47 @@ std::optional<rules::Choice> choiceOf(protocol::ShotOption option) {
   return std::nullopt;
 }
 
+std::optional<Rejection> checkHolder(const Match& match, const HolderFields& c,
+                                     const std::function<bool(const Seat&)>& signed_by) {
+  if (c.seat != 0 && c.seat != 1) return refuse(Reject::WrongSeat, "seat: must be 0 or 1");
+  const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
+  if (!seat.taken()) return refuse(Reject::WrongSeat, seatName(c.seat) + " is free");
+  if (seat.token != c.token) {
+    return refuse(Reject::BadToken, "the token is not " + seatName(c.seat) + "'s");
+  }
+  if (!c.has_signature) {
+    return refuse(Reject::Unsigned, "signature: commands must be signed");
+  }
+  if (c.seq <= seat.last_seq) {
+    return refuse(Reject::StaleSequence, "seq " + std::to_string(c.seq) +
+                                             " is not above the last used " +
+                                             std::to_string(seat.last_seq));
+  }
+  if (!signed_by(seat)) {
+    return refuse(Reject::BadSignature, "signature: not " + seatName(c.seat) + "'s key");
+  }
+  return std::nullopt;
+}
+
 CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& command) {
   CheckedCommand out;
   out.plan.state = match.game();
   out.plan.before = match.balls();
   Check found = checkValues(match, command);
-  if (!found) found = checkSeat(match, command);
-  if (!found) found = checkSigned(command);
-  if (!found) found = checkSequence(match, command);
-  if (!found) found = checkSignature(match, command);
+  if (!found) {
+    found = checkHolder(match,
+                        {command.seat, command.seat_token, command.seq, !command.signature.empty()},
+                        [&](const Seat& seat) {
+                          return protocol::verifyCommand(command, seat.public_key) ==
+                                 protocol::SignatureCheck::Valid;
+                        });
+  }
   out.signature_valid = !found;
   if (!found) found = checkTurn(match, command);
   if (!found) found = checkOption(match, command, out.plan);
   if (!found && out.plan.shoots) found = checkPlacement(match, command, out.plan);
-  if (!found && out.plan.shoots) found = checkCall(match, command, out.plan);
+  // Practice rules ignore calls and safeties.
+  if (!found && out.plan.shoots && !match.practice()) found = checkCall(match, command, out.plan);
   if (found) out.rejection = std::move(*found);
   return out;
 }

@@ -1,6 +1,8 @@
 // The checks of one shot command against its match, in a fixed order, before anything runs.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -10,6 +12,7 @@
 #include "rules/shot.h"
 #include "rules/verdict.h"
 #include "server/match/reject.h"
+#include "server/match/seat.h"
 
 namespace pool::server {
 
@@ -32,6 +35,20 @@ struct CheckedCommand {
   bool signature_valid = false;
 };
 
+/// What names a seat's holding in a signed command.
+struct HolderFields {
+  int seat = 0;
+  std::uint64_t token = 0;
+  std::uint32_t seq = 0;
+  bool has_signature = false;
+};
+
+/// Checks 2–5 below for any signed command of a seat (shot or practice): wrong seat, bad token,
+/// unsigned, stale sequence, then `signed_by(seat)`, the command's signature checked against the
+/// seat's key. Empty when they all pass.
+std::optional<Rejection> checkHolder(const Match& match, const HolderFields& fields,
+                                     const std::function<bool(const Seat&)>& signed_by);
+
 /// The rules' choice an option answers; empty for ShotOption::None.
 std::optional<rules::Choice> choiceOf(protocol::ShotOption option);
 
@@ -47,12 +64,13 @@ std::optional<rules::Choice> choiceOf(protocol::ShotOption option);
 ///    seat holder's own and its number is used up whatever follows (signature_valid), so a
 ///    refused command cannot be replayed later in a state where it would pass;
 /// 6. match over (or closed);
-/// 7. not your turn (or the match has not started);
+/// 7. not your turn (or the match has not started; at a practice table either seat may shoot);
 /// 8. balls moving (a shot's frames are still being published);
 /// 9. option required / not offered (a pending choice is applied here, to copies);
 /// 10. illegal placement: a placement without ball in hand, a refused spot, or no placement
 ///    while the cue ball in hand is off the table;
-/// 11. bad call: the rules' intent check (a legal group's ball and a pocket name, or a safety).
+/// 11. bad call: the rules' intent check (a legal group's ball and a pocket name, or a safety;
+///    none at a practice table).
 /// Nothing is changed; the plan says what to run.
 CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& command);
 

@@ -5,6 +5,7 @@
 
 #include "rules/eight_ball.h"
 #include "rules/game_rules.h"
+#include "rules/practice.h"
 #include "rules/shot.h"
 #include "server/match/command_check.h"
 
@@ -107,6 +108,7 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
     balls_ = rackLayout(table(), rack_seed_ + layouts_ - 1, rules::rackTypeOf(settings_.game));
   }
   touch();
+  if (practice() && !started_) startPractice();
   if (seats_[0].taken() && seats_[1].taken() && !inPlay()) startRack(rack_ % 2 == 0 ? 0 : 1);
   return seated(id_, seat, token);
 }
@@ -167,7 +169,7 @@ JoinAnswer Match::rejoinSeat(int seat, const std::string& client) {
 }
 
 JoinAnswer Match::leaveSeat(int seat) {
-  if (inPlay()) forfeitSeat(seat, "left");
+  if (inPlay() && !practice()) forfeitSeat(seat, "left");
   seats_[static_cast<std::size_t>(seat)] = Seat{};
   touch();
   return seated(id_, seat, 0);
@@ -189,6 +191,8 @@ JoinAnswer Match::rematchSeat(int seat) {
 }
 
 JoinAnswer Match::concedeSeat(int seat) {
+  if (practice())
+    return JoinAnswer::refuse(JoinOutcome::NotAllowed, "a practice table has no rack to concede");
   if (!inPlay() || pending_forfeit_) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "no rack is in play");
   }
@@ -248,6 +252,11 @@ bool Match::expireAway(double now, double grace) {
   for (int seat = 0; seat < 2; ++seat) {
     Seat& s = seats_[static_cast<std::size_t>(seat)];
     if (!s.away_since || now - *s.away_since < grace) continue;
+    if (practice() && !flight_) {
+      s = Seat{};  // nothing to forfeit at a practice table: the seat is free again
+      touch();
+      return true;
+    }
     if (inPlay() && !pending_forfeit_) {
       const Seat& other = seats_[static_cast<std::size_t>(1 - seat)];
       if (!other.away_since) {
@@ -290,7 +299,22 @@ CommandAnswer Match::handleShot(const protocol::ShotRequest& command, double now
   }
   ShotPlan& plan = checked.plan;
   if (!plan.shoots) return applyChoiceNow(command, *plan.choice, balls_);
+  return runPlan(command, std::move(plan), now);
+}
 
+Result<rules::Verdict> Match::judge(const rules::GameState& state, const rules::Shot& shot) const {
+  if (!practice()) return rules::judgeShot(rules(), state, shot, table().context);
+  auto verdict = rules::judgePractice(shot, table().context);
+  // At a practice table the cue ball is always in hand anywhere, for whoever shoots next.
+  if (verdict) verdict->next.ball_in_hand = rules::BallInHand::Anywhere;
+  return verdict;
+}
+
+CommandAnswer Match::runPlan(const protocol::ShotRequest& command, ShotPlan plan, double now) {
+  CommandAnswer answer;
+  answer.seat = command.seat;
+  answer.seq = command.seq;
+  answer.shot_number = shot_number_;
   auto outcome =
       runner_->run(plan.before, command.cue, options_.snapshot_hz, options_.max_shot_time);
   if (!outcome) {
@@ -298,16 +322,17 @@ CommandAnswer Match::handleShot(const protocol::ShotRequest& command, double now
     return answer;
   }
   rules::Shot shot{plan.before, plan.intent, outcome->events, outcome->balls, false};
-  auto verdict = rules::judgeShot(rules(), plan.state, shot, table().context);
+  auto verdict = judge(plan.state, shot);
   if (!verdict) {
     answer.rejection = {Reject::Malformed, "the rules refused the shot: " + verdict.error()};
     return answer;
   }
+  if (practice()) rememberStep(command, plan);
   answer.record = ShotRecord{command,     shot_number_ + 1, true,           plan.state, plan.before,
                              plan.intent, outcome->events,  outcome->balls, *verdict};
   // Accepted: the shot is in motion from now on.
-  ShotReport report{command.seat, command.seq, shot_number_ + 1, std::move(outcome->events),
-                    std::move(*verdict)};
+  ShotReport report{command.seat,        command.seq, shot_number_ + 1, std::move(outcome->events),
+                    std::move(*verdict), {}};
   auto after = tableAfter(report.verdict, outcome->balls);
   auto frames = framesOf(*outcome);
   FramePacer pacer(timesOf(frames), now, options_.unpaced);
@@ -341,7 +366,7 @@ CommandAnswer Match::applyChoiceNow(const protocol::ShotRequest& command,
   answer.seat = command.seat;
   answer.seq = command.seq;
   answer.shot_number = shot_number_;
-  answer.done = ShotReport{command.seat, command.seq, shot_number_, {}, verdict};
+  answer.done = ShotReport{command.seat, command.seq, shot_number_, {}, verdict, {}};
   return answer;
 }
 
@@ -601,7 +626,7 @@ CommandAnswer Match::timeOut() {
   record.verdict = *verdict;
   commit(*verdict, tableAfter(*verdict, std::move(balls)), seat);
   last_verdict_ = "shot clock: " + last_verdict_;
-  answer.done = ShotReport{seat, 0, shot_number_, {}, *verdict};
+  answer.done = ShotReport{seat, 0, shot_number_, {}, *verdict, {}};
   return answer;
 }
 

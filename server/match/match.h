@@ -12,10 +12,12 @@
 
 #include "physics/simulation.h"
 #include "protocol/match_settings.h"
+#include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
 #include "rules/game_rules.h"
 #include "rules/game_state.h"
+#include "server/match/command_check.h"
 #include "server/match/frame_pacer.h"
 #include "server/match/join.h"
 #include "server/match/match_snapshot.h"
@@ -120,6 +122,22 @@ class Match {
   /// The shot number of the shot in motion (0 when none).
   std::uint32_t shotInMotion() const;
 
+  // ---- Practice (match_practice.cpp) ---------------------------------------------------------
+
+  /// True for a practice table (its settings say so): its seated players shoot as they like, the
+  /// cue ball always in hand anywhere, nothing is a foul, and practice commands change its table.
+  bool practice() const { return settings_.practice; }
+  /// Checks `command` like a shot command (seat, token, unsigned, stale sequence, signature:
+  /// from there on its number is used up), then: closed → not a practice table → balls moving →
+  /// the action's own checks (a legal layout with the cue ball, something to undo, a last shot to
+  /// play again, coefficients in their ranges). Refused with nothing changed; accepted, the
+  /// answer is done at once, except Again's, a shot in motion like handleShot's.
+  CommandAnswer handlePractice(const protocol::PracticeRequest& command, double now);
+  /// False once a practice table's coefficients were changed.
+  bool standardPhysics() const { return !custom_physics_; }
+  /// Changes a practice table can undo.
+  std::size_t undoDepth() const { return history_.size(); }
+
   // ---- State ----------------------------------------------------------------------------------
 
   const std::string& id() const { return id_; }
@@ -166,7 +184,23 @@ class Match {
     double view_done = 0.0;  ///< when the shooter's view has shown the shot to rest (s)
   };
 
+  /// A change of a practice table that undo takes back: the table and state before it, and for
+  /// a shot, the command and its checked plan (to play it again).
+  struct PracticeStep {
+    std::vector<physics::Ball> balls;
+    rules::GameState game;
+    std::optional<protocol::ShotRequest> command;
+    std::optional<ShotPlan> plan;
+  };
+
   CommandAnswer accept(const protocol::ShotRequest& command);
+  /// Runs a checked shot (handleShot, or a practice table's Again) and puts it in motion.
+  CommandAnswer runPlan(const protocol::ShotRequest& command, ShotPlan plan, double now);
+  /// The rules' verdict on `shot` played from `state` (practice rules at a practice table).
+  Result<rules::Verdict> judge(const rules::GameState& state, const rules::Shot& shot) const;
+  void startPractice();
+  void rememberStep(std::optional<protocol::ShotRequest> command, std::optional<ShotPlan> plan);
+  Rejection practiceChange(const protocol::PracticeRequest& command);
   CommandAnswer applyChoiceNow(const protocol::ShotRequest& command, const rules::Verdict& verdict,
                                std::vector<physics::Ball> after);
   void land(Flight flight);
@@ -212,6 +246,11 @@ class Match {
   double clock_total_ = 0.0;
   bool clock_warned_ = false;
   std::array<int, 2> extensions_{0, 0};
+  // A practice table: what undo takes back (oldest first), and its own physics once changed.
+  std::vector<PracticeStep> history_;
+  bool custom_physics_ = false;
+  std::optional<protocol::PracticeCoefficients>
+      standard_coefficients_;  ///< before the first change
 };
 
 }  // namespace pool::server

@@ -185,22 +185,40 @@ void MatchRegistry::useKeySeq(const std::vector<std::uint8_t>& key, std::uint32_
   std::erase_if(key_seq_, [&](const auto& entry) { return !seated.count(entry.first); });
 }
 
+namespace {
+
+// A banned key's seat, checked before the signature: nothing is used up, nothing changes.
+template <class Command>
+std::optional<CommandAnswer> bannedCommand(const MatchRegistry& registry, Match* match,
+                                           const Command& command) {
+  if (!match || (command.seat != 0 && command.seat != 1)) return std::nullopt;
+  const Seat& seat = match->seats()[static_cast<std::size_t>(command.seat)];
+  const std::string* why = seat.taken() ? registry.banReason(seat.public_key) : nullptr;
+  if (!why) return std::nullopt;
+  CommandAnswer answer;
+  answer.seat = command.seat;
+  answer.seq = command.seq;
+  answer.rejection = {Reject::MatchOver, "seat " + std::to_string(command.seat) +
+                                             "'s key is banned from the server: " + *why};
+  return answer;
+}
+
+}  // namespace
+
 CommandAnswer MatchRegistry::shoot(const protocol::ShotRequest& command, double now) {
+  return route(command, [&](Match& match) { return match.handleShot(command, now); });
+}
+
+CommandAnswer MatchRegistry::practice(const protocol::PracticeRequest& command, double now) {
+  return route(command, [&](Match& match) { return match.handlePractice(command, now); });
+}
+
+template <class Command, class Handle>
+CommandAnswer MatchRegistry::route(const Command& command, Handle&& handle) {
   Match* match = find(command.match);
-  if (match && (command.seat == 0 || command.seat == 1)) {
-    const Seat& seat = match->seats()[static_cast<std::size_t>(command.seat)];
-    if (const std::string* why = seat.taken() ? banReason(seat.public_key) : nullptr) {
-      // Before the signature check: nothing is used up, nothing changes.
-      CommandAnswer answer;
-      answer.seat = command.seat;
-      answer.seq = command.seq;
-      answer.rejection = {Reject::MatchOver, "seat " + std::to_string(command.seat) +
-                                                 "'s key is banned from the server: " + *why};
-      return answer;
-    }
-  }
+  if (auto banned = bannedCommand(*this, match, command)) return *banned;
   if (match) {
-    CommandAnswer answer = match->handleShot(command, now);
+    CommandAnswer answer = handle(*match);
     if (command.seat == 0 || command.seat == 1) {
       const Seat& seat = match->seats()[static_cast<std::size_t>(command.seat)];
       if (seat.taken()) useKeySeq(seat.public_key, seat.last_seq);

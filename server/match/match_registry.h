@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "protocol/practice_request.h"
 #include "protocol/shot_request.h"
 #include "server/match/join.h"
 #include "server/match/match.h"
@@ -66,6 +67,8 @@ class MatchRegistry {
   /// Routes a shot command to its match (refused with NoSuchMatch when there is none). The wire
   /// fields were checked before (net's validateShotCommand).
   CommandAnswer shoot(const protocol::ShotRequest& command, double now);
+  /// Routes a practice command to its match, as shoot does (Match::handlePractice).
+  CommandAnswer practice(const protocol::PracticeRequest& command, double now);
 
   /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching. True when it
   /// held a seat anywhere.
@@ -103,6 +106,9 @@ class MatchRegistry {
   std::optional<double> nextFrameDue() const;
 
  private:
+  /// A command to its match (banned keys and unknown matches refused), its key's floor raised.
+  template <class Command, class Handle>
+  CommandAnswer route(const Command& command, Handle&& handle);
   JoinAnswer seat(const JoinCommand& command);
   JoinAnswer spectate(const JoinCommand& command);
   JoinAnswer leave(const JoinCommand& command);

@@ -40,6 +40,7 @@ struct ShotReport {
   std::uint32_t shot_number = 0;  ///< shots of the match so far, this one included
   physics::EventLog events;
   rules::Verdict verdict;
+  std::string text;  ///< a practice change's line (instead of the verdict's)
 };
 
 /// The immediate answer to a shot command.

@@ -242,6 +242,38 @@ TEST_F(BallInHandTest, TheBallStaysUnderTheCursorAndTheViewStillWhileDragging) {
   EXPECT_LT((controls.camera().view().target - controls.cueBall()).norm(), 1e-12);
 }
 
+TEST_F(BallInHandTest, AtAPracticeTableAnyBallIsDraggedAndLetGoOnce) {
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::Anywhere);
+  controls.setClickTargets({{{3, Eigen::Vector2d(0.2, 0.1)}}, {}});
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);
+  // Off (a match), a press on the 3 turns the cue; on, it picks the 3 up.
+  const Eigen::Vector2d a = pixelOf(Eigen::Vector2d(0.2, 0.1));
+  const Eigen::Vector2d b = pixelOf(Eigen::Vector2d(0.4, -0.2));
+  controls.mouseButton(MouseButton::Left, true, a.x(), a.y());
+  EXPECT_FALSE(controls.draggedBall());
+  controls.mouseButton(MouseButton::Left, false, a.x(), a.y());
+  controls.setBallDragging(true);
+  controls.mouseButton(MouseButton::Left, true, a.x(), a.y());
+  ASSERT_TRUE(controls.draggedBall());
+  EXPECT_EQ(controls.draggedBall()->first, 3);
+  for (int i = 1; i <= 10; ++i) {
+    const Eigen::Vector2d p = a + (b - a) * (i / 10.0);
+    controls.mouseMove(p.x(), p.y());
+  }
+  EXPECT_FALSE(controls.takeBallMove());  // not before it is let go
+  controls.mouseButton(MouseButton::Left, false, b.x(), b.y());
+  const auto move = controls.takeBallMove();
+  ASSERT_TRUE(move);
+  EXPECT_EQ(move->first, 3);
+  EXPECT_LT((move->second - Eigen::Vector2d(0.4, -0.2)).norm(), 0.003);
+  EXPECT_FALSE(controls.takeBallMove());
+  EXPECT_FALSE(controls.draggedBall());
+  // A press that does not move stays a click (a call), not a move.
+  controls.mouseButton(MouseButton::Left, true, a.x(), a.y());
+  controls.mouseButton(MouseButton::Left, false, a.x(), a.y());
+  EXPECT_FALSE(controls.takeBallMove());
+}
+
 TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {
   controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::BehindHeadString);
   drag(Eigen::Vector2d(-0.8, 0.0), Eigen::Vector2d(-0.5, 0.0));

@@ -91,8 +91,9 @@ TEST(KeyHelpTest, TheHelpNamesEveryKey) {
     EXPECT_EQ(std::string(k.does).find('_'), std::string::npos);
   }
   for (const char* name :
-       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A",  "Z", "S", "X",   "G", "V", "C", "K",
-        "P",    "T",     "L",  "B",    "O",     "F1", "R", "N", "F11", "Q", "Y", "I", "ESC"}) {
+       {"LEFT", "RIGHT", "UP", "DOWN", "SPACE", "A", "Z", "S",  "X",  "G",  "V",
+        "C",    "K",     "P",  "T",    "L",     "B", "O", "F1", "R",  "N",  "F11",
+        "ESC",  "Q",     "I",  "U",    "Y",     "J", "H", "F5", "F6", "F7", "Backspace"}) {
     ASSERT_TRUE(std::string(name) == "ESC" || keyFromName(name)) << name;
     std::string word = name;
     std::transform(word.begin() + 1, word.end(), word.begin() + 1,

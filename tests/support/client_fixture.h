@@ -48,6 +48,12 @@ enum Domain : std::uint32_t {
   kWebGateway = 41,
   kWebSlowBrowser = 43,  ///< (42: web_bench)
   kWebLimits = 44,
+  // Practice tables (practice_table_test): 90–99 are theirs.
+  kPractice = 90,
+  kPracticeAttacks = 91,
+  kWindowPractice = 92,
+  kPracticeRestart = 93,
+  kPracticeFriend = 94,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

@@ -1,0 +1,95 @@
+// Practice commands: their names, signed bytes, field checks and the coefficients they set.
+#include "protocol/practice_request.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <set>
+
+namespace pool::protocol {
+
+const char* toString(PracticeAction action) {
+  switch (action) {
+    case PracticeAction::Layout:
+      return "layout";
+    case PracticeAction::Rack:
+      return "rack";
+    case PracticeAction::Undo:
+      return "undo";
+    case PracticeAction::Again:
+      return "again";
+    case PracticeAction::Physics:
+      return "physics";
+  }
+  return "unknown";
+}
+
+PracticeCoefficients coefficientsOf(const table::PhysicsParams& p) {
+  return {p.u_s, p.u_r, p.spin_decel, p.e_b, p.e_c, p.u_c, p.e_slate};
+}
+
+Result<table::PhysicsParams> withCoefficients(const table::PhysicsParams& base,
+                                              const PracticeCoefficients& values) {
+  table::PhysicsParams out = base;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string_view name = kPracticeCoefficients[i];
+    if (std::string why = table::setParam(out, name, values[i]); !why.empty()) {
+      return Result<table::PhysicsParams>::fail(std::string(name) + ": " + why);
+    }
+  }
+  if (std::string why = table::validate(out); !why.empty()) {
+    return Result<table::PhysicsParams>::fail(why);
+  }
+  return Result<table::PhysicsParams>::ok(out);
+}
+
+std::vector<std::uint8_t> signedBytes(const PracticeRequest& r) {
+  SignedEncoder e({MessageTag::Practice, r.match, r.seat, r.seat_token, r.seq});
+  e.u8(static_cast<std::uint8_t>(r.action));
+  e.u8(static_cast<std::uint8_t>(r.rack));
+  const std::size_t count = std::min<std::size_t>(r.balls.size(), 16);
+  e.u8(static_cast<std::uint8_t>(count));
+  for (std::size_t i = 0; i < 16; ++i) {
+    const BallSpot spot = i < count ? r.balls[i] : BallSpot{};
+    e.u8(static_cast<std::uint8_t>(spot.id));
+    e.f64(spot.x);
+    e.f64(spot.y);
+  }
+  for (double c : r.coefficients) e.f64(c);
+  assert(e.message().size() == kSignedPracticeBytes);
+  return e.message();
+}
+
+void signPractice(PracticeRequest& request, const KeyPair& key) {
+  request.signature = signMessage(signedBytes(request), key);
+}
+
+SignatureCheck verifyPractice(const PracticeRequest& request,
+                              std::span<const std::uint8_t> public_key) {
+  if (request.signature.empty()) return SignatureCheck::Unsigned;
+  return verifyMessage(signedBytes(request), request.signature, public_key);
+}
+
+std::string checkPracticeFields(const PracticeRequest& r, double half_length, double half_width) {
+  if (r.balls.size() > 16) return "balls: at most 16";
+  std::set<int> ids;
+  for (const BallSpot& b : r.balls) {
+    if (b.id < 0 || b.id > 15) return "balls: an id must be 0-15";
+    if (!ids.insert(b.id).second) return "balls: ball " + std::to_string(b.id) + " twice";
+    if (!std::isfinite(b.x) || !std::isfinite(b.y)) return "balls: must be finite numbers";
+    if (std::abs(b.x) > half_length || std::abs(b.y) > half_width) {
+      return "balls: ball " + std::to_string(b.id) + " is off the table";
+    }
+  }
+  if (r.rack != 0 && r.rack != 8 && r.rack != 9 && r.rack != 10) {
+    return "rack: must be 8, 9, 10 or 0 (clear)";
+  }
+  for (std::size_t i = 0; i < r.coefficients.size(); ++i) {
+    if (!std::isfinite(r.coefficients[i])) {
+      return std::string(kPracticeCoefficients[i]) + ": must be a finite number";
+    }
+  }
+  return "";
+}
+
+}  // namespace pool::protocol
