@@ -229,7 +229,7 @@ void ServerLoop::stepReplay(double now) {
   // A replay is for spectators: it starts once someone reads its results, so that nobody who
   // was there from the start misses its first shots to discovery.
   if (!replay_started_) {
-    if (transport_.resultReaders() == 0) return;
+    if (transport_.resultReaders(replay_->matchId()) == 0) return;
     replay_started_ = true;
     spdlog::info("replay {}: a spectator is here, starting", replay_->matchId());
   }

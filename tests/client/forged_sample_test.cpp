@@ -106,6 +106,8 @@ TEST_F(ForgedSampleTest, ImpossibleJumpsAreDroppedEvenWhenSigned) {
   pool::test::Forger server(kImpossibleJumps);
   server.signWith(protocol::generateKeyPair());
   Watcher w(kImpossibleJumps);
+  // The match has a partition of its own: the watcher follows it as a spectator would.
+  w.client.observe("evil-1");
   ASSERT_TRUE(server.publishState("evil-1", 5, 2, pool_PHASE_OPEN, -1));
   ASSERT_TRUE(w.pumpUntil([&] { return w.client.state("evil-1") != nullptr; }));
   ASSERT_EQ(w.client.state("evil-1")->revision, 5u);

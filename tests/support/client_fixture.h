@@ -44,6 +44,8 @@ enum Domain : std::uint32_t {
   kTenBallRace = 218,
   kShotClock = 219,
   kOpensTable = 123,
+  kServerStopped = 60,  ///< 60–69: match partitions, a stopped server
+  kPartitionSwitch = 61,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
