@@ -146,6 +146,11 @@ void ServerLoop::readJoins(double now) {
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
     spdlog::info("{}", *summary);
   }
+  if (heap_trim_.due(joins_.total(), now)) {
+    const long released = releaseFreeHeap();
+    spdlog::info("a flood of joins is over: {:.1f} MB of freed memory given back",
+                 static_cast<double>(released) / (1024.0 * 1024.0));
+  }
 }
 
 std::size_t ServerLoop::trackedClients() const {
