@@ -15,6 +15,7 @@
 #include "net/wire_fields.h"
 #include "net/writer.h"
 
+#include <algorithm>
 #include <iterator>
 #include <utility>
 
@@ -194,6 +195,12 @@ std::vector<Result<protocol::ShotReport>> ClientTransport::takeResults() {
   auto samples = e_->stray_results.take();
   auto followed = e_->fromEachMatch([](const MatchReaders& r) { return r.results.take(); });
   std::move(followed.begin(), followed.end(), std::back_inserter(samples));
+  // A take hands samples out instance by instance (seat 0's, then seat 1's): in the order the
+  // server wrote them instead, so that a seat's answer never comes out after the other seat's
+  // later one.
+  std::stable_sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) {
+    return a.meta().source_time_ns < b.meta().source_time_ns;
+  });
   return e_->readAll<protocol::ShotReport>(std::move(samples));
 }
 
