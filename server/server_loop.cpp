@@ -146,6 +146,11 @@ void ServerLoop::readJoins(double now) {
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
     spdlog::info("{}", *summary);
   }
+  if (heap_trim_.due(joins_.total(), now)) {
+    const long released = releaseFreeHeap();
+    spdlog::info("a flood of joins is over: {:.1f} MB of freed memory given back",
+                 static_cast<double>(released) / (1024.0 * 1024.0));
+  }
 }
 
 std::size_t ServerLoop::trackedClients() const {
@@ -252,7 +257,7 @@ void ServerLoop::stepReplay(double now) {
   // A replay is for spectators: it starts once someone reads its results, so that nobody who
   // was there from the start misses its first shots to discovery.
   if (!replay_started_) {
-    if (transport_.resultReaders() == 0) return;
+    if (transport_.resultReaders(replay_->matchId()) == 0) return;
     replay_started_ = true;
     spdlog::info("replay {}: a spectator is here, starting", replay_->matchId());
   }

@@ -14,6 +14,7 @@
 #include "protocol/command_limits.h"
 #include "server/admin/admin_listener.h"
 #include "server/admin_desk.h"
+#include "server/heap_trim.h"
 #include "server/join_tally.h"
 #include "server/match/join_rate_limit.h"
 #include "server/match/match_registry.h"
@@ -120,6 +121,7 @@ class ServerLoop {
   ServerCounters counters_;
   RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
   JoinTally joins_;            ///< spectators and refused joins: likewise
+  HeapTrim heap_trim_;         ///< gives a flood's freed heap back once it is over
   JoinRateLimit rate_;         ///< join requests per client
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s

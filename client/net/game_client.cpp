@@ -107,7 +107,31 @@ std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, 
   const std::uint32_t number = r.request;
   send(r);
   pending_[number] = PendingJoin{std::move(r), false};
+  refollow();
   return number;
+}
+
+void GameClient::observe(const std::string& match, bool on) {
+  if (on ? observed_.insert(match).second : observed_.erase(match) > 0) refollow();
+}
+
+void GameClient::refollow() {
+  std::vector<std::string> wanted;
+  if (seat_) wanted.push_back(seat_->match);
+  if (watching_) wanted.push_back(*watching_);
+  wanted.insert(wanted.end(), observed_.begin(), observed_.end());
+  for (auto it = pending_.rbegin(); it != pending_.rend(); ++it) {
+    const auto& r = it->second.request;
+    if (r.action != JoinAction::Leave && r.match != protocol::kNewMatch) wanted.push_back(r.match);
+  }
+  std::set<std::string> follow;
+  for (const auto& match : wanted) {
+    if (follow.size() >= net::kMaxFollowed) break;
+    follow.insert(match);
+  }
+  if (follow == transport_->followed()) return;
+  if (auto why = transport_->follow(follow); !why.empty()) note("following matches: " + why);
+  std::erase_if(states_, [&](const auto& entry) { return !follow.count(entry.first); });
 }
 
 void GameClient::send(protocol::SeatRequest& r) {
@@ -234,8 +258,12 @@ bool GameClient::accept(const JoinAnswer& answer) {
   if (sent.action == JoinAction::Seat || sent.action == JoinAction::Rejoin) {
     noteSequence(seen_seq_[{answer.match, answer.seat}]);
     seat_ = SeatHolding{answer.match, answer.seat, answer.token};
-  } else if (sent.action == JoinAction::Leave && seat_ && seat_->match == answer.match) {
-    seat_.reset();
+    if (watching_ != answer.match) watching_.reset();
+  } else if (sent.action == JoinAction::Spectate) {
+    watching_ = answer.match;
+  } else if (sent.action == JoinAction::Leave) {
+    if (seat_ && seat_->match == answer.match) seat_.reset();
+    if (watching_ == answer.match) watching_.reset();
   }
   return true;
 }
@@ -251,6 +279,7 @@ void GameClient::pollReplies(std::vector<ClientEvent>& out) {
     if (!pending_.count(answer->request)) continue;
     if (accept(*answer)) out.emplace_back(std::move(*answer));
   }
+  refollow();
 }
 
 void GameClient::pollStates(std::vector<ClientEvent>& out) {

@@ -113,7 +113,14 @@ class GameClient {
   std::vector<ClientEvent> poll();
 
   const Lobby& lobby() const { return lobby_; }
-  /// The latest state of `match`, if any arrived.
+  /// The matches whose states, results and frames this client receives (each travels in its own
+  /// DDS partition): the one it sits in, the one it watches and those its unanswered requests
+  /// name. Following changes as requests go out and answers come in.
+  std::set<std::string> followed() const { return transport_->followed(); }
+  /// Also follows `match` without joining it (`on` false: stops), for an observer of the domain
+  /// such as a test's recorder; the server does not count it as a spectator.
+  void observe(const std::string& match, bool on = true);
+  /// The latest state of `match`, if any arrived (only followed matches' states are kept).
   const MatchView* state(const std::string& match) const;
   /// Samples dropped because they could not be read, were not signed by their server's pinned
   /// key, or jumped impossibly far; and the last reason.
@@ -134,6 +141,9 @@ class GameClient {
   };
 
   void send(protocol::SeatRequest& request);
+  /// Follows the seat's match, the watched one and those of unanswered requests (newest first,
+  /// at most net::kMaxFollowed), and forgets the states of the rest.
+  void refollow();
   /// Applies an answer to one of our requests; false when it was consumed by a retry.
   bool accept(const JoinAnswer& answer);
   void problem(const std::string& what);
@@ -153,6 +163,8 @@ class GameClient {
   std::uint32_t next_request_ = 1;
   std::map<std::uint32_t, PendingJoin> pending_;  ///< our requests not answered yet
   std::optional<SeatHolding> seat_;
+  std::optional<std::string> watching_;  ///< the match an accepted spectate request watches
+  std::set<std::string> observed_;       ///< followed without joining (observe)
   std::uint32_t last_seq_ = 0;  ///< the last seq our key used (shots and seat requests alike)
   std::map<std::pair<std::string, int>, std::uint32_t> seen_seq_;  ///< highest seq per seat seen
   Lobby lobby_;

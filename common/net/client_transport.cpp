@@ -3,6 +3,7 @@
 #include "net/client_transport.h"
 
 #include "net/convert.h"
+#include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
 #include "net/practice_convert.h"
@@ -15,6 +16,10 @@
 #include "net/wire_fields.h"
 #include "net/writer.h"
 
+#include <algorithm>
+#include <iterator>
+#include <utility>
+
 namespace pool::net {
 namespace {
 
@@ -25,6 +30,17 @@ QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
 
 enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates };
 
+/// The readers of one followed match's own topics, in its partition.
+struct MatchReaders {
+  MatchReaders(const Subscriber& subscriber, const ProtocolTopics& topics)
+      : results(subscriber, topics.result_topic, deeper(qos::result())),
+        snapshots(subscriber, topics.snapshot_topic, deeper(qos::snapshot(), kSnapshotDepth)),
+        states(subscriber, topics.state_topic, deeper(qos::state())) {}
+  Reader<pool_ShotResult> results;
+  Reader<pool_TableSnapshot> snapshots;
+  Reader<pool_MatchState> states;
+};
+
 }  // namespace
 
 struct ClientTransport::Endpoints : ProtocolTopics {
@@ -33,18 +49,47 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         check(server_check ? std::move(server_check) : ServerCheck(protocol::sealProblem)),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
-        results(participant, result_topic, deeper(qos::result())),
-        snapshots(participant, snapshot_topic, deeper(qos::snapshot(), kSnapshotDepth)),
-        states(participant, state_topic, deeper(qos::state())),
+        stray_results(participant, result_topic, deeper(qos::result())),
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
         practice(participant, practice_topic, qos::command()),
         waitset(participant) {
     waitset.attachData(match_info, kLobby);
     waitset.attachData(join_replies, kReplies);
-    waitset.attachData(results, kResults);
-    waitset.attachData(snapshots, kSnapshots);
-    waitset.attachData(states, kStates);
+    waitset.attachData(stray_results, kResults);
+  }
+
+  /// Starts receiving `match`'s own topics; empty when followed, else why not.
+  std::string open(const std::string& match) {
+    auto readers = matches.open(participant, match, kMaxFollowed, [this](const Subscriber& s) {
+      auto made = std::make_unique<MatchReaders>(s, *this);
+      waitset.attachData(made->results, kResults);
+      waitset.attachData(made->snapshots, kSnapshots);
+      waitset.attachData(made->states, kStates);
+      return made;
+    });
+    return readers ? std::string() : readers.error();
+  }
+
+  /// Stops receiving `match`'s own topics (what was not taken is dropped).
+  void close(const std::string& match) {
+    if (MatchReaders* readers = matches.find(match)) {
+      waitset.detachData(readers->results);
+      waitset.detachData(readers->snapshots);
+      waitset.detachData(readers->states);
+    }
+    matches.close(match);
+  }
+
+  /// Every sample `fetch(const MatchReaders&)` gives, of every followed match, in match order.
+  template <class Fetch>
+  auto fromEachMatch(Fetch&& fetch) const {
+    decltype(fetch(std::declval<const MatchReaders&>())) all;
+    matches.forEach([&](const std::string&, const MatchReaders& readers) {
+      auto some = fetch(readers);
+      std::move(some.begin(), some.end(), std::back_inserter(all));
+    });
+    return all;
   }
 
   /// Why the server's `sample` is dropped, or empty when it may be read.
@@ -71,13 +116,13 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   ServerCheck check;
   Reader<pool_MatchInfo> match_info;
   Reader<pool_JoinReply> join_replies;
-  Reader<pool_ShotResult> results;
-  Reader<pool_TableSnapshot> snapshots;
-  Reader<pool_MatchState> states;
+  /// Answers to commands naming no match or seat of the server (in the default partition).
+  Reader<pool_ShotResult> stray_results;
   Writer<pool_JoinRequest> join_requests;
   Writer<pool_ShotCommand> commands;
   Writer<pool_PracticeCommand> practice;
   WaitSet waitset;
+  MatchScopes<Subscriber, MatchReaders> matches;  ///< followed matches, each in its partition
 };
 
 ClientTransport::ClientTransport(std::uint32_t domain, ServerCheck check)
@@ -129,16 +174,46 @@ std::vector<Result<protocol::JoinAnswer>> ClientTransport::takeReplies() {
   return e_->readAll<protocol::JoinAnswer>(e_->join_replies.take());
 }
 
+std::string ClientTransport::follow(const std::set<std::string>& matches) {
+  std::vector<std::string> dropped;
+  e_->matches.forEach([&](const std::string& match, const MatchReaders&) {
+    if (!matches.count(match)) dropped.push_back(match);
+  });
+  for (const auto& match : dropped) e_->close(match);
+  std::string problem;
+  for (const auto& match : matches) {
+    if (auto why = e_->open(match); !why.empty() && problem.empty()) problem = why;
+  }
+  return problem;
+}
+
+std::set<std::string> ClientTransport::followed() const {
+  std::set<std::string> out;
+  e_->matches.forEach([&](const std::string& match, const MatchReaders&) { out.insert(match); });
+  return out;
+}
+
 std::vector<Result<protocol::MatchView>> ClientTransport::takeStates() {
-  return e_->readAll<protocol::MatchView>(e_->states.takeWithNotices());
+  return e_->readAll<protocol::MatchView>(
+      e_->fromEachMatch([](const MatchReaders& r) { return r.states.takeWithNotices(); }));
 }
 
 std::vector<Result<protocol::ShotReport>> ClientTransport::takeResults() {
-  return e_->readAll<protocol::ShotReport>(e_->results.take());
+  auto samples = e_->stray_results.take();
+  auto followed = e_->fromEachMatch([](const MatchReaders& r) { return r.results.take(); });
+  std::move(followed.begin(), followed.end(), std::back_inserter(samples));
+  // A take hands samples out instance by instance (seat 0's, then seat 1's): in the order the
+  // server wrote them instead, so that a seat's answer never comes out after the other seat's
+  // later one.
+  std::stable_sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) {
+    return a.meta().source_time_ns < b.meta().source_time_ns;
+  });
+  return e_->readAll<protocol::ShotReport>(std::move(samples));
 }
 
 std::vector<Result<protocol::TableFrame>> ClientTransport::takeFrames() {
-  return e_->readAll<protocol::TableFrame>(e_->snapshots.take(kSnapshotDepth));
+  return e_->readAll<protocol::TableFrame>(
+      e_->fromEachMatch([](const MatchReaders& r) { return r.snapshots.take(kSnapshotDepth); }));
 }
 
 }  // namespace pool::net

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -26,6 +27,9 @@ inline constexpr std::uint32_t kReaderDepth = 16;
 /// burst, and a spectator counting them should see most of them.
 inline constexpr std::uint32_t kSnapshotDepth = 512;
 
+/// The most matches one client follows at once (a player's, a spectator's, a few pending asks).
+inline constexpr std::size_t kMaxFollowed = 16;
+
 /// A lobby entry, or the news that one went away.
 using LobbyEvent = std::variant<protocol::LobbyEntry, protocol::MatchGone>;
 
@@ -34,6 +38,9 @@ using LobbyEvent = std::variant<protocol::LobbyEntry, protocol::MatchGone>;
 using ServerCheck = std::function<std::string(const protocol::SealedSample&)>;
 
 /// One participant with every reader and writer a client needs, and a waitset over the readers.
+/// The lobby and join replies are read in the default partition; the states, results and frames
+/// of the matches the client follows (follow) in each match's own partition, so nothing of
+/// another match reaches it.
 /// Throws DdsError from the constructor only. Each take returns what arrived since the last one,
 /// a sample that could not be read or that `check` refused as a failure naming why. Without a
 /// check, a sample is read when its signature verifies with the key it carries
@@ -54,10 +61,19 @@ class ClientTransport {
   std::string send(const protocol::ShotRequest& command);
   std::string send(const protocol::PracticeRequest& command);
 
+  /// Receives the states, results and frames of exactly `matches` from now on, each in its own
+  /// partition. A match newly followed delivers its latest state and results at once
+  /// (transient-local); one no longer named is dropped with whatever of it was not taken. A
+  /// match id that names no partition, or past kMaxFollowed, is not followed: the first such
+  /// reason is returned (empty: all followed).
+  std::string follow(const std::set<std::string>& matches);
+  std::set<std::string> followed() const;
+
   std::vector<Result<LobbyEvent>> takeLobby();
   std::vector<Result<protocol::JoinAnswer>> takeReplies();
   /// Match states; a disposed one is skipped (the lobby reports the match gone).
   std::vector<Result<protocol::MatchView>> takeStates();
+  /// Results of the followed matches, and refusals of commands naming no match of the server.
   std::vector<Result<protocol::ShotReport>> takeResults();
   std::vector<Result<protocol::TableFrame>> takeFrames();
 

@@ -42,8 +42,9 @@ void freeSampleContents(void* sample, const dds_topic_descriptor_t* descriptor);
 
 std::int32_t createTopic(std::int32_t participant, const dds_topic_descriptor_t* descriptor,
                          std::string_view name);
-std::int32_t createWriter(std::int32_t participant, std::int32_t topic, const QosProfile& qos);
-std::int32_t createReader(std::int32_t participant, std::int32_t topic, const QosProfile& qos);
+/// `parent`: a participant, or a publisher (writers) or subscriber (readers) with partitions.
+std::int32_t createWriter(std::int32_t parent, std::int32_t topic, const QosProfile& qos);
+std::int32_t createReader(std::int32_t parent, std::int32_t topic, const QosProfile& qos);
 
 Status write(std::int32_t writer, const void* sample);
 Status dispose(std::int32_t writer, const void* key_sample);

@@ -11,6 +11,7 @@
 #include "net/dds_detail.h"
 #include "net/entity.h"
 #include "net/participant.h"
+#include "net/partition.h"
 #include "net/qos_profiles.h"
 #include "net/sample.h"
 #include "net/topic.h"
@@ -24,6 +25,9 @@ class Reader {
  public:
   Reader(const Participant& participant, const Topic<T>& topic, const QosProfile& qos)
       : entity_(detail::createReader(participant.handle(), topic.handle(), qos)) {}
+  /// A reader in `subscriber`'s partitions.
+  Reader(const Subscriber& subscriber, const Topic<T>& topic, const QosProfile& qos)
+      : entity_(detail::createReader(subscriber.handle(), topic.handle(), qos)) {}
 
   /// Removes and returns up to `max` samples that carry data, oldest first per instance.
   /// Instance-state notices (disposals, lost writers) are removed and dropped.

@@ -3,6 +3,7 @@
 
 #include <unordered_set>
 
+#include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
 #include "net/practice_convert.h"
@@ -22,6 +23,21 @@ namespace {
 
 enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2, kPracticeTag = 3 };
 
+/// More matches than any server keeps open (--max-matches bounds them): the writers of every
+/// match the server publishes are kept until it disposes the match.
+constexpr std::size_t kMatchWriterLimit = 1 << 16;
+
+/// The writers of one match's own topics, in its partition.
+struct MatchWriters {
+  MatchWriters(const Publisher& publisher, const ProtocolTopics& topics)
+      : results(publisher, topics.result_topic, qos::result()),
+        snapshots(publisher, topics.snapshot_topic, qos::snapshot()),
+        states(publisher, topics.state_topic, qos::state()) {}
+  Writer<pool_ShotResult> results;
+  Writer<pool_TableSnapshot> snapshots;
+  Writer<pool_MatchState> states;
+};
+
 }  // namespace
 
 struct ServerTransport::Endpoints : ProtocolTopics {
@@ -33,9 +49,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         practice(participant, practice_topic, qos::command()),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
-        results(participant, result_topic, qos::result()),
-        snapshots(participant, snapshot_topic, qos::snapshot()),
-        states(participant, state_topic, qos::state()),
+        stray_results(participant, result_topic, qos::result()),
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
@@ -49,17 +63,24 @@ struct ServerTransport::Endpoints : ProtocolTopics {
     return writer.writeOrWhy(sample);
   }
 
+  /// The writers of `match`'s partition, made on its first sample.
+  Result<MatchWriters*> writersOf(const std::string& match) {
+    return matches.open(participant, match, kMatchWriterLimit, [this](const Publisher& p) {
+      return std::make_unique<MatchWriters>(p, *this);
+    });
+  }
+
   protocol::KeyPair key;
   Reader<pool_JoinRequest> join_requests;
   Reader<pool_ShotCommand> commands;
   Reader<pool_PracticeCommand> practice;
   Writer<pool_MatchInfo> match_info;
   Writer<pool_JoinReply> join_replies;
-  Writer<pool_ShotResult> results;
-  Writer<pool_TableSnapshot> snapshots;
-  Writer<pool_MatchState> states;
+  /// Answers to commands naming no match or seat of this server, in the default partition.
+  Writer<pool_ShotResult> stray_results;
   WaitSet waitset;
-  std::unordered_set<std::string> replied;  ///< clients whose last reply is kept
+  MatchScopes<Publisher, MatchWriters> matches;  ///< per-match writers, each in its partition
+  std::unordered_set<std::string> replied;       ///< clients whose last reply is kept
 };
 
 ServerTransport::ServerTransport(std::uint32_t domain, const protocol::KeyPair& server_key)
@@ -116,7 +137,9 @@ std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {
 }
 
 std::string ServerTransport::publish(const protocol::MatchView& view) {
-  return e_->sealAndWrite(e_->states, *toWire(view));
+  auto writers = e_->writersOf(view.match);
+  if (!writers) return writers.error();
+  return e_->sealAndWrite((*writers)->states, *toWire(view));
 }
 
 std::string ServerTransport::publish(const protocol::JoinAnswer& answer) {
@@ -126,17 +149,30 @@ std::string ServerTransport::publish(const protocol::JoinAnswer& answer) {
 
 std::string ServerTransport::publish(const protocol::ShotReport& report, bool keep) {
   auto sample = toWire(report);
-  std::string error = e_->sealAndWrite(e_->results, *sample);
-  if (!keep) e_->results.unregister(*sample);
-  return error;
+  if (!keep) {
+    // Not a match or seat of ours: answered where every client hears, and not kept.
+    std::string error = e_->sealAndWrite(e_->stray_results, *sample);
+    e_->stray_results.unregister(*sample);
+    return error;
+  }
+  auto writers = e_->writersOf(report.match);
+  if (!writers) return writers.error();
+  return e_->sealAndWrite((*writers)->results, *sample);
 }
 
 std::string ServerTransport::publish(const protocol::TableFrame& frame) {
-  return e_->sealAndWrite(e_->snapshots, *toWire(frame));
+  auto writers = e_->writersOf(frame.match);
+  if (!writers) return writers.error();
+  return e_->sealAndWrite((*writers)->snapshots, *toWire(frame));
 }
 
-std::uint32_t ServerTransport::resultReaders() const {
-  return e_->results.publicationMatched().current;
+std::uint32_t ServerTransport::resultReaders(const std::string& match) {
+  auto writers = e_->writersOf(match);
+  return writers ? (*writers)->results.publicationMatched().current : 0;
+}
+
+std::size_t ServerTransport::matchPartitions() const {
+  return e_->matches.size();
 }
 
 std::size_t ServerTransport::keptReplies() const {
@@ -154,15 +190,19 @@ void ServerTransport::dispose(const std::string& match) {
   pool_MatchInfo info{};
   setText(info.match, match);
   e_->match_info.dispose(info);
+  MatchWriters* writers = e_->matches.find(match);
+  if (!writers) return;  // nothing of it was published
   Sample<pool_MatchState> state;
   setText(state->match, match);
-  e_->states.dispose(*state);
+  writers->states.dispose(*state);
   for (const std::int16_t seat : {std::int16_t{0}, std::int16_t{1}}) {
     Sample<pool_ShotResult> result;
     setText(result->match, match);
     result->seat = seat;
-    e_->results.dispose(*result);
+    writers->results.dispose(*result);
   }
+  // The disposals are on their way (a deleted writer delivers what it wrote first).
+  e_->matches.close(match);
 }
 
 }  // namespace pool::net

@@ -39,8 +39,10 @@ struct ClientGone {
 using JoinEvent = std::variant<protocol::SeatRequest, UnreadableJoin, ClientGone>;
 
 /// The server's participant, its readers of requests and commands and its writers of lobby
-/// entries, replies, results, frames and states (QoS from qos_profiles.h). Every sample it
-/// publishes is signed with `server_key` (net/server_seal.h). Throws DdsError from the
+/// entries, replies, results, frames and states (QoS from qos_profiles.h). Lobby entries and
+/// replies go out in the default partition; each match's states, results and frames in the
+/// match's own (net/match_partition.h), so a client receives only the matches it follows. Every
+/// sample it publishes is signed with `server_key` (net/server_seal.h). Throws DdsError from the
 /// constructor only; a failed write is returned as text (empty: written).
 class ServerTransport {
  public:
@@ -64,14 +66,17 @@ class ServerTransport {
   std::string publish(const protocol::ShotReport& report, bool keep = true);
   std::string publish(const protocol::TableFrame& frame);
 
-  /// Readers of shot results matched now (someone is watching).
-  std::uint32_t resultReaders() const;
+  /// Readers of `match`'s shot results matched now (someone is watching it).
+  std::uint32_t resultReaders(const std::string& match);
+  /// Matches whose writers are open, each in its own partition (until dispose).
+  std::size_t matchPartitions() const;
 
   /// Clients whose last join reply is kept for late readers (until forgetClient).
   std::size_t keptReplies() const;
   /// Drops the last reply kept for `client` (it is gone).
   void forgetClient(const std::string& client);
-  /// Disposes `match`'s lobby entry, state and results: readers see it gone.
+  /// Disposes `match`'s lobby entry, state and results (readers see it gone) and deletes its
+  /// writers.
   void dispose(const std::string& match);
 
  private:

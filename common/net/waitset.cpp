@@ -31,8 +31,17 @@ void WaitSet::attachUnreadCondition(std::int32_t reader, std::int64_t tag) {
   Entity condition(
       detail::check(dds_create_readcondition(reader, DDS_NOT_READ_SAMPLE_STATE), "read condition"));
   detail::check(dds_waitset_attach(entity_.handle(), condition.handle(), tag), "waitset attach");
-  conditions_.push_back(std::move(condition));
+  conditions_.push_back(ReadCondition{reader, std::move(condition)});
   ++attached_;
+}
+
+void WaitSet::detachUnreadCondition(std::int32_t reader) {
+  const auto it = std::find_if(conditions_.begin(), conditions_.end(),
+                               [reader](const ReadCondition& c) { return c.reader == reader; });
+  if (it == conditions_.end()) return;
+  dds_waitset_detach(entity_.handle(), it->condition.handle());
+  conditions_.erase(it);  // deletes the condition
+  --attached_;
 }
 
 void WaitSet::attachLivelinessStatus(std::int32_t reader, std::int64_t tag) {

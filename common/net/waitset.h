@@ -39,6 +39,12 @@ class WaitSet {
     attachUnreadCondition(reader.handle(), tag);
   }
 
+  /// Stops waking for `reader`'s data (before the reader is deleted, or to stop watching it).
+  template <class T>
+  void detachData(const Reader<T>& reader) {
+    detachUnreadCondition(reader.handle());
+  }
+
   /// Wakes when the liveliness of a writer matched with `reader` changes (until the reader's
   /// livelinessChanged() is queried).
   template <class T>
@@ -55,10 +61,15 @@ class WaitSet {
 
  private:
   void attachUnreadCondition(std::int32_t reader, std::int64_t tag);
+  void detachUnreadCondition(std::int32_t reader);
   void attachLivelinessStatus(std::int32_t reader, std::int64_t tag);
 
   Entity entity_;
-  std::vector<Entity> conditions_;  // read conditions created here (children of their readers)
+  struct ReadCondition {
+    std::int32_t reader;
+    Entity condition;  ///< a child of `reader`
+  };
+  std::vector<ReadCondition> conditions_;  // read conditions created here
   std::size_t attached_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include "net/dds_detail.h"
 #include "net/entity.h"
 #include "net/participant.h"
+#include "net/partition.h"
 #include "net/qos_profiles.h"
 #include "net/topic.h"
 
@@ -20,6 +21,9 @@ class Writer {
  public:
   Writer(const Participant& participant, const Topic<T>& topic, const QosProfile& qos)
       : entity_(detail::createWriter(participant.handle(), topic.handle(), qos)) {}
+  /// A writer in `publisher`'s partitions.
+  Writer(const Publisher& publisher, const Topic<T>& topic, const QosProfile& qos)
+      : entity_(detail::createWriter(publisher.handle(), topic.handle(), qos)) {}
 
   /// Publishes `sample` (its instance is the value of its @key fields). A reliable write may block
   /// up to the profile's max_blocking when readers lag, then fails with a timeout.

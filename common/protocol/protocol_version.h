@@ -6,8 +6,10 @@ namespace pool::protocol {
 /// pool.idl's PROTOCOL_VERSION (net/messages.h checks that the two agree). 3: one signed envelope
 /// for every player message, signed seat requests. 4: every sample the server publishes is signed
 /// by the server's key; 9-ball and 10-ball, match settings (game, race, breaks, shot clock) chosen
-/// by whoever opens a table. 5: practice tables (the practice setting, PracticeCommand, the
-/// practice fields of MatchInfo and MatchState).
+/// by whoever opens a table. 5: each match's states, results and frames travel in a DDS partition
+/// of the match's own (an older client, listening in the default partition, would see none);
+/// practice tables (the practice setting, PracticeCommand, the practice fields of MatchInfo and
+/// MatchState); a seat may concede its rack (JOIN_CONCEDE).
 inline constexpr unsigned kProtocolVersion = 5;
 
 }  // namespace pool::protocol

@@ -21,17 +21,22 @@
 #include <vector>
 
 #include "net/convert.h"
+#include "net/match_partition.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
+#include "net/partition.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
+#include "net/server_seal.h"
 #include "net/topic.h"
 #include "net/waitset.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
 #include "protocol/command_signature.h"
 #include "protocol/key_pair.h"
+#include "protocol/server_signature.h"
+#include "support/partitions.h"
 
 namespace {
 
@@ -149,9 +154,10 @@ class Driver {
       : bus_(domain),
         lobby_(bus_.participant, bus_.match_info_topic, net::qos::lobby()),
         replies_(bus_.participant, bus_.join_reply_topic, net::qos::joinReply()),
-        results_(bus_.participant, bus_.result_topic, deep(net::qos::result())),
-        snapshots_(bus_.participant, bus_.snapshot_topic, deep(net::qos::snapshot())),
-        states_(bus_.participant, bus_.state_topic, deep(net::qos::state())),
+        every_match_(bus_.participant, test::everyPartition()),
+        results_(every_match_, bus_.result_topic, deep(net::qos::result())),
+        snapshots_(every_match_, bus_.snapshot_topic, deep(net::qos::snapshot())),
+        states_(every_match_, bus_.state_topic, deep(net::qos::state())),
         requests_(bus_.participant, bus_.join_request_topic, net::qos::joinRequest()),
         commands_(bus_.participant, bus_.command_topic, net::qos::command()),
         waitset_(bus_.participant) {
@@ -207,6 +213,14 @@ class Driver {
     for (auto& [id, t] : tables_) {
       if (!t.state || !protocol::inPlay(t.state->phase)) continue;
       send(t, hard);
+    }
+  }
+
+  /// Sends one gentle shot on `match` only.
+  void shootOne(const std::string& match) {
+    auto it = tables_.find(match);
+    if (it != tables_.end() && it->second.state && protocol::inPlay(it->second.state->phase)) {
+      send(it->second, false);
     }
   }
 
@@ -358,6 +372,7 @@ class Driver {
   net::ProtocolTopics bus_;  ///< the participant and the protocol's topics
   net::Reader<pool_MatchInfo> lobby_;
   net::Reader<pool_JoinReply> replies_;
+  net::Subscriber every_match_;  ///< the driver plays every table: it follows every match
   net::Reader<pool_ShotResult> results_;
   net::Reader<pool_TableSnapshot> snapshots_;
   net::Reader<pool_MatchState> states_;
@@ -370,6 +385,47 @@ class Driver {
   std::map<std::string, Table> tables_;
   std::vector<double> latencies_, round_trips_, command_to_frame_;
   Clock::time_point epoch_ = Clock::now();
+};
+
+/// What one client receives of the server's per-match topics in `partitions`: the bytes of every
+/// state, result and frame its readers take (each sample's XCDR2 encoding and its 64-byte
+/// signature), as a client's readers (net/client_transport) would take them.
+class Listener {
+ public:
+  Listener(std::uint32_t domain, const std::vector<std::string>& partitions)
+      : bus_(domain),
+        subscriber_(bus_.participant, partitions),
+        results_(subscriber_, bus_.result_topic, deep(net::qos::result())),
+        snapshots_(subscriber_, bus_.snapshot_topic, deep(net::qos::snapshot())),
+        states_(subscriber_, bus_.state_topic, deep(net::qos::state())) {}
+
+  /// Takes what arrived and counts it.
+  void drain() {
+    for (auto& s : results_.take(1 << 16)) count(*s);
+    for (auto& s : states_.take(1 << 16)) count(*s);
+    for (auto& s : snapshots_.take(1 << 16)) count(*s);
+  }
+  double bytes() const { return bytes_; }
+  double samples() const { return samples_; }
+  void reset() { bytes_ = samples_ = 0; }
+
+ private:
+  static net::QosProfile deep(net::QosProfile p) {
+    p.history_depth = 8192;
+    return p;
+  }
+  template <class T>
+  void count(const T& sample) {
+    bytes_ += static_cast<double>(net::sealedOf(sample).body.size() + protocol::kSignatureBytes);
+    samples_ += 1;
+  }
+
+  net::ProtocolTopics bus_;
+  net::Subscriber subscriber_;
+  net::Reader<pool_ShotResult> results_;
+  net::Reader<pool_TableSnapshot> snapshots_;
+  net::Reader<pool_MatchState> states_;
+  double bytes_ = 0, samples_ = 0;
 };
 
 void useLoopback() {
@@ -479,6 +535,72 @@ void BM_SixtyHzCapacity(benchmark::State& state) {
         cpu_share > 0 ? tables / cpu_share : 0.0);
   }
 }
+
+/// The bytes a spectator of one match receives while 100 other matches move beside it, against
+/// the same spectator while only its own match moves (goal: at most 1.2 times as much). One real
+/// pool-server (pinned to one core) with 101 tables, every seat played by the driver, each
+/// round a gentle shot (about a second of frames at 60 Hz, then result and state) on its own
+/// table alone, then on all 101 at once. The spectator subscribes as pool-client does since
+/// protocol 5 (its match's partition); a listener to every match's partition (a wildcard) is
+/// what every client received before partitions.
+void BM_SpectatorBesideMovingMatches(benchmark::State& state) {
+  useLoopback();
+  constexpr int kOthers = 100, kRounds = 3;
+  for (auto _ : state) {
+    const std::uint32_t domain = nextDomain();
+    PinnedServer server(domain, kOthers + 1, 0);
+    Driver driver(domain);
+    if (!driver.seatAll(static_cast<std::size_t>(kOthers + 1), 90s)) {
+      state.SkipWithError("could not seat every table");
+      return;
+    }
+    const std::string own = driver.tables().begin()->first;
+    Listener spectator(domain, {*net::matchPartition(own)});
+    Listener everything(domain, {std::string(net::kMatchPartitionPrefix) + "*"});
+    std::this_thread::sleep_for(500ms);  // discovery of the listeners' readers
+    spectator.drain();
+    everything.drain();
+    spectator.reset();
+    everything.reset();
+
+    // Rounds of shots; the listeners drain after each (their readers keep a deep history).
+    const auto rounds = [&](bool all) {
+      const auto t0 = Clock::now();
+      for (int r = 0; r < kRounds; ++r) {
+        if (all) {
+          driver.shootAll(false);
+        } else {
+          driver.shootOne(own);
+        }
+        driver.pumpShots(60s);
+        spectator.drain();
+        everything.drain();
+      }
+      return secondsSince(t0);
+    };
+    const double alone_s = rounds(false);
+    const double alone = spectator.bytes() / alone_s;
+    const double alone_all = everything.bytes() / alone_s;
+    spectator.reset();
+    everything.reset();
+    const double beside_s = rounds(true);
+    const double beside = spectator.bytes() / beside_s;
+    const double before = everything.bytes() / beside_s;
+    const double ratio = alone > 0 ? beside / alone : 0.0;
+    state.counters["own_match_alone_B_per_s"] = alone;
+    state.counters["beside_100_B_per_s"] = beside;
+    state.counters["ratio"] = ratio;
+    state.counters["every_match_listener_B_per_s"] = before;
+    std::printf(
+        "spectator of one match: %.0f B/s with only its match moving (a listener to every "
+        "match: %.0f B/s), %.0f B/s beside %d moving matches: %.2fx (goal <= 1.2x); a listener "
+        "to every match, as every client was before partitions, receives %.0f B/s beside them "
+        "(%.0fx); rounds of %.1f s alone, %.1f s with all moving\n",
+        alone, alone_all, beside, kOthers, ratio, before, alone > 0 ? before / alone : 0.0,
+        alone_s / kRounds, beside_s / kRounds);
+  }
+}
+BENCHMARK(BM_SpectatorBesideMovingMatches)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 
 void capacityArgs(benchmark::internal::Benchmark* b) {
   // POOL_NET_BENCH_TABLES="25,50,100,200" sweeps; the default checks the target only.

@@ -5,54 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
-#include <functional>
 
 #include "client/net/game_client.h"
 #include "client/net/server_pins.h"
 #include "support/client_fixture.h"
+#include "support/client_watcher.h"
 #include "support/forger.h"
 
 namespace pool::client::test {
 namespace {
 
 using namespace std::chrono_literals;
-
-/// A GameClient that keeps everything poll() handed out and every line it logged.
-struct Watcher {
-  explicit Watcher(std::uint32_t domain, std::filesystem::path pins = {})
-      : client({domain, "", "watcher", std::move(pins),
-                [this](const std::string& line, bool) { lines.push_back(line); }}) {}
-
-  /// Polls until `done()` or `timeout`; returns done().
-  bool pumpUntil(const std::function<bool()>& done, std::chrono::milliseconds timeout = 30s) {
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    for (;;) {
-      for (auto& e : client.poll()) events.push_back(std::move(e));
-      if (done()) return true;
-      if (std::chrono::steady_clock::now() >= deadline) return false;
-      client.wait(20ms);
-    }
-  }
-
-  bool logged(const std::string& part) const {
-    for (const auto& l : lines) {
-      if (l.find(part) != std::string::npos) return true;
-    }
-    return false;
-  }
-
-  template <class T, class F>
-  bool handedOut(F&& matches) const {
-    for (const auto& e : events) {
-      if (const auto* v = std::get_if<T>(&e); v && matches(*v)) return true;
-    }
-    return false;
-  }
-
-  std::vector<std::string> lines;
-  std::vector<ClientEvent> events;
-  GameClient client;
-};
 
 class ForgedSampleTest : public ClientIntegrationTest {};
 
@@ -106,6 +69,8 @@ TEST_F(ForgedSampleTest, ImpossibleJumpsAreDroppedEvenWhenSigned) {
   pool::test::Forger server(kImpossibleJumps);
   server.signWith(protocol::generateKeyPair());
   Watcher w(kImpossibleJumps);
+  // The match has a partition of its own: the watcher follows it as a spectator would.
+  w.client.observe("evil-1");
   ASSERT_TRUE(server.publishState("evil-1", 5, 2, pool_PHASE_OPEN, -1));
   ASSERT_TRUE(w.pumpUntil([&] { return w.client.state("evil-1") != nullptr; }));
   ASSERT_EQ(w.client.state("evil-1")->revision, 5u);

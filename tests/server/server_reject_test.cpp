@@ -45,7 +45,7 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
       a.waitState(s.match, [](auto& st) { return st.phase == pool_PHASE_BREAK; });
   ASSERT_NE(start_state, nullptr);
   const std::uint32_t revision = start_state->revision;
-  const std::size_t states_before = a.states.size();
+  const std::size_t states_before = a.stateCount(s.match);
 
   EXPECT_EQ(answerTo(a, b, breakShot(s, 1, 1)), pool_REJECT_NOT_YOUR_TURN);
   protocol::ShotRequest stolen = breakShot(s, 0, 1);
@@ -73,7 +73,7 @@ TEST_F(ServerRejections, BadCommandsAreRefusedWithTheirReasonsAndChangeNothing) 
   EXPECT_EQ(answerTo(a, b, *net::toWire(breakShot(s, 0, 2))), pool_REJECT_UNSIGNED);
   EXPECT_EQ(answerTo(a, b, breakShot(s, 0, 2)), pool_REJECT_BAD_SIGNATURE);
   a.waitUntil([] { return false; }, 200ms);  // time for any (wrong) state change to arrive
-  EXPECT_EQ(a.states.size(), states_before) << "a refusal changed the match";
+  EXPECT_EQ(a.stateCount(s.match), states_before) << "a refusal changed the match";
   EXPECT_EQ(a.latestState(s.match)->revision, revision);
 
   // A legal shot still goes through (the forgeries did not use 2 up), paced to the wall clock.

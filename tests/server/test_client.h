@@ -14,6 +14,7 @@
 #include "net/convert.h"
 #include "net/messages.h"
 #include "net/participant.h"
+#include "net/partition.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
@@ -25,6 +26,7 @@
 #include "protocol/key_pair.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
+#include "support/partitions.h"
 
 namespace pool::server::test {
 
@@ -47,9 +49,10 @@ class TestClient {
         command_writer_(bus_.participant, bus_.command_topic, net::qos::command()),
         infos_(bus_.participant, bus_.match_info_topic, keepAll(net::qos::lobby())),
         replies_(bus_.participant, bus_.join_reply_topic, keepAll(net::qos::joinReply())),
-        results_(bus_.participant, bus_.result_topic, keepAll(net::qos::result())),
-        snapshots_(bus_.participant, bus_.snapshot_topic, keepAll(net::qos::snapshot())),
-        states_(bus_.participant, bus_.state_topic, keepAll(net::qos::state())),
+        every_match_(bus_.participant, pool::test::everyPartition()),
+        results_(every_match_, bus_.result_topic, keepAll(net::qos::result())),
+        snapshots_(every_match_, bus_.snapshot_topic, keepAll(net::qos::snapshot())),
+        states_(every_match_, bus_.state_topic, keepAll(net::qos::state())),
         waitset_(bus_.participant) {
     waitset_.attachData(infos_, 1);
     waitset_.attachData(replies_, 2);
@@ -227,6 +230,14 @@ class TestClient {
     return s && ok(*s) ? s : nullptr;
   }
 
+  /// Recorded states of `match` (each match's own: another match's writers are discovered on
+  /// their own time, since each match publishes in a partition of its own).
+  std::size_t stateCount(const std::string& match) const {
+    std::size_t n = 0;
+    for (const auto& s : states) n += net::textOf(s->match) == match;
+    return n;
+  }
+
   /// Recorded frames of `match`.
   std::size_t snapshotCount(const std::string& match) const {
     std::size_t n = 0;
@@ -280,6 +291,7 @@ class TestClient {
   net::Writer<pool_ShotCommand> command_writer_;
   net::Reader<pool_MatchInfo> infos_;
   net::Reader<pool_JoinReply> replies_;
+  net::Subscriber every_match_;  ///< the default partition and every match's
   net::Reader<pool_ShotResult> results_;
   net::Reader<pool_TableSnapshot> snapshots_;
   net::Reader<pool_MatchState> states_;

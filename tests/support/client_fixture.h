@@ -54,6 +54,8 @@ enum Domain : std::uint32_t {
   kWindowPractice = 92,
   kPracticeRestart = 93,
   kPracticeFriend = 94,
+  kServerStopped = 60,  ///< 60–69: match partitions, a stopped server
+  kPartitionSwitch = 61,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

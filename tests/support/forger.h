@@ -8,6 +8,7 @@
 #include <string>
 
 #include "net/participant.h"
+#include "net/partition.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/sample.h"
@@ -16,6 +17,7 @@
 #include "net/writer.h"
 #include "protocol/key_pair.h"
 #include "protocol/protocol_version.h"
+#include "support/partitions.h"
 
 namespace pool::test {
 
@@ -26,10 +28,11 @@ class Forger {
  public:
   explicit Forger(std::uint32_t domain)
       : bus_(domain),
-        infos_(bus_.participant, bus_.match_info_topic, net::qos::lobby()),
-        states_(bus_.participant, bus_.state_topic, net::qos::state()),
-        results_(bus_.participant, bus_.result_topic, net::qos::result()),
-        snapshots_(bus_.participant, bus_.snapshot_topic, net::qos::snapshot()) {}
+        everywhere_(bus_.participant, pool::test::everyPartition()),
+        infos_(everywhere_, bus_.match_info_topic, net::qos::lobby()),
+        states_(everywhere_, bus_.state_topic, net::qos::state()),
+        results_(everywhere_, bus_.result_topic, net::qos::result()),
+        snapshots_(everywhere_, bus_.snapshot_topic, net::qos::snapshot()) {}
 
   /// Waits for `count` readers of each topic before a write (all the clients a test means to hit).
   void expectReaders(std::uint32_t count) { readers_ = count; }
@@ -113,6 +116,9 @@ class Forger {
   }
 
   net::ProtocolTopics bus_;
+  /// The default partition and every match's: partitions keep nobody out, the forged samples
+  /// reach each client that follows the match they name.
+  net::Publisher everywhere_;
   net::Writer<pool_MatchInfo> infos_;
   net::Writer<pool_MatchState> states_;
   net::Writer<pool_ShotResult> results_;

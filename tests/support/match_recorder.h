@@ -16,9 +16,11 @@
 #include "net/convert.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
+#include "net/partition.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
 #include "net/topic.h"
+#include "support/partitions.h"
 
 namespace pool::client::test {
 
@@ -31,7 +33,8 @@ class MatchRecorder {
         command_topic_(participant_),
         commands_(participant_, command_topic_, net::qos::command()),
         state_topic_(participant_),
-        all_states_(participant_, state_topic_, keepAll(net::qos::state())) {}
+        every_match_(participant_, pool::test::everyPartition()),
+        all_states_(every_match_, state_topic_, keepAll(net::qos::state())) {}
 
   /// Polls until `until()` holds or `timeout` passes; true when it held.
   bool pump(
@@ -121,6 +124,8 @@ class MatchRecorder {
     return profile;
   }
   void drain() {
+    // Each match travels in its own partition: the recorder follows every one the lobby lists.
+    for (const auto* entry : client_.lobby().entries()) client_.observe(entry->match);
     for (auto& event : client_.poll()) {
       if (auto* report = std::get_if<ShotReport>(&event)) reports_.push_back(std::move(*report));
       if (auto* frame = std::get_if<TableFrame>(&event)) frames_.push_back(std::move(*frame));
@@ -139,6 +144,7 @@ class MatchRecorder {
   net::Topic<pool_ShotCommand> command_topic_;
   net::Reader<pool_ShotCommand> commands_;
   net::Topic<pool_MatchState> state_topic_;
+  net::Subscriber every_match_;  ///< every match's partition
   net::Reader<pool_MatchState> all_states_;
   std::vector<MatchView> states_;
   std::vector<TableFrame> frames_;

@@ -60,6 +60,13 @@ class WindowClientTest : public ClientIntegrationTest {
 
   /// The window's exit status (waits for it).
   int windowExit() { return window_.valid() ? window_.get() : -1; }
+  /// Like windowExit, but `recorder` reads all along (it follows each match as the lobby lists
+  /// it, in the match's own partition, and would otherwise miss what came before it looked).
+  int windowExit(MatchRecorder& recorder) {
+    if (!window_.valid()) return -1;
+    recorder.pump(180s, [&] { return window_.wait_for(0s) == std::future_status::ready; });
+    return window_.get();
+  }
 
   /// Runs a hotseat window with `script` (and --log-frames) to its end; returns the match once
   /// its first shot's final report arrived (empty, with a failure, if none did).
@@ -195,7 +202,7 @@ TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
   startBot("bob", 6, {"--think", "0.25"});
   constexpr int kShots = 3;
   startWindow({"--spectate", "any"}, "wait shot " + std::to_string(kShots) + "\nquit\n");
-  const int status = windowExit();
+  const int status = windowExit(recorder);
   recorder.pump(10s, [] { return false; });
   ASSERT_EQ(status, 0) << (stalledOnLayout(recorder) ? "the bots' match stalled on a layout\n" : "")
                        << windowErr() << logs();
