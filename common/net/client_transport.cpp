@@ -2,6 +2,7 @@
 // edge.
 #include "net/client_transport.h"
 
+#include "net/aim_convert.h"
 #include "net/convert.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
@@ -22,7 +23,7 @@ QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
   return profile;
 }
 
-enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates };
+enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates, kAims };
 
 }  // namespace
 
@@ -37,12 +38,15 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         states(participant, state_topic, deeper(qos::state())),
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
+        cue_aims(participant, cue_aim_topic, qos::aim()),
+        aim_commands(participant, aim_command_topic, qos::aim()),
         waitset(participant) {
     waitset.attachData(match_info, kLobby);
     waitset.attachData(join_replies, kReplies);
     waitset.attachData(results, kResults);
     waitset.attachData(snapshots, kSnapshots);
     waitset.attachData(states, kStates);
+    waitset.attachData(cue_aims, kAims);
   }
 
   /// Why the server's `sample` is dropped, or empty when it may be read.
@@ -74,6 +78,8 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   Reader<pool_MatchState> states;
   Writer<pool_JoinRequest> join_requests;
   Writer<pool_ShotCommand> commands;
+  Reader<pool_CueAim> cue_aims;
+  Writer<pool_AimCommand> aim_commands;
   WaitSet waitset;
 };
 
@@ -92,6 +98,14 @@ std::string ClientTransport::send(const protocol::SeatRequest& request) {
 
 std::string ClientTransport::send(const protocol::ShotRequest& command) {
   return e_->commands.writeOrWhy(*toWire(command));
+}
+
+std::string ClientTransport::send(const protocol::AimSample& aim) {
+  return e_->aim_commands.writeOrWhy(*toAimCommand(aim));
+}
+
+std::vector<Result<protocol::AimSample>> ClientTransport::takeAims() {
+  return e_->readAll<protocol::AimSample>(e_->cue_aims.take());
 }
 
 std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {

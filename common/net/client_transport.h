@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "protocol/aim_sample.h"
 #include "protocol/match_messages.h"
 #include "protocol/seat_request.h"
 #include "protocol/server_signature.h"
@@ -51,6 +52,8 @@ class ClientTransport {
   /// server we are here). Empty when written, else why not.
   std::string send(const protocol::SeatRequest& request);
   std::string send(const protocol::ShotRequest& command);
+  /// Writes the shooter's signed aim (best effort: it may be lost, the next one replaces it).
+  std::string send(const protocol::AimSample& aim);
 
   std::vector<Result<LobbyEvent>> takeLobby();
   std::vector<Result<protocol::JoinAnswer>> takeReplies();
@@ -58,6 +61,8 @@ class ClientTransport {
   std::vector<Result<protocol::MatchView>> takeStates();
   std::vector<Result<protocol::ShotReport>> takeResults();
   std::vector<Result<protocol::TableFrame>> takeFrames();
+  /// Shooters' aims the server relayed (CueAim), the latest per match.
+  std::vector<Result<protocol::AimSample>> takeAims();
 
  private:
   struct Endpoints;

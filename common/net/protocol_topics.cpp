@@ -11,6 +11,8 @@ ProtocolTopics::ProtocolTopics(std::uint32_t domain)
       command_topic(participant),
       result_topic(participant),
       snapshot_topic(participant),
-      state_topic(participant) {}
+      state_topic(participant),
+      aim_command_topic(participant),
+      cue_aim_topic(participant) {}
 
 }  // namespace pool::net

@@ -10,7 +10,7 @@
 
 namespace pool::net {
 
-/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's seven topics.
+/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's nine topics.
 /// Endpoint sets derive from it, so their readers and writers are destroyed before the topics
 /// and the participant. Throws DdsError when DDS refuses one.
 struct ProtocolTopics {
@@ -24,6 +24,8 @@ struct ProtocolTopics {
   Topic<pool_ShotResult> result_topic;
   Topic<pool_TableSnapshot> snapshot_topic;
   Topic<pool_MatchState> state_topic;
+  Topic<pool_AimCommand> aim_command_topic;  ///< player -> server
+  Topic<pool_CueAim> cue_aim_topic;          ///< per match, like snapshot_topic
 };
 
 }  // namespace pool::net

@@ -3,6 +3,7 @@
 
 #include <unordered_set>
 
+#include "net/aim_convert.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
 #include "net/protocol_topics.h"
@@ -19,7 +20,7 @@ namespace pool::net {
 
 namespace {
 
-enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2 };
+enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2, kAimTag = 3 };
 
 }  // namespace
 
@@ -34,9 +35,12 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         results(participant, result_topic, qos::result()),
         snapshots(participant, snapshot_topic, qos::snapshot()),
         states(participant, state_topic, qos::state()),
+        aim_commands(participant, aim_command_topic, qos::aim()),
+        cue_aims(participant, cue_aim_topic, qos::aim()),
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
+    waitset.attachData(aim_commands, kAimTag);
   }
 
   /// Seals `sample` with the server's key and writes it; empty when written, else why not.
@@ -54,6 +58,8 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   Writer<pool_ShotResult> results;
   Writer<pool_TableSnapshot> snapshots;
   Writer<pool_MatchState> states;
+  Reader<pool_AimCommand> aim_commands;
+  Writer<pool_CueAim> cue_aims;
   WaitSet waitset;
   std::unordered_set<std::string> replied;  ///< clients whose last reply is kept
 };
@@ -99,6 +105,18 @@ std::vector<IncomingCommand> ServerTransport::takeCommands(const protocol::Comma
   std::vector<IncomingCommand> out;
   for (auto& sample : e_->commands.take()) out.push_back(readCommand(*sample, limits));
   return out;
+}
+
+std::vector<Result<protocol::AimSample>> ServerTransport::takeAims() {
+  std::vector<Result<protocol::AimSample>> out;
+  for (auto& sample : e_->aim_commands.take()) {
+    if (sample.meta().valid) out.push_back(fromWire(*sample));
+  }
+  return out;
+}
+
+std::string ServerTransport::publish(const protocol::AimSample& aim) {
+  return e_->sealAndWrite(e_->cue_aims, *toCueAim(aim));
 }
 
 std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {

@@ -12,5 +12,7 @@ inline constexpr std::string_view kShotCommand = "pool/ShotCommand";      ///< k
 inline constexpr std::string_view kShotResult = "pool/ShotResult";        ///< key match + seat
 inline constexpr std::string_view kTableSnapshot = "pool/TableSnapshot";  ///< key match
 inline constexpr std::string_view kMatchState = "pool/MatchState";        ///< key match
+inline constexpr std::string_view kAimCommand = "pool/AimCommand";        ///< key match + seat
+inline constexpr std::string_view kCueAim = "pool/CueAim";                ///< key match
 
 }  // namespace pool::net::topics

@@ -6,7 +6,8 @@ namespace pool::protocol {
 /// pool.idl's PROTOCOL_VERSION (net/messages.h checks that the two agree). 3: one signed envelope
 /// for every player message, signed seat requests. 4: every sample the server publishes is signed
 /// by the server's key; 9-ball and 10-ball, match settings (game, race, breaks, shot clock) chosen
-/// by whoever opens a table.
-inline constexpr unsigned kProtocolVersion = 4;
+/// by whoever opens a table. 5: the shooter's live aim (AimCommand in, CueAim relayed by the
+/// server).
+inline constexpr unsigned kProtocolVersion = 5;
 
 }  // namespace pool::protocol
