@@ -37,6 +37,8 @@ struct HudInput {
   std::optional<app::SeatNames> names;
   app::Settings settings;     ///< as they are now (shown with the help)
   std::string settings_note;  ///< where they are kept, or why they are not
+  /// The other shooter's live aim (as drawn, smoothed), while it arrives.
+  std::optional<app::FollowedAim> live_aim;
 };
 
 /// What the player clicked.

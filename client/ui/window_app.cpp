@@ -61,6 +61,19 @@ protocol::CommandLimits limitsOf(const bot::TableView& view) {
   return limits;
 }
 
+/// The drawn cue's tip and butt in the table frame and in pixels.
+CueStick cueStickOf(const render::CuePlacement& cue, const render::Camera& camera, int width,
+                    int height) {
+  CueStick s;
+  s.tip = {cue.tip.x, cue.tip.y, cue.tip.z};
+  s.butt = {cue.butt.x, cue.butt.y, cue.butt.z};
+  const glm::vec3 tip = render::projectToPixels(camera, width, height, cue.tip);
+  const glm::vec3 butt = render::projectToPixels(camera, width, height, cue.butt);
+  s.tip_px = {tip.x, tip.y};
+  s.butt_px = {butt.x, butt.y};
+  return s;
+}
+
 app::PlacementArea areaOf(const bot::TableView& view) {
   return {view.halfLength(), view.halfWidth(), view.headStringX(), view.radius()};
 }
@@ -225,9 +238,17 @@ class WindowApp {
   }
 
   // ---- One frame ------------------------------------------------------------------------------
-  /// The cue strokes through after a shot is sent (a re-rack's harmless stroke shows none).
+  /// The cue strokes through after a shot is sent (a re-rack's harmless stroke shows none); the
+  /// viewers see it stroke too.
   void startStroke(const protocol::ShotRequest& shot, double now) {
     if (shot.cue.speed_is_ball) return;
+    const auto [aim, ball] = releasedAim(shot);
+    stroke_ = Stroke{cueAimOf(aim, ball), now};
+    if (aiming_seat_ >= 0) session_.sendAim(aiming_seat_, aim, ball.head<2>(), true, now);
+  }
+
+  /// The aim a shot was released with (its power from its speed) and the cue ball it strikes.
+  std::pair<app::AimState, Eigen::Vector3d> releasedAim(const protocol::ShotRequest& shot) const {
     app::AimState aim;
     aim.yaw = shot.cue.yaw;
     aim.tip_side = shot.cue.tip_side;
@@ -235,9 +256,22 @@ class WindowApp {
     aim.elevation = shot.cue.elevation;
     const protocol::CommandLimits limits = limitsOf(view_);
     aim.power = (shot.cue.speed - app::kMinCueSpeed) / (limits.max_speed - app::kMinCueSpeed);
+    aim.power = std::clamp(aim.power, 0.0, 1.0);
     Eigen::Vector3d ball = controls_.cueBall();
     if (shot.cue_ball_at) ball = {shot.cue_ball_at->x(), shot.cue_ball_at->y(), view_.radius()};
-    stroke_ = Stroke{cueAimOf(aim, ball), now};
+    return {aim, ball};
+  }
+
+  /// The live aim of our turn goes out (paced by the session); a remote shooter's stroke starts.
+  void liveAim(double now) {
+    if (controls_.mode() == app::ControlMode::Aiming && aiming_seat_ >= 0) {
+      session_.sendAim(aiming_seat_, controls_.aim(), controls_.cueBall().head<2>(), false, now);
+    }
+    if (const auto stroke = session_.takeStroke()) {
+      const Eigen::Vector3d ball(stroke->cue_ball.x(), stroke->cue_ball.y(), view_.radius());
+      stroke_ = Stroke{cueAimOf(stroke->aim, ball), now};
+      cue_source_ = "stroke";
+    }
   }
 
   /// The stroke's cue at `now`, while it lasts.
@@ -293,8 +327,20 @@ class WindowApp {
     renderer_.setOverlay(overlayLines(overlay.lines));
     renderer_.setCue(std::nullopt);
     renderer_.setGhost(std::nullopt);
-    if (overlay.aim) showCue(*overlay.aim, controls_.toggles().aim_line);
-    if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
+    cue_source_ = {};
+    if (overlay.aim) {
+      showCue(*overlay.aim, controls_.toggles().aim_line);
+      cue_source_ = "local";
+    } else if (const auto followed = session_.followedAim()) {
+      // The other shooter's cue, glided toward their latest aim.
+      const Eigen::Vector3d ball(followed->cue_ball.x(), followed->cue_ball.y(), view_.radius());
+      renderer_.setCue(cueAimOf(followed->aim, ball));
+      cue_source_ = "remote";
+    }
+    if (controls_.mode() != app::ControlMode::Aiming && stroke_) {
+      showStroke(now);
+      if (renderer_.cue()) cue_source_ = "stroke";
+    }
     const app::Toggles& t = controls_.toggles();
     renderer_.setOptions(render::withQuality({t.wireframe, t.textures, t.lighting}, quality_));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -325,6 +371,12 @@ class WindowApp {
     }
     script_mouse_.cue_ball = f.cue_px;
     if (!options_.json || !options_.log_frames) return;
+    if (const auto& cue = renderer_.cue(); cue && !cue_source_.empty()) {
+      f.cue_stick = cueStickOf(*cue, camera, width, height);
+      f.cue_source = cue_source_;
+    }
+    f.live_aim = session_.latestAim();
+    f.aim_dropped = session_.aimDropped();
     f.now = now;
     f.shot = session_.motionShot();
     f.moving = session_.inMotion();
@@ -378,6 +430,7 @@ class WindowApp {
     in.spectating = session_.stage() == app::SessionStage::Spectating;
     in.local_seats = session_.localSeats();
     in.local_shooter = controls_.mode() == app::ControlMode::Aiming ? aiming_seat_ : -1;
+    in.live_aim = session_.followedAim();
     in.in_motion = session_.inMotion();
     in.controls = &controls_;
     in.placement_problem = placement_problem_;
@@ -490,6 +543,7 @@ class WindowApp {
     applyScript();
     requests();
     controls_.advance(dt);
+    liveAim(now);
     if (auto shot = controls_.takeShot()) {
       startStroke(*shot, now);
       send(std::move(*shot));
@@ -511,6 +565,7 @@ class WindowApp {
     double start = 0.0;
   };
   std::optional<Stroke> stroke_;
+  std::string cue_source_;  ///< whose cue was drawn this frame: local, remote, stroke, or none
   /// A cue ball put in hand for a shot sent: where, and the shot number that will count it.
   struct Placed {
     Eigen::Vector3d at;
