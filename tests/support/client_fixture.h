@@ -44,6 +44,11 @@ enum Domain : std::uint32_t {
   kTenBallRace = 218,
   kShotClock = 219,
   kOpensTable = 123,
+  // The shooter's live aim (live_aim_test, the window's and the benchmark's): 70–79.
+  kLiveAim = 70,
+  kForgedAim = 71,
+  kWindowLiveAim = 72,
+  kBotAim = 73,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
