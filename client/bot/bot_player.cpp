@@ -269,11 +269,15 @@ void BotPlayer::maybeShoot(double now) {
     return;
   }
   PlannedShot shot = planFor(*view);
-  plan_.reset();
-  if (shoots(shot)) {
-    shot.cue = noise_.apply(shot.cue);
-    if (config_.think > 0.0) showAim(*view, shot, 1.0, true, now);
+  if (shoots(shot) && config_.think > 0.0 && stroke_revision_ != view->revision) {
+    // The stroke goes out a pass before the command, so that it finds its turn still open.
+    plan_->cue = noise_.apply(plan_->cue);
+    stroke_revision_ = view->revision;
+    showAim(*view, *plan_, 1.0, true, now);
+    return;
   }
+  if (shoots(shot) && config_.think <= 0.0) shot.cue = noise_.apply(shot.cue);
+  plan_.reset();
   const auto sent = client_.shoot(requestOf(shot));
   if (!sent) {
     spdlog::warn("shot not sent: {}", sent.error());

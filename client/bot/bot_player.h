@@ -108,9 +108,10 @@ class BotPlayer {
   int rejections_ = 0;
   std::optional<std::uint32_t> away_revision_;  ///< the state that showed us away (we rejoined)
 
-  std::optional<PlannedShot> plan_;  ///< the plan of the state below
-  std::uint32_t plan_revision_ = 0;  ///< the state it was made on
-  client::AimPacer pacer_;           ///< the live aim's sends
+  std::optional<PlannedShot> plan_;               ///< the plan of the state below
+  std::uint32_t plan_revision_ = 0;               ///< the state it was made on
+  std::optional<std::uint32_t> stroke_revision_;  ///< the state whose stroke was shown
+  client::AimPacer pacer_;                        ///< the live aim's sends
 
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;

@@ -5,7 +5,9 @@
 // dropped and counted by the viewer.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
+#include <set>
 
 #include "client/net/game_client.h"
 #include "net/aim_convert.h"
@@ -198,6 +200,52 @@ TEST_F(LiveAimTest, ForgedAndReplayedRelaysAreDroppedAndCountedByTheViewer) {
   ASSERT_TRUE(spectatorSees(0.3)) << logs();
   EXPECT_EQ(seen_.size(), 2u) << "only the shooter's two aims were handed out";
   EXPECT_GE(eve_->unreadable(), 2u) << "the forged relays count as unreadable server samples";
+}
+
+// pool-bot shows its aim while it thinks: its cue swings onto the shot and draws back, then the
+// stroke goes out with the very heading of the command it sends.
+TEST_F(LiveAimTest, ABotsAimMovesWhileItThinksAndItsStrokeIsItsShot) {
+  open(kBotAim, "bot-aim");
+  MatchRecorder recorder(kBotAim);
+  startServer({});
+  eve_ = std::make_unique<GameClient>(ClientOptions{kBotAim, "", "watcher", {}, {}});
+  ASSERT_TRUE(pumpUntil([&] { return eve_->lobby().find("srv-1") != nullptr; })) << logs();
+  eve_->requestSpectate("srv-1");
+  startBot("alice", 5, {"--think", "1.5"});
+  startBot("bob", 6, {"--think", "1.5"});
+  ASSERT_TRUE(recorder.waitForPlayers(2, 30s)) << logs();
+  const protocol::AimSample* stroke = nullptr;
+  ASSERT_TRUE(pumpUntil(
+      [&] {
+        recorder.pump(0ms);
+        for (const auto& a : seen_) {
+          if (a.stroke) stroke = &a;
+        }
+        return stroke != nullptr;
+      },
+      60s))
+      << logs();
+  const protocol::AimSample last = *stroke;
+  // The aims before the stroke: that seat's, that turn's, many, at many headings.
+  std::set<long> headings;
+  int before = 0;
+  for (const auto& a : seen_) {
+    if (a.stroke) break;
+    EXPECT_EQ(a.seat, last.seat);
+    EXPECT_EQ(a.shot_number, last.shot_number);
+    headings.insert(std::lround(a.yaw * 1000));
+    ++before;
+  }
+  EXPECT_GE(before, 15) << "1.5 s of thinking at up to 30 aims a second";
+  EXPECT_GE(headings.size(), 5u) << "the cue swung";
+  // The stroke is the command's heading and speed's draw-back, as sent.
+  ASSERT_TRUE(recorder.pump(30s, [&] {
+    return recorder.nthCommand("srv-1", last.seat, 1) != nullptr;
+  })) << logs();
+  const protocol::ShotRequest* command = recorder.nthCommand("srv-1", last.seat, 1);
+  EXPECT_NEAR(last.yaw, std::remainder(command->cue.yaw, 2 * 3.14159265358979323846), 1e-12);
+  EXPECT_GT(last.power, 0.0);
+  EXPECT_EQ(eve_->aimDropped(), 0u);
 }
 
 }  // namespace
