@@ -182,6 +182,15 @@ TEST_F(LiveAimWindowTest, TheSpectatorSeesTheShootersCueMoveAndSettleOnTheirAim)
     EXPECT_LT(std::abs(wrapped(drawnYaw(d["cue_stick"]) - kTo)), 1 * kDeg) << d.dump();
   }
   EXPECT_GE(settled, 5) << "too few frames of the settled cue";
+
+  // The spectator's Shot pane gave the shooter's aim in numbers, the settled one among them.
+  bool numbers = false;
+  for (const auto& hud : windowLines("hud")) {
+    for (const auto& text : hud["texts"]) {
+      numbers = numbers || text.get<std::string>() == "their aim 3.00 deg   cue elevation 2.0 deg";
+    }
+  }
+  EXPECT_TRUE(numbers) << "the HUD never showed the shooter's settled aim";
   EXPECT_EQ(remote.back()["aim_dropped"].get<int>(), 0);
 }
 
