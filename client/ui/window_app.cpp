@@ -270,7 +270,6 @@ class WindowApp {
     if (const auto stroke = session_.takeStroke()) {
       const Eigen::Vector3d ball(stroke->cue_ball.x(), stroke->cue_ball.y(), view_.radius());
       stroke_ = Stroke{cueAimOf(stroke->aim, ball), now};
-      cue_source_ = "stroke";
     }
   }
 
