@@ -81,13 +81,14 @@ grant() {  # name, published topics, subscribed topics
     </grant>
 XML
 }
-server_out=$(topics MatchInfo JoinReply ShotResult TableSnapshot MatchState)
+server_out=$(topics MatchInfo JoinReply ShotResult TableSnapshot MatchState CueAim)
+player_out=$(topics JoinRequest ShotCommand AimCommand)
 {
   echo '<?xml version="1.0" encoding="UTF-8"?>'
   echo '<dds xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:noNamespaceSchemaLocation="http://www.omg.org/spec/DDS-SECURITY/20170901/omg_shared_ca_permissions.xsd">'
   echo '  <permissions>'
-  grant server "$server_out" "$(topics JoinRequest ShotCommand)"
-  grant player "$(topics JoinRequest ShotCommand)" "$server_out"
+  grant server "$server_out" "$player_out"
+  grant player "$player_out" "$server_out"
   echo '  </permissions>'
   echo '</dds>'
 } > permissions.xml

@@ -50,6 +50,7 @@ void ServerLoop::step(double now) {
     store_->checkStillThere();
   }
   readJoins(now);
+  relayAims(now);  // first: a stroke's aim still finds its turn open when its command comes along
   readCommands(now);
   stepReplay(now);
   publishFrames(now);
@@ -236,6 +237,60 @@ void ServerLoop::readPractice(double now) {
   }
 }
 
+namespace {
+
+/// The gate's view of `match` now.
+AimTurn aimTurnOf(const Match& match, const MatchRegistry& registry) {
+  AimTurn turn;
+  turn.aiming = match.inPlay() && !match.inMotion() && !match.closed();
+  if (!turn.aiming) return turn;
+  turn.shooter = match.game().shooter;
+  turn.shot_number = match.shotNumber();
+  if (turn.shooter != 0 && turn.shooter != 1) return turn;
+  const Seat& seat = match.seats()[static_cast<std::size_t>(turn.shooter)];
+  turn.token = seat.token;
+  turn.public_key = seat.public_key;
+  turn.banned = registry.banReason(seat.public_key) != nullptr;
+  return turn;
+}
+
+}  // namespace
+
+void ServerLoop::relayAims(double now) {
+  for (auto& read : transport_.takeAims()) {
+    AimDrop drop = AimDrop::Malformed;
+    if (read) {
+      const Match* match = registry_.find(read->match);
+      const AimTurn turn = match ? aimTurnOf(*match, registry_) : AimTurn{};
+      drop = aims_.check(*read, match ? &turn : nullptr, now);
+    } else {
+      aims_.check(protocol::AimSample{}, nullptr, now);  // counted as malformed
+    }
+    if (drop != AimDrop::None) {
+      spdlog::debug("aim {} seat {} seq {}: dropped ({})", read ? escapedForLog(read->match) : "?",
+                    read ? read->seat : -1, read ? read->seq : 0, toString(drop));
+      continue;
+    }
+    warnIfFailed(transport_.publish(*read), "aim");
+  }
+  // The drops are counted, not logged one by one: one line at most every 10 s while they come.
+  std::uint64_t dropped = 0;
+  for (int i = 1; i < static_cast<int>(AimDrop::Count); ++i) {
+    dropped += aims_.dropped(static_cast<AimDrop>(i));
+  }
+  if (dropped != aims_seen_ && now - aims_logged_ >= 10.0) {
+    aims_logged_ = now;
+    aims_seen_ = dropped;
+    std::string why;
+    for (int i = 1; i < static_cast<int>(AimDrop::Count); ++i) {
+      const auto d = static_cast<AimDrop>(i);
+      if (!aims_.dropped(d)) continue;
+      why += fmt::format("{}{} {}", why.empty() ? "" : ", ", toString(d), aims_.dropped(d));
+    }
+    spdlog::info("live aims: {} relayed, {} dropped ({})", aims_.relayed(), dropped, why);
+  }
+}
+
 void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, double now) {
   spdlog::debug("command {} seat {} seq {}: {} ({})", escapedForLog(match), answer.seat, answer.seq,
                 toString(answer.rejection.reason), escapedForLog(answer.rejection.text));
@@ -351,6 +406,7 @@ void ServerLoop::dispose(const std::string& match) {
   spdlog::info("match {} closed", match);
   transport_.dispose(match);
   published_.erase(match);
+  aims_.forget(match);
 }
 
 void ServerLoop::disposeAll() {

@@ -16,6 +16,7 @@
 #include "server/admin_desk.h"
 #include "server/heap_trim.h"
 #include "server/join_tally.h"
+#include "server/match/aim_gate.h"
 #include "server/match/join_rate_limit.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
@@ -53,6 +54,8 @@ class ServerLoop {
 
   /// What the loop has counted so far.
   const ServerCounters& counters() const { return counters_; }
+  /// The live aims relayed and dropped so far.
+  const AimGate& aims() const { return aims_; }
 
   /// Checks `check(now)` after every pass; a non-empty answer ends run() with it as fault().
   void guard(std::function<std::string(double now)> check) { guard_ = std::move(check); }
@@ -83,6 +86,8 @@ class ServerLoop {
   void readCommands(double now);
   /// Practice commands: checked, carried out, answered (never stored).
   void readPractice(double now);
+  /// Relays the shooters' aims that pass the gate (aim_gate.h); drops the rest, counted.
+  void relayAims(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
   void refused(const std::string& match, const CommandAnswer& answer, double now);
@@ -119,10 +124,13 @@ class ServerLoop {
   admin::AdminListener* admin_ = nullptr;
   AdminDesk* desk_ = nullptr;
   ServerCounters counters_;
-  RejectionTally rejections_;  ///< refused commands: one info line a second, each at debug
-  JoinTally joins_;            ///< spectators and refused joins: likewise
-  HeapTrim heap_trim_;         ///< gives a flood's freed heap back once it is over
-  JoinRateLimit rate_;         ///< join requests per client
+  AimGate aims_;                 ///< the checks on live aims
+  double aims_logged_ = 0.0;     ///< when the aim counts were last logged, s
+  std::uint64_t aims_seen_ = 0;  ///< aims dropped at that time
+  RejectionTally rejections_;    ///< refused commands: one info line a second, each at debug
+  JoinTally joins_;              ///< spectators and refused joins: likewise
+  HeapTrim heap_trim_;           ///< gives a flood's freed heap back once it is over
+  JoinRateLimit rate_;           ///< join requests per client
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
   double file_checked_ = 0.0;        ///< when the store's file was last checked, s

@@ -307,6 +307,13 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
     }
   } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
     onReport(*report);
+  } else if (auto* aim = std::get_if<protocol::AimSample>(&event)) {
+    // Our own seats' aims come back relayed: this screen draws its own cue.
+    const auto local = localSeats();
+    if (aim->match != match_ || std::find(local.begin(), local.end(), aim->seat) != local.end()) {
+      return;
+    }
+    follower_.receive(*aim, now);
   }
 }
 
@@ -317,6 +324,51 @@ void MatchSession::poll(double now) {
   }
   startPending();
   retryJoins();
+  // The followed cue goes when its turn does: a new shot counted, or the shot's motion drawn.
+  const client::MatchView* v = view();
+  if (const auto& latest = follower_.latest();
+      latest && (!v || v->match != latest->match || v->shot_number != latest->shot_number ||
+                 v->shooter != latest->seat)) {
+    follower_.forget();
+  }
+  follower_.advance(now);
+}
+
+void MatchSession::sendAim(int seat, const AimState& aim, const Eigen::Vector2d& cue_ball,
+                           bool stroke, double now) {
+  const client::MatchView* v = view();
+  if (!v) return;
+  protocol::AimSample sample;
+  sample.shot_number = v->shot_number;
+  sample.yaw = aim.yaw;
+  sample.tip_side = aim.tip_side;
+  sample.tip_height = aim.tip_height;
+  sample.elevation = aim.elevation;
+  sample.power = aim.power;
+  sample.stroke = stroke;
+  sample.cue_ball_x = cue_ball.x();
+  sample.cue_ball_y = cue_ball.y();
+  if (!pacer_.due(sample, now)) return;
+  for (auto& c : clients_) {
+    if (!c->seat() || c->seat()->match != match_ || c->seat()->seat != seat) continue;
+    if (!c->sendAim(sample)) ++aims_not_sent_;
+    return;
+  }
+}
+
+std::optional<FollowedAim> MatchSession::followedAim() const {
+  return follower_.shown();
+}
+
+std::optional<protocol::AimSample> MatchSession::latestAim() const {
+  if (!follower_.shown()) return std::nullopt;
+  return follower_.latest();
+}
+
+std::uint64_t MatchSession::aimDropped() const {
+  std::uint64_t n = 0;
+  for (const auto& c : clients_) n += c->aimDropped();
+  return n;
 }
 
 void MatchSession::wait(std::chrono::nanoseconds timeout) const {

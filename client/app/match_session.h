@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "client/app/aim_follower.h"
 #include "client/app/instant_replay.h"
 #include "client/app/playback_clock.h"
 #include "client/app/shot_story.h"
+#include "client/net/aim_pacer.h"
 #include "client/net/game_client.h"
 #include "client/net/player_identity.h"
 #include "core/result.h"
@@ -106,6 +108,21 @@ class MatchSession {
   /// "shoot it again from here" plays.
   const std::optional<protocol::ShotRequest>& lastShot() const { return last_shot_; }
   void setLastShot(protocol::ShotRequest shot) { last_shot_ = std::move(shot); }
+  /// Sends the live aim of local seat `seat` (its turn) at `now` when the pacer says so: the cue
+  /// `aim` at the cue ball `cue_ball` (m), `stroke` once released. Cosmetic and best effort: a
+  /// failure is only counted (aimsNotSent).
+  void sendAim(int seat, const AimState& aim, const Eigen::Vector2d& cue_ball, bool stroke,
+               double now);
+  /// The other shooter's cue as drawn now (a remote shooter whose relayed aims arrive), if any.
+  std::optional<FollowedAim> followedAim() const;
+  /// The latest relayed aim of the match followed (unsmoothed), while one is shown.
+  std::optional<protocol::AimSample> latestAim() const;
+  /// A remote shooter's stroke just released, handed out once.
+  std::optional<FollowedAim> takeStroke() { return follower_.takeStroke(); }
+  /// Relayed aims dropped so far (every client of this screen).
+  std::uint64_t aimDropped() const;
+  /// Live aims this screen could not send.
+  std::uint64_t aimsNotSent() const { return aims_not_sent_; }
   /// Asks the server for a rematch (every local seat) after a match is over.
   void rematch();
   /// Concedes the rack in play for the local seat: the only one, or (two seats at this screen)
@@ -172,6 +189,9 @@ class MatchSession {
   std::vector<SessionNote> notes_;
   ShotListener* listener_ = nullptr;
   std::optional<protocol::ShotRequest> last_shot_;
+  AimFollower follower_;
+  client::AimPacer pacer_;
+  std::uint64_t aims_not_sent_ = 0;
 };
 
 }  // namespace pool::app

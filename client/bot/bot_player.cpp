@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "client/bot/bot_aim.h"
 #include "client/bot/shot_command.h"
 
 namespace pool::bot {
@@ -279,12 +280,23 @@ void BotPlayer::maybeShoot(double now) {
   }
   const bool pressed =
       clock_deadline_ && !config_.ignore_shot_clock && now >= *clock_deadline_ - kClockMargin;
-  if (now - turn_since_ < config_.think && !pressed) return;
   if (!tableFor(seat->match)) return;
-  // The game decides what is legal: the view's rules follow the match's settings.
-  tables_[planner_table_]->rules.game = view->settings.game;
-  PlannedShot shot = planner_->plan(view->balls, client::gameStateOf(*view));
-  if (shoots(shot)) shot.cue = noise_.apply(shot.cue);
+  if (now - turn_since_ < config_.think && !pressed) {
+    // Watchers see the cue swing onto the shot and draw back while the bot thinks.
+    const PlannedShot& planned = planFor(*view);
+    if (shoots(planned)) showAim(*view, planned, (now - turn_since_) / config_.think, false, now);
+    return;
+  }
+  PlannedShot shot = planFor(*view);
+  if (shoots(shot) && config_.think > 0.0 && stroke_revision_ != view->revision) {
+    // The stroke goes out a pass before the command, so that it finds its turn still open.
+    plan_->cue = noise_.apply(plan_->cue);
+    stroke_revision_ = view->revision;
+    showAim(*view, *plan_, 1.0, true, now);
+    return;
+  }
+  if (shoots(shot) && config_.think <= 0.0) shot.cue = noise_.apply(shot.cue);
+  plan_.reset();
   const auto sent = client_.shoot(requestOf(shot));
   if (!sent) {
     spdlog::warn("shot not sent: {}", sent.error());
@@ -296,6 +308,25 @@ void BotPlayer::maybeShoot(double now) {
   shot_sent_at_ = now;
   shot_revision_ = view->revision;
   saveSeat();
+}
+
+const PlannedShot& BotPlayer::planFor(const client::MatchView& view) {
+  if (!plan_ || plan_revision_ != view.revision) {
+    // The game decides what is legal: the view's rules follow the match's settings.
+    tables_[planner_table_]->rules.game = view.settings.game;
+    plan_ = planner_->plan(view.balls, client::gameStateOf(view));
+    plan_revision_ = view.revision;
+  }
+  return *plan_;
+}
+
+void BotPlayer::showAim(const client::MatchView& view, const PlannedShot& shot, double progress,
+                        bool stroke, double now) {
+  protocol::AimSample aim = thinkingAim(shot, view.balls, progress);
+  aim.shot_number = view.shot_number;
+  aim.stroke = stroke;
+  if (!pacer_.due(aim, now)) return;
+  if (auto sent = client_.sendAim(aim); !sent) spdlog::debug("aim not sent: {}", sent.error());
 }
 
 const TableView* BotPlayer::tableFor(const std::string& match) {

@@ -12,6 +12,7 @@
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/ai/skill_noise.h"
 #include "client/bot/ai/table_view.h"
+#include "client/net/aim_pacer.h"
 #include "client/net/game_client.h"
 #include "client/net/seat_file.h"
 
@@ -80,6 +81,11 @@ class BotPlayer {
   void finish(const client::MatchView& view);
   void saveSeat();
   bool myTurn(const client::MatchView& view) const;
+  /// The plan of this turn's state (made once per state: the think time shows it being aimed).
+  const PlannedShot& planFor(const client::MatchView& view);
+  /// Sends the cue as it is aimed `progress` (0–1) into the think time (paced).
+  void showAim(const client::MatchView& view, const PlannedShot& shot, double progress, bool stroke,
+               double now);
   const TableView* tableFor(const std::string& match);
 
   client::GameClient& client_;
@@ -106,6 +112,11 @@ class BotPlayer {
   std::optional<std::uint32_t> away_revision_;    ///< the state that showed us away (we rejoined)
   std::uint32_t conceded_rack_ = 0;               ///< the last rack conceded (--concede-from-rack)
   std::optional<std::uint32_t> concede_request_;  ///< a concession awaiting its answer
+
+  std::optional<PlannedShot> plan_;               ///< the plan of the state below
+  std::uint32_t plan_revision_ = 0;               ///< the state it was made on
+  std::optional<std::uint32_t> stroke_revision_;  ///< the state whose stroke was shown
+  client::AimPacer pacer_;                        ///< the live aim's sends
 
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;

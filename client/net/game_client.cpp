@@ -200,6 +200,23 @@ Result<std::uint32_t> GameClient::practice(protocol::PracticeRequest request) {
   return Result<std::uint32_t>::ok(request.seq);
 }
 
+Result<std::uint32_t> GameClient::sendAim(protocol::AimSample aim) {
+  if (!seat_) return Result<std::uint32_t>::fail("no seat held");
+  if (aim.shot_number != aim_shot_) {
+    aim_shot_ = aim.shot_number;
+    aim_seq_ = 0;
+  }
+  aim.match = seat_->match;
+  aim.seat = seat_->seat;
+  aim.seat_token = seat_->token;
+  aim.seq = ++aim_seq_;
+  protocol::signAim(aim, key());
+  if (auto error = transport_->send(aim); !error.empty()) {
+    return Result<std::uint32_t>::fail("aim: " + error);
+  }
+  return Result<std::uint32_t>::ok(aim.seq);
+}
+
 void GameClient::noteSequence(std::uint32_t seq) {
   last_seq_ = std::max(last_seq_, seq);
 }
@@ -215,6 +232,7 @@ std::vector<ClientEvent> GameClient::poll() {
   pollStates(out);
   pollResults(out);
   pollFrames(out);
+  pollAims(out);
   return out;
 }
 
@@ -334,6 +352,37 @@ void GameClient::pollFrames(std::vector<ClientEvent>& out) {
       continue;
     }
     out.emplace_back(std::move(*frame));
+  }
+}
+
+std::string GameClient::aimRefusal(const protocol::AimSample& aim) {
+  const MatchView* view = state(aim.match);
+  const std::string where = "aim of " + escapedForLog(aim.match) + " dropped: ";
+  if (!view) return where + "no state of that match";
+  if (!inPlay(view->phase) || aim.seat != view->shooter) return where + "not the shooter's";
+  if (aim.shot_number != view->shot_number) return where + "of another turn";
+  const auto seen = aims_seen_.find(aim.match);
+  if (seen != aims_seen_.end() && seen->second.first == aim.shot_number &&
+      aim.seq <= seen->second.second) {
+    return where + "not newer than the last one (a replay)";
+  }
+  return {};
+}
+
+void GameClient::pollAims(std::vector<ClientEvent>& out) {
+  for (auto& aim : transport_->takeAims()) {
+    ++aim_dropped_;
+    if (!aim) {
+      problem(aim.error());
+      continue;
+    }
+    if (auto why = aimRefusal(*aim); !why.empty()) {
+      note(why);
+      continue;
+    }
+    --aim_dropped_;
+    aims_seen_[aim->match] = {aim->shot_number, aim->seq};
+    out.emplace_back(std::move(*aim));
   }
 }
 

@@ -20,6 +20,7 @@
 #include "client/net/server_pins.h"
 #include "core/result.h"
 #include "net/client_transport.h"
+#include "protocol/aim_sample.h"
 #include "protocol/key_pair.h"
 #include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
@@ -28,8 +29,10 @@
 namespace pool::client {
 
 /// Something received, as poll() hands it out.
-using ClientEvent =
-    std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport, TableFrame>;
+/// A shooter's live aim (protocol::AimSample) reaches poll() only once it passed the checks of
+/// GameClient::pollAims.
+using ClientEvent = std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport,
+                                 TableFrame, protocol::AimSample>;
 
 /// The seat this client holds in a match.
 struct SeatHolding {
@@ -104,6 +107,18 @@ class GameClient {
   void noteSequence(std::uint32_t seq);
   std::uint32_t lastSequence() const { return last_seq_; }
 
+  // ---- Live aim -------------------------------------------------------------------------------
+  /// Sends the cue of the seat held as it is aimed (cosmetic: the shot is the command's alone):
+  /// fills in match, seat, token and the next aim number of the turn `aim.shot_number` (from 1
+  /// each turn; apart from the commands' numbers, which it never uses up), signed with the
+  /// client's key. Best effort. Returns the aim number used, or why nothing was sent.
+  Result<std::uint32_t> sendAim(protocol::AimSample aim);
+  /// Relayed aims dropped: not signed by the pinned server key, unreadable, not from the seat
+  /// whose turn the latest state says it is, of another turn, or not newer than the last one
+  /// taken for that turn (a replay). The reader keeps the latest aim per match, so a flood costs
+  /// one check per match and poll.
+  std::uint64_t aimDropped() const { return aim_dropped_; }
+
   // ---- Receiving ------------------------------------------------------------------------------
   /// Blocks until something arrives or `timeout` passes.
   void wait(std::chrono::nanoseconds timeout) const;
@@ -135,6 +150,9 @@ class GameClient {
   void pollStates(std::vector<ClientEvent>& out);
   void pollResults(std::vector<ClientEvent>& out);
   void pollFrames(std::vector<ClientEvent>& out);
+  void pollAims(std::vector<ClientEvent>& out);
+  /// Why a relayed aim (its seal checked) is not taken, or empty.
+  std::string aimRefusal(const protocol::AimSample& aim);
   struct PendingJoin {
     protocol::SeatRequest request;
     bool retried = false;  ///< sent again once after a stale-sequence answer
@@ -172,6 +190,11 @@ class GameClient {
   std::uint64_t unreadable_ = 0;
   std::string last_problem_;
   std::optional<protocol::MatchSettings> table_settings_;
+  std::uint32_t aim_shot_ = 0;  ///< the turn our aim numbers count in
+  std::uint32_t aim_seq_ = 0;   ///< the last aim number we used in it
+  /// Per match, the turn and the number of the last relayed aim taken.
+  std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> aims_seen_;
+  std::uint64_t aim_dropped_ = 0;
 };
 
 /// A random client id (hex, 16 characters).

@@ -234,6 +234,16 @@ void callLine(Say& say, const app::Controls& c) {
   }
 }
 
+/// The other shooter's cue in numbers: heading, elevation, tip and the power drawn.
+void liveAimLines(Say& say, const app::AimState& aim, const protocol::CommandLimits& limits) {
+  say.text("their aim " + fixed(degrees(aim.yaw), 2) + " deg   cue elevation " +
+           fixed(degrees(aim.elevation), 1) + " deg");
+  say.text("tip side " + fixed(aim.tip_side, 2, true) + " R   height " +
+           fixed(aim.tip_height, 2, true) + " R");
+  say.text("cue drawn back for " + fixed(app::cueSpeedOf(aim.power, limits), 2) + " m/s");
+  ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(px(220), 0), "their power");
+}
+
 void shotPanel(Say& say, const HudInput& in) {
   const app::Controls& c = *in.controls;
   const app::AimState& aim = c.aim();
@@ -253,7 +263,11 @@ void shotPanel(Say& say, const HudInput& in) {
     } else {
       say.text("watching");
     }
-    // The shooter's aim is theirs: nothing is shown rather than numbers that are not theirs.
+    // The shooter's aim as their live aim shows it; without one, no numbers rather than numbers
+    // that are not theirs.
+    if (in.live_aim && in.view && in.live_aim->seat == in.view->shooter && !in.in_motion) {
+      liveAimLines(say, in.live_aim->aim, c.limits());
+    }
     if (!localSeat(in, in.view ? in.view->shooter : -1)) {
       say.text("F1: keys");
       ImGui::End();

@@ -41,6 +41,8 @@ struct HudInput {
   bool concede_asked = false;  ///< the concession waits for the player's yes or no
   bool can_replay = false;     ///< a last shot is kept and the balls are at rest
   bool replaying = false;      ///< the instant replay is showing
+  /// The other shooter's live aim (as drawn, smoothed), while it arrives.
+  std::optional<app::FollowedAim> live_aim;
 };
 
 /// What the player clicked.

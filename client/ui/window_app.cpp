@@ -62,6 +62,19 @@ protocol::CommandLimits limitsOf(const bot::TableView& view) {
   return limits;
 }
 
+/// The drawn cue's tip and butt in the table frame and in pixels.
+CueStick cueStickOf(const render::CuePlacement& cue, const render::Camera& camera, int width,
+                    int height) {
+  CueStick s;
+  s.tip = {cue.tip.x, cue.tip.y, cue.tip.z};
+  s.butt = {cue.butt.x, cue.butt.y, cue.butt.z};
+  const glm::vec3 tip = render::projectToPixels(camera, width, height, cue.tip);
+  const glm::vec3 butt = render::projectToPixels(camera, width, height, cue.butt);
+  s.tip_px = {tip.x, tip.y};
+  s.butt_px = {butt.x, butt.y};
+  return s;
+}
+
 app::PlacementArea areaOf(const bot::TableView& view) {
   return {view.halfLength(), view.halfWidth(), view.headStringX(), view.radius()};
 }
@@ -239,9 +252,17 @@ class WindowApp {
   }
 
   // ---- One frame ------------------------------------------------------------------------------
-  /// The cue strokes through after a shot is sent (a re-rack's harmless stroke shows none).
+  /// The cue strokes through after a shot is sent (a re-rack's harmless stroke shows none); the
+  /// viewers see it stroke too.
   void startStroke(const protocol::ShotRequest& shot, double now) {
     if (shot.cue.speed_is_ball) return;
+    const auto [aim, ball] = releasedAim(shot);
+    stroke_ = Stroke{cueAimOf(aim, ball), now};
+    if (aiming_seat_ >= 0) session_.sendAim(aiming_seat_, aim, ball.head<2>(), true, now);
+  }
+
+  /// The aim a shot was released with (its power from its speed) and the cue ball it strikes.
+  std::pair<app::AimState, Eigen::Vector3d> releasedAim(const protocol::ShotRequest& shot) const {
     app::AimState aim;
     aim.yaw = shot.cue.yaw;
     aim.tip_side = shot.cue.tip_side;
@@ -249,9 +270,21 @@ class WindowApp {
     aim.elevation = shot.cue.elevation;
     const protocol::CommandLimits limits = limitsOf(view_);
     aim.power = (shot.cue.speed - app::kMinCueSpeed) / (limits.max_speed - app::kMinCueSpeed);
+    aim.power = std::clamp(aim.power, 0.0, 1.0);
     Eigen::Vector3d ball = controls_.cueBall();
     if (shot.cue_ball_at) ball = {shot.cue_ball_at->x(), shot.cue_ball_at->y(), view_.radius()};
-    stroke_ = Stroke{cueAimOf(aim, ball), now};
+    return {aim, ball};
+  }
+
+  /// The live aim of our turn goes out (paced by the session); a remote shooter's stroke starts.
+  void liveAim(double now) {
+    if (controls_.mode() == app::ControlMode::Aiming && aiming_seat_ >= 0) {
+      session_.sendAim(aiming_seat_, controls_.aim(), controls_.cueBall().head<2>(), false, now);
+    }
+    if (const auto stroke = session_.takeStroke()) {
+      const Eigen::Vector3d ball(stroke->cue_ball.x(), stroke->cue_ball.y(), view_.radius());
+      stroke_ = Stroke{cueAimOf(stroke->aim, ball), now};
+    }
   }
 
   /// The stroke's cue at `now`, while it lasts.
@@ -313,14 +346,26 @@ class WindowApp {
     if (balls) renderer_.setBalls(sceneBalls(shown));
     renderer_.setCue(std::nullopt);
     renderer_.setGhost(std::nullopt);
+    cue_source_ = {};
     if (replay) {
       renderer_.setOverlay({});  // the replay shows the balls only
     } else {
       auto overlay = windowOverlay(controls_, session_.view(), shown, view_);
       placement_problem_ = std::move(overlay.placement_problem);
       renderer_.setOverlay(overlayLines(overlay.lines));
-      if (overlay.aim) showCue(*overlay.aim, controls_.toggles().aim_line);
-      if (controls_.mode() != app::ControlMode::Aiming) showStroke(now);
+      if (overlay.aim) {
+        showCue(*overlay.aim, controls_.toggles().aim_line);
+        cue_source_ = "local";
+      } else if (const auto followed = session_.followedAim()) {
+        // The other shooter's cue, glided toward their latest aim.
+        const Eigen::Vector3d ball(followed->cue_ball.x(), followed->cue_ball.y(), view_.radius());
+        renderer_.setCue(cueAimOf(followed->aim, ball));
+        cue_source_ = "remote";
+      }
+      if (controls_.mode() != app::ControlMode::Aiming && stroke_) {
+        showStroke(now);
+        if (renderer_.cue()) cue_source_ = "stroke";
+      }
     }
     const app::Toggles& t = controls_.toggles();
     renderer_.setOptions(render::withQuality({t.wireframe, t.textures, t.lighting}, quality_));
@@ -352,6 +397,12 @@ class WindowApp {
     }
     script_mouse_.cue_ball = f.cue_px;
     if (!options_.json || !options_.log_frames) return;
+    if (const auto& cue = renderer_.cue(); cue && !cue_source_.empty()) {
+      f.cue_stick = cueStickOf(*cue, camera, width, height);
+      f.cue_source = cue_source_;
+    }
+    f.live_aim = session_.latestAim();
+    f.aim_dropped = session_.aimDropped();
     f.now = now;
     f.shot = session_.motionShot();
     f.moving = session_.inMotion();
@@ -415,6 +466,7 @@ class WindowApp {
     in.spectating = session_.stage() == app::SessionStage::Spectating;
     in.local_seats = session_.localSeats();
     in.local_shooter = controls_.mode() == app::ControlMode::Aiming ? aiming_seat_ : -1;
+    in.live_aim = session_.followedAim();
     in.in_motion = session_.inMotion();
     in.controls = &controls_;
     in.placement_problem = placement_problem_;
@@ -609,6 +661,7 @@ class WindowApp {
     }
     if (auto note = practice_.step(session_)) addNote(std::move(*note));
     controls_.advance(dt);
+    liveAim(now);
     if (auto shot = controls_.takeShot()) {
       session_.replay().stop();  // the live game takes over
       startStroke(*shot, now);
@@ -633,6 +686,7 @@ class WindowApp {
     double start = 0.0;
   };
   std::optional<Stroke> stroke_;
+  std::string cue_source_;  ///< whose cue was drawn this frame: local, remote, stroke, or none
   /// A cue ball put in hand for a shot sent: where, and the shot number that will count it.
   struct Placed {
     Eigen::Vector3d at;

@@ -52,6 +52,27 @@ void printDrawnLine(const DrawnFrame& f) {
   line["shot"] = f.shot ? nlohmann::json(*f.shot) : nlohmann::json();
   if (f.cue) line["cue"] = {f.cue->x(), f.cue->y(), f.cue->z()};
   if (f.cue_px) line["cue_px"] = {f.cue_px->x(), f.cue_px->y()};
+  if (f.cue_stick) {
+    const CueStick& c = *f.cue_stick;
+    line["cue_stick"] = {{"tip", {c.tip.x(), c.tip.y(), c.tip.z()}},
+                         {"butt", {c.butt.x(), c.butt.y(), c.butt.z()}},
+                         {"tip_px", {c.tip_px.x(), c.tip_px.y()}},
+                         {"butt_px", {c.butt_px.x(), c.butt_px.y()}},
+                         {"source", f.cue_source}};
+  }
+  if (f.live_aim) {
+    const protocol::AimSample& a = *f.live_aim;
+    line["live_aim"] = {{"seat", a.seat},
+                        {"seq", a.seq},
+                        {"shot_number", a.shot_number},
+                        {"yaw", a.yaw},
+                        {"tip_side", a.tip_side},
+                        {"tip_height", a.tip_height},
+                        {"elevation", a.elevation},
+                        {"power", a.power},
+                        {"stroke", a.stroke}};
+  }
+  line["aim_dropped"] = f.aim_dropped;
   printLine(line);
 }
 

@@ -22,6 +22,15 @@ void printNoteLine(const app::SessionNote& note);
 /// Prints {"event": "hud", "texts": [...]}: every text the HUD drew in a frame.
 void printHudLine(const std::vector<std::string>& texts);
 
+/// The cue stick as drawn: its tip's face and butt's end, table frame (m) and pixels from the
+/// top-left corner.
+struct CueStick {
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+  Eigen::Vector3d butt = Eigen::Vector3d::Zero();
+  Eigen::Vector2d tip_px = Eigen::Vector2d::Zero();
+  Eigen::Vector2d butt_px = Eigen::Vector2d::Zero();
+};
+
 /// One frame as drawn (--log-frames).
 struct DrawnFrame {
   double now = 0.0;                   ///< s on the window's clock
@@ -41,6 +50,10 @@ struct DrawnFrame {
   std::array<float, 16> projection{};  ///< column after column
   int width = 0;
   int height = 0;
+  std::optional<CueStick> cue_stick;  ///< the cue, when one was drawn
+  std::string cue_source;             ///< whose: "local", "remote" (a live aim) or "stroke"
+  std::optional<protocol::AimSample> live_aim;  ///< the latest live aim shown (unsmoothed)
+  std::uint64_t aim_dropped = 0;                ///< live aims dropped so far
 };
 
 /// Prints {"event": "drawn", ...}.

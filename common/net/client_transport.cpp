@@ -2,6 +2,7 @@
 // edge.
 #include "net/client_transport.h"
 
+#include "net/aim_convert.h"
 #include "net/convert.h"
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
@@ -28,17 +29,19 @@ QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
   return profile;
 }
 
-enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates };
+enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates, kAims };
 
 /// The readers of one followed match's own topics, in its partition.
 struct MatchReaders {
   MatchReaders(const Subscriber& subscriber, const ProtocolTopics& topics)
       : results(subscriber, topics.result_topic, deeper(qos::result())),
         snapshots(subscriber, topics.snapshot_topic, deeper(qos::snapshot(), kSnapshotDepth)),
-        states(subscriber, topics.state_topic, deeper(qos::state())) {}
+        states(subscriber, topics.state_topic, deeper(qos::state())),
+        cue_aims(subscriber, topics.cue_aim_topic, qos::aim()) {}
   Reader<pool_ShotResult> results;
   Reader<pool_TableSnapshot> snapshots;
   Reader<pool_MatchState> states;
+  Reader<pool_CueAim> cue_aims;  ///< the shooter's cue, relayed by the server
 };
 
 }  // namespace
@@ -53,6 +56,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
         practice(participant, practice_topic, qos::command()),
+        aim_commands(participant, aim_command_topic, qos::aim()),
         waitset(participant) {
     waitset.attachData(match_info, kLobby);
     waitset.attachData(join_replies, kReplies);
@@ -66,6 +70,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
       waitset.attachData(made->results, kResults);
       waitset.attachData(made->snapshots, kSnapshots);
       waitset.attachData(made->states, kStates);
+      waitset.attachData(made->cue_aims, kAims);
       return made;
     });
     return readers ? std::string() : readers.error();
@@ -77,6 +82,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
       waitset.detachData(readers->results);
       waitset.detachData(readers->snapshots);
       waitset.detachData(readers->states);
+      waitset.detachData(readers->cue_aims);
     }
     matches.close(match);
   }
@@ -121,6 +127,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   Writer<pool_JoinRequest> join_requests;
   Writer<pool_ShotCommand> commands;
   Writer<pool_PracticeCommand> practice;
+  Writer<pool_AimCommand> aim_commands;
   WaitSet waitset;
   MatchScopes<Subscriber, MatchReaders> matches;  ///< followed matches, each in its partition
 };
@@ -144,6 +151,15 @@ std::string ClientTransport::send(const protocol::ShotRequest& command) {
 
 std::string ClientTransport::send(const protocol::PracticeRequest& command) {
   return e_->practice.writeOrWhy(*toWire(command));
+}
+
+std::string ClientTransport::send(const protocol::AimSample& aim) {
+  return e_->aim_commands.writeOrWhy(*toAimCommand(aim));
+}
+
+std::vector<Result<protocol::AimSample>> ClientTransport::takeAims() {
+  return e_->readAll<protocol::AimSample>(
+      e_->fromEachMatch([](const MatchReaders& r) { return r.cue_aims.take(); }));
 }
 
 std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {

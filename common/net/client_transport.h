@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "protocol/aim_sample.h"
 #include "protocol/match_messages.h"
 #include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
@@ -69,6 +70,9 @@ class ClientTransport {
   std::string follow(const std::set<std::string>& matches);
   std::set<std::string> followed() const;
 
+  /// Writes the shooter's signed aim (best effort: it may be lost, the next one replaces it).
+  std::string send(const protocol::AimSample& aim);
+
   std::vector<Result<LobbyEvent>> takeLobby();
   std::vector<Result<protocol::JoinAnswer>> takeReplies();
   /// Match states; a disposed one is skipped (the lobby reports the match gone).
@@ -76,6 +80,8 @@ class ClientTransport {
   /// Results of the followed matches, and refusals of commands naming no match of the server.
   std::vector<Result<protocol::ShotReport>> takeResults();
   std::vector<Result<protocol::TableFrame>> takeFrames();
+  /// Shooters' aims the server relayed (CueAim), the latest per match.
+  std::vector<Result<protocol::AimSample>> takeAims();
 
  private:
   struct Endpoints;

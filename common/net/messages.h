@@ -29,6 +29,8 @@ POOL_NET_MESSAGE(pool_ShotResult, topics::kShotResult);
 POOL_NET_MESSAGE(pool_TableSnapshot, topics::kTableSnapshot);
 POOL_NET_MESSAGE(pool_MatchState, topics::kMatchState);
 POOL_NET_MESSAGE(pool_PracticeCommand, topics::kPracticeCommand);
+POOL_NET_MESSAGE(pool_AimCommand, topics::kAimCommand);
+POOL_NET_MESSAGE(pool_CueAim, topics::kCueAim);
 
 #undef POOL_NET_MESSAGE
 

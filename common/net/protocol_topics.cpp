@@ -12,6 +12,8 @@ ProtocolTopics::ProtocolTopics(std::uint32_t domain)
       result_topic(participant),
       snapshot_topic(participant),
       state_topic(participant),
-      practice_topic(participant) {}
+      practice_topic(participant),
+      aim_command_topic(participant),
+      cue_aim_topic(participant) {}
 
 }  // namespace pool::net

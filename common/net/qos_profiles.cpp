@@ -47,6 +47,10 @@ QosProfile snapshot() {
   return make(Reliability::BestEffort, Durability::Volatile, 1);
 }
 
+QosProfile aim() {
+  return make(Reliability::BestEffort, Durability::Volatile, 1);
+}
+
 QosProfile state() {
   return make(Reliability::Reliable, Durability::TransientLocal, 1);
 }

@@ -50,6 +50,9 @@ QosProfile result();
 QosProfile snapshot();
 /// MatchState: reliable, transient-local, keep-last 1 (a late joiner gets the latest at once).
 QosProfile state();
+/// AimCommand and CueAim: best-effort, volatile, keep-last 1 (cosmetic: only the latest aim
+/// matters, and a lost one is replaced by the next).
+QosProfile aim();
 
 }  // namespace qos
 }  // namespace pool::net

@@ -70,4 +70,8 @@ protocol::SealedSample sealedOf(const pool_TableSnapshot& sample) {
   return ofMatch(sample);
 }
 
+protocol::SealedSample sealedOf(const pool_CueAim& sample) {
+  return ofMatch(sample);
+}
+
 }  // namespace pool::net

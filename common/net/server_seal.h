@@ -43,6 +43,10 @@ template <>
 constexpr protocol::PublishedKind publishedKindOf<pool_TableSnapshot>() {
   return protocol::PublishedKind::TableSnapshot;
 }
+template <>
+constexpr protocol::PublishedKind publishedKindOf<pool_CueAim>() {
+  return protocol::PublishedKind::CueAim;
+}
 
 /// What the server's signature covers: every field of `sample`, in its wire encoding, with the
 /// signature empty. Generic over the type, so fields added to a message later are covered too.
@@ -71,5 +75,6 @@ protocol::SealedSample sealedOf(const pool_JoinReply& sample);
 protocol::SealedSample sealedOf(const pool_MatchState& sample);
 protocol::SealedSample sealedOf(const pool_ShotResult& sample);
 protocol::SealedSample sealedOf(const pool_TableSnapshot& sample);
+protocol::SealedSample sealedOf(const pool_CueAim& sample);
 
 }  // namespace pool::net

@@ -3,6 +3,7 @@
 
 #include <unordered_set>
 
+#include "net/aim_convert.h"
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
@@ -21,7 +22,7 @@ namespace pool::net {
 
 namespace {
 
-enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2, kPracticeTag = 3 };
+enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2, kPracticeTag = 3, kAimTag = 4 };
 
 /// More matches than any server keeps open (--max-matches bounds them): the writers of every
 /// match the server publishes are kept until it disposes the match.
@@ -32,10 +33,12 @@ struct MatchWriters {
   MatchWriters(const Publisher& publisher, const ProtocolTopics& topics)
       : results(publisher, topics.result_topic, qos::result()),
         snapshots(publisher, topics.snapshot_topic, qos::snapshot()),
-        states(publisher, topics.state_topic, qos::state()) {}
+        states(publisher, topics.state_topic, qos::state()),
+        cue_aims(publisher, topics.cue_aim_topic, qos::aim()) {}
   Writer<pool_ShotResult> results;
   Writer<pool_TableSnapshot> snapshots;
   Writer<pool_MatchState> states;
+  Writer<pool_CueAim> cue_aims;  ///< the shooter's cue, relayed after the server's checks
 };
 
 }  // namespace
@@ -50,10 +53,12 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         stray_results(participant, result_topic, qos::result()),
+        aim_commands(participant, aim_command_topic, qos::aim()),
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
     waitset.attachData(practice, kPracticeTag);
+    waitset.attachData(aim_commands, kAimTag);
   }
 
   /// Seals `sample` with the server's key and writes it; empty when written, else why not.
@@ -78,6 +83,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   Writer<pool_JoinReply> join_replies;
   /// Answers to commands naming no match or seat of this server, in the default partition.
   Writer<pool_ShotResult> stray_results;
+  Reader<pool_AimCommand> aim_commands;
   WaitSet waitset;
   MatchScopes<Publisher, MatchWriters> matches;  ///< per-match writers, each in its partition
   std::unordered_set<std::string> replied;       ///< clients whose last reply is kept
@@ -130,6 +136,20 @@ std::vector<IncomingPractice> ServerTransport::takePractice(const protocol::Comm
   std::vector<IncomingPractice> out;
   for (auto& sample : e_->practice.take()) out.push_back(readPractice(*sample, limits));
   return out;
+}
+
+std::vector<Result<protocol::AimSample>> ServerTransport::takeAims() {
+  std::vector<Result<protocol::AimSample>> out;
+  for (auto& sample : e_->aim_commands.take()) {
+    if (sample.meta().valid) out.push_back(fromWire(*sample));
+  }
+  return out;
+}
+
+std::string ServerTransport::publish(const protocol::AimSample& aim) {
+  auto writers = e_->writersOf(aim.match);
+  if (!writers) return writers.error();
+  return e_->sealAndWrite((*writers)->cue_aims, *toCueAim(aim));
 }
 
 std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {

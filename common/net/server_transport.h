@@ -10,8 +10,10 @@
 #include <variant>
 #include <vector>
 
+#include "core/result.h"
 #include "net/incoming_command.h"
 #include "net/incoming_practice.h"
+#include "protocol/aim_sample.h"
 #include "protocol/command_limits.h"
 #include "protocol/key_pair.h"
 #include "protocol/match_messages.h"
@@ -51,12 +53,16 @@ class ServerTransport {
   ServerTransport(const ServerTransport&) = delete;
   ServerTransport& operator=(const ServerTransport&) = delete;
 
-  /// Blocks until a join request or command arrives (or a writer is gone), or `timeout` passes.
+  /// Blocks until a join request, command or aim arrives (or a writer is gone), or `timeout`
+  /// passes.
   void wait(std::chrono::nanoseconds timeout) const;
 
   std::vector<JoinEvent> takeJoins();
   std::vector<IncomingCommand> takeCommands(const protocol::CommandLimits& limits);
   std::vector<IncomingPractice> takePractice(const protocol::CommandLimits& limits);
+  /// The shooters' aim samples since the last take (keep-last 1 per match and seat: a flood
+  /// collapses to the latest), each read with net::fromWire or why it could not be.
+  std::vector<Result<protocol::AimSample>> takeAims();
 
   std::string publish(const protocol::LobbyEntry& entry);
   std::string publish(const protocol::MatchView& view);
@@ -65,6 +71,8 @@ class ServerTransport {
   /// writer would otherwise hold one instance per key for good).
   std::string publish(const protocol::ShotReport& report, bool keep = true);
   std::string publish(const protocol::TableFrame& frame);
+  /// Relays an aim the server accepted as a CueAim (best effort; token and signature dropped).
+  std::string publish(const protocol::AimSample& aim);
 
   /// Readers of `match`'s shot results matched now (someone is watching it).
   std::uint32_t resultReaders(const std::string& match);

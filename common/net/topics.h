@@ -13,5 +13,7 @@ inline constexpr std::string_view kShotResult = "pool/ShotResult";            //
 inline constexpr std::string_view kTableSnapshot = "pool/TableSnapshot";      ///< key match
 inline constexpr std::string_view kMatchState = "pool/MatchState";            ///< key match
 inline constexpr std::string_view kPracticeCommand = "pool/PracticeCommand";  ///< key match + seat
+inline constexpr std::string_view kAimCommand = "pool/AimCommand";            ///< key match + seat
+inline constexpr std::string_view kCueAim = "pool/CueAim";                    ///< key match
 
 }  // namespace pool::net::topics

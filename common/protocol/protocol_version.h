@@ -9,7 +9,8 @@ namespace pool::protocol {
 /// by whoever opens a table. 5: each match's states, results and frames travel in a DDS partition
 /// of the match's own (an older client, listening in the default partition, would see none);
 /// practice tables (the practice setting, PracticeCommand, the practice fields of MatchInfo and
-/// MatchState); a seat may concede its rack (JOIN_CONCEDE).
+/// MatchState); a seat may concede its rack (JOIN_CONCEDE); the shooter's live aim
+/// (AimCommand in, CueAim relayed by the server).
 inline constexpr unsigned kProtocolVersion = 5;
 
 }  // namespace pool::protocol

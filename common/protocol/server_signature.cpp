@@ -32,6 +32,8 @@ const char* toString(PublishedKind kind) {
       return "ShotResult";
     case PublishedKind::TableSnapshot:
       return "TableSnapshot";
+    case PublishedKind::CueAim:
+      return "CueAim";
   }
   return "?";
 }

@@ -21,6 +21,7 @@ enum class PublishedKind : std::uint8_t {
   MatchState = 3,
   ShotResult = 4,
   TableSnapshot = 5,
+  CueAim = 6,  ///< the shooter's aim, relayed
 };
 
 const char* toString(PublishedKind kind);

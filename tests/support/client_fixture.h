@@ -56,6 +56,11 @@ enum Domain : std::uint32_t {
   kPracticeFriend = 94,
   kServerStopped = 60,  ///< 60–69: match partitions, a stopped server
   kPartitionSwitch = 61,
+  // The shooter's live aim (live_aim_test, the window's and the benchmark's): 70–79.
+  kLiveAim = 70,
+  kForgedAim = 71,
+  kWindowLiveAim = 72,
+  kBotAim = 73,
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).

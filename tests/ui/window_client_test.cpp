@@ -17,6 +17,7 @@
 #include "client/app/turn_view.h"
 #include "support/client_fixture.h"
 #include "support/display_check.h"
+#include "support/window_output.h"
 
 namespace pool::client::test {
 namespace {
@@ -85,21 +86,10 @@ class WindowClientTest : public ClientIntegrationTest {
   }
 
   std::vector<nlohmann::json> windowLines(const std::string& event) const {
-    std::vector<nlohmann::json> out;
-    std::ifstream in(file("window.out"));
-    for (std::string line; std::getline(in, line);) {
-      auto json = nlohmann::json::parse(line, nullptr, false);
-      if (!json.is_discarded() && json.value("event", "") == event) out.push_back(json);
-    }
-    return out;
+    return pool::test::jsonLines(file("window.out"), event);
   }
 
-  std::string windowErr() const {
-    std::ifstream in(file("window.err"));
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
+  std::string windowErr() const { return pool::test::fileText(file("window.err")); }
 
   std::future<int> window_;
 };
