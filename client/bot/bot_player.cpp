@@ -155,6 +155,9 @@ void BotPlayer::act(double now) {
       if (now - join_sent_at_ >= config_.join_retry) sendJoin(now);
       break;
     case BotStage::SeatLost:
+      // The wait for the lost match starts once a server is seen again: a server that was stopped
+      // comes back with its lobby entries one by one, in no set order.
+      if (client_.lobby().empty()) lost_at_ = now;
       if (saved_ && client_.lobby().find(saved_->match)) {
         sendJoin(now);
       } else if (!client_.lobby().empty() && now - lost_at_ >= config_.lost_seat_wait) {

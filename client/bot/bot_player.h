@@ -25,9 +25,9 @@ struct BotConfig {
   std::uint64_t seed = 1;           ///< seeds the skill noise
   std::filesystem::path seat_file;  ///< where the seat and its token are kept; empty: nowhere
   double join_retry = 1.0;          ///< s between join attempts while unanswered
-  double lost_seat_wait = 5.0;      ///< s to wait for a lost match to reappear before seating anew
-  double answer_timeout = 10.0;     ///< s without an answer to a shot before sending it again
-  double think = 0.0;               ///< s to wait on each turn before shooting (pace for watchers)
+  double lost_seat_wait = 5.0;   ///< s a lobby is seen without the lost match before seating anew
+  double answer_timeout = 10.0;  ///< s without an answer to a shot before sending it again
+  double think = 0.0;            ///< s to wait on each turn before shooting (pace for watchers)
   /// Tests: think the full `think` even when the shot clock runs out first (it shoots
   /// kClockMargin s before the clock's end otherwise).
   bool ignore_shot_clock = false;

@@ -100,6 +100,7 @@ void Gateway::step(double now) {
       if (!w.empty_since) w.empty_since = now;
       if (now - *w.empty_since >= kLeaveAfter) {
         if (w.joined || w.request) client_.requestLeave(it->first);
+        client_.observe(it->first, false);
         it = watched_.erase(it);
         continue;
       }
@@ -108,6 +109,8 @@ void Gateway::step(double now) {
     }
     w.empty_since.reset();
     if (!w.joined && now - w.sent_at >= join_retry_) {
+      // One client watches many matches: each is followed (its partition read) while watched.
+      client_.observe(it->first);
       w.request = client_.requestSpectate(it->first);
       w.sent_at = now;
     }

@@ -25,6 +25,7 @@ std::size_t sounded(const audio::SoundBoard& board) {
 TEST_F(MatchSoundTest, EveryShotSoundsFromItsFramesAndItsLogAddsNothing) {
   open(kSoundDomain, "sound");
   GameClient listener({kSoundDomain, "", "listener", {}, {}});
+  listener.observe("srv-1");  // the first table's states, results and frames, in its partition
   audio::SoundOptions options;
   options.mute = true;  // the silent sink: no device needed, the mixing is the same
   options.log = [](const std::string&) {};

@@ -211,6 +211,8 @@ int main(int argc, char** argv) {
         scratch.file(name + ".out"), scratch.file(name + ".err")));
   }
   client::GameClient spectator({kDomain, "", "bench", {}, [](auto&&...) {}});
+  spectator.observe("bench-1");  // each match's states travel in its own partition
+  spectator.observe("bench-2");
   // Both matches in play before measuring.
   const auto ready_by = Clock::now() + 60s;
   while (Clock::now() < ready_by) {

@@ -251,6 +251,8 @@ TEST_F(PracticeTableTest, StrangersReplaysAndBadValuesAreRefusedAndChangeNothing
 
   // A stranger on the domain, with its own key, writing practice commands for Ada's seat.
   net::ClientTransport stranger(kPracticeAttacks, {});
+  // It reads the match's partition, as anyone on the domain may, to see the answers.
+  ASSERT_TRUE(stranger.follow({match}).empty());
   const auto stranger_key = protocol::generateKeyPair();
   std::vector<ShotReport> seen;
   const auto answerTo = [&](std::uint32_t seq) -> std::optional<ShotReport> {
