@@ -22,7 +22,7 @@ cd "$build"
 # render with Mesa, whose driver is dlclose'd at exit: its leaks show no frame but an unknown
 # module, so no library-named suppression can match them. They run with ASan and UBSan but
 # without LeakSanitizer; everything else runs with it.
-gl_tests='^((Render[A-Za-z]*Test|RendererTest|WindowClientTest|AimViewTest|LightTest|HallTest)\.|frame_bench_smoke$)'
+gl_tests='^((Render[A-Za-z]*Test|RendererTest|WindowClientTest|LiveAimWindowTest|WindowPracticeTest|AimViewTest|LightTest|HallTest)\.|frame_bench_smoke$)'
 # The stopped-server test spends 20 s with the server stopped and then needs a whole bot match
 # inside the bots' 90 s bound: too slow at ASan's pace, so it runs in the normal suite only.
 slow_tests='^ServerStopTest\.'

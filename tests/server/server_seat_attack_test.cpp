@@ -130,7 +130,7 @@ TEST_F(ServerSeatAttacks, OnlyTheSeatedPlayerConcedesTheirOwnRackAndOnlyOnce) {
   ASSERT_NE(playing, nullptr);
   const std::uint64_t token = tokenReadOffTheWire(eve, "b");
   const std::uint32_t revision = playing->revision;
-  const std::size_t states_before = a.states.size();
+  const std::size_t states_before = a.stateCount(s.match);
 
   // Eve, in Bob's name: her own key, his key signed by her, no signature at all.
   protocol::SeatRequest own = eve.request(pool_JOIN_CONCEDE, s.match, "", 1, token);
@@ -144,7 +144,7 @@ TEST_F(ServerSeatAttacks, OnlyTheSeatedPlayerConcedesTheirOwnRackAndOnlyOnce) {
   // Ada, signing with her own key, concedes for the other seat: no such seat is bound to her key.
   EXPECT_EQ(outcomeOf(a.join(pool_JOIN_CONCEDE, s.match, "", 1, token)), pool_JOIN_BAD_TOKEN);
   a.waitUntil([] { return false; }, 300ms);  // time for any (wrong) state change to arrive
-  EXPECT_EQ(a.states.size(), states_before) << "a refused concession changed the match";
+  EXPECT_EQ(a.stateCount(s.match), states_before) << "a refused concession changed the match";
   EXPECT_EQ(a.latestState(s.match)->revision, revision);
   EXPECT_EQ(a.latestState(s.match)->rack, 1u);
 
