@@ -174,47 +174,37 @@ std::uint32_t GameClient::requestConcede() {
   return sendJoin(seat_->match, JoinAction::Concede, seat_->seat, seat_->token);
 }
 
+template <class Message, class Sign>
+Result<std::uint32_t> GameClient::sendSigned(Message message, std::uint32_t seq, Sign sign,
+                                             const char* what) {
+  message.match = seat_->match;
+  message.seat = seat_->seat;
+  message.seat_token = seat_->token;
+  message.seq = seq;
+  sign(message, key());
+  if (auto error = transport_->send(message); !error.empty()) {
+    return Result<std::uint32_t>::fail(std::string(what) + ": " + error);
+  }
+  return Result<std::uint32_t>::ok(seq);
+}
+
 Result<std::uint32_t> GameClient::shoot(protocol::ShotRequest request) {
   if (!seat_) return Result<std::uint32_t>::fail("no seat held");
-  request.match = seat_->match;
-  request.seat = seat_->seat;
-  request.seat_token = seat_->token;
-  request.seq = ++last_seq_;
-  protocol::signCommand(request, key());
-  if (auto error = transport_->send(request); !error.empty()) {
-    return Result<std::uint32_t>::fail("shot command: " + error);
-  }
-  return Result<std::uint32_t>::ok(request.seq);
+  return sendSigned(std::move(request), ++last_seq_, protocol::signCommand, "shot command");
 }
 
 Result<std::uint32_t> GameClient::practice(protocol::PracticeRequest request) {
   if (!seat_) return Result<std::uint32_t>::fail("no seat held");
-  request.match = seat_->match;
-  request.seat = seat_->seat;
-  request.seat_token = seat_->token;
-  request.seq = ++last_seq_;
-  protocol::signPractice(request, key());
-  if (auto error = transport_->send(request); !error.empty()) {
-    return Result<std::uint32_t>::fail("practice command: " + error);
-  }
-  return Result<std::uint32_t>::ok(request.seq);
+  return sendSigned(std::move(request), ++last_seq_, protocol::signPractice, "practice command");
 }
 
 Result<std::uint32_t> GameClient::sendAim(protocol::AimSample aim) {
   if (!seat_) return Result<std::uint32_t>::fail("no seat held");
   if (aim.shot_number != aim_shot_) {
     aim_shot_ = aim.shot_number;
-    aim_seq_ = 0;
+    aim_seq_ = 0;  // an aim's number counts within its turn
   }
-  aim.match = seat_->match;
-  aim.seat = seat_->seat;
-  aim.seat_token = seat_->token;
-  aim.seq = ++aim_seq_;
-  protocol::signAim(aim, key());
-  if (auto error = transport_->send(aim); !error.empty()) {
-    return Result<std::uint32_t>::fail("aim: " + error);
-  }
-  return Result<std::uint32_t>::ok(aim.seq);
+  return sendSigned(std::move(aim), ++aim_seq_, protocol::signAim, "aim");
 }
 
 void GameClient::noteSequence(std::uint32_t seq) {

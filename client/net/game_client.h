@@ -145,6 +145,10 @@ class GameClient {
  private:
   std::uint32_t sendJoin(const std::string& match, JoinAction action, int seat,
                          std::uint64_t token);
+  /// Fills in the seat held (match, seat, token) and `seq`, signs `message` with `sign` and
+  /// writes it; the sequence number sent, or why not ("<what>: <error>").
+  template <class Message, class Sign>
+  Result<std::uint32_t> sendSigned(Message message, std::uint32_t seq, Sign sign, const char* what);
   void pollLobby(std::vector<ClientEvent>& out);
   void pollReplies(std::vector<ClientEvent>& out);
   void pollStates(std::vector<ClientEvent>& out);

@@ -1,5 +1,5 @@
-// A shot command as the server reads it off the wire, in domain terms: the request, or why its
-// fields cannot be read.
+// A signed player command (a shot, a practice command) as the server reads it off the wire, in
+// domain terms: the request, or why its fields cannot be read.
 #pragma once
 
 #include <cstdint>
@@ -10,15 +10,19 @@
 
 namespace pool::net {
 
-/// A shot command off the wire: its request once its fields pass validateShotCommand, else the
-/// problem (the match, seat and seq are echoed in the refusal either way).
-struct IncomingCommand {
+/// A command off the wire: its request once its fields check out, else the problem (the match,
+/// seat and seq are echoed in the refusal either way).
+template <class Request>
+struct IncomingSigned {
   std::string match;
   int seat = 0;
   std::uint32_t seq = 0;
-  std::optional<protocol::ShotRequest> request;
+  std::optional<Request> request;
   bool bad_signature = false;  ///< the signature field itself is malformed (not 64 bytes)
   std::string problem;         ///< "<field>: <reason>" when `request` is empty
 };
+
+/// A shot command off the wire (its fields checked by validateShotCommand).
+using IncomingCommand = IncomingSigned<protocol::ShotRequest>;
 
 }  // namespace pool::net

@@ -2,23 +2,12 @@
 // its fields cannot be read.
 #pragma once
 
-#include <cstdint>
-#include <optional>
-#include <string>
-
+#include "net/incoming_command.h"
 #include "protocol/practice_request.h"
 
 namespace pool::net {
 
-/// A practice command off the wire: its request once its fields check out, else the problem (the
-/// match, seat and seq are echoed in the refusal either way).
-struct IncomingPractice {
-  std::string match;
-  int seat = 0;
-  std::uint32_t seq = 0;
-  std::optional<protocol::PracticeRequest> request;
-  bool bad_signature = false;  ///< the signature field itself is malformed (over 64 bytes)
-  std::string problem;         ///< "<field>: <reason>" when `request` is empty
-};
+/// A practice command off the wire, read like a shot command.
+using IncomingPractice = IncomingSigned<protocol::PracticeRequest>;
 
 }  // namespace pool::net
