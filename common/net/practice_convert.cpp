@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "net/shot_command_check.h"
 #include "net/wire_fields.h"
 
 namespace pool::net {
@@ -16,11 +17,6 @@ static_assert(pool_PRACTICE_AGAIN == static_cast<int>(protocol::PracticeAction::
 static_assert(pool_PRACTICE_PHYSICS == static_cast<int>(protocol::PracticeAction::Physics));
 static_assert(sizeof(pool_PracticeCommand::coefficients) / sizeof(double) ==
               protocol::kPracticeCoefficients.size());
-
-bool printableId(std::string_view text) {
-  return !text.empty() &&
-         std::all_of(text.begin(), text.end(), [](char c) { return c > ' ' && c < 127; });
-}
 
 }  // namespace
 
@@ -55,10 +51,7 @@ IncomingPractice readPractice(const pool_PracticeCommand& c,
     in.problem = std::move(problem);
     return in;
   };
-  if (!terminated(c.match) || !printableId(textOf(c.match))) {
-    return fail("match: must be a non-empty printable id");
-  }
-  if (c.seat != 0 && c.seat != 1) return fail("seat: must be 0 or 1");
+  if (CommandCheck check = checkMatchAndSeat(c); !check.ok()) return fail(std::move(check.text));
   const std::int32_t action = rawValue(c.action);
   if (action < pool_PRACTICE_LAYOUT || action > pool_PRACTICE_PHYSICS) {
     return fail("action: not a known practice action");

@@ -28,23 +28,19 @@ std::string number(double value) {
   return buffer;
 }
 
-bool printable(std::string_view text) {
-  return std::all_of(text.begin(), text.end(), [](char c) { return c > ' ' && c < 127; });
-}
-
 bool shoots(const pool_ShotOption& option) {
   const std::int32_t value = rawValue(option);
   return value != pool_OPTION_REBREAK && value != pool_OPTION_OPPONENT_REBREAKS &&
          value != pool_OPTION_PASS_BACK;
 }
 
+/// Printable ASCII without spaces; empty passes (an empty pocket name means none).
+bool printable(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return c > ' ' && c < 127; });
+}
+
 Check checkIdentity(const pool_ShotCommand& c) {
-  if (!terminated(c.match) || textOf(c.match).empty() || !printable(textOf(c.match))) {
-    return fail(CommandProblem::BadMatchId, "match: must be a non-empty printable id");
-  }
-  if (c.seat != 0 && c.seat != 1) {
-    return fail(CommandProblem::BadSeat, "seat: must be 0 or 1");
-  }
+  if (CommandCheck check = checkMatchAndSeat(c); !check.ok()) return check;
   return std::nullopt;
 }
 
@@ -184,6 +180,10 @@ IncomingCommand readCommand(const pool_ShotCommand& command,
     in.problem = request.error();
   }
   return in;
+}
+
+bool printableId(std::string_view text) {
+  return !text.empty() && printable(text);
 }
 
 }  // namespace pool::net

@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <string_view>
 
 #include "net/incoming_command.h"
 #include "net/messages.h"
+#include "net/wire_fields.h"
 #include "protocol/command_limits.h"
 
 namespace pool::net {
@@ -37,6 +39,22 @@ struct CommandCheck {
 
   bool ok() const { return problem == CommandProblem::None; }
 };
+
+/// True when `text` is a non-empty id of printable ASCII without spaces.
+bool printableId(std::string_view text);
+
+/// The match id and seat that every signed player command (a shot, a practice command) names,
+/// checked alike: a non-empty printable id, and seat 0 or 1.
+template <class Command>
+CommandCheck checkMatchAndSeat(const Command& command) {
+  if (!terminated(command.match) || !printableId(textOf(command.match))) {
+    return {CommandProblem::BadMatchId, "match: must be a non-empty printable id"};
+  }
+  if (command.seat != 0 && command.seat != 1) {
+    return {CommandProblem::BadSeat, "seat: must be 0 or 1"};
+  }
+  return {};
+}
 
 /// Checks every field of `command` against `limits`. Shot values (speed, elevation, tip, yaw) are
 /// range-checked only when the option answers with a shot; every number must be finite always.
