@@ -32,6 +32,10 @@ bool HeapTrim::due(std::uint64_t events, double now) {
   return true;
 }
 
+long heapInUse() {
+  return static_cast<long>(::mallinfo2().uordblks);
+}
+
 long releaseFreeHeap() {
   const long before = residentBytes();
   ::malloc_trim(0);

@@ -29,4 +29,8 @@ class HeapTrim {
 /// was free. Returns the bytes of resident memory given back, as far as the process can tell.
 long releaseFreeHeap();
 
+/// Bytes of heap in use (allocated and not freed) in the main arena and the others (glibc's
+/// mallinfo2): what a flood left allocated, as against what is merely resident.
+long heapInUse();
+
 }  // namespace pool::server

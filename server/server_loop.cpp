@@ -128,20 +128,22 @@ void ServerLoop::readJoins(double now) {
       transport_.forgetClient(gone->client);  // its last reply need not be kept any more
       rate_.forget(gone->client);
     } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
-      spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
-      joins_.add("unreadable", now);
-      ++counters_.joins_refused;
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
       echo.request = bad->request;
       echo.match = bad->match;
+      if (!withinWriterLimit(bad->writer, echo, now)) continue;
+      spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
+      joins_.add("unreadable", now);
+      ++counters_.joins_refused;
       warnIfFailed(
           transport_.publish(replyTo(echo, JoinAnswer::refuse(JoinOutcome::NotAllowed, bad->reason),
                                      registry_.serverId())),
           "join reply");
     } else {
-      answerJoin(std::get<JoinCommand>(event), now);
+      const auto& join = std::get<net::IncomingJoin>(event);
+      answerJoin(join.request, join.writer, now);
     }
   }
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
@@ -149,16 +151,37 @@ void ServerLoop::readJoins(double now) {
   }
   if (heap_trim_.due(joins_.total(), now)) {
     const long released = releaseFreeHeap();
-    spdlog::info("a flood of joins is over: {:.1f} MB of freed memory given back",
-                 static_cast<double>(released) / (1024.0 * 1024.0));
+    spdlog::info(
+        "a flood of joins is over: {:.1f} MB of freed memory given back, {:.1f} MB of "
+        "heap in use",
+        static_cast<double>(released) / (1024.0 * 1024.0),
+        static_cast<double>(heapInUse()) / (1024.0 * 1024.0));
   }
 }
 
 std::size_t ServerLoop::trackedClients() const {
-  return transport_.keptReplies() + rate_.tracked();
+  return transport_.keptReplies() + rate_.tracked() + writer_rate_.tracked();
 }
 
-void ServerLoop::answerJoin(const JoinCommand& command, double now) {
+bool ServerLoop::withinWriterLimit(std::uint64_t writer, const JoinCommand& echo, double now) {
+  const std::string key = "writer " + std::to_string(writer);
+  if (writer_rate_.allow(key, now)) return true;
+  joins_.add("over the per-writer limit", now);
+  ++counters_.joins_refused;
+  if (writer_rate_.tellRefusal(key, now)) {
+    const auto refusal = JoinAnswer::refuse(
+        JoinOutcome::NotAllowed,
+        "too many join requests: at most " +
+            std::to_string(static_cast<int>(2 * JoinRateLimit::kPerSecond)) +
+            " a second from one participant's writer, whatever client ids they carry");
+    warnIfFailed(transport_.publish(replyTo(echo, refusal, registry_.serverId())), "join reply");
+  }
+  return false;
+}
+
+void ServerLoop::answerJoin(const JoinCommand& command, std::uint64_t writer, double now) {
+  // A client over its own limit is refused (one instance answered again and again); a request
+  // within it must still be within its writer's limit (many client ids from one writer).
   if (!rate_.allow(command.client, now)) {
     joins_.add("over the per-client limit", now);
     ++counters_.joins_refused;
@@ -169,6 +192,7 @@ void ServerLoop::answerJoin(const JoinCommand& command, double now) {
     warnIfFailed(transport_.publish(replyTo(command, refusal, registry_.serverId())), "join reply");
     return;
   }
+  if (!withinWriterLimit(writer, command, now)) return;
   const JoinAnswer answer = registry_.join(command);
   ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
   const auto line = [&] {

@@ -79,7 +79,12 @@ class ServerLoop {
 
  private:
   void readJoins(double now);
-  void answerJoin(const JoinCommand& command, double now);
+  /// Answers a join request from DDS writer `writer`, within its client's and its writer's limits.
+  void answerJoin(const JoinCommand& command, std::uint64_t writer, double now);
+  /// Whether a join request from DDS writer `writer` is within that writer's limit; one over it
+  /// is counted, and refused with a reply to `echo`'s client at most once a second (the rest go
+  /// unanswered: each reply is an instance the server writes).
+  bool withinWriterLimit(std::uint64_t writer, const JoinCommand& echo, double now);
   /// Clients the server holds something for: kept replies and join-rate buckets.
   std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
@@ -131,6 +136,9 @@ class ServerLoop {
   JoinTally joins_;              ///< spectators and refused joins: likewise
   HeapTrim heap_trim_;           ///< gives a flood's freed heap back once it is over
   JoinRateLimit rate_;           ///< join requests per client
+  /// Join requests per DDS writer: a participant that asks under many client ids (a flood) is
+  /// limited as one. Twice a client's rate: a program may run a few clients on one writer.
+  JoinRateLimit writer_rate_{2 * JoinRateLimit::kPerSecond, 2 * JoinRateLimit::kBurst};
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
   double file_checked_ = 0.0;        ///< when the store's file was last checked, s

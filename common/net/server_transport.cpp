@@ -110,12 +110,13 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
       }
       continue;
     }
+    const std::uint64_t writer = sample.meta().publication_handle;
     auto request = fromWire(r);
     if (!request) {
       out.emplace_back(
-          UnreadableJoin{client, r.request, std::string(textOf(r.match)), request.error()});
+          UnreadableJoin{client, r.request, std::string(textOf(r.match)), request.error(), writer});
     } else {
-      out.emplace_back(std::move(*request));
+      out.emplace_back(IncomingJoin{std::move(*request), writer});
     }
     // Its writer went away before the request was read: no separate notice follows, so the
     // client is gone right after its request (joined or not, it is noticed).
@@ -202,8 +203,10 @@ std::size_t ServerTransport::keptReplies() const {
 void ServerTransport::forgetClient(const std::string& client) {
   pool_JoinReply key{};
   setText(key.client, client);
-  e_->join_replies.unregister(key);
-  e_->replied.erase(client);
+  // Only a client that was answered has an instance to unregister (one never answered, such as
+  // a request dropped over its writer's limit, has none: unregistering it would send a notice
+  // about nothing).
+  if (e_->replied.erase(client) > 0) e_->join_replies.unregister(key);
 }
 
 void ServerTransport::dispose(const std::string& match) {

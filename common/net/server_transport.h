@@ -29,6 +29,14 @@ struct UnreadableJoin {
   std::uint32_t request = 0;
   std::string match;
   std::string reason;
+  std::uint64_t writer = 0;  ///< the DDS writer it came from (its publication handle)
+};
+
+/// A join request as read, with the DDS writer it came from: a client names itself, but one
+/// writer sending under many client ids is still one participant asking.
+struct IncomingJoin {
+  protocol::SeatRequest request;
+  std::uint64_t writer = 0;  ///< its publication handle, unique within the server's participant
 };
 
 /// A client whose JoinRequest writer went away (its liveliness lease ran out, or it exited).
@@ -38,7 +46,7 @@ struct ClientGone {
 };
 
 /// What the join-request topic delivered.
-using JoinEvent = std::variant<protocol::SeatRequest, UnreadableJoin, ClientGone>;
+using JoinEvent = std::variant<IncomingJoin, UnreadableJoin, ClientGone>;
 
 /// The server's participant, its readers of requests and commands and its writers of lobby
 /// entries, replies, results, frames and states (QoS from qos_profiles.h). Lobby entries and

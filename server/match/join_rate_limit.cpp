@@ -1,4 +1,4 @@
-// The per-client token buckets of join requests.
+// The per-client (or per-writer) token buckets of join requests.
 #include "server/match/join_rate_limit.h"
 
 #include <algorithm>
@@ -15,6 +15,13 @@ bool JoinRateLimit::allow(const std::string& client, double now) {
   }
   if (b.tokens < 1.0) return false;
   b.tokens -= 1.0;
+  return true;
+}
+
+bool JoinRateLimit::tellRefusal(const std::string& client, double now) {
+  const auto it = buckets_.find(client);
+  if (it == buckets_.end() || now - it->second.told < 1.0) return false;
+  it->second.told = now;
   return true;
 }
 

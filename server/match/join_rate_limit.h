@@ -1,4 +1,5 @@
-// How often one client may ask the server for a seat or to watch: a token bucket per client.
+// How often one client (or one DDS writer) may ask the server for a seat or to watch: a token
+// bucket per key.
 #pragma once
 
 #include <cstddef>
@@ -8,9 +9,10 @@
 namespace pool::server {
 
 /// A client may send `burst` join requests at once and `per_second` a second after that; the
-/// rest are refused unread. Only clients that asked within the last burst / per_second seconds
-/// are tracked (a full bucket holds nothing worth keeping), so a flood from many client ids
-/// leaves nothing behind once it stops. Time is passed in (s, monotonic).
+/// rest are refused unread. The key is a client id, or a DDS writer for the limit per writer. Only
+/// clients that asked within the last burst / per_second seconds are tracked (a full bucket holds
+/// nothing worth keeping), so a flood from many client ids leaves nothing behind once it stops.
+/// Time is passed in (s, monotonic).
 class JoinRateLimit {
  public:
   explicit JoinRateLimit(double per_second = kPerSecond, double burst = kBurst)
@@ -18,6 +20,10 @@ class JoinRateLimit {
 
   /// Takes one request of `client` at `now` from its bucket; false when the bucket is empty.
   bool allow(const std::string& client, double now);
+  /// Whether a refusal of `client`'s requests over its limit is to be sent at `now`: once a second
+  /// at most (the others are dropped unanswered; a flood is told, not answered request by request).
+  /// Call after allow() refused it.
+  bool tellRefusal(const std::string& client, double now);
   /// `client` is gone: its bucket goes too.
   void forget(const std::string& client) { buckets_.erase(client); }
   /// Clients tracked now.
@@ -29,7 +35,8 @@ class JoinRateLimit {
  private:
   struct Bucket {
     double tokens = 0.0;
-    double at = 0.0;  ///< when `tokens` was last brought up to date
+    double at = 0.0;       ///< when `tokens` was last brought up to date
+    double told = -1.0e9;  ///< when a refusal was last sent
   };
   /// Drops the buckets that have filled up again by `now` (at most once a second).
   void sweep(double now);

@@ -31,6 +31,26 @@ TEST(JoinRateLimit, IdleAndGoneClientsAreForgotten) {
   EXPECT_EQ(limit.tracked(), 1u);
 }
 
+TEST(JoinRateLimit, ARefusalIsToldOnceASecond) {
+  JoinRateLimit limit(20.0, 40.0);
+  EXPECT_FALSE(limit.tellRefusal("writer 7", 0.0)) << "nothing to tell a key never seen";
+  int allowed = 0, told = 0;
+  // 2 000 requests a second for 3 s from one key: 40 at once, then 20 a second, and of the
+  // refused ones, one told a second.
+  for (int i = 0; i < 6000; ++i) {
+    const double now = 10.0 + i / 2000.0;
+    if (limit.allow("writer 7", now)) {
+      ++allowed;
+    } else if (limit.tellRefusal("writer 7", now)) {
+      ++told;
+    }
+  }
+  EXPECT_GE(allowed, 40 + 2 * 20);
+  EXPECT_LE(allowed, 40 + 3 * 20 + 1);
+  EXPECT_EQ(told, 3);
+  EXPECT_FALSE(limit.tellRefusal("writer 8", 20.0));
+}
+
 TEST(JoinTally, OneSummaryAPeriodWithCountsByWhatHappened) {
   JoinTally tally(1.0);
   EXPECT_FALSE(tally.summary(0.0, 0, 0));
