@@ -133,7 +133,7 @@ void ServerLoop::readJoins(double now) {
       echo.client = bad->client;
       echo.request = bad->request;
       echo.match = bad->match;
-      if (!withinWriterLimit(bad->writer, echo, now)) continue;
+      if (!withinSenderLimit(bad->sender, echo, now)) continue;
       spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
       joins_.add("unreadable", now);
       ++counters_.joins_refused;
@@ -143,7 +143,7 @@ void ServerLoop::readJoins(double now) {
           "join reply");
     } else {
       const auto& join = std::get<net::IncomingJoin>(event);
-      answerJoin(join.request, join.writer, now);
+      answerJoin(join.request, join.sender, now);
     }
   }
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
@@ -160,28 +160,27 @@ void ServerLoop::readJoins(double now) {
 }
 
 std::size_t ServerLoop::trackedClients() const {
-  return transport_.keptReplies() + rate_.tracked() + writer_rate_.tracked();
+  return transport_.keptReplies() + rate_.tracked() + sender_rate_.tracked();
 }
 
-bool ServerLoop::withinWriterLimit(std::uint64_t writer, const JoinCommand& echo, double now) {
-  const std::string key = "writer " + std::to_string(writer);
-  if (writer_rate_.allow(key, now)) return true;
-  joins_.add("over the per-writer limit", now);
+bool ServerLoop::withinSenderLimit(const std::string& sender, const JoinCommand& echo, double now) {
+  if (sender_rate_.allow(sender, now)) return true;
+  joins_.add("over the per-participant limit", now);
   ++counters_.joins_refused;
-  if (writer_rate_.tellRefusal(key, now)) {
+  if (sender_rate_.tellRefusal(sender, now)) {
     const auto refusal = JoinAnswer::refuse(
         JoinOutcome::NotAllowed,
         "too many join requests: at most " +
             std::to_string(static_cast<int>(2 * JoinRateLimit::kPerSecond)) +
-            " a second from one participant's writer, whatever client ids they carry");
+            " a second from one DDS participant, whatever client ids they carry");
     warnIfFailed(transport_.publish(replyTo(echo, refusal, registry_.serverId())), "join reply");
   }
   return false;
 }
 
-void ServerLoop::answerJoin(const JoinCommand& command, std::uint64_t writer, double now) {
+void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sender, double now) {
   // A client over its own limit is refused (one instance answered again and again); a request
-  // within it must still be within its writer's limit (many client ids from one writer).
+  // within it must still be within its participant's (many client ids from one participant).
   if (!rate_.allow(command.client, now)) {
     joins_.add("over the per-client limit", now);
     ++counters_.joins_refused;
@@ -192,7 +191,7 @@ void ServerLoop::answerJoin(const JoinCommand& command, std::uint64_t writer, do
     warnIfFailed(transport_.publish(replyTo(command, refusal, registry_.serverId())), "join reply");
     return;
   }
-  if (!withinWriterLimit(writer, command, now)) return;
+  if (!withinSenderLimit(sender, command, now)) return;
   const JoinAnswer answer = registry_.join(command);
   ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
   const auto line = [&] {

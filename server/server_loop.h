@@ -79,12 +79,13 @@ class ServerLoop {
 
  private:
   void readJoins(double now);
-  /// Answers a join request from DDS writer `writer`, within its client's and its writer's limits.
-  void answerJoin(const JoinCommand& command, std::uint64_t writer, double now);
-  /// Whether a join request from DDS writer `writer` is within that writer's limit; one over it
-  /// is counted, and refused with a reply to `echo`'s client at most once a second (the rest go
+  /// Answers a join request from `sender` (net::IncomingJoin), within its client's and its
+  /// participant's limits.
+  void answerJoin(const JoinCommand& command, const std::string& sender, double now);
+  /// Whether a join request from `sender` is within its participant's limit; one over it is
+  /// counted, and refused with a reply to `echo`'s client at most once a second (the rest go
   /// unanswered: each reply is an instance the server writes).
-  bool withinWriterLimit(std::uint64_t writer, const JoinCommand& echo, double now);
+  bool withinSenderLimit(const std::string& sender, const JoinCommand& echo, double now);
   /// Clients the server holds something for: kept replies and join-rate buckets.
   std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
@@ -136,9 +137,9 @@ class ServerLoop {
   JoinTally joins_;              ///< spectators and refused joins: likewise
   HeapTrim heap_trim_;           ///< gives a flood's freed heap back once it is over
   JoinRateLimit rate_;           ///< join requests per client
-  /// Join requests per DDS writer: a participant that asks under many client ids (a flood) is
-  /// limited as one. Twice a client's rate: a program may run a few clients on one writer.
-  JoinRateLimit writer_rate_{2 * JoinRateLimit::kPerSecond, 2 * JoinRateLimit::kBurst};
+  /// Join requests per DDS participant: one that asks under many client ids (a flood), from one
+  /// writer or many, is limited as one. Twice a client's rate: a program may run a few clients.
+  JoinRateLimit sender_rate_{2 * JoinRateLimit::kPerSecond, 2 * JoinRateLimit::kBurst};
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
   double file_checked_ = 0.0;        ///< when the store's file was last checked, s

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <string_view>
 
 #include "net/dds_error.h"
@@ -58,6 +59,9 @@ std::size_t fetchLoaned(std::int32_t reader, bool take, std::size_t max,
                         const std::function<void(const void*, const SampleMeta&)>& each);
 
 MatchedStatus publicationMatched(std::int32_t writer);
+/// The participant of writer `publication` matched with `reader`, as 32 hex digits (its GUID), or
+/// empty when that writer is not matched (gone, or never seen).
+std::string participantOf(std::int32_t reader, std::uint64_t publication);
 MatchedStatus subscriptionMatched(std::int32_t reader);
 LivelinessStatus livelinessChanged(std::int32_t reader);
 /// Blocks until `entity` (a writer or reader) matches at least `count` peers or `timeout` passes.

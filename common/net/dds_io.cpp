@@ -162,6 +162,19 @@ MatchedStatus subscriptionMatched(std::int32_t reader) {
   return {s.current_count, s.total_count};
 }
 
+std::string participantOf(std::int32_t reader, std::uint64_t publication) {
+  dds_builtintopic_endpoint_t* data = dds_get_matched_publication_data(reader, publication);
+  if (data == nullptr) return {};
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const unsigned char byte : data->participant_key.v) {
+    out += kHex[byte >> 4];
+    out += kHex[byte & 15];
+  }
+  dds_builtintopic_free_endpoint(data);
+  return out;
+}
+
 LivelinessStatus livelinessChanged(std::int32_t reader) {
   dds_liveliness_changed_status_t s{};
   check(dds_get_liveliness_changed_status(reader, &s), "liveliness changed status");

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,12 @@ class Reader {
         each(*static_cast<const T*>(s), m);
       }
     });
+  }
+
+  /// The participant (its GUID in hex) of a matched writer, from a sample's
+  /// `meta().publication_handle`; empty when that writer is no longer matched.
+  std::string participantOf(std::uint64_t publication) const {
+    return detail::participantOf(handle(), publication);
   }
 
   /// Writers matched with this reader.

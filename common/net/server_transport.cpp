@@ -1,6 +1,7 @@
 // The server's topics, readers, writers and waitset, and the conversions at their edge.
 #include "net/server_transport.h"
 
+#include <unordered_map>
 #include <unordered_set>
 
 #include "net/aim_convert.h"
@@ -87,6 +88,19 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   WaitSet waitset;
   MatchScopes<Publisher, MatchWriters> matches;  ///< per-match writers, each in its partition
   std::unordered_set<std::string> replied;       ///< clients whose last reply is kept
+  /// The participant of each join-request writer seen (IncomingJoin::sender), looked up once.
+  std::unordered_map<std::uint64_t, std::string> senders;
+
+  /// The sender of a join request written by `publication`.
+  std::string senderOf(std::uint64_t publication) {
+    if (const auto it = senders.find(publication); it != senders.end()) return it->second;
+    const std::string guid = join_requests.participantOf(publication);
+    if (guid.empty()) return "writer " + std::to_string(publication);
+    // Writers come and go: a full cache starts again rather than keep the gone ones.
+    if (senders.size() >= kMaxSenders) senders.clear();
+    return senders.emplace(publication, "participant " + guid).first->second;
+  }
+  static constexpr std::size_t kMaxSenders = 4096;
 };
 
 ServerTransport::ServerTransport(std::uint32_t domain, const protocol::KeyPair& server_key)
@@ -110,13 +124,13 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
       }
       continue;
     }
-    const std::uint64_t writer = sample.meta().publication_handle;
+    std::string sender = e_->senderOf(sample.meta().publication_handle);
     auto request = fromWire(r);
     if (!request) {
-      out.emplace_back(
-          UnreadableJoin{client, r.request, std::string(textOf(r.match)), request.error(), writer});
+      out.emplace_back(UnreadableJoin{client, r.request, std::string(textOf(r.match)),
+                                      request.error(), std::move(sender)});
     } else {
-      out.emplace_back(IncomingJoin{std::move(*request), writer});
+      out.emplace_back(IncomingJoin{std::move(*request), std::move(sender)});
     }
     // Its writer went away before the request was read: no separate notice follows, so the
     // client is gone right after its request (joined or not, it is noticed).

@@ -29,14 +29,16 @@ struct UnreadableJoin {
   std::uint32_t request = 0;
   std::string match;
   std::string reason;
-  std::uint64_t writer = 0;  ///< the DDS writer it came from (its publication handle)
+  std::string sender;  ///< the DDS participant it came from (IncomingJoin::sender)
 };
 
-/// A join request as read, with the DDS writer it came from: a client names itself, but one
-/// writer sending under many client ids is still one participant asking.
+/// A join request as read, with the DDS participant it came from: a client names itself, but one
+/// participant sending under many client ids (from one writer or many) is still one asking.
 struct IncomingJoin {
   protocol::SeatRequest request;
-  std::uint64_t writer = 0;  ///< its publication handle, unique within the server's participant
+  /// "participant <GUID in hex>", or "writer <publication handle>" when its writer was no
+  /// longer matched by the time it was read.
+  std::string sender;
 };
 
 /// A client whose JoinRequest writer went away (its liveliness lease ran out, or it exited).
