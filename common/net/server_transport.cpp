@@ -218,7 +218,7 @@ void ServerTransport::forgetClient(const std::string& client) {
   pool_JoinReply key{};
   setText(key.client, client);
   // Only a client that was answered has an instance to unregister (one never answered, such as
-  // a request dropped over its writer's limit, has none: unregistering it would send a notice
+  // a request dropped over its participant's limit, has none: unregistering it would send a notice
   // about nothing).
   if (e_->replied.erase(client) > 0) e_->join_replies.unregister(key);
 }
