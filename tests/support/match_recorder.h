@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,7 +61,12 @@ class MatchRecorder {
     const auto entries = client_.lobby().entries();
     return entries.empty() ? std::string() : entries.front()->match;
   }
-  const MatchView* latest(const std::string& match) const { return client_.state(match); }
+  /// The latest state of `match` the game client accepted (signed by the pinned server key),
+  /// kept after the match closed; null before any.
+  const MatchView* latest(const std::string& match) const {
+    const auto it = latest_.find(match);
+    return it == latest_.end() ? nullptr : &it->second;
+  }
   /// Every state of `match` received, in arrival order.
   std::vector<MatchView> states(const std::string& match) const {
     std::vector<MatchView> out;
@@ -124,11 +130,29 @@ class MatchRecorder {
     return profile;
   }
   void drain() {
-    // Each match travels in its own partition: the recorder follows every one the lobby lists.
-    for (const auto* entry : client_.lobby().entries()) client_.observe(entry->match);
     for (auto& event : client_.poll()) {
       if (auto* report = std::get_if<ShotReport>(&event)) reports_.push_back(std::move(*report));
       if (auto* frame = std::get_if<TableFrame>(&event)) frames_.push_back(std::move(*frame));
+    }
+    for (const auto& match : observed_) {
+      if (const MatchView* view = client_.state(match)) latest_[match] = *view;
+    }
+    // Each match travels in its own partition, and a client follows at most net::kMaxFollowed
+    // (after a few server restarts more matches than that have come and gone): the recorder
+    // follows the matches the lobby lists now and lets go of those that closed, keeping the
+    // last state it had of each.
+    std::set<std::string> listed;
+    for (const auto* entry : client_.lobby().entries()) listed.insert(entry->match);
+    for (auto it = observed_.begin(); it != observed_.end();) {
+      if (listed.count(*it) > 0) {
+        ++it;
+        continue;
+      }
+      client_.observe(*it, false);
+      it = observed_.erase(it);
+    }
+    for (const auto& match : listed) {
+      if (observed_.insert(match).second) client_.observe(match);
     }
     for (auto& sample : all_states_.take()) {
       if (auto view = net::fromWire(*sample)) states_.push_back(std::move(*view));
@@ -147,6 +171,8 @@ class MatchRecorder {
   net::Subscriber every_match_;  ///< every match's partition
   net::Reader<pool_MatchState> all_states_;
   std::vector<MatchView> states_;
+  std::set<std::string> observed_;           ///< the matches followed: those listed now
+  std::map<std::string, MatchView> latest_;  ///< the client's latest state of each match
   std::vector<TableFrame> frames_;
   std::vector<ShotReport> reports_;
   std::map<CommandKey, protocol::ShotRequest> commands_seen_;
