@@ -177,6 +177,12 @@ void BotPlayer::act(double now) {
 void BotPlayer::findMatch(double now) {
   if (now - join_sent_at_ < config_.join_retry) return;
   if (!saved_ && config_.match.empty()) {
+    if (client_.lobby().empty()) {
+      lobby_seen_at_.reset();
+      return;  // no server yet
+    }
+    if (!lobby_seen_at_) lobby_seen_at_ = now;
+    if (now - *lobby_seen_at_ < kLobbySettle) return;
     const auto free = client_.lobby().lowestWithFreeSeat();
     if (!free) return;  // no server yet, or every match is full: keep waiting
     target_ = *free;

@@ -97,6 +97,11 @@ class BotPlayer {
   std::optional<std::uint32_t> join_request_;
   double join_sent_at_ = -1e9;
   double lost_at_ = 0.0;
+  std::optional<double> lobby_seen_at_;  ///< when this lobby first listed a match
+  /// A server's lobby entries arrive one by one in no set order: a table is chosen once they
+  /// have had this long (s) to come in, so that two bots started together both see the lowest
+  /// free table and meet at it.
+  static constexpr double kLobbySettle = 0.3;
 
   // The shot in flight: its sequence number, when it left, the state it was planned on.
   std::optional<std::uint32_t> pending_seq_;
