@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/hex.h"
 #include "net/dds_detail.h"
 #include "net/sample.h"
 
@@ -165,12 +166,7 @@ MatchedStatus subscriptionMatched(std::int32_t reader) {
 std::string participantOf(std::int32_t reader, std::uint64_t publication) {
   dds_builtintopic_endpoint_t* data = dds_get_matched_publication_data(reader, publication);
   if (data == nullptr) return {};
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (const unsigned char byte : data->participant_key.v) {
-    out += kHex[byte >> 4];
-    out += kHex[byte & 15];
-  }
+  std::string out = hexOf(data->participant_key.v);
   dds_builtintopic_free_endpoint(data);
   return out;
 }

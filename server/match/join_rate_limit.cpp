@@ -1,4 +1,4 @@
-// The per-client (or per-writer) token buckets of join requests.
+// The per-client (or per-participant) token buckets of join requests.
 #include "server/match/join_rate_limit.h"
 
 #include <algorithm>

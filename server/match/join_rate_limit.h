@@ -1,4 +1,4 @@
-// How often one client (or one DDS writer) may ask the server for a seat or to watch: a token
+// How often one client (or one DDS participant) may ask the server for a seat or to watch: a token
 // bucket per key.
 #pragma once
 
@@ -9,10 +9,10 @@
 namespace pool::server {
 
 /// A client may send `burst` join requests at once and `per_second` a second after that; the
-/// rest are refused unread. The key is a client id, or a DDS writer for the limit per writer. Only
-/// clients that asked within the last burst / per_second seconds are tracked (a full bucket holds
-/// nothing worth keeping), so a flood from many client ids leaves nothing behind once it stops.
-/// Time is passed in (s, monotonic).
+/// rest are refused unread. The key is a client id, or a DDS participant for the limit per
+/// participant. Only clients that asked within the last burst / per_second seconds are tracked (a
+/// full bucket holds nothing worth keeping), so a flood from many client ids leaves nothing behind
+/// once it stops. Time is passed in (s, monotonic).
 class JoinRateLimit {
  public:
   explicit JoinRateLimit(double per_second = kPerSecond, double burst = kBurst)
