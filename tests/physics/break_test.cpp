@@ -116,31 +116,37 @@ TEST_F(Break, MechanicalEnergyNeverRises) {
 TEST_F(Break, MiddleBallsBarelyMoveWhileTheBackCornersFly) {
   // 20 ms after the cue ball first touches the apex, the back corners of the rack have left
   // fast while the balls in the middle of the rack have hardly moved.
-  double t_hit = 0;
+  double t_hit = std::nan("");
   for (const Event& e : outcome_->events) {
     if (e.type == EventType::BallBall) {
       t_hit = e.t;
       break;
     }
   }
+  ASSERT_FALSE(std::isnan(t_hit)) << "the cue ball never touched the rack";
+  const Sample* s = sampleFrom(*outcome_, t_hit + 0.02);
+  ASSERT_NE(s, nullptr) << "no sample 20 ms after the first contact";
   const auto balls = breakBalls();
-  for (const auto& s : outcome_->trajectory) {
-    if (s.t < t_hit + 0.02) continue;
-    double corner = 0, middle = 0;
-    for (const Ball& start : balls) {
-      const Ball& now = s.balls[static_cast<size_t>(start.id)];  // samples are sorted by id
-      const double moved = (now.pos - start.pos).norm();
-      const double x = start.pos.x() - table::spotsFor(realTable().spec).foot_spot.x();
-      const double row = x / (2 * 0.028575 * std::sqrt(3.0) / 2.0);
-      if (std::lround(row) == 4 && std::abs(std::abs(start.pos.y()) - 4 * 0.028575) < 0.01) {
-        corner = std::max(corner, moved);
-      }
-      if (std::lround(row) == 2 && std::abs(start.pos.y()) < 0.01) middle = moved;
+  double corner = 0, middle = 0;
+  int corners = 0, middles = 0;
+  for (const Ball& start : balls) {
+    const Ball& now = s->balls[static_cast<size_t>(start.id)];  // samples are sorted by id
+    const double moved = (now.pos - start.pos).norm();
+    const double x = start.pos.x() - table::spotsFor(realTable().spec).foot_spot.x();
+    const double row = x / (2 * 0.028575 * std::sqrt(3.0) / 2.0);
+    if (std::lround(row) == 4 && std::abs(std::abs(start.pos.y()) - 4 * 0.028575) < 0.01) {
+      corner = std::max(corner, moved);
+      ++corners;
     }
-    EXPECT_GT(corner, 0.03) << "back corners barely moved";
-    EXPECT_LT(middle, 0.25 * corner) << "the middle ball moved as much as the corners";
-    break;
+    if (std::lround(row) == 2 && std::abs(start.pos.y()) < 0.01) {
+      middle = moved;
+      ++middles;
+    }
   }
+  ASSERT_EQ(corners, 2) << "the rack's two back corners were not found";
+  ASSERT_EQ(middles, 1) << "the rack's middle ball was not found";
+  EXPECT_GT(corner, 0.03) << "back corners barely moved";
+  EXPECT_LT(middle, 0.25 * corner) << "the middle ball moved as much as the corners";
 }
 
 TEST_F(Break, RerunGivesTheSameEventLog) {

@@ -53,14 +53,12 @@ TEST(Cloth, RollSpeedAfterSlidingIsFiveSeventhsOfStrikeSpeed) {
   const auto roll = eventsOf(out, EventType::SlideToRoll, 0);
   ASSERT_EQ(roll.size(), 1u);
   // Sample just after the transition: v = 2.19781 − u_r g (t − t_s) and ω R = v.
-  for (const auto& s : out.trajectory) {
-    if (s.t <= roll[0].t) continue;
-    const Ball& b = s.balls[0];
-    const double expected = 2.19781 - 0.01 * g * (s.t - roll[0].t);
-    EXPECT_NEAR(b.vel.x(), expected, 1e-5);
-    EXPECT_NEAR(b.ang_vel.y() * spec.params.ball_radius, b.vel.x(), 1e-9);
-    break;
-  }
+  const Sample* s = sampleAfter(out, roll[0].t);
+  ASSERT_NE(s, nullptr) << "no sample after the ball began to roll";
+  const Ball& b = s->balls[0];
+  const double expected = 2.19781 - 0.01 * g * (s->t - roll[0].t);
+  EXPECT_NEAR(b.vel.x(), expected, 1e-5);
+  EXPECT_NEAR(b.ang_vel.y() * spec.params.ball_radius, b.vel.x(), 1e-9);
 }
 
 // Follow, draw (docs/PHYSICS.md): cue 2 m/s, b = ±0.5 → v0 = 2.07793, |ω| = 90.898 rad/s; follow
@@ -85,12 +83,10 @@ TEST(Cloth, FollowAndDrawRollSpeedsAndTimes) {
     ASSERT_EQ(roll.size(), 1u) << "b = " << c.b;
     EXPECT_NEAR(roll[0].t, c.time, 1e-5 * c.time) << "b = " << c.b;
     // Speed at the transition: sample within 0.1 ms after it, corrected by the rolling decel.
-    for (const auto& s : out.trajectory) {
-      if (s.t < roll[0].t) continue;
-      const double v = s.balls[0].vel.x() + 0.01 * g * (s.t - roll[0].t);
-      EXPECT_NEAR(v, c.speed, 1e-5 * c.speed) << "b = " << c.b;
-      break;
-    }
+    const Sample* s = sampleFrom(out, roll[0].t);
+    ASSERT_NE(s, nullptr) << "no sample once the ball rolls, b = " << c.b;
+    const double v = s->balls[0].vel.x() + 0.01 * g * (s->t - roll[0].t);
+    EXPECT_NEAR(v, c.speed, 1e-5 * c.speed) << "b = " << c.b;
   }
 }
 

@@ -106,11 +106,28 @@ inline ShotOutcome runOpen(const table::TableSpec& spec, const std::vector<Ball>
   return sim.run(opt);
 }
 
+/// The first sample strictly after time t, or null when the trajectory ends first (or t is NaN,
+/// an event that never happened): a check "just after an event" asserts that it has one.
+inline const Sample* sampleAfter(const ShotOutcome& o, double t) {
+  for (const auto& s : o.trajectory) {
+    if (s.t > t) return &s;
+  }
+  return nullptr;
+}
+
+/// The first sample at or after time t, or null as for sampleAfter.
+inline const Sample* sampleFrom(const ShotOutcome& o, double t) {
+  for (const auto& s : o.trajectory) {
+    if (s.t >= t) return &s;
+  }
+  return nullptr;
+}
+
 /// The direction (degrees, atan2 in the table plane) of a ball's velocity in the first sample
-/// at or after time t.
+/// at or after time t; NaN (which fails any comparison) when there is none or t is NaN.
 inline double headingAfter(const ShotOutcome& o, int id, double t) {
   for (const auto& s : o.trajectory) {
-    if (s.t < t) continue;
+    if (!(s.t >= t)) continue;
     for (const auto& b : s.balls) {
       if (b.id == id) return std::atan2(b.vel.y(), b.vel.x()) / kDeg;
     }
