@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "client/render/number_atlas.h"
+#include "support/display_check.h"
 
 namespace pool::render {
 namespace {
@@ -19,7 +20,7 @@ int ink(const TextBitmap& b, int x0, int y0, int w, int h) {
 }
 
 TEST(TextBitmapTest, NumberAtlasHasInkInCellsOneToFifteenOnly) {
-  if (!std::filesystem::exists(kFontPath)) GTEST_SKIP() << "fonts-dejavu-core missing";
+  if (!std::filesystem::exists(kFontPath)) POOL_MISSING_SETUP("fonts-dejavu-core missing");
   const TextBitmap atlas = numberAtlas(TextRasterizer());
   ASSERT_EQ(atlas.width, kNumberAtlasCells * kNumberCellPixels);
   const int cell = kNumberCellPixels;
@@ -36,7 +37,7 @@ TEST(TextBitmapTest, NumberAtlasHasInkInCellsOneToFifteenOnly) {
 }
 
 TEST(TextBitmapTest, LongLinesShrinkToFitTheCell) {
-  if (!std::filesystem::exists(kFontPath)) GTEST_SKIP() << "fonts-dejavu-core missing";
+  if (!std::filesystem::exists(kFontPath)) POOL_MISSING_SETUP("fonts-dejavu-core missing");
   const TextRasterizer text;
   const TextBitmap b = text.draw({"Signs point to yes"}, 100, 40, 40.0f);
   EXPECT_GT(ink(b, 0, 0, 100, 40), 50);

@@ -1,5 +1,6 @@
-// What an OpenGL test does when it cannot have a display or a context: skip on a developer's
-// machine, fail in CI (CI=true), where a missing Xvfb or driver must not pass unnoticed.
+// What a test does when it cannot have a display, a context or another part of the machine's setup:
+// skip on a developer's machine, fail in CI (CI=true), where a missing piece must not pass
+// unnoticed.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -27,4 +28,16 @@ inline bool runningInCi() {
     } else {                                                                                    \
       GTEST_SKIP() << reason << " (skipped; with CI=true this fails)";                          \
     }                                                                                           \
+  } while (0)
+
+/// Ends the current test (or its SetUp) for want of something scripts/deps.sh installs (a font, a
+/// tool): a failure in CI, a skip elsewhere, as for the display. `reason` is streamed into the
+/// message.
+#define POOL_MISSING_SETUP(reason)                                                             \
+  do {                                                                                         \
+    if (::pool::client::test::runningInCi()) {                                                 \
+      GTEST_FAIL() << reason << " (CI=true: this test must run; scripts/deps.sh installs it)"; \
+    } else {                                                                                   \
+      GTEST_SKIP() << reason << " (skipped; with CI=true this fails)";                         \
+    }                                                                                          \
   } while (0)
