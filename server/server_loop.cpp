@@ -118,6 +118,7 @@ void ServerLoop::warnIfFailed(const std::string& error, const char* what) const 
 void ServerLoop::readJoins(double now) {
   for (auto& event : transport_.takeJoins()) {
     if (const auto* gone = std::get_if<net::ClientGone>(&event)) {
+      if (!goneForReal(*gone, now)) continue;
       // A seated player's going matters to an operator; a spectator's is counted.
       if (registry_.clientGone(gone->client, now)) {
         spdlog::info("client {} is gone ({})", escapedForLog(gone->client), gone->why);
@@ -126,13 +127,14 @@ void ServerLoop::readJoins(double now) {
         joins_.add("gone", now);
       }
       transport_.forgetClient(gone->client);  // its last reply need not be kept any more
-      rate_.forget(gone->client);
+      rate_.forget(senderClient(gone->sender, gone->client));
     } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
       echo.request = bad->request;
       echo.match = bad->match;
+      if (underAnotherSeatedClient(bad->client, bad->sender, now)) continue;
       if (!withinSenderLimit(bad->sender, echo, now)) continue;
       spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
       joins_.add("unreadable", now);
@@ -143,9 +145,10 @@ void ServerLoop::readJoins(double now) {
           "join reply");
     } else {
       const auto& join = std::get<net::IncomingJoin>(event);
-      answerJoin(join.request, join.sender, now);
+      answerJoin(join.request, join.sender, join.writer, now);
     }
   }
+  sweepSeated(now);
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
     spdlog::info("{}", *summary);
   }
@@ -157,6 +160,57 @@ void ServerLoop::readJoins(double now) {
         static_cast<double>(released) / (1024.0 * 1024.0),
         static_cast<double>(heapInUse()) / (1024.0 * 1024.0));
   }
+}
+
+void ServerLoop::sweepSeated(double now) {
+  if (now - seated_swept_ < 1.0) return;
+  seated_swept_ = now;
+  // A seat's client id stays its participant's while the seat names it (away too: a player back
+  // from a stall rejoins under it); seats freed, left or rejoined from elsewhere let it go.
+  std::erase_if(seated_from_, [&](const auto& entry) { return !registry_.seats(entry.first); });
+  // A disposed instance whose writers then go is dropped by DDS without a notice: once another
+  // participant disposed a client's instance, its presence is its own writer's (unmatched when
+  // its participant's lease runs out).
+  for (auto& [client, seated] : seated_from_) {
+    if (!seated.watch_writer || transport_.writerMatched(seated.writer)) continue;
+    seated.watch_writer = false;
+    if (registry_.clientGone(client, now)) {
+      spdlog::info("client {} is gone (its writer is gone)", escapedForLog(client));
+    }
+  }
+}
+
+bool ServerLoop::goneForReal(const net::ClientGone& gone, double now) {
+  // "No writers" is the reader's own finding: every writer of the instance is gone. A disposal is
+  // a sample someone wrote, and anyone may write one for any client id: it counts only from the
+  // participant the client's seat request came from (a client never disposes its own instance,
+  // so in practice it does not count at all).
+  if (gone.why != "disposed") return true;
+  const auto seated = seated_from_.find(gone.client);
+  if (seated == seated_from_.end()) return true;  // no seat: nothing to keep
+  if (seated->second.sender == gone.sender) return true;
+  seated->second.watch_writer = true;
+  spdlog::debug(
+      "client {}'s instance disposed by {}, not by the participant it joined from: "
+      "ignored",
+      escapedForLog(gone.client), gone.sender);
+  joins_.add("disposal by another participant ignored", now);
+  return false;
+}
+
+bool ServerLoop::underAnotherSeatedClient(const std::string& client, const std::string& sender,
+                                          double now) {
+  const auto seated = seated_from_.find(client);
+  if (seated == seated_from_.end() || seated->second.sender == sender) return false;
+  // Anyone may write under a seated player's client id; answering would write to her reply
+  // instance (keep-last 1, so her own answer could be lost), and counting would use up her limit.
+  joins_.add("under a seated client's id from another participant", now);
+  ++counters_.joins_refused;
+  return true;
+}
+
+std::string ServerLoop::senderClient(const std::string& sender, const std::string& client) {
+  return sender + " " + client;
 }
 
 std::size_t ServerLoop::trackedClients() const {
@@ -178,22 +232,34 @@ bool ServerLoop::withinSenderLimit(const std::string& sender, const JoinCommand&
   return false;
 }
 
-void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sender, double now) {
+void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sender,
+                            std::uint64_t writer, double now) {
   // A client over its own limit is refused (one instance answered again and again); a request
   // within it must still be within its participant's (many client ids from one participant).
-  if (!rate_.allow(command.client, now)) {
+  if (underAnotherSeatedClient(command.client, sender, now)) return;
+  // The bucket is the sending participant's for that client id: someone else flooding under the
+  // same id empties a bucket of their own, and the client's own requests reach their checks.
+  const std::string bucket = senderClient(sender, command.client);
+  if (!rate_.allow(bucket, now)) {
     joins_.add("over the per-client limit", now);
     ++counters_.joins_refused;
     const auto refusal = JoinAnswer::refuse(
         JoinOutcome::NotAllowed, "too many join requests: at most " +
                                      std::to_string(static_cast<int>(JoinRateLimit::kPerSecond)) +
-                                     " a second per client");
+                                     " a second per client from one DDS participant");
     warnIfFailed(transport_.publish(replyTo(command, refusal, registry_.serverId())), "join reply");
     return;
   }
   if (!withinSenderLimit(sender, command, now)) return;
   const JoinAnswer answer = registry_.join(command);
   ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
+  if (answer.accepted() && protocol::changesSeat(command)) {
+    if (command.action == JoinAction::Leave) {
+      seated_from_.erase(command.client);
+    } else {
+      seated_from_[command.client] = Seated{sender, writer, false};
+    }
+  }
   const auto line = [&] {
     return fmt::format("join {} {} by {} ({}): {} {}", toString(command.action),
                        escapedForLog(command.match), escapedForLog(command.client),

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "net/server_transport.h"
@@ -81,11 +82,23 @@ class ServerLoop {
   void readJoins(double now);
   /// Answers a join request from `sender` (net::IncomingJoin), within its client's and its
   /// participant's limits.
-  void answerJoin(const JoinCommand& command, const std::string& sender, double now);
+  void answerJoin(const JoinCommand& command, const std::string& sender, std::uint64_t writer,
+                  double now);
+  /// Once a second: forgets the seated clients no seat names any more, and ends the presence of
+  /// those whose instance another participant disposed once their own writer is gone.
+  void sweepSeated(double now);
   /// Whether a join request from `sender` is within its participant's limit; one over it is
   /// counted, and refused with a reply to `echo`'s client at most once a second (the rest go
   /// unanswered: each reply is an instance the server writes).
   bool withinSenderLimit(const std::string& sender, const JoinCommand& echo, double now);
+  /// Whether `gone` ends its client's presence: "no writers" always; a disposal only when the
+  /// participant the client's seat request came from wrote it (others are counted and ignored).
+  bool goneForReal(const net::ClientGone& gone, double now);
+  /// Whether a join request under `client` from `sender` is dropped unanswered: `client` holds a
+  /// seat it took from another participant (counted, nothing else changes).
+  bool underAnotherSeatedClient(const std::string& client, const std::string& sender, double now);
+  /// The key of a client's join-rate bucket: its id as sent by `sender`.
+  static std::string senderClient(const std::string& sender, const std::string& client);
   /// Clients the server holds something for: kept replies and join-rate buckets.
   std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
@@ -136,7 +149,20 @@ class ServerLoop {
   RejectionTally rejections_;    ///< refused commands: one info line a second, each at debug
   JoinTally joins_;              ///< spectators and refused joins: likewise
   HeapTrim heap_trim_;           ///< gives a flood's freed heap back once it is over
-  JoinRateLimit rate_;           ///< join requests per client
+  /// Join requests per client id from one DDS participant (keyed by both): a client id is
+  /// anyone's to write, so a flood under a player's id empties the flooder's bucket, not hers.
+  JoinRateLimit rate_;
+  /// The DDS participant each seated client's last seat request came from: only a disposal of
+  /// its JoinRequest instance by that participant ends its presence (anyone may dispose any
+  /// instance) and any request under its id from elsewhere is dropped. One entry per client a
+  /// seat names.
+  struct Seated {
+    std::string sender;         ///< the participant its seat request came from
+    std::uint64_t writer = 0;   ///< that request's writer
+    bool watch_writer = false;  ///< another disposed its instance: its presence is the writer's
+  };
+  std::unordered_map<std::string, Seated> seated_from_;
+  double seated_swept_ = 0.0;  ///< when seated_from_ last let go of clients that hold no seat, s
   /// Join requests per DDS participant: one that asks under many client ids (a flood), from one
   /// writer or many, is limited as one. Twice a client's rate: a program may run a few clients.
   JoinRateLimit sender_rate_{2 * JoinRateLimit::kPerSecond, 2 * JoinRateLimit::kBurst};

@@ -62,6 +62,8 @@ MatchedStatus publicationMatched(std::int32_t writer);
 /// The participant of writer `publication` matched with `reader`, as 32 hex digits (its GUID), or
 /// empty when that writer is not matched (gone, or never seen).
 std::string participantOf(std::int32_t reader, std::uint64_t publication);
+/// The GUID of `entity` in hex, as participantOf writes a participant's; empty on failure.
+std::string guidOf(std::int32_t entity);
 MatchedStatus subscriptionMatched(std::int32_t reader);
 LivelinessStatus livelinessChanged(std::int32_t reader);
 /// Blocks until `entity` (a writer or reader) matches at least `count` peers or `timeout` passes.

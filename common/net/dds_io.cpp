@@ -171,6 +171,12 @@ std::string participantOf(std::int32_t reader, std::uint64_t publication) {
   return out;
 }
 
+std::string guidOf(std::int32_t entity) {
+  dds_guid_t guid{};
+  if (dds_get_guid(entity, &guid) != DDS_RETCODE_OK) return {};
+  return hexOf(guid.v);
+}
+
 LivelinessStatus livelinessChanged(std::int32_t reader) {
   dds_liveliness_changed_status_t s{};
   check(dds_get_liveliness_changed_status(reader, &s), "liveliness changed status");

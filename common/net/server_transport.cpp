@@ -1,6 +1,7 @@
 // The server's topics, readers, writers and waitset, and the conversions at their edge.
 #include "net/server_transport.h"
 
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -120,23 +121,27 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
     if (!sample.meta().valid) {
       // The client's JoinRequest writer is gone (lease expired or deleted): it vanished.
       if (sample.meta().instance != InstanceState::Alive) {
-        out.emplace_back(ClientGone{client, toString(sample.meta().instance)});
+        out.emplace_back(ClientGone{client, toString(sample.meta().instance),
+                                    e_->senderOf(sample.meta().publication_handle)});
       }
       continue;
     }
     std::string sender = e_->senderOf(sample.meta().publication_handle);
+    // Its writer went away before the request was read: no separate notice follows, so the
+    // client is gone right after its request (joined or not, it is noticed).
+    std::optional<ClientGone> gone;
+    if (sample.meta().instance != InstanceState::Alive) {
+      gone = ClientGone{client, toString(sample.meta().instance), sender};
+    }
     auto request = fromWire(r);
     if (!request) {
       out.emplace_back(UnreadableJoin{client, r.request, std::string(textOf(r.match)),
                                       request.error(), std::move(sender)});
     } else {
-      out.emplace_back(IncomingJoin{std::move(*request), std::move(sender)});
+      out.emplace_back(
+          IncomingJoin{std::move(*request), std::move(sender), sample.meta().publication_handle});
     }
-    // Its writer went away before the request was read: no separate notice follows, so the
-    // client is gone right after its request (joined or not, it is noticed).
-    if (sample.meta().instance != InstanceState::Alive) {
-      out.emplace_back(ClientGone{client, toString(sample.meta().instance)});
-    }
+    if (gone) out.emplace_back(std::move(*gone));
   }
   return out;
 }
@@ -208,6 +213,14 @@ std::uint32_t ServerTransport::resultReaders(const std::string& match) {
 
 std::size_t ServerTransport::matchPartitions() const {
   return e_->matches.size();
+}
+
+bool ServerTransport::writerMatched(std::uint64_t writer) const {
+  return !e_->join_requests.participantOf(writer).empty();
+}
+
+std::string ServerTransport::participantGuid() const {
+  return detail::guidOf(e_->participant.handle());
 }
 
 std::size_t ServerTransport::keptReplies() const {

@@ -39,12 +39,16 @@ struct IncomingJoin {
   /// "participant <GUID in hex>", or "writer <publication handle>" when its writer was no
   /// longer matched by the time it was read.
   std::string sender;
+  std::uint64_t writer = 0;  ///< the writer's publication handle (for writerMatched)
 };
 
 /// A client whose JoinRequest writer went away (its liveliness lease ran out, or it exited).
 struct ClientGone {
   std::string client;
   std::string why;  ///< "no_writers" or "disposed"
+  /// The DDS participant whose writer wrote the instance last (for "disposed": the one that
+  /// disposed it), as IncomingJoin::sender names it.
+  std::string sender;
 };
 
 /// What the join-request topic delivered.
@@ -89,6 +93,11 @@ class ServerTransport {
   /// Matches whose writers are open, each in its own partition (until dispose).
   std::size_t matchPartitions() const;
 
+  /// Whether the join-request writer `writer` (IncomingJoin::writer) is still matched: false once
+  /// its participant's lease ran out or it was deleted.
+  bool writerMatched(std::uint64_t writer) const;
+  /// The GUID of the server's DDS participant in hex (as a reader's participantOf names it).
+  std::string participantGuid() const;
   /// Clients whose last join reply is kept for late readers (until forgetClient).
   std::size_t keptReplies() const;
   /// Drops the last reply kept for `client` (it is gone).

@@ -9,10 +9,11 @@
 namespace pool::server {
 
 /// A client may send `burst` join requests at once and `per_second` a second after that; the
-/// rest are refused unread. The key is a client id, or a DDS participant for the limit per
-/// participant. Only clients that asked within the last burst / per_second seconds are tracked (a
-/// full bucket holds nothing worth keeping), so a flood from many client ids leaves nothing behind
-/// once it stops. Time is passed in (s, monotonic).
+/// rest are refused unread. The key is a client id as one DDS participant sends it (anyone may
+/// write under any id, so an id alone is no one's to charge), or a DDS participant alone for the
+/// limit per participant. Only clients that asked within the last burst / per_second seconds are
+/// tracked (a full bucket holds nothing worth keeping), so a flood from many client ids leaves
+/// nothing behind once it stops. Time is passed in (s, monotonic).
 class JoinRateLimit {
  public:
   explicit JoinRateLimit(double per_second = kPerSecond, double burst = kBurst)

@@ -248,6 +248,11 @@ bool Match::clientGone(const std::string& client, double now) {
   return seated;
 }
 
+bool Match::seats(const std::string& client) const {
+  return std::any_of(seats_.begin(), seats_.end(),
+                     [&](const Seat& s) { return s.taken() && s.client == client; });
+}
+
 bool Match::expireAway(double now, double grace) {
   for (int seat = 0; seat < 2; ++seat) {
     Seat& s = seats_[static_cast<std::size_t>(seat)];

@@ -79,6 +79,8 @@ class Match {
   /// `client` vanished at `now`: its seats wait for it (away), it stops watching. True when it
   /// held a seat here.
   bool clientGone(const std::string& client, double now);
+  /// Whether a seat here names `client` (away or not).
+  bool seats(const std::string& client) const;
   /// Forfeits a game in play to the other seat when a seat's player has been away `grace` s or
   /// more by `now` (once the shot in motion, if any, is done); in the lobby, or once the match is
   /// over, such a seat is freed. True when it acted.

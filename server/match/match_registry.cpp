@@ -238,6 +238,11 @@ bool MatchRegistry::clientGone(const std::string& client, double now) {
   return seated;
 }
 
+bool MatchRegistry::seats(const std::string& client) const {
+  return std::any_of(matches_.begin(), matches_.end(),
+                     [&](const auto& m) { return m->seats(client); });
+}
+
 std::size_t MatchRegistry::spectators() const {
   std::size_t n = 0;
   for (const auto& m : matches_) n += m->spectators();

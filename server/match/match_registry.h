@@ -73,6 +73,8 @@ class MatchRegistry {
   /// `client` vanished at `now`: its seats wait `grace` s for it, it stops watching. True when it
   /// held a seat anywhere.
   bool clientGone(const std::string& client, double now);
+  /// Whether a seat of some match names `client` (away or not).
+  bool seats(const std::string& client) const;
   /// Spectators over every match (a client watching two matches counts twice).
   std::size_t spectators() const;
   /// The server was not running for `seconds` (see Match::pause).
