@@ -290,6 +290,27 @@ void GameClient::pollReplies(std::vector<ClientEvent>& out) {
   refollow();
 }
 
+bool GameClient::goesBack(std::uint32_t& floor, std::uint32_t number, const std::string& why) {
+  if (number < floor) {
+    ++stale_;
+    note(why);
+    return true;
+  }
+  floor = number;
+  return false;
+}
+
+namespace {
+
+/// `floors[key]`, the map started over first when it is full.
+template <class Key>
+std::uint32_t& floorOf(std::map<Key, std::uint32_t>& floors, const Key& key, std::size_t max) {
+  if (floors.size() >= max && !floors.count(key)) floors.clear();
+  return floors[key];
+}
+
+}  // namespace
+
 void GameClient::pollStates(std::vector<ClientEvent>& out) {
   for (auto& view : transport_->takeStates()) {
     if (!view) {
@@ -299,6 +320,13 @@ void GameClient::pollStates(std::vector<ClientEvent>& out) {
     if (auto why = impossibleJump(view->match, "MatchState", view->revision, view->shot_number);
         !why.empty()) {
       problem(why);
+      continue;
+    }
+    // Only forward: an older state, genuine and signed (a replay), would turn the match back.
+    // Revisions go on across a server's restarts (stored with the match).
+    if (goesBack(floorOf(state_floor_, view->match, kMaxFloors), view->revision,
+                 "MatchState of " + escapedForLog(view->match) +
+                     " dropped: older than the revision already taken (a replay?)")) {
       continue;
     }
     states_[view->match] = *view;
@@ -315,6 +343,12 @@ void GameClient::pollResults(std::vector<ClientEvent>& out) {
     if (auto why = impossibleJump(report->match, "ShotResult", 0, report->shot_number);
         !why.empty()) {
       problem(why);
+      continue;
+    }
+    if (goesBack(floorOf(result_floor_, std::pair(report->match, int{report->seat}), kMaxFloors),
+                 report->shot_number,
+                 "ShotResult of " + escapedForLog(report->match) +
+                     " dropped: of an earlier shot than one already taken (a replay?)")) {
       continue;
     }
     // Only a number the seat's own key used up counts: anyone may send a command with any
@@ -339,6 +373,11 @@ void GameClient::pollFrames(std::vector<ClientEvent>& out) {
     if (auto why = impossibleJump(frame->match, "TableSnapshot", 0, frame->shot_number);
         !why.empty()) {
       problem(why);
+      continue;
+    }
+    if (goesBack(floorOf(frame_floor_, frame->match, kMaxFloors), frame->shot_number,
+                 "TableSnapshot of " + escapedForLog(frame->match) +
+                     " dropped: of an earlier shot than one already taken (a replay?)")) {
       continue;
     }
     out.emplace_back(std::move(*frame));

@@ -140,6 +140,10 @@ class GameClient {
   /// Samples dropped because they could not be read, were not signed by their server's pinned
   /// key, or jumped impossibly far; and the last reason.
   std::uint64_t unreadable() const { return unreadable_; }
+  /// Genuine samples dropped because they were older than one already taken for their match: a
+  /// state of a lower revision, a result of an earlier shot for its seat, a frame of an earlier
+  /// shot (a replay, or a crashed server's last sample seen late). Logged once per reason.
+  std::uint64_t stale() const { return stale_; }
   const std::string& lastProblem() const { return last_problem_; }
 
  private:
@@ -176,6 +180,9 @@ class GameClient {
   /// Why a state, result or frame of `match` with these numbers is impossible, or empty.
   std::string impossibleJump(const std::string& match, const char* what, std::uint32_t revision,
                              std::uint32_t shot_number) const;
+  /// Whether a sample numbered `number` is older than `floor`, the newest taken of its kind (and
+  /// then notes it as stale); otherwise raises `floor` to it.
+  bool goesBack(std::uint32_t& floor, std::uint32_t number, const std::string& why);
 
   ClientOptions options_;
   protocol::KeyPair key_;
@@ -192,6 +199,14 @@ class GameClient {
   Lobby lobby_;
   std::map<std::string, MatchView> states_;
   std::uint64_t unreadable_ = 0;
+  std::uint64_t stale_ = 0;
+  /// The newest numbers taken per match (state revision, frame shot) and per seat (result shot):
+  /// a sample below them is never taken again, even after the match was unfollowed and followed
+  /// again. Bounded: past kMaxFloors entries each map starts over.
+  std::map<std::string, std::uint32_t> state_floor_;
+  std::map<std::string, std::uint32_t> frame_floor_;
+  std::map<std::pair<std::string, int>, std::uint32_t> result_floor_;
+  static constexpr std::size_t kMaxFloors = 4096;
   std::string last_problem_;
   std::optional<protocol::MatchSettings> table_settings_;
   std::uint32_t aim_shot_ = 0;  ///< the turn our aim numbers count in

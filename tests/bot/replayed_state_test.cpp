@@ -1,0 +1,107 @@
+// A stranger captures a genuine, server-signed MatchState off the wire and replays it over the
+// live match later on: the players drop it as older than what they have, and the match goes on.
+#include <gtest/gtest.h>
+
+#include <optional>
+
+#include "net/partition.h"
+#include "net/protocol_topics.h"
+#include "net/qos_profiles.h"
+#include "net/reader.h"
+#include "net/sample.h"
+#include "net/writer.h"
+#include "support/client_fixture.h"
+#include "support/partitions.h"
+
+namespace pool::client::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+/// This test's DDS domain (124–127: the stranger's attacks on matches and servers).
+constexpr auto kReplayedState = static_cast<Domain>(125);
+
+class ReplayedStateTest : public ClientIntegrationTest {};
+
+/// The stranger: keeps every MatchState it reads, in every match's partition, and writes any of
+/// them back as it was (signature and all).
+class StateReplayer {
+ public:
+  explicit StateReplayer(std::uint32_t domain)
+      : bus_(domain),
+        subscriber_(bus_.participant, pool::test::everyPartition()),
+        publisher_(bus_.participant, pool::test::everyPartition()),
+        reader_(subscriber_, bus_.state_topic, keepAll(net::qos::state())),
+        writer_(publisher_, bus_.state_topic, net::qos::state()) {}
+
+  /// Keeps the first state read with `shot_number` shots played (one at most).
+  void capture(std::uint32_t shot_number) {
+    for (auto& sample : reader_.take()) {
+      if (!captured_ && sample->shot_number == shot_number) captured_ = std::move(sample);
+    }
+  }
+  const pool_MatchState* captured() const { return captured_ ? captured_->get() : nullptr; }
+
+  /// Writes the captured state again once `readers` readers of the match are matched.
+  bool replay(std::uint32_t readers) {
+    if (!captured_ || !writer_.waitForReaders(readers, 30s)) return false;
+    return static_cast<bool>(writer_.write(**captured_));
+  }
+
+ private:
+  static net::QosProfile keepAll(net::QosProfile profile) {
+    profile.history_depth = 0;
+    return profile;
+  }
+
+  net::ProtocolTopics bus_;
+  net::Subscriber subscriber_;
+  net::Publisher publisher_;
+  net::Reader<pool_MatchState> reader_;
+  net::Writer<pool_MatchState> writer_;
+  std::optional<net::Sample<pool_MatchState>> captured_;
+};
+
+TEST_F(ReplayedStateTest, AnOlderGenuineStateChangesNothingAndTheMatchGoesOn) {
+  open(kReplayedState, "replayed-state");
+  StateReplayer stranger(kReplayedState);
+  MatchRecorder recorder(kReplayedState);
+  startServer({"--fast"});
+  ASSERT_TRUE(recorder.pump(20s, [&] { return recorder.latest("srv-1") != nullptr; })) << logs();
+  ChildProcess& alice = startBot("alice", 51, {"--think", "0.2"});
+  ChildProcess& bob = startBot("bob", 52, {"--think", "0.2"});
+  // The state after the break (a genuine one, signed by the server), then two more shots.
+  ASSERT_TRUE(recorder.pump(60s, [&] {
+    stranger.capture(1);
+    const MatchView* v = recorder.latest("srv-1");
+    return stalledOnLayout(recorder) ||
+           (stranger.captured() && v && v->shot_number >= 3 && v->shooter >= 0);
+  })) << logs();
+  ASSERT_FALSE(stalledOnLayout(recorder));
+  const MatchView before = *recorder.latest("srv-1");
+  ASSERT_LT(stranger.captured()->revision, before.revision);
+
+  // Replayed into the match's partition while the bots and the recorder follow it (at least four
+  // readers: the recorder's two, the bots'; matched long ago, the writer was made first).
+  ASSERT_TRUE(stranger.replay(4)) << logs();
+  const std::string dropped = "older than the revision already taken";
+  EXPECT_TRUE(recorder.pump(30s, [&] {
+    return alice.err().find(dropped) != std::string::npos &&
+           bob.err().find(dropped) != std::string::npos;
+  })) << logs();
+  EXPECT_GE(recorder.latest("srv-1")->revision, before.revision);
+  EXPECT_GE(recorder.client().stale(), 1u);
+
+  // Shots keep being accepted: two more (or the match's end).
+  const bool on = recorder.pump(90s, [&] {
+    const MatchView* v = recorder.latest("srv-1");
+    return stalledOnLayout(recorder) || v->shot_number >= before.shot_number + 2 ||
+           v->phase == MatchPhase::Over;
+  });
+  ASSERT_FALSE(stalledOnLayout(recorder));
+  EXPECT_TRUE(on) << "the match froze at shot " << recorder.latest("srv-1")->shot_number << "\n"
+                  << logs();
+}
+
+}  // namespace
+}  // namespace pool::client::test
