@@ -1,4 +1,5 @@
-// Rules 1-3 of the issue: the opening break, fouls on it, and the 8 on the break.
+// 8-ball's break after the WPA Rules of Play (the World Standardized Rules; sections as numbered
+// since the 2008 edition): 3.3 Break Shot, with 1.5 Cue Ball in Hand and 1.4 Spotting Balls.
 #include <gtest/gtest.h>
 
 #include "rules/eight_ball.h"
@@ -24,6 +25,7 @@ Verdict breakWith(const LogBuilder& log) {
   return test::judged(newRack(0), makeShot(rackLayout(), Intent::none(), log));
 }
 
+// WPA 3.3 (c): a ball pocketed without a foul keeps the breaker at the table; the table stays open.
 TEST(Break, BallPocketedIsLegalAndBreakerContinues) {
   LogBuilder log;
   log.hit(0, 1).hit(1, 2).pocket(2, "foot_left_corner");
@@ -33,10 +35,12 @@ TEST(Break, BallPocketedIsLegalAndBreakerContinues) {
   EXPECT_EQ(v.next_shooter, 0);
   EXPECT_EQ(v.pocketed, std::vector<int>{2});
   EXPECT_EQ(v.next.phase, Phase::Open);
-  EXPECT_EQ(v.next.groups[0], Group::None);  // rule 5: a group is never assigned on the break
+  EXPECT_EQ(v.next.groups[0], Group::None);  // WPA 3.3 (c): the table stays open
   EXPECT_EQ(v.ball_in_hand, BallInHand::None);
 }
 
+// WPA 3.3 (d): without a ball pocketed, four object balls driven to one or more rails make the
+// break legal.
 TEST(Break, FourBallsToACushionIsLegalAndTheTurnPasses) {
   Verdict v = breakWith(fourCushionBreak());
   EXPECT_TRUE(v.legal());
@@ -47,6 +51,7 @@ TEST(Break, FourBallsToACushionIsLegalAndTheTurnPasses) {
   EXPECT_EQ(v.next.phase, Phase::Open);
 }
 
+// WPA 3.3 (d): "four object balls" to the rails: four distinct balls (a pocket's jaws are cushion).
 TEST(Break, JawsCountAsCushionsAndABallCountsOnce) {
   LogBuilder log;
   log.hit(0, 1).hit(1, 2).hit(1, 3).hit(2, 4);
@@ -59,6 +64,8 @@ TEST(Break, JawsCountAsCushionsAndABallCountsOnce) {
   EXPECT_TRUE(breakWith(log).legal());
 }
 
+// WPA 3.3 (d) (1)-(3): after an illegal break the incoming player accepts the table, re-racks and
+// breaks, or has the breaker break again.
 TEST(Break, IllegalBreakOffersPlayOnReRackOrBreakerBreaksAgain) {
   LogBuilder log;
   log.hit(0, 1).hit(1, 2).hit(1, 3).cushion(2).cushion(3).cushion(0, "foot", 1.2);
@@ -72,6 +79,7 @@ TEST(Break, IllegalBreakOffersPlayOnReRackOrBreakerBreaksAgain) {
   EXPECT_EQ(v.next.shooter, 1);
 }
 
+// WPA 3.3 (d) (1)-(3), each option applied.
 TEST(Break, IllegalBreakChoices) {
   GameState offered = breakWith(LogBuilder().hit(0, 1)).next;
   auto table = test::nineFoot();
@@ -100,6 +108,7 @@ TEST(Break, IllegalBreakChoices) {
   EXPECT_FALSE(applyChoice(offered, Choice::RespotEight, balls, table));
 }
 
+// WPA 3.3 (d) (1): accepting the table in position is shown by playing it.
 TEST(Break, PlayOnCanBeGivenWithTheShot) {
   GameState offered = breakWith(LogBuilder().hit(0, 1)).next;
   auto balls = rackLayout();
@@ -112,6 +121,8 @@ TEST(Break, PlayOnCanBeGivenWithTheShot) {
   EXPECT_NE(test::refusal(offered, makeShot(balls, intent, LogBuilder().hit(0, 3).cushion(3))), "");
 }
 
+// WPA 3.3 (a): the cue ball begins in hand behind the head string (on the string is not behind
+// it).
 TEST(Break, TakenFromBehindTheHeadString) {
   auto balls = rackLayout();
   balls[0].pos.x() = test::nineFoot().spots.head_string_x;  // on the string is not behind it
@@ -119,6 +130,8 @@ TEST(Break, TakenFromBehindTheHeadString) {
   EXPECT_NE(why.find("head string"), std::string::npos) << why;
 }
 
+// WPA 3.3 (h): a scratch on a legal break is a foul; balls pocketed stay down and the
+// incoming player has the cue ball in hand behind the head string.
 TEST(Break, ScratchOnALegalBreak) {
   LogBuilder log = fourCushionBreak();
   log.pocket(2, "foot_left_corner").pocket(0, "head_right_corner");
@@ -132,6 +145,7 @@ TEST(Break, ScratchOnALegalBreak) {
   EXPECT_EQ(v.next.phase, Phase::Open);
 }
 
+// WPA 3.3 (h) and 6.1 Cue Ball Scratch or off the Table: as a scratch.
 TEST(Break, CueBallOffTheTableOnTheBreak) {
   LogBuilder log = fourCushionBreak();
   log.hit(0, 6).offTable(0);
@@ -141,6 +155,9 @@ TEST(Break, CueBallOffTheTableOnTheBreak) {
   EXPECT_EQ(v.next_shooter, 1);
 }
 
+// WPA 3.3 (g): an object ball jumped off the table on the break is a foul and is not
+// spotted; the incoming player accepts the table or takes the cue ball in hand behind the head
+// string.
 TEST(Break, ObjectBallJumpedOffTheTable) {
   LogBuilder log = fourCushionBreak();
   log.airborne(4).offTable(4);
@@ -162,6 +179,7 @@ TEST(Break, ObjectBallJumpedOffTheTable) {
   EXPECT_EQ(in_hand->next.shooter, 1);
 }
 
+// WPA 3.3 (g) and 1.5 Cue Ball in Hand: that ball in hand is behind the head string.
 TEST(Break, BallInHandChosenWithTheShotMustBeBehindTheHeadString) {
   LogBuilder log = fourCushionBreak();
   log.airborne(4).offTable(4);
@@ -176,6 +194,8 @@ TEST(Break, BallInHandChosenWithTheShotMustBeBehindTheHeadString) {
   EXPECT_EQ(test::refusal(offered, makeShot(after, intent, LogBuilder().hit(0, 3).cushion(3))), "");
 }
 
+// WPA 3.3 (e): the 8 pocketed on a legal break is no foul; the breaker re-spots it (1.4 Spotting
+// Balls) and plays on, or breaks again.
 TEST(Break, EightPocketedIsNeitherWinNorLoss) {
   LogBuilder log = fourCushionBreak();
   log.hit(5, 8).pocket(8, "foot_right_corner");
@@ -206,6 +226,8 @@ TEST(Break, EightPocketedIsNeitherWinNorLoss) {
   EXPECT_EQ(rebreak->next.breaker, 0);
 }
 
+// WPA 3.3 (f): the 8 pocketed with a scratch: the opponent re-spots it and shoots with the cue ball
+// in hand behind the head string, or breaks again.
 TEST(Break, EightAndCueBallScratchOnTheBreak) {
   LogBuilder log = fourCushionBreak();
   log.hit(5, 8).pocket(8, "foot_right_corner").pocket(0, "head_left_corner");
@@ -226,6 +248,8 @@ TEST(Break, EightAndCueBallScratchOnTheBreak) {
   EXPECT_EQ(rebreak->next.breaker, 1);
 }
 
+// WPA 3.3 (g): the 8 driven off the table on the break is a foul and is spotted (1.4
+// Spotting Balls).
 TEST(Break, EightJumpedOffOnTheBreakIsRespotted) {
   LogBuilder log = fourCushionBreak();
   log.hit(5, 8).airborne(8).offTable(8);

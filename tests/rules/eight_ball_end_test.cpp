@@ -1,4 +1,6 @@
-// Rules 10-11 of the issue: winning and losing on the 8, stalemates, forfeits.
+// 8-ball's end after the WPA Rules of Play (the World Standardized Rules; sections as numbered
+// since the 2008 edition): winning on the 8, 3.8 Losing the Rack, 1.12 and 3.11 Stalemate, 1.11
+// Concession.
 #include <gtest/gtest.h>
 
 #include "rules/eight_ball.h"
@@ -19,6 +21,8 @@ std::vector<physics::Ball> onTheEight() {
   return spreadLayout({8, 9, 10, 11});
 }
 
+// WPA Eight Ball (the section's opening) and 1.6 Standard Call Shot: the 8, called, pocketed once
+// the group is off the table wins the rack.
 TEST(Eight, PocketedInTheCalledPocketWins) {
   Verdict v = judged(assigned(), makeShot(onTheEight(), Intent::call(8, "foot_left_corner"),
                                           LogBuilder().hit(0, 8).pocket(8, "foot_left_corner")));
@@ -33,6 +37,7 @@ TEST(Eight, PocketedInTheCalledPocketWins) {
   EXPECT_FALSE(again);  // nothing is judged after the game
 }
 
+// WPA 3.8 Losing the Rack: a foul when pocketing the 8.
 TEST(Eight, EightAndCueBallFallingTogetherLoses) {
   LogBuilder log;
   log.hit(0, 8).pocket(8, "foot_left_corner").pocket(0, "foot_right_corner");
@@ -43,6 +48,7 @@ TEST(Eight, EightAndCueBallFallingTogetherLoses) {
   EXPECT_TRUE(v.hasFoul(Foul::CueBallPocketed));
 }
 
+// WPA 3.8 Losing the Rack: the 8 pocketed when it is not the legal object ball.
 TEST(Eight, PocketedBeforeTheGroupIsClearedLoses) {
   auto balls = spreadLayout({3, 8, 9, 10});
   Verdict v = judged(assigned(),
@@ -53,6 +59,8 @@ TEST(Eight, PocketedBeforeTheGroupIsClearedLoses) {
   EXPECT_EQ(v.winner, 1);
 }
 
+// WPA 3.8 Losing the Rack: the 8 pocketed when it is not the legal object ball (3.4: on an open
+// table it never is).
 TEST(Eight, PocketedOnAnOpenTableLoses) {
   auto balls = spreadLayout({1, 2, 3, 8, 9, 10});
   Verdict v =
@@ -62,6 +70,7 @@ TEST(Eight, PocketedOnAnOpenTableLoses) {
   EXPECT_EQ(v.winner, 0);
 }
 
+// WPA 3.8 Losing the Rack: the 8 pocketed on the same stroke as the last ball of the group.
 TEST(Eight, ClearingTheGroupAndTheEightOnOneShotLoses) {
   auto balls = spreadLayout({7, 8, 9, 10});
   LogBuilder log;
@@ -72,6 +81,7 @@ TEST(Eight, ClearingTheGroupAndTheEightOnOneShotLoses) {
   EXPECT_EQ(v.winner, 1);
 }
 
+// WPA 3.8 Losing the Rack: the 8 pocketed in a pocket other than the one called.
 TEST(Eight, WrongPocketLoses) {
   Verdict v = judged(assigned(), makeShot(onTheEight(), Intent::call(8, "foot_left_corner"),
                                           LogBuilder().hit(0, 8).pocket(8, "left_side")));
@@ -79,12 +89,14 @@ TEST(Eight, WrongPocketLoses) {
   EXPECT_EQ(v.winner, 1);
 }
 
+// WPA 3.8 Losing the Rack: a safety calls no pocket, so the 8 falls in one not called.
 TEST(Eight, PocketedOnASafetyLoses) {
   Verdict v = judged(assigned(), makeShot(onTheEight(), Intent::safe(),
                                           LogBuilder().hit(0, 8).pocket(8, "left_side")));
   EXPECT_EQ(v.end, GameEnd::EightWrongPocket);
 }
 
+// WPA 3.8 Losing the Rack: the 8 driven off the table (after the break; on it, 3.3 (g) spots it).
 TEST(Eight, OffTheTableAfterTheBreakLoses) {
   auto balls = spreadLayout({3, 8, 9});
   Verdict v =
@@ -96,6 +108,8 @@ TEST(Eight, OffTheTableAfterTheBreakLoses) {
   EXPECT_TRUE(v.respots.empty());
 }
 
+// WPA 3.8 lists only fouls that pocket the 8 or drive it off: any other is a standard foul, cue
+// ball in hand anywhere (1.5 Cue Ball in Hand).
 TEST(Eight, AFoulOnTheEightWithoutPocketingItIsNoLoss) {
   Verdict v =
       judged(assigned(), makeShot(onTheEight(), Intent::call(8, "foot_left_corner"),
@@ -106,6 +120,8 @@ TEST(Eight, AFoulOnTheEightWithoutPocketingItIsNoLoss) {
   EXPECT_EQ(v.ball_in_hand, BallInHand::Anywhere);
 }
 
+// WPA 1.12 Stalemate (three more turns each without progress) and 3.11: the original breaker of the
+// rack breaks again.
 TEST(Stalemate, LackOfProgressReRacksWithTheSameBreaker) {
   EightBallConfig config;
   config.stalemate_turns = 3;
@@ -129,6 +145,7 @@ TEST(Stalemate, LackOfProgressReRacksWithTheSameBreaker) {
   EXPECT_EQ(v.next.shooter, 1);
 }
 
+// WPA 1.12 Stalemate: the turns count while no progress is made; a ball pocketed is progress.
 TEST(Stalemate, ABallDownResetsTheCount) {
   EightBallConfig config;
   config.stalemate_turns = 2;
@@ -143,6 +160,8 @@ TEST(Stalemate, ABallDownResetsTheCount) {
   EXPECT_EQ(v.next.dry_turns, 0);
 }
 
+// WPA 1.12 Stalemate: both players may accept the stalemate without their further turns; 3.11: the
+// original breaker breaks again.
 TEST(Stalemate, ByAgreement) {
   GameState state = assigned(1);
   state.breaker = 0;
@@ -154,6 +173,7 @@ TEST(Stalemate, ByAgreement) {
   EXPECT_EQ(v->next.ball_in_hand, BallInHand::BehindHeadString);
 }
 
+// WPA 1.11 Concession: a player who concedes loses.
 TEST(Forfeit, TheOtherSeatWins) {
   Verdict v = forfeit(assigned(), 0);
   EXPECT_TRUE(v.game_over);
@@ -162,6 +182,7 @@ TEST(Forfeit, TheOtherSeatWins) {
   EXPECT_EQ(v.next.phase, Phase::Over);
 }
 
+// Not a rule: the names the logs and the protocol use.
 TEST(Names, EnumsHaveNames) {
   EXPECT_STREQ(toString(Foul::NoCushionAfterContact), "no_cushion_after_contact");
   EXPECT_STREQ(toString(GameEnd::EightWithLastGroupBall), "eight_with_last_group_ball");

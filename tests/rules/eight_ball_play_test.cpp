@@ -1,4 +1,6 @@
-// Rules 4-9 of the issue: kitchen play, open table, calls and safeties, legal shots, fouls.
+// 8-ball after the break, after the WPA Rules of Play (the World Standardized Rules; sections as
+// numbered since the 2008 edition): kitchen play, the open table, calls and safeties, legal shots,
+// continuing play, fouls. Casual calls are the game's own variant, cited as such.
 #include <gtest/gtest.h>
 
 #include "rules/eight_ball.h"
@@ -17,7 +19,8 @@ using test::spreadLayout;
 
 const std::vector<int> kAll = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 
-// --- Rule 4: ball in hand behind the head string -----------------------------------------------
+// --- Ball in hand behind the head string: WPA 1.5 Cue Ball in Hand, 6.11 Bad Play from Behind
+// the Head String (a ball behind the string may not be hit without the cue ball first crossing it)
 
 // A scratch on the break left the cue ball in hand behind the head string; ball 3 lies behind it
 // too.
@@ -61,7 +64,8 @@ TEST(Kitchen, BallsPastTheHeadStringArePlayable) {
   EXPECT_TRUE(v.legal());
 }
 
-// --- Rule 5: the open table ---------------------------------------------------------------------
+// --- The open table: WPA 3.4 Open Table / Choosing Groups (any ball but the 8 first; the group
+// is the called ball's, legally pocketed), 6.2 Wrong Ball First
 
 TEST(OpenTable, AnyBallButTheEightMayBeHitFirst) {
   auto balls = spreadLayout(kAll);
@@ -111,7 +115,9 @@ TEST(OpenTable, NoGroupOnAFoul) {
   EXPECT_EQ(v.next.phase, Phase::Open);
 }
 
-// --- Rule 6: calls, safeties, casual play -----------------------------------------------------
+// --- Calls and safeties: WPA 1.6 Standard Call Shot and 8-ball's Shots Required to Be Called
+// (every shot after the break, one ball and pocket; a called safety passes the turn and what it
+// pockets stays down). Casual: the game's own variant, only the 8's pocket called.
 
 TEST(Calls, EveryShotAfterTheBreakIsCalled) {
   auto balls = spreadLayout(kAll);
@@ -191,8 +197,8 @@ TEST(Casual, OnlyTheEightIsCalled) {
   EXPECT_NE(why.find("8"), std::string::npos) << why;
 }
 
-// --- Rule 7: a legal shot
-// -------------------------------------------------------------------------
+// --- A legal shot: WPA 6.2 Wrong Ball First (8-ball: a ball of the shooter's group, or the 8 once
+// the group is cleared) and 6.3 No Rail after Contact
 
 TEST(LegalShot, WrongGroupFirstIsAFoul) {
   auto balls = spreadLayout(kAll);
@@ -248,7 +254,8 @@ TEST(LegalShot, OnceClearedTheEightMustBeHitFirst) {
   EXPECT_FALSE(v.game_over);
 }
 
-// --- Rule 8: continuing, slop, misses, combinations ---------------------------------------------
+// --- Continuing play: WPA 8-ball's Continuing Play and Shots Required to Be Called (the called
+// ball in its pocket keeps the turn; other balls pocketed stay down; combinations are allowed)
 
 TEST(Scoring, CalledBallPocketedKeepsTheTurn) {
   auto balls = spreadLayout(kAll);
@@ -298,7 +305,9 @@ TEST(Scoring, CombinationShot) {
   EXPECT_TRUE(v.turn_continues);
 }
 
-// --- Rule 9: fouls ------------------------------------------------------------------------------
+// --- Fouls: WPA 6.1 Cue Ball Scratch or off the Table, 6.5 Ball Driven off the Table (it stays
+// off; 1.4 Spotting Balls spots only the 8), 6.15 Slow Play (the shot clock), with 1.5 Cue Ball in
+// Hand anywhere for the incoming player
 
 TEST(Fouls, ObjectBallPocketedThenCueBallScratch) {
   auto balls = spreadLayout(kAll);

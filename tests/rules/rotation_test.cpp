@@ -1,5 +1,6 @@
 // 9-ball and 10-ball on built logs: the lowest ball first, push-outs, calls, three fouls, the break
-// and the rack ball.
+// and the rack ball, after the WPA Rules of Play (the World Standardized Rules; sections as
+// numbered in the 2008 edition: 2 Nine Ball, 9 Ten Ball, 6 Fouls, 1 General Rules).
 #include <gtest/gtest.h>
 
 #include "rules/fixture.h"
@@ -50,7 +51,11 @@ std::vector<physics::Ball> tenBalls(double cue_x = -0.3) {
   return spreadLayout({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, cue_x);
 }
 
-// ---- The break --------------------------------------------------------------------------------
+// ---- The break: WPA 2.3 and 9.3 Legal Break Shot (the 1 first; a ball pocketed, or four object
+// balls to the rails, else a foul: 1.5 Cue Ball in Hand anywhere), 2.5 Continuing Play (the 9
+// pocketed on a legal break wins), 2.6 and 9.7 Spotting Balls (the 9 on a foul, the 10 on the
+// break, are spotted). The 10-ball re-rack offered after an illegal break is the game's option, not
+// the 2008 text's.
 
 TEST(RotationBreak, BallDownKeepsTheBreakerAndOffersThePushOut) {
   auto balls = nineBalls(kBehind);
@@ -171,7 +176,10 @@ TEST(RotationBreak, TenOnTheBreakIsRespottedAndTheBreakerShootsOn) {
   EXPECT_EQ(v.next_shooter, 0);
 }
 
-// ---- Lowest ball first ------------------------------------------------------------------------
+// ---- Lowest ball first: WPA 6.2 Wrong Ball First (the lowest-numbered ball), 6.3 No Rail after
+// Contact, 2.5 Continuing Play (any ball legally pocketed keeps the turn; the 9 wins, on a
+// combination too), 2.6 Spotting Balls (the 9 pocketed on a foul or driven off the table is
+// spotted, no other ball)
 
 TEST(RotationPlay, LowestBallFirstIsLegalAnyBallDownKeepsTheTurn) {
   auto balls = withPocketed(nineBalls(), {1});
@@ -235,7 +243,9 @@ TEST(RotationPlay, NineOffTheTableIsRespottedOthersStayOff) {
   EXPECT_EQ(v.off_table, (std::vector<int>{9, 1}));
 }
 
-// ---- The push-out -----------------------------------------------------------------------------
+// ---- The push-out: WPA 2.4 and 9.4 Second Shot of the Rack – Push Out (6.2 and 6.3 suspended, the
+// other player chooses who shoots; only on the shot after the break), 2.6 (the 9 pocketed on a
+// push-out is spotted)
 
 TEST(RotationPushOut, ExcusesContactFoulsAndLetsTheOpponentChoose) {
   auto balls = nineBalls();
@@ -300,7 +310,8 @@ TEST(RotationPushOut, OnlyOfferedAfterTheBreak) {
   EXPECT_FALSE(applyRotationChoice(st, Choice::PushOut));
 }
 
-// ---- Three fouls ------------------------------------------------------------------------------
+// ---- Three fouls: WPA 6.14 Three Consecutive Fouls and 2.8 Serious Fouls (the rack is lost); a
+// legal shot ends the run; 6.15 Slow Play (the shot clock's time-out is a foul)
 
 TEST(RotationFouls, TheThirdFoulInARowLosesTheRack) {
   auto balls = nineBalls();
@@ -348,7 +359,10 @@ TEST(RotationFouls, ATimeOutCountsAsAFoul) {
   EXPECT_EQ(first.ball_in_hand, BallInHand::Anywhere);
 }
 
-// ---- 10-ball calls ----------------------------------------------------------------------------
+// ---- 10-ball calls: WPA 9.5 Shots Required to Be Called (1.6 Standard Call Shot: one ball and
+// pocket; a ball pocketed otherwise lets the incoming player choose who shoots; a safety may be
+// called), 9.6 Continuing Play (the 10 called wins), 9.7 Spotting Balls (the 10 not called is
+// spotted)
 
 TEST(TenBallCalls, TheCalledBallInTheCalledPocketKeepsTheTurn) {
   auto balls = tenBalls();
@@ -415,7 +429,7 @@ TEST(TenBallCalls, ShotsAfterTheBreakMustBeCalled) {
       "");
 }
 
-// ---- The one entry by game --------------------------------------------------------------------
+// ---- The one entry by game (no rule: the dispatch to each game's rules) -------------------------
 
 TEST(GameRules, DispatchesByGame) {
   EXPECT_EQ(gameOfNumber(9), Game::NineBall);
