@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_run.h"
 #include "client/app/aim_follower.h"
 #include "client/net/aim_pacer.h"
 #include "client/net/game_client.h"
@@ -94,8 +95,8 @@ void BM_AimToSpectatorsCue(benchmark::State& state) {
   client::GameClient& shooter = view->shooter == 0 ? ada : bob;
   const std::uint32_t shot = view->shot_number;
 
-  constexpr int kChanges = 25;
-  std::vector<Change> changes(kChanges);
+  const int kChanges = pool::bench::smokeOr(25, 6);  // the smoke run: a few changes
+  std::vector<Change> changes(static_cast<std::size_t>(kChanges));
   std::mutex mutex;
   std::atomic<bool> done{false};
   double send_cpu = 0.0;  // s in sendAim (sign and write)
@@ -223,4 +224,7 @@ BENCHMARK(BM_AimToSpectatorsCue)->Iterations(1)->UseRealTime()->Unit(benchmark::
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  pool::bench::CheckedReporter reporter;
+  return pool::bench::runBenchmarks(argc, argv, reporter);
+}

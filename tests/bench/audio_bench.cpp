@@ -51,7 +51,7 @@ void BM_MixBreakFirstSecond(benchmark::State& state) {
 }
 BENCHMARK(BM_MixBreakFirstSecond)
     ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(15)
+    ->Repetitions(pool::bench::reps(15))
     ->ReportAggregatesOnly(true);
 
 /// Baseline: a second with no sound, through the same limiter and clipper.
@@ -60,7 +60,7 @@ void BM_BaselineMixSilentSecond(benchmark::State& state) {
 }
 BENCHMARK(BM_BaselineMixSilentSecond)
     ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(15)
+    ->Repetitions(pool::bench::reps(15))
     ->ReportAggregatesOnly(true);
 
 /// What a SoundBoard spends at construction: synthesising every template sound.
@@ -72,18 +72,16 @@ void BM_SynthesiseBank(benchmark::State& state) {
 }
 BENCHMARK(BM_SynthesiseBank)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(pool::bench::reps(5))
     ->ReportAggregatesOnly(true);
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
   pool::bench::RatioReporter reporter("BM_Baseline");
-  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const int status = pool::bench::runBenchmarks(argc, argv, reporter);
   std::printf(
       "(a ratio under 1 is the cost of the break's voices over the silent mix; "
       "x_realtime: seconds of audio mixed per second of CPU)\n");
-  benchmark::Shutdown();
-  return 0;
+  return status;
 }

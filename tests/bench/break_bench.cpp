@@ -96,7 +96,7 @@ void BM_BreakToRest(benchmark::State& state) {
 }
 BENCHMARK(BM_BreakToRest)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(25)
+    ->Repetitions(pool::bench::reps(25))
     ->ReportAggregatesOnly(true);
 
 /// The 100 varied breaks, one after another (time per iteration: all 100).
@@ -111,7 +111,7 @@ void BM_HundredVariedBreaks(benchmark::State& state) {
 }
 BENCHMARK(BM_HundredVariedBreaks)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(pool::bench::reps(5))
     ->ReportAggregatesOnly(true);
 
 /// The same break on Han (2005)'s one-impulse cushion model, the default before Mathavan (2010):
@@ -126,7 +126,7 @@ void BM_BreakToRestHan2005Cushions(benchmark::State& state) {
 }
 BENCHMARK(BM_BreakToRestHan2005Cushions)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(25)
+    ->Repetitions(pool::bench::reps(25))
     ->ReportAggregatesOnly(true);
 
 /// The same break with 60 Hz frames recorded, as the server publishes them.
@@ -143,7 +143,7 @@ void BM_BreakToRestWithFrames(benchmark::State& state) {
 }
 BENCHMARK(BM_BreakToRestWithFrames)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(25)
+    ->Repetitions(pool::bench::reps(25))
     ->ReportAggregatesOnly(true);
 
 /// Baseline: sixteen free ODE bodies stepped at a fixed 1 ms for the break's simulated time,
@@ -166,7 +166,7 @@ void BM_BaselineFixedStepOde1ms(benchmark::State& state) {
 }
 BENCHMARK(BM_BaselineFixedStepOde1ms)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(25)
+    ->Repetitions(pool::bench::reps(25))
     ->ReportAggregatesOnly(true);
 
 double threadCpuSeconds() {
@@ -285,10 +285,9 @@ bool reportVariedBreaks(double baseline_ms, int rounds) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
   pool::bench::RatioReporter reporter("BM_Baseline");
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  const bool ok = reportVariedBreaks(reporter.median("BM_BaselineFixedStepOde1ms"), 3);
-  return ok ? 0 : 1;
+  const int status = pool::bench::runBenchmarks(argc, argv, reporter);
+  const bool ok =
+      reportVariedBreaks(reporter.median("BM_BaselineFixedStepOde1ms"), pool::bench::smokeOr(3, 1));
+  return status != 0 ? status : ok ? 0 : 1;
 }

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_run.h"
 #include "client/app/controls.h"
 #include "client/app/match_session.h"
 #include "client/render/offscreen.h"
@@ -297,13 +298,16 @@ int main(int argc, char** argv) {
   try {
     bench().emplace();
   } catch (const std::exception& e) {
-    std::printf("frame_bench: no OpenGL context (%s); nothing measured\n", e.what());
-    return 0;
+    // In CI (CI=true) a missing context is a failure, as it is for the OpenGL tests.
+    std::fprintf(stderr, "frame_bench: no OpenGL context (%s); nothing measured%s\n", e.what(),
+                 pool::bench::runningInCi() ? " (CI=true: a failure)" : "");
+    return pool::bench::runningInCi() ? 1 : 0;
   }
   std::printf("frame_bench: %dx%d through %s, renderer: %s\n", kWidth, kHeight,
               bench()->context.backend().c_str(),
               reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-  benchmark::RunSpecifiedBenchmarks();
+  pool::bench::CheckedReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
   const auto& all = samples();
   const auto base = all.find("clear only (baseline)");
   const double base_median = base == all.end() ? 0.0 : percentile(base->second.wall, 0.5);
@@ -329,5 +333,5 @@ int main(int argc, char** argv) {
   }
   std::printf("(load average now %s)\n", loadAverage().c_str());
   benchmark::Shutdown();
-  return 0;
+  return reporter.exitCode();
 }

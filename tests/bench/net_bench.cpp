@@ -20,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_run.h"
 #include "net/convert.h"
 #include "net/match_partition.h"
 #include "net/message_convert.h"
@@ -443,7 +444,7 @@ std::uint32_t nextDomain() {
 /// a paced (60 Hz) server; and the snapshot bytes per second one subscriber receives per match.
 void BM_ShotToFirstSnapshot(benchmark::State& state) {
   useLoopback();
-  const int tables = 8, rounds = 6;
+  const int tables = pool::bench::smokeOr(8, 2), rounds = pool::bench::smokeOr(6, 1);
   for (auto _ : state) {
     const std::uint32_t domain = nextDomain();
     PinnedServer server(domain, tables, 0);
@@ -545,7 +546,7 @@ void BM_SixtyHzCapacity(benchmark::State& state) {
 /// what every client received before partitions.
 void BM_SpectatorBesideMovingMatches(benchmark::State& state) {
   useLoopback();
-  constexpr int kOthers = 100, kRounds = 3;
+  const int kOthers = pool::bench::smokeOr(100, 3), kRounds = pool::bench::smokeOr(3, 1);
   for (auto _ : state) {
     const std::uint32_t domain = nextDomain();
     PinnedServer server(domain, kOthers + 1, 0);
@@ -605,7 +606,7 @@ BENCHMARK(BM_SpectatorBesideMovingMatches)->Iterations(1)->UseRealTime()->Unit(b
 void capacityArgs(benchmark::internal::Benchmark* b) {
   // POOL_NET_BENCH_TABLES="25,50,100,200" sweeps; the default checks the target only.
   const char* env = std::getenv("POOL_NET_BENCH_TABLES");
-  std::stringstream list(env ? env : "100");
+  std::stringstream list(env ? env : pool::bench::smoke() ? "4" : "100");
   std::string item;
   while (std::getline(list, item, ',')) b->Arg(std::stol(item));
 }
@@ -617,4 +618,7 @@ BENCHMARK(BM_SixtyHzCapacity)
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  pool::bench::CheckedReporter reporter;
+  return pool::bench::runBenchmarks(argc, argv, reporter);
+}

@@ -3,6 +3,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_run.h"
+
 #include <cstdio>
 #include <map>
 #include <string>
@@ -12,13 +14,13 @@ namespace pool::bench {
 /// Prints the usual table, then "name: median cpu X ms (Y× faster than baseline)" lines where
 /// the baseline is the benchmark whose name starts with `baseline_prefix`. With `wall_clock` the
 /// medians are of real time (work that waits on a disk), not CPU time.
-class RatioReporter : public benchmark::ConsoleReporter {
+class RatioReporter : public CheckedReporter {
  public:
   explicit RatioReporter(std::string baseline_prefix, bool wall_clock = false)
       : baseline_(std::move(baseline_prefix)), wall_clock_(wall_clock) {}
 
   void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
+    CheckedReporter::ReportRuns(runs);
     for (const Run& r : runs) {
       if (r.aggregate_name != "median") continue;
       const double time = wall_clock_ ? r.GetAdjustedRealTime() : r.GetAdjustedCPUTime();

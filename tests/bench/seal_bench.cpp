@@ -37,7 +37,7 @@ void BM_BaselineToWire(benchmark::State& state) {
 }
 BENCHMARK(BM_BaselineToWire)
     ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(7)
+    ->Repetitions(pool::bench::reps(7))
     ->ReportAggregatesOnly(true);
 
 void BM_SealedBody(benchmark::State& state) {
@@ -50,7 +50,10 @@ void BM_SealedBody(benchmark::State& state) {
   }
   state.counters["bytes"] = static_cast<double>(bytes);
 }
-BENCHMARK(BM_SealedBody)->Unit(benchmark::kMicrosecond)->Repetitions(7)->ReportAggregatesOnly(true);
+BENCHMARK(BM_SealedBody)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(pool::bench::reps(7))
+    ->ReportAggregatesOnly(true);
 
 void BM_ToWireAndSeal(benchmark::State& state) {
   const auto frame = sixteenBalls();
@@ -63,7 +66,7 @@ void BM_ToWireAndSeal(benchmark::State& state) {
 }
 BENCHMARK(BM_ToWireAndSeal)
     ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(7)
+    ->Repetitions(pool::bench::reps(7))
     ->ReportAggregatesOnly(true);
 
 void BM_CheckReceived(benchmark::State& state) {
@@ -78,15 +81,12 @@ void BM_CheckReceived(benchmark::State& state) {
 }
 BENCHMARK(BM_CheckReceived)
     ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(7)
+    ->Repetitions(pool::bench::reps(7))
     ->ReportAggregatesOnly(true);
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
   pool::bench::RatioReporter reporter("BM_Baseline");
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return pool::bench::runBenchmarks(argc, argv, reporter);
 }

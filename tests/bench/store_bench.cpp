@@ -89,7 +89,7 @@ void BM_BaselineEncodeShot(benchmark::State& state) {
 BENCHMARK(BM_BaselineEncodeShot)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(9)
+    ->Repetitions(pool::bench::reps(9))
     ->ReportAggregatesOnly(true);
 
 void BM_CommitShot(benchmark::State& state) {
@@ -101,7 +101,7 @@ void BM_CommitShot(benchmark::State& state) {
 BENCHMARK(BM_CommitShot)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(9)
+    ->Repetitions(pool::bench::reps(9))
     ->ReportAggregatesOnly(true);
 
 void BM_CommitMatchChange(benchmark::State& state) {
@@ -112,15 +112,12 @@ void BM_CommitMatchChange(benchmark::State& state) {
 BENCHMARK(BM_CommitMatchChange)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(9)
+    ->Repetitions(pool::bench::reps(9))
     ->ReportAggregatesOnly(true);
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
   pool::bench::RatioReporter reporter("BM_Baseline", /*wall_clock=*/true);
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return pool::bench::runBenchmarks(argc, argv, reporter);
 }
