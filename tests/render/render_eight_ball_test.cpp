@@ -14,7 +14,9 @@ using RenderEightBallTest = ScreenshotTest;
 constexpr Rgb kTriangle{0.10, 0.22, 0.85};
 constexpr Rgb kWood{0.34, 0.17, 0.07};
 
-/// The window's centre and the ball's radius on screen, from the room's default camera.
+/// The window's centre and the ball's radius on screen, from the room's default camera and its
+/// ball. The window is the point of the ball's surface nearest the viewer (it faces them: the
+/// room's promise), found here from the eye and the ball alone, not from the room's own code.
 struct RoomOnScreen {
   glm::vec3 window;
   glm::vec3 ball;
@@ -27,9 +29,10 @@ RoomOnScreen project(int width, int height) {
   const glm::vec3 side = glm::vec3(render::EightBallRoom::ballRadius(), 0, 0);
   const glm::vec3 c = render::projectToPixels(camera, width, height, ball);
   const glm::vec3 e = render::projectToPixels(camera, width, height, ball + side);
-  return {
-      render::projectToPixels(camera, width, height, render::EightBallRoom::windowCentre(camera)),
-      c, glm::length(glm::vec2(e) - glm::vec2(c))};
+  const glm::vec3 toward_viewer = glm::normalize(camera.eye - ball);
+  const glm::vec3 window = ball + toward_viewer * render::EightBallRoom::ballRadius();
+  return {render::projectToPixels(camera, width, height, window), c,
+          glm::length(glm::vec2(e) - glm::vec2(c))};
 }
 
 TEST_F(RenderEightBallTest, TheBallOnItsStoolShowsTheAnswerTriangleWithText) {

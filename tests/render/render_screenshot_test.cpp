@@ -1,6 +1,6 @@
 // pool-client --screenshot under Xvfb and through EGL without a display: the racked table (felt,
-// cushions, rails, sixteen numbered balls where the camera puts them) and the P/T/L switches
-// (wireframe, textures, lighting).
+// cushions, rails, sixteen numbered balls where the reported camera, checked to be an unmirrored
+// overview, puts them) and the P/T/L switches (wireframe, textures, lighting).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -15,33 +15,45 @@
 namespace pool::client::test {
 namespace {
 
-using RenderScreenshotTest = ScreenshotTest;
+using RenderScreenshotTest = ScreenshotInfoTest;
 
 constexpr Rgb kFelt{0.05, 0.42, 0.20};
 constexpr Rgb kWood{0.34, 0.17, 0.07};
 constexpr int kWidth = 1280;
 constexpr int kHeight = 720;
 
-/// A ball's centre and radius in the screenshot, from the scene and the default camera.
+/// A ball's centre and radius in the screenshot.
 struct BallOnScreen {
   int id = 0;
   double x = 0, y = 0, radius = 0;
 };
 
-std::vector<BallOnScreen> rackOnScreen() {
+/// The overview the screenshot promises, checked on the camera it reports rather than taken from
+/// the camera code: no mirror, from above the table's near (−y) side, the table's length (+x)
+/// across the image to the right and its far side up.
+void expectOverview(const ReportedCamera& camera) {
+  EXPECT_EQ(camera.mirrored(), "");
+  EXPECT_LT(camera.eye.y, 0.0f) << "seen from the near side";
+  EXPECT_GT(camera.eye.z, 0.5f) << "seen from above";
+  EXPECT_GT(camera.right().x, 0.99f) << "+x to the right";
+  EXPECT_GT(camera.up().y, 0.0f) << "the far side up";
+  const glm::vec3 foot = camera.pixel(glm::vec3(1.0f, 0.0f, 0.0f));
+  const glm::vec3 head = camera.pixel(glm::vec3(-1.0f, 0.0f, 0.0f));
+  EXPECT_GT(foot.x, head.x + 100.0f) << "the foot end drawn right of the head end";
+}
+
+/// The rack's balls (from the scene, not from what was drawn) where `camera` puts them.
+std::vector<BallOnScreen> rackOnScreen(const ReportedCamera& camera) {
   auto scene = render::rackScene();
   EXPECT_TRUE(static_cast<bool>(scene));
   if (!scene) return {};
-  const auto camera = render::overviewCamera(scene->geometry, float(kWidth) / float(kHeight));
   // A point one radius to the side (across the view) gives the ball's radius on screen.
-  const glm::vec3 side =
-      glm::normalize(glm::cross(camera.target - camera.eye, glm::vec3(0, 0, 1))) *
-      float(scene->ball_radius);
+  const glm::vec3 side = camera.right() * float(scene->ball_radius);
   std::vector<BallOnScreen> out;
   for (const auto& b : scene->balls) {
     const glm::vec3 c(b.pos.x(), b.pos.y(), b.pos.z());
-    const glm::vec3 centre = render::projectToPixels(camera, kWidth, kHeight, c);
-    const glm::vec3 edge = render::projectToPixels(camera, kWidth, kHeight, c + side);
+    const glm::vec3 centre = camera.pixel(c);
+    const glm::vec3 edge = camera.pixel(c + side);
     out.push_back({b.id, centre.x, centre.y, glm::length(glm::vec2(edge) - glm::vec2(centre))});
   }
   return out;
@@ -52,7 +64,8 @@ constexpr double kDim = 24.0;
 const auto kIsFelt = [](const Rgb& p) { return shadeOf(p, kFelt, kDim); };
 
 TEST_F(RenderScreenshotTest, RackSceneShowsFeltCushionsRailsAndSixteenBalls) {
-  const Image image = screenshot("--scene rack");
+  const Image image = view("--scene rack");
+  expectOverview(camera_);
   ASSERT_EQ(image.width, kWidth);
   ASSERT_EQ(image.height, kHeight);
   const int total = image.width * image.height;
@@ -65,21 +78,19 @@ TEST_F(RenderScreenshotTest, RackSceneShowsFeltCushionsRailsAndSixteenBalls) {
   // Each cushion's top, just behind its nose, is cloth-covered (green), not wood or background.
   auto scene = render::rackScene();
   ASSERT_TRUE(static_cast<bool>(scene));
-  const auto camera = render::overviewCamera(scene->geometry, float(kWidth) / float(kHeight));
   int cushions = 0;
   for (const auto& nose : scene->geometry.noses) {
     if (nose.name.rfind("jaw", 0) == 0) continue;
     const Eigen::Vector2d behind = (nose.a + nose.b) / 2.0 - nose.normal * 0.02;
-    const glm::vec3 px = render::projectToPixels(
-        camera, kWidth, kHeight,
-        glm::vec3(behind.x(), behind.y(), scene->geometry.nose_height + 0.004));
+    const glm::vec3 px =
+        camera_.pixel(glm::vec3(behind.x(), behind.y(), scene->geometry.nose_height + 0.004));
     ++cushions;
     EXPECT_GE(countInDisc(image, px.x, px.y, 3.0, kIsFelt), 20) << "cushion " << nose.name;
   }
   EXPECT_EQ(cushions, 6);
 
   // Sixteen balls, each showing its own colour where the camera projects it.
-  const auto balls = rackOnScreen();
+  const auto balls = rackOnScreen(camera_);
   ASSERT_EQ(balls.size(), 16u);
   for (const BallOnScreen& b : balls) {
     ASSERT_GT(b.radius, 4.0);
@@ -90,11 +101,12 @@ TEST_F(RenderScreenshotTest, RackSceneShowsFeltCushionsRailsAndSixteenBalls) {
 }
 
 TEST_F(RenderScreenshotTest, NumbersShowAsWhiteCirclesOnColouredBallsUnlessTexturesAreOff) {
-  const Image textured = screenshot("--scene rack");
+  const Image textured = view("--scene rack");
   const Image plain = screenshot("--scene rack --no-textures");
   ASSERT_EQ(textured.width, kWidth);
   ASSERT_EQ(plain.width, kWidth);
-  for (const BallOnScreen& b : rackOnScreen()) {
+  expectOverview(camera_);
+  for (const BallOnScreen& b : rackOnScreen(camera_)) {
     if (b.id < 1 || b.id > 7) continue;  // solids: white can only be the number circle
     const int with = countInDisc(textured, b.x, b.y, b.radius * 0.5, isWhite);
     const int without = countInDisc(plain, b.x, b.y, b.radius * 0.5, isWhite);

@@ -2,6 +2,7 @@
 // projecting table points to pixels the way a test needs, independently of the renderer's code.
 #pragma once
 
+#include <cmath>
 #include <fstream>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -32,6 +33,17 @@ struct ReportedCamera {
   /// Unit vectors of the image's right and up directions in the table frame.
   glm::vec3 right() const { return {view[0][0], view[1][0], view[2][0]}; }
   glm::vec3 up() const { return {view[0][1], view[1][1], view[2][1]}; }
+  /// Empty when the camera draws the table as a camera sees it; else why not: a view that is
+  /// not a rotation and a translation (a reflection: det −1), or a projection that flips an axis
+  /// of the image (a mirror the reported matrices would otherwise carry into every expectation).
+  std::string mirrored() const {
+    const float det = glm::determinant(glm::mat3(view));
+    if (std::abs(det - 1.0f) > 1e-3f)
+      return "the view's rotation has determinant " + std::to_string(det);
+    if (!(projection[0][0] > 0.0f)) return "the projection flips the image's x";
+    if (!(projection[1][1] > 0.0f)) return "the projection flips the image's y";
+    return {};
+  }
 };
 
 inline glm::mat4 matrixOf(const nlohmann::json& values) {
