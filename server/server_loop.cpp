@@ -134,7 +134,6 @@ void ServerLoop::readJoins(double now) {
       echo.client = bad->client;
       echo.request = bad->request;
       echo.match = bad->match;
-      if (underAnotherSeatedClient(bad->client, bad->sender, now)) continue;
       if (!withinSenderLimit(bad->sender, echo, now)) continue;
       spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
       joins_.add("unreadable", now);
@@ -198,17 +197,6 @@ bool ServerLoop::goneForReal(const net::ClientGone& gone, double now) {
   return false;
 }
 
-bool ServerLoop::underAnotherSeatedClient(const std::string& client, const std::string& sender,
-                                          double now) {
-  const auto seated = seated_from_.find(client);
-  if (seated == seated_from_.end() || seated->second.sender == sender) return false;
-  // Anyone may write under a seated player's client id; answering would write to her reply
-  // instance (keep-last 1, so her own answer could be lost), and counting would use up her limit.
-  joins_.add("under a seated client's id from another participant", now);
-  ++counters_.joins_refused;
-  return true;
-}
-
 std::string ServerLoop::senderClient(const std::string& sender, const std::string& client) {
   return sender + " " + client;
 }
@@ -236,7 +224,6 @@ void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sende
                             std::uint64_t writer, double now) {
   // A client over its own limit is refused (one instance answered again and again); a request
   // within it must still be within its participant's (many client ids from one participant).
-  if (underAnotherSeatedClient(command.client, sender, now)) return;
   // The bucket is the sending participant's for that client id: someone else flooding under the
   // same id empties a bucket of their own, and the client's own requests reach their checks.
   const std::string bucket = senderClient(sender, command.client);

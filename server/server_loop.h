@@ -94,9 +94,6 @@ class ServerLoop {
   /// Whether `gone` ends its client's presence: "no writers" always; a disposal only when the
   /// participant the client's seat request came from wrote it (others are counted and ignored).
   bool goneForReal(const net::ClientGone& gone, double now);
-  /// Whether a join request under `client` from `sender` is dropped unanswered: `client` holds a
-  /// seat it took from another participant (counted, nothing else changes).
-  bool underAnotherSeatedClient(const std::string& client, const std::string& sender, double now);
   /// The key of a client's join-rate bucket: its id as sent by `sender`.
   static std::string senderClient(const std::string& sender, const std::string& client);
   /// Clients the server holds something for: kept replies and join-rate buckets.
@@ -154,8 +151,7 @@ class ServerLoop {
   JoinRateLimit rate_;
   /// The DDS participant each seated client's last seat request came from: only a disposal of
   /// its JoinRequest instance by that participant ends its presence (anyone may dispose any
-  /// instance) and any request under its id from elsewhere is dropped. One entry per client a
-  /// seat names.
+  /// instance). One entry per client a seat names.
   struct Seated {
     std::string sender;         ///< the participant its seat request came from
     std::uint64_t writer = 0;   ///< that request's writer
