@@ -34,17 +34,20 @@ std::atomic<bool> g_stop{false};
 constexpr int kExitDuplicateServer = 3;
 /// How long the lobby is read for another server with our id before serving.
 constexpr std::chrono::milliseconds kPeerWait{1500};
-/// How long a server seen with our id and our key may stay seen: a crashed process is unmatched
-/// when its participant's lease (Cyclone's default: 10 s) runs out.
-constexpr double kPeerLease = 15.0;
+/// How long a server that saw entries of its id signed with its own key challenges the domain,
+/// once a second, for a live server with that key (a copy of its database) to answer. A live one
+/// answers within a pass of its loop once discovery has matched the challenge's writer (well
+/// under a second on a LAN): ten seconds leave room for a loaded machine.
+constexpr double kChallengeWindow = 10.0;
 
-/// Why this server must not serve as `server_id` beside what `probe` saw, or empty.
-std::string duplicateServer(const std::string& server_id, const pool::net::ServerSighting& seen) {
-  if (!seen.seen || seen.same_key) return {};
-  std::string why = "--server-id " + server_id + " is already live on this domain (match " +
-                    seen.match + ", server key " + seen.key_fingerprint + ")";
-  if (!seen.problem.empty()) why += "; " + seen.problem;
-  return why + ": give this server another --server-id, or stop the other one";
+/// The warning for lobby entries of `server_id` that are not ours: no reason to stop.
+std::string strangeEntries(const std::string& server_id, const pool::net::ServerSighting& seen) {
+  std::string why = "a lobby entry under --server-id " + server_id + " (match " + seen.match +
+                    ", server key " + seen.key_fingerprint + ")";
+  if (!seen.problem.empty()) why += " that does not verify (" + seen.problem + ")";
+  return why +
+         " is not this database's: anyone can write such an entry, so it proves no other server "
+         "live; serving (clients pin one key per server id and drop the other's samples)";
 }
 
 extern "C" void onSignal(int) {
@@ -113,31 +116,43 @@ int serve(const pool::server::ServerConfig& config,
   // The file keeps the server's id, so match ids go on where they stopped.
   if (options.server_id.empty()) options.server_id = store.serverId();
   MatchRegistry registry(options, std::move(kit));
-  // Another server live under this id: refuse, unless it holds our key (the same database, a
-  // crashed run of ours still seen) and goes within its lease.
+  // Another server live under this id with our key (a copy of this database) must not serve
+  // beside us. Entries prove nothing (anyone writes one, a genuine one can be replayed): only a
+  // server that answers a fresh challenge signed with our key does.
   pool::net::ServerIdProbe probe(config.domain);
   const auto seen = probe.look(registry.serverId(), key, kPeerWait);
-  if (auto why = duplicateServer(registry.serverId(), seen); !why.empty()) {
-    spdlog::error("{}", why);
-    return kExitDuplicateServer;
-  }
-  if (seen.seen) {
+  if (seen.strange) spdlog::warn("{}", strangeEntries(registry.serverId(), seen));
+  if (seen.ours) {
     spdlog::warn(
-        "server {} with this database's key is still seen (a run that crashed?): "
-        "serving, and stopping if it is still there in {:.0f} s",
-        registry.serverId(), kPeerLease);
+        "server {} with this database's key is still seen (a run that crashed, or a replayed "
+        "entry?): serving, and stopping if a live server with this key answers within {:.0f} s",
+        registry.serverId(), kChallengeWindow);
   }
   const int resumed = resume(registry, store);
   const int opened = registry.keepFreeTables(config.tables);
   pool::net::ServerTransport transport(config.domain, key);
   ServerLoop loop(config, registry, transport, &store);
-  if (seen.seen) {
-    loop.guard([&probe](double now) -> std::string {
-      if (now < kPeerLease || !probe.stillLive()) return {};
-      return "another server with this database's key and server id is still live on the domain "
-             "after " +
-             std::to_string(static_cast<int>(kPeerLease)) +
-             " s (a copy of this database?): stopping";
+  if (seen.ours) {
+    const std::string own = transport.participantGuid();
+    const std::string id = registry.serverId();
+    loop.guard([&probe, &key, own, id, challenged = -1.0](double now) mutable -> std::string {
+      if (challenged > kChallengeWindow) return {};
+      if (probe.answered(id, key, own)) {
+        return "another server with this database's key and server id is still live on the "
+               "domain after " +
+               std::to_string(static_cast<int>(now)) +
+               " s: it answered a challenge (a copy of this database?): stopping";
+      }
+      if (now - challenged < 1.0) return {};
+      if (now > kChallengeWindow) {
+        spdlog::info("no other server with this database's key answered in {:.0f} s: serving on",
+                     kChallengeWindow);
+        challenged = now;  // past the window: done
+        return {};
+      }
+      probe.challenge(id);
+      challenged = now;
+      return {};
     });
   }
   AdminDesk desk(registry, store, loop.counters(), db_path);

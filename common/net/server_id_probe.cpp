@@ -1,79 +1,113 @@
-// The server-id probe: a lobby reader read for a while, the entries of one server id checked.
+// The server-id probe: a lobby reader read for a while, and a challenge that only a live server
+// holding our key can answer.
 #include "net/server_id_probe.h"
 
 #include <dds/dds.h>
 
 #include <algorithm>
+#include <array>
+#include <random>
 
+#include "core/hex.h"
 #include "net/participant.h"
+#include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
 #include "net/reader.h"
 #include "net/server_seal.h"
-#include "net/topic.h"
 #include "net/waitset.h"
 #include "net/wire_fields.h"
+#include "net/writer.h"
+#include "protocol/protocol_version.h"
 
 namespace pool::net {
 
-struct ServerIdProbe::Endpoints {
+struct ServerIdProbe::Endpoints : ProtocolTopics {
   explicit Endpoints(std::uint32_t domain)
-      : participant(domain),
-        topic(participant),
-        reader(participant, topic, qos::lobby()),
+      : ProtocolTopics(domain),
+        lobby(participant, match_info_topic, qos::lobby()),
+        requests(participant, join_request_topic, qos::joinRequest()),
+        replies(participant, join_reply_topic, qos::joinReply()),
         waitset(participant) {
-    waitset.attachData(reader, 1);
+    waitset.attachData(lobby, 1);
   }
 
-  Participant participant;
-  Topic<pool_MatchInfo> topic;
-  Reader<pool_MatchInfo> reader;
+  Reader<pool_MatchInfo> lobby;
+  Writer<pool_JoinRequest> requests;
+  Reader<pool_JoinReply> replies;
   WaitSet waitset;
 };
 
-ServerIdProbe::ServerIdProbe(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {}
+namespace {
+
+bool sameKey(const protocol::SealedSample& sealed, const protocol::KeyPair& key) {
+  return std::equal(sealed.server_key.begin(), sealed.server_key.end(), key.public_key.begin(),
+                    key.public_key.end());
+}
+
+}  // namespace
+
+ServerIdProbe::ServerIdProbe(std::uint32_t domain) : e_(std::make_unique<Endpoints>(domain)) {
+  std::random_device random;
+  std::array<std::uint8_t, 8> bytes{};
+  for (auto& b : bytes) b = static_cast<std::uint8_t>(random());
+  nonce_ = "id-probe-" + hexOf(bytes);
+}
 
 ServerIdProbe::~ServerIdProbe() = default;
 
 ServerSighting ServerIdProbe::look(const std::string& server_id, const protocol::KeyPair& key,
                                    std::chrono::milliseconds window) {
   ServerSighting out;
-  out.same_key = true;
   const auto deadline = std::chrono::steady_clock::now() + window;
   for (;;) {
-    for (auto& sample : e_->reader.take()) {
+    for (auto& sample : e_->lobby.take()) {
       if (textOf(sample->server) != server_id) continue;
       const auto sealed = sealedOf(*sample);
-      if (!out.seen) {
-        out.match = sealed.match;
-        out.key_fingerprint = protocol::fingerprint(sealed.server_key);
-      }
       out.seen = true;
-      writers_.push_back(sample.meta().publication_handle);
       const auto problem = protocol::sealProblem(sealed);
-      const bool ours = std::equal(sealed.server_key.begin(), sealed.server_key.end(),
-                                   key.public_key.begin(), key.public_key.end());
-      if (!problem.empty() && out.problem.empty()) out.problem = problem;
-      if (!problem.empty() || !ours) out.same_key = false;
+      if (problem.empty() && sameKey(sealed, key)) {
+        if (!out.strange) out.match = sealed.match;
+        out.ours = true;
+        continue;
+      }
+      if (!out.strange) {
+        out.match = sealed.match;
+        out.key_fingerprint =
+            sealed.server_key.empty() ? "(none)" : protocol::fingerprint(sealed.server_key);
+        out.problem = problem;
+      }
+      out.strange = true;
     }
     const auto now = std::chrono::steady_clock::now();
     if (now >= deadline) break;
     e_->waitset.wait(
         std::min<std::chrono::nanoseconds>(deadline - now, std::chrono::milliseconds(50)));
   }
-  if (!out.seen) out.same_key = false;
   return out;
 }
 
-bool ServerIdProbe::stillLive() const {
-  if (writers_.empty()) return false;
-  std::vector<dds_instance_handle_t> matched(64);
-  const dds_return_t n =
-      dds_get_matched_publications(e_->reader.handle(), matched.data(), matched.size());
-  if (n < 0) return false;
-  matched.resize(std::min(static_cast<std::size_t>(n), matched.size()));
-  return std::any_of(writers_.begin(), writers_.end(), [&](std::uint64_t w) {
-    return std::find(matched.begin(), matched.end(), w) != matched.end();
-  });
+void ServerIdProbe::challenge(const std::string& server_id) {
+  pool_JoinRequest r{};
+  setText(r.client, nonce_);
+  r.request = ++request_;
+  r.protocol_version = protocol::kProtocolVersion;
+  setText(r.match, server_id + "-0");
+  r.action = pool_JOIN_SPECTATE;
+  r.seat = -1;
+  (void)e_->requests.write(r);  // best effort: the next challenge goes out a second later
+}
+
+bool ServerIdProbe::answered(const std::string& server_id, const protocol::KeyPair& key,
+                             const std::string& own_participant) {
+  bool live = false;
+  for (auto& sample : e_->replies.take()) {
+    if (textOf(sample->client) != nonce_ || textOf(sample->server) != server_id) continue;
+    const auto sealed = sealedOf(*sample);
+    if (!protocol::sealProblem(sealed).empty() || !sameKey(sealed, key)) continue;
+    const std::string writer = e_->replies.participantOf(sample.meta().publication_handle);
+    if (!writer.empty() && writer != own_participant) live = true;
+  }
+  return live;
 }
 
 }  // namespace pool::net

@@ -1,6 +1,6 @@
-// One server per server id on a domain: a second pool-server under a live id (another database,
-// another key) is refused with a clear error and its own exit code, the same database started
-// again after a crash resumes at once, and a copy of a live database stops after the lease.
+// One server per server id on a domain: the same database started again after a crash resumes at
+// once, and a copy of a live database stops once the live one answers its challenge. (Entries
+// under the id that are not the database's own stop nothing: server_id_squat_test.)
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -27,7 +27,7 @@ bool pumpUntil(GameClient& client, const std::function<bool()>& done,
   }
 }
 
-TEST_F(ServerIdentityTest, ADuplicateServerIdIsRefusedAndTheSameDatabaseResumesAtOnce) {
+TEST_F(ServerIdentityTest, TheSameDatabaseResumesAtOnceAfterACrash) {
   open(kDuplicateId, "server-id");
   ChildProcess& first = startServer({"--fast", "--db", file("a.db")});
   GameClient ada({kDuplicateId, "", "Ada", {}, {}});
@@ -44,13 +44,6 @@ TEST_F(ServerIdentityTest, ADuplicateServerIdIsRefusedAndTheSameDatabaseResumesA
   })) << logs();
   const SeatHolding held = *ada.seat();
 
-  // Another database under the same id while the first is live: refused, exit code 3.
-  ChildProcess& second = startServer({"--fast", "--db", file("b.db")});
-  EXPECT_EQ(second.waitExit(30s), 3) << second.err();
-  EXPECT_NE(second.err().find("--server-id srv is already live on this domain"), std::string::npos)
-      << second.err();
-  EXPECT_TRUE(first.running()) << "the live server goes on";
-
   // The first one crashes; its database started again resumes at once and the seat is there.
   first.kill(SIGKILL);
   const auto restarted = std::chrono::steady_clock::now();
@@ -63,16 +56,24 @@ TEST_F(ServerIdentityTest, ADuplicateServerIdIsRefusedAndTheSameDatabaseResumesA
   std::printf("same-database restart resumed srv-1 after %.2f s\n", seconds);
   // A restart that waited for the crashed run's lease (10 s) to run out would miss this bound.
   EXPECT_LT(seconds, 8.0);
-  ada.requestRejoin(held.match, held.token, held.seat);
+  // The rejoin is volatile too: asked again until the restarted server's reader has matched ours.
+  asked = std::chrono::steady_clock::time_point{};
   ASSERT_TRUE(pumpUntil(ada, [&] {
     const MatchView* v = ada.state("srv-1");
-    return v && v->seats[0].name == "Ada" && v->seats[0].connected && ada.seat().has_value();
+    if (v && v->seats[0].name == "Ada" && v->seats[0].connected && ada.seat().has_value()) {
+      return true;
+    }
+    if (std::chrono::steady_clock::now() - asked > 2s) {
+      ada.requestRejoin(held.match, held.token, held.seat);
+      asked = std::chrono::steady_clock::now();
+    }
+    return false;
   })) << again.err();
   EXPECT_TRUE(again.running());
   EXPECT_EQ(ada.unreadable(), 0u) << ada.lastProblem();
 }
 
-TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLeaseShowsTheOtherIsLive) {
+TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLiveOneAnswers) {
   open(kDatabaseCopy, "db-copy");
   {
     // A database with a key, then two copies of it: two servers with one key and one id.
@@ -92,7 +93,7 @@ TEST_F(ServerIdentityTest, ACopyOfALiveDatabaseServesOnlyUntilTheLeaseShowsTheOt
   const auto listed = watcher.lobby().lowestWithFreeSeat();
 
   // The copy holds the same key: it may be a crashed run of the live one, so it serves at once,
-  // and stops once the other is still there after the lease period.
+  // and stops once the other answers its challenge, signed with that key.
   ChildProcess& copy = startServer({"--fast", "--db", file("b.db")});
   EXPECT_TRUE(pumpUntil(watcher, [&] {
     return copy.err().find("is still seen") != std::string::npos;
