@@ -2,6 +2,8 @@
 // edge.
 #include "net/client_transport.h"
 
+#include "core/text.h"
+
 #include "net/aim_convert.h"
 #include "net/convert.h"
 #include "net/match_scopes.h"
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <unordered_map>
 #include <utility>
 
 namespace pool::net {
@@ -45,6 +48,9 @@ struct MatchReaders {
 };
 
 }  // namespace
+
+/// Lobby writers remembered at most (a flood of forged entries starts the map over).
+constexpr std::size_t kMaxLobbyWriters = 4096;
 
 struct ClientTransport::Endpoints : ProtocolTopics {
   Endpoints(std::uint32_t domain, ServerCheck server_check)
@@ -129,6 +135,9 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   Writer<pool_PracticeCommand> practice;
   Writer<pool_AimCommand> aim_commands;
   WaitSet waitset;
+  /// The writer of each match's last lobby entry taken (its publication handle): only that
+  /// writer's disposal of the entry is taken as the match gone.
+  std::unordered_map<std::string, std::uint64_t> lobby_writers;
   MatchScopes<Subscriber, MatchReaders> matches;  ///< followed matches, each in its partition
 };
 
@@ -165,11 +174,21 @@ std::vector<Result<protocol::AimSample>> ClientTransport::takeAims() {
 std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
   std::vector<Result<LobbyEvent>> out;
   for (auto& sample : e_->match_info.takeWithNotices()) {
+    std::string match(textOf(sample->match));
     if (!sample.meta().valid) {
       if (sample.meta().instance == InstanceState::Alive) continue;
       const bool disposed = sample.meta().instance == InstanceState::Disposed;
-      out.push_back(Result<LobbyEvent>::ok(
-          protocol::MatchGone{std::string(textOf(sample->match)), disposed}));
+      // Anyone may dispose any instance: a disposal counts only from the writer of the entry.
+      const auto writer = e_->lobby_writers.find(match);
+      if (disposed && writer != e_->lobby_writers.end() &&
+          writer->second != sample.meta().publication_handle) {
+        out.push_back(Result<LobbyEvent>::fail("lobby entry of " + escapedForLog(match) +
+                                               " disposed by a writer other than its server's: "
+                                               "ignored"));
+        continue;
+      }
+      if (writer != e_->lobby_writers.end()) e_->lobby_writers.erase(writer);
+      out.push_back(Result<LobbyEvent>::ok(protocol::MatchGone{std::move(match), disposed}));
       continue;
     }
     if (auto why = e_->refusal(*sample); !why.empty()) {
@@ -180,6 +199,8 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
     if (!entry) {
       out.push_back(Result<LobbyEvent>::fail(entry.error()));
     } else {
+      if (e_->lobby_writers.size() >= kMaxLobbyWriters) e_->lobby_writers.clear();
+      e_->lobby_writers[match] = sample.meta().publication_handle;
       out.push_back(Result<LobbyEvent>::ok(std::move(*entry)));
     }
   }
