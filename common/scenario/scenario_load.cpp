@@ -5,6 +5,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/input_file.h"
 #include "scenario/scenario_sections.h"
 #include "table/assets.h"
 
@@ -23,12 +24,9 @@ Result<std::string> readText(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec))
     return R::fail("scenario: cannot read '" + path.string() + "': is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return R::fail("scenario: cannot read '" + path.string() + "': " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return R::fail("scenario: cannot read '" + path.string() + "': read error");
-  return R::ok(text.str());
+  auto text = readInputFile(path);
+  if (!text) return R::fail("scenario: cannot read '" + path.string() + "': " + text.error());
+  return text;
 }
 
 }  // namespace

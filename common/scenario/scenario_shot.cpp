@@ -1,4 +1,5 @@
 // The scenario's shot: degrees and tip offsets at the edge, a validated CueShot (radians) inside.
+#include <cmath>
 #include <numbers>
 
 #include "physics/cue_strike.h"
@@ -25,6 +26,11 @@ std::string readShot(const nlohmann::json& shot, Scenario& s) {
   reader.number("elevation_deg", elevation_deg);
   reader.number("speed", cue.speed, Presence::Required);
   reader.string("speed_is", speed_is);
+  // A heading is an angle: a few turns either way are still one (-720 runs), but 1e308 is no
+  // heading at all and would reach the physics.
+  if (reader.ok() && !(std::abs(yaw_deg) <= 3600.0)) {
+    reader.fail("yaw_deg", "must be within -3600 to 3600 degrees, got " + shortDump(yaw_deg));
+  }
   if (reader.ok() && speed_is != "cue" && speed_is != "ball") {
     reader.fail("speed_is", "must be \"cue\" or \"ball\", got " + shortDump(speed_is));
   }

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/input_file.h"
 #include "core/text.h"
 #include "table/assets.h"
 #include "table/table_layout.h"
@@ -216,11 +217,12 @@ std::string shortWhat(const std::exception& e) {
 }
 
 Result<TableSpec> loadFile(const fs::path& path, const std::string& default_name) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Result<TableSpec>::fail(path.string() + ": cannot open the spec file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseTableSpec(text.str(), path.string(), fs::absolute(path).parent_path(), default_name);
+  // A device (/dev/zero) or a huge file would be read whole before JSON could refuse it.
+  const auto text = readInputFile(path);
+  if (!text) {
+    return Result<TableSpec>::fail(path.string() + ": cannot read the spec file: " + text.error());
+  }
+  return parseTableSpec(*text, path.string(), fs::absolute(path).parent_path(), default_name);
 }
 
 }  // namespace
