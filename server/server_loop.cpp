@@ -119,8 +119,12 @@ void ServerLoop::readJoins(double now) {
   for (auto& event : transport_.takeJoins()) {
     if (const auto* gone = std::get_if<net::ClientGone>(&event)) {
       if (!goneForReal(*gone, now)) continue;
-      // A seated player's going matters to an operator; a spectator's is counted.
-      if (registry_.clientGone(gone->client, now)) {
+      // A seated player's going matters to an operator (once: anyone may write and let go of
+      // her instance again and again while she is away); a spectator's is counted.
+      const auto seated = seated_from_.find(gone->client);
+      const bool told = seated != seated_from_.end() && seated->second.gone_told;
+      if (registry_.clientGone(gone->client, now) && !told) {
+        if (seated != seated_from_.end()) seated->second.gone_told = true;
         spdlog::info("client {} is gone ({})", escapedForLog(gone->client), gone->why);
       } else {
         spdlog::debug("client {} is gone ({})", escapedForLog(gone->client), gone->why);
@@ -244,7 +248,7 @@ void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sende
     if (command.action == JoinAction::Leave) {
       seated_from_.erase(command.client);
     } else {
-      seated_from_[command.client] = Seated{sender, writer, false};
+      seated_from_[command.client] = Seated{sender, writer, false, false};
     }
   }
   const auto line = [&] {

@@ -156,6 +156,7 @@ class ServerLoop {
     std::string sender;         ///< the participant its seat request came from
     std::uint64_t writer = 0;   ///< that request's writer
     bool watch_writer = false;  ///< another disposed its instance: its presence is the writer's
+    bool gone_told = false;     ///< its going was logged at info since its last seat request
   };
   std::unordered_map<std::string, Seated> seated_from_;
   double seated_swept_ = 0.0;  ///< when seated_from_ last let go of clients that hold no seat, s
