@@ -1,11 +1,14 @@
 // The web spectator end to end: a server, two bots and pool-web, the page in headless Chromium.
-// Its screenshots show the felt, the balls where the server published them (by the page's own
-// projection) and the players' names; the phone-sized page too.
+// Its screenshots show the felt, the balls where the server published them (projected here from
+// the view and projection matrices the page reports, checked to be an unmirrored view from the
+// table's near side) and the players' names; the phone-sized page too.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <regex>
 #include <thread>
 
@@ -14,6 +17,7 @@
 #include "support/display_check.h"
 #include "support/match_recorder.h"
 #include "support/png_image.h"
+#include "support/reported_camera.h"
 
 namespace pool::client::test {
 namespace {
@@ -67,6 +71,34 @@ double shareIn(const Image& image, double cx, double cy, double radius, Test tes
     }
   }
   return all ? double(hits) / all : 0.0;
+}
+
+/// The page's camera as it reports it (window.poolTest.camera()), projecting with the test's own
+/// arithmetic: CSS pixels from the page's top left.
+struct PageCamera {
+  ReportedCamera camera;  ///< the matrices (its width and height unused)
+  double left = 0, top = 0, width = 0, height = 0;
+
+  std::array<double, 2> project(double x, double y, double z) const {
+    const glm::dvec4 clip =
+        glm::dmat4(camera.projection) * glm::dmat4(camera.view) * glm::dvec4(x, y, z, 1.0);
+    return {left + (clip.x / clip.w + 1.0) / 2.0 * width,
+            top + (1.0 - clip.y / clip.w) / 2.0 * height};
+  }
+};
+
+std::optional<PageCamera> pageCamera(ChromiumPage& page) {
+  const auto c = page.evaluate("window.poolTest.camera()", 10s);
+  if (!c || c->is_null()) return std::nullopt;
+  PageCamera out;
+  out.camera.view = matrixOf((*c)["view"]);
+  out.camera.projection = matrixOf((*c)["projection"]);
+  const auto& r = (*c)["rect"];
+  out.left = r[0];
+  out.top = r[1];
+  out.width = r[2];
+  out.height = r[3];
+  return out;
 }
 
 TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayers) {
@@ -125,23 +157,25 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
       << page.lastError() << logs();
   ASSERT_EQ(shot.width, 1100);
 
-  // Every ball on the table, projected by the page: a disc of ball there, not felt.
+  // The page's camera, checked against what the page promises rather than taken on trust: no
+  // mirror, the table seen from its near (−y) side with its length (+x) across to the right.
+  const auto cam = pageCamera(page);
+  ASSERT_TRUE(cam) << page.lastError();
+  EXPECT_EQ(cam->camera.mirrored(), "");
+  EXPECT_GT(cam->camera.right().x, 0.99f) << "the table's +x to the right";
+  EXPECT_GT(cam->camera.up().y, 0.0f) << "its far side up";
+  const auto project = [&](double x, double y, double z) { return cam->project(x, y, z); };
+
+  // Every ball on the table: a disc of ball there, not felt.
   const double r = 0.028575;
   int checked = 0, rings = 0;
   std::vector<std::array<double, 3>> discs;  // x, y, radius in pixels
   for (const auto& ball : shown.balls) {
     if (!physics::onTable(ball.state)) continue;
-    const auto c =
-        page.evaluate("window.poolTest.project(" + std::to_string(ball.pos.x()) + "," +
-                          std::to_string(ball.pos.y()) + "," + std::to_string(ball.pos.z()) + ")",
-                      10s);
-    const auto e =
-        page.evaluate("window.poolTest.project(" + std::to_string(ball.pos.x() + r) + "," +
-                          std::to_string(ball.pos.y()) + "," + std::to_string(ball.pos.z()) + ")",
-                      10s);
-    ASSERT_TRUE(c && e) << page.lastError();
-    const double cx = (*c)[0], cy = (*c)[1];
-    const double pr = std::hypot((*e)[0].get<double>() - cx, (*e)[1].get<double>() - cy);
+    const auto c = project(ball.pos.x(), ball.pos.y(), ball.pos.z());
+    const auto e = project(ball.pos.x() + r, ball.pos.y(), ball.pos.z());
+    const double cx = c[0], cy = c[1];
+    const double pr = std::hypot(e[0] - cx, e[1] - cy);
     ASSERT_GT(pr, 4.0) << "balls too small to check";
     discs.push_back({cx, cy, pr});
     // The inner half of the ball's disc is ball, and a ring just outside it is felt (when no other
@@ -199,10 +233,8 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
   std::vector<std::pair<double, double>> felt_spots;  // table points seen as felt
   for (const auto& [x, y] : std::vector<std::pair<double, double>>{
            {0.0, 0.0}, {-0.6, 0.3}, {0.6, -0.3}, {-0.9, -0.4}, {0.9, 0.4}, {0.3, 0.45}}) {
-    const auto p = page.evaluate(
-        "window.poolTest.project(" + std::to_string(x) + "," + std::to_string(y) + ",0)", 10s);
-    ASSERT_TRUE(p);
-    const double px = (*p)[0], py = (*p)[1];
+    const auto p = project(x, y, 0.0);
+    const double px = p[0], py = p[1];
     bool clear = true;
     for (const auto& d : discs) clear = clear && std::hypot(d[0] - px, d[1] - py) > 2.5 * d[2];
     if (!clear) continue;
@@ -225,23 +257,26 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
   // On a phone: the table above the facts, the whole table in view, the names still there.
   ASSERT_TRUE(page.setViewport(390, 844, true, 20s)) << page.lastError();
   std::this_thread::sleep_for(500ms);  // a few animation frames at the new size
-  const auto corner = page.evaluate("window.poolTest.project(1.27, 0.635, 0)", 10s);
-  const auto other = page.evaluate("window.poolTest.project(-1.27, -0.635, 0)", 10s);
-  ASSERT_TRUE(corner && other);
-  for (const auto& p : {*corner, *other}) {
-    EXPECT_GE(p[0].get<double>(), 0.0);
-    EXPECT_LE(p[0].get<double>(), 390.0);
-    EXPECT_GE(p[1].get<double>(), 0.0);
-    EXPECT_LE(p[1].get<double>(), 844.0);
+  const auto tall = pageCamera(page);
+  ASSERT_TRUE(tall) << page.lastError();
+  EXPECT_EQ(tall->camera.mirrored(), "");
+  if (tall->width < tall->height) {
+    // Up the screen, tilted by the page's 18° view from the side: cos 18° = 0.951.
+    EXPECT_GT(tall->camera.up().x, 0.94f) << "on a tall canvas the table's length runs up";
+  } else {
+    EXPECT_GT(tall->camera.right().x, 0.99f) << "the table's +x to the right";
+  }
+  for (const auto& p : {tall->project(1.27, 0.635, 0), tall->project(-1.27, -0.635, 0)}) {
+    EXPECT_GE(p[0], 0.0);
+    EXPECT_LE(p[0], 390.0);
+    EXPECT_GE(p[1], 0.0);
+    EXPECT_LE(p[1], 844.0);
   }
   const Image phone = decode(page.screenshot(20s), "web-page-phone.png");
   ASSERT_EQ(phone.width, 390);
   ASSERT_FALSE(felt_spots.empty());
-  const auto spot = page.evaluate("window.poolTest.project(" + std::to_string(felt_spots[0].first) +
-                                      "," + std::to_string(felt_spots[0].second) + ",0)",
-                                  10s);
-  ASSERT_TRUE(spot);
-  EXPECT_GE(shareIn(phone, (*spot)[0], (*spot)[1], 3, isFelt), 0.9);
+  const auto spot = tall->project(felt_spots[0].first, felt_spots[0].second, 0.0);
+  EXPECT_GE(shareIn(phone, spot[0], spot[1], 3, isFelt), 0.9);
   const auto phone_text = page.evaluate("document.body.innerText", 10s);
   ASSERT_TRUE(phone_text);
   EXPECT_NE(phone_text->get<std::string>().find("alice"), std::string::npos);

@@ -198,6 +198,17 @@ window.poolTest = {
     const r = canvas.getBoundingClientRect();
     return [r.left + ((v.x + 1) / 2) * r.width, r.top + ((1 - v.y) / 2) * r.height];
   },
+  /** The camera as drawn: its view (world to camera) and projection matrices, column-major, and
+   * the canvas's rectangle (CSS px), for a test to project with its own arithmetic. */
+  camera() {
+    camera.updateMatrixWorld();
+    const r = canvas.getBoundingClientRect();
+    return {
+      view: camera.matrixWorldInverse.elements.slice(),
+      projection: camera.projectionMatrix.elements.slice(),
+      rect: [r.left, r.top, r.width, r.height],
+    };
+  },
   status() {
     return {
       connected: app.connected,
