@@ -54,8 +54,11 @@ TEST_F(ServerIdentityTest, TheSameDatabaseResumesAtOnceAfterACrash) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - restarted).count();
   std::printf("same-database restart resumed srv-1 after %.2f s\n", seconds);
-  // A restart that waited for the crashed run's lease (10 s) to run out would miss this bound.
-  EXPECT_LT(seconds, 8.0);
+  // A restart that waited for the crashed run's participant lease (Cyclone's default, 10 s from the
+  // kill, just before `restarted`) or for its own 10 s challenge window to pass before serving
+  // would take over 10 s; 9.5 s leaves the restart itself (its 1.5 s look at the lobby, start-up
+  // under the sanitizers on two loaded cores) all the margin there is.
+  EXPECT_LT(seconds, 9.5);
   // The rejoin is volatile too: asked again until the restarted server's reader has matched ours.
   asked = std::chrono::steady_clock::time_point{};
   ASSERT_TRUE(pumpUntil(ada, [&] {
