@@ -8,13 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "client/app/aim.h"
 #include "client/app/controls.h"
-#include "client/app/turn_view.h"
+#include "rules/eight_ball.h"
 #include "support/client_fixture.h"
 #include "support/display_check.h"
 #include "support/window_output.h"
@@ -128,7 +129,8 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   EXPECT_EQ(status, 0) << windowErr();
 
   // The turns opened facing the nearest ball the shooter may hit, from the layouts the server
-  // published before each shot.
+  // published before each shot: found here from the rules' legal first balls (WPA 3.4: on an open
+  // table any ball but the 8) and the distances, not by the window's own app::turnStartYaw.
   auto stateBefore = [&](std::uint32_t shot) -> std::optional<MatchView> {
     std::optional<MatchView> found;
     for (const auto& s : recorder.states(match)) {
@@ -142,7 +144,24 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
       if (b.id == physics::kCueBall) cue = b.pos.head<2>();
     }
     if (request.cue_ball_at) cue = *request.cue_ball_at;
-    return app::turnStartYaw(cue, before.balls, gameStateOf(before));
+    const auto legal = rules::legalFirstBalls(gameStateOf(before), before.balls);
+    std::optional<double> yaw;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& b : before.balls) {
+      if (b.id == physics::kCueBall || b.id > 15 || !physics::onTable(b.state)) continue;
+      if (!legal.empty() && std::find(legal.begin(), legal.end(), b.id) == legal.end()) continue;
+      const Eigen::Vector2d to = b.pos.head<2>() - cue;
+      if (to.norm() >= nearest) continue;
+      nearest = to.norm();
+      yaw = std::atan2(to.y(), to.x());
+    }
+    return yaw;
+  };
+  // The power bar fills linearly over charge_time from the slowest stroke (app::kMinCueSpeed) to
+  // the server's limit (the controls' documented law), written out here.
+  const auto speedAfter = [&](double held_s) {
+    const double power = std::clamp(held_s / rates.charge_time, 0.0, 1.0);
+    return app::kMinCueSpeed + power * (limits.max_speed - app::kMinCueSpeed);
   };
   const auto rack = stateBefore(0);
   const auto after_break = stateBefore(1);
@@ -156,7 +175,7 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   EXPECT_NEAR(sent->cue.yaw,
               *first_yaw + rates.yaw_step + rates.yaw * (30.0 / 60.0 - rates.repeat_delay), 1e-9);
   EXPECT_NEAR(sent->cue.elevation, 12.0 / 60.0 * rates.elevation, 1e-9);
-  EXPECT_NEAR(sent->cue.speed, app::cueSpeedOf(45.0 / 60.0 / rates.charge_time, limits), 1e-9);
+  EXPECT_NEAR(sent->cue.speed, speedAfter(45.0 / 60.0), 1e-9);
   EXPECT_FALSE(sent->cue.speed_is_ball);
   EXPECT_DOUBLE_EQ(sent->cue.tip_side, 0.0);
   EXPECT_DOUBLE_EQ(sent->cue.tip_height, 0.0);
@@ -169,7 +188,7 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   EXPECT_NEAR(second->cue.tip_height, 20.0 / 60.0 * rates.tip, 1e-9);
   EXPECT_DOUBLE_EQ(second->cue.tip_side, 0.0);
   EXPECT_NEAR(second->cue.yaw, *second_yaw, 1e-9);
-  EXPECT_NEAR(second->cue.speed, app::cueSpeedOf(30.0 / 60.0 / rates.charge_time, limits), 1e-9);
+  EXPECT_NEAR(second->cue.speed, speedAfter(30.0 / 60.0), 1e-9);
   EXPECT_NE(second->safety, second->called_ball.has_value());
   EXPECT_EQ(second->called_ball.has_value(), !second->called_pocket.empty());
 
