@@ -8,7 +8,8 @@
 #include <string>
 #include <thread>
 
-#if defined(__SANITIZE_ADDRESS__)
+#include "support/sanitizer.h"
+#if POOL_UNDER_ASAN
 #include <sanitizer/lsan_interface.h>
 #endif
 
@@ -283,7 +284,7 @@ TEST_F(Qos, MalformedCommandCrossesTheWireAndIsDetected) {
   auto bad_option = commandOf("m1", 0, 4);
   setRawValue(bad_option->option, 99);
   {
-#if defined(__SANITIZE_ADDRESS__)
+#if POOL_UNDER_ASAN
     __lsan::ScopedDisabler known_upstream_leak;
 #endif
     const Status refused = writer.write(*bad_option);

@@ -19,13 +19,10 @@
 #include "protocol/command_signature.h"
 #include "server_fixture.h"
 #include "support/child_process.h"
+#include "support/sanitizer.h"
 
 namespace pool::server::test {
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kUnderAddressSanitizer = true;
-#else
-constexpr bool kUnderAddressSanitizer = false;
-#endif
+constexpr bool kUnderAddressSanitizer = POOL_UNDER_ASAN;
 
 namespace {
 
