@@ -5,7 +5,11 @@ set(CPACK_PACKAGE_NAME pool)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_CONTACT "pool maintainers <pool@localhost>")
 set(CPACK_PACKAGE_DIRECTORY ${CMAKE_BINARY_DIR}/packages)
-set(CPACK_STRIP_FILES ON)
+# The programs are stripped, their debug information split into -dbgsym packages (.ddeb) beside
+# them, as Debian's own packages do (CPack strips what it splits: no CPACK_STRIP_FILES, which
+# would strip first and leave nothing to split).
+set(CPACK_DEBIAN_SERVER_DEBUGINFO_PACKAGE ON)
+set(CPACK_DEBIAN_CLIENT_DEBUGINFO_PACKAGE ON)
 
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL common server client)

@@ -1,11 +1,8 @@
 #!/usr/bin/env bash
-# Configures and builds the project into build/ (or $POOL_BUILD_DIR); extra args go to cmake.
+# Configures and builds the project into build/ (POOL_SANITIZE=1: the sanitizer build in
+# build-asan/; scripts/build-env.sh); extra args go to cmake.
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=${POOL_BUILD_DIR:-$root/build}
+source "$(dirname "${BASH_SOURCE[0]}")/build-env.sh"
 "$root/scripts/deps.sh"
-# Warnings are errors in CI (CI=true), not in everyone's build (POOL_WERROR is off by default).
-werror=()
-[[ ${CI:-} == true ]] && werror=(-DPOOL_WERROR=ON)
-cmake -S "$root" -B "$build" -G Ninja "${werror[@]}" "$@" >/dev/null
+configure_build "$@"
 cmake --build "$build" -j "$(nproc)"

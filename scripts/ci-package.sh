@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# CI stage: a Release build, its Debian packages installed on this machine (root), the installed
-# programs run (help, a shipped scene, a screenshot, a bot match, the web spectator's page), the
-# unit and desktop entry checked, then the packages purged and nothing of them left. Prints each
-# step's time.
-# Usage: scripts/ci-package.sh   (build folder: build-pkg or $POOL_PKG_BUILD_DIR; DDS domain of
-# the match: $POOL_DOMAIN, default 11, over loopback with port base $POOL_DDS_PORT_BASE)
+# CI stage: Debian packages made from the tested build (build/, optimised with debug information,
+# stripped into separate debug symbols as Debian's own tools do), installed on this machine (root),
+# the installed programs run (help, a shipped scene, a screenshot, a bot match, the web spectator's
+# page) and searched for any path of this checkout, the unit and desktop entry checked, then the
+# packages purged and nothing of them left. Prints each step's time.
+# Usage: scripts/ci-package.sh   (build folder: build/ or $POOL_BUILD_DIR, configured for the
+# prefix /usr here if it was not; DDS domain of the match: $POOL_DOMAIN, default 11, over loopback
+# with port base $POOL_DDS_PORT_BASE)
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=${POOL_PKG_BUILD_DIR:-$root/build-pkg}
+unset POOL_SANITIZE  # the packages are made from the plain build
+source "$(dirname "${BASH_SOURCE[0]}")/build-env.sh"
 packages=(pool-common pool-server pool-client)
 # It installs and purges packages on this machine (any pool packages installed before are purged).
 if [[ $(id -u) -ne 0 ]]; then
@@ -36,10 +38,10 @@ cleanup() {
 trap cleanup EXIT
 trap 'exit 1' INT TERM  # a timeout's signal runs the cleanup too
 
-# 1. Release (-O3), warnings as errors, programs only; no path of this checkout inside them.
-build_release() {
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPOOL_BUILD_TESTS=OFF \
-    -DPOOL_WERROR=ON -DPOOL_ASSETS_FROM_SOURCE=OFF -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
+# 1. The tested build (RelWithDebInfo, warnings as errors) for the prefix /usr: nothing to do when
+#    it was configured so before it was built (.ci/run does), else the programs are relinked.
+build_programs() {
+  configure_build -DCMAKE_INSTALL_PREFIX=/usr -DPOOL_WERROR=ON
   cmake --build "$build" -j "$(nproc)"
 }
 
@@ -50,6 +52,8 @@ make_packages() {
   for deb in "$build"/packages/*.deb; do
     echo "$(basename "$deb"): $(dpkg-deb -f "$deb" Depends)"
   done
+  ls "$build"/packages/*.ddeb >/dev/null  # the separate debug symbols
+  echo "debug symbols: $(cd "$build/packages" && echo *.ddeb)"
 }
 
 # 3. Installed the way a user would (apt resolves the dependencies), from a clean state.
@@ -74,6 +78,17 @@ run_installed() {
   env -u DISPLAY pool-client --screenshot rack.png --frames 2 --scene rack > /dev/null
   [[ -s rack.png ]]
   echo "pool-client: rendered rack.png ($(wc -c < rack.png) bytes)"
+  # Nothing installed names this checkout (no compiled-in source path, no debug information left).
+  local named
+  named=$(dpkg -L "${packages[@]}" | while IFS= read -r path; do
+    [[ -f $path ]] && grep -lF "$root" "$path" || true
+  done)
+  if [[ -n $named ]]; then
+    echo "installed files naming the checkout $root:" >&2
+    echo "$named" >&2
+    return 1
+  fi
+  echo "no installed file names the checkout"
 }
 
 # 5. A short match from the installed binaries: pool-server and two bots over loopback DDS on a
@@ -188,7 +203,7 @@ remove_packages() {
   echo "purged: $(wc -l < "$list") paths of ${packages[*]} gone"
 }
 
-step "release build" build_release
+step "programs" build_programs
 step "packages" make_packages
 step "install" install_packages
 step "installed programs" run_installed

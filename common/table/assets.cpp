@@ -1,4 +1,4 @@
-// Asset folder lookup: $POOL_ASSETS, then beside the executable, then the install and source paths.
+// Asset folder lookup: $POOL_ASSETS, then beside the executable, then the install path.
 #include "table/assets.h"
 
 #include <cstdlib>
@@ -37,10 +37,6 @@ fs::path assetsDir() {
     return fs::path(env);
   }
   if (auto beside = besideExecutable()) return *beside;
-#ifdef POOL_SOURCE_ASSETS_DIR
-  // A build of this checkout run from elsewhere (a build folder outside the source tree).
-  if (const fs::path source(POOL_SOURCE_ASSETS_DIR); looksLikeAssets(source)) return source;
-#endif
   return fs::path(POOL_INSTALL_ASSETS_DIR);
 }
 
