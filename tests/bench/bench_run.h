@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "support/ci_env.h"
+
 namespace pool::bench {
 
 /// True in the test suite's smoke run (POOL_BENCH_SMOKE=1, set by tests/bench/CMakeLists.txt):
@@ -61,12 +63,6 @@ inline int runBenchmarks(int argc, char** argv, CheckedReporter& reporter) {
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return reporter.exitCode();
-}
-
-/// True when CI=true: what cannot run there (no OpenGL context) is a failure, not a skip.
-inline bool runningInCi() {
-  const char* ci = std::getenv("CI");
-  return ci != nullptr && std::string_view(ci) == "true";
 }
 
 }  // namespace pool::bench

@@ -300,8 +300,8 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     // In CI (CI=true) a missing context is a failure, as it is for the OpenGL tests.
     std::fprintf(stderr, "frame_bench: no OpenGL context (%s); nothing measured%s\n", e.what(),
-                 pool::bench::runningInCi() ? " (CI=true: a failure)" : "");
-    return pool::bench::runningInCi() ? 1 : 0;
+                 pool::test::runningInCi() ? " (CI=true: a failure)" : "");
+    return pool::test::runningInCi() ? 1 : 0;
   }
   std::printf("frame_bench: %dx%d through %s, renderer: %s\n", kWidth, kHeight,
               bench()->context.backend().c_str(),

@@ -5,25 +5,13 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <string_view>
-
-namespace pool::client::test {
-
-/// True when the CI environment variable is "true" (as GitHub Actions, GitLab CI and most other
-/// CI services set it).
-inline bool runningInCi() {
-  const char* ci = std::getenv("CI");
-  return ci != nullptr && std::string_view(ci) == "true";
-}
-
-}  // namespace pool::client::test
+#include "support/ci_env.h"
 
 /// Ends the current test (or its SetUp) for want of a display: a failure in CI, a skip elsewhere.
 /// `reason` is streamed into the message.
 #define POOL_NO_DISPLAY(reason)                                                                 \
   do {                                                                                          \
-    if (::pool::client::test::runningInCi()) {                                                  \
+    if (::pool::test::runningInCi()) {                                                          \
       GTEST_FAIL() << reason << " (CI=true: the OpenGL tests must run; install xvfb and Mesa)"; \
     } else {                                                                                    \
       GTEST_SKIP() << reason << " (skipped; with CI=true this fails)";                          \
@@ -35,7 +23,7 @@ inline bool runningInCi() {
 /// message.
 #define POOL_MISSING_SETUP(reason)                                                             \
   do {                                                                                         \
-    if (::pool::client::test::runningInCi()) {                                                 \
+    if (::pool::test::runningInCi()) {                                                         \
       GTEST_FAIL() << reason << " (CI=true: this test must run; scripts/deps.sh installs it)"; \
     } else {                                                                                   \
       GTEST_SKIP() << reason << " (skipped; with CI=true this fails)";                         \
