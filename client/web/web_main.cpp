@@ -42,8 +42,19 @@ int main(int argc, char** argv) {
   app.add_option("--queue-kib", queue_kib,
                  "a browser's queue of unsent messages, KiB: past it the browser is dropped")
       ->check(CLI::Range(16, 1 << 20));
-  app.add_option("--max-browsers", options.max_browsers, "WebSocket connections at once")
+  app.add_option("--max-browsers", options.max_browsers,
+                 "WebSocket connections at once (shared fairly among addresses)")
       ->check(CLI::Range(1, 10000));
+  app.add_option("--max-pending", options.max_pending,
+                 "HTTP connections not upgraded to a WebSocket at once (shared fairly among "
+                 "addresses)")
+      ->check(CLI::Range(1, 10000));
+  app.add_option("--http-timeout", options.http_timeout,
+                 "seconds to receive a whole HTTP request, and to send a response")
+      ->check(CLI::Range(0.1, 3600.0));
+  app.add_option("--idle-timeout", options.idle_timeout,
+                 "seconds a WebSocket may stay silent (pinged after half of it, closed at its end)")
+      ->check(CLI::Range(0.2, 3600.0));
   app.add_option("--stats", stats_every, "print counters to stderr every S seconds (0: never)");
   CLI11_PARSE(app, argc, argv);
   options.queue_bytes = queue_kib * 1024;

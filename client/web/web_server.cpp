@@ -2,11 +2,14 @@
 // /ws for the gateway's messages, a bounded queue per browser, slow browsers dropped.
 #include "client/web/web_server.h"
 
+#include "client/web/fair_slots.h"
+
 #include <boost/asio.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -22,15 +25,24 @@ using tcp = asio::ip::tcp;
 struct WebServer::State {
   State(asio::io_context& io_context, Gateway& g, WebServerOptions o,
         std::map<std::string, std::string> f)
-      : io(io_context), gateway(g), options(std::move(o)), files(std::move(f)), acceptor(io) {}
+      : io(io_context),
+        gateway(g),
+        options(std::move(o)),
+        files(std::move(f)),
+        acceptor(io),
+        pending(options.max_pending),
+        browsers(options.max_browsers) {}
   asio::io_context& io;
   Gateway& gateway;
   WebServerOptions options;
   std::map<std::string, std::string> files;
   tcp::acceptor acceptor;
   std::uint64_t next_browser = 1;
-  std::size_t browsers = 0;
-  std::size_t connections = 0;  ///< open sockets, HTTP and WebSocket
+  FairSlots pending;   ///< HTTP connections not upgraded, by slot id
+  FairSlots browsers;  ///< WebSockets, by slot id
+  std::uint64_t next_slot = 1;
+  /// How to close the holder of each slot (when another address takes it back).
+  std::map<std::uint64_t, std::function<void()>> closers;
   std::uint64_t dropped = 0;
   std::uint64_t refused = 0;
 };
@@ -53,29 +65,53 @@ bool pageFileName(const std::string& name) {
   return true;
 }
 
-/// Counts an open connection for as long as it lives.
-class Counted {
+std::chrono::steady_clock::duration seconds(double s) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(s));
+}
+
+/// Holds a slot of one of the state's pools until released or destroyed, with the way to close
+/// its connection should another address take the slot back.
+class Slot {
  public:
-  explicit Counted(std::shared_ptr<State> state) : state_(std::move(state)) {
-    ++state_->connections;
+  Slot(std::shared_ptr<State> state, FairSlots State::*pool, std::uint64_t id)
+      : state_(std::move(state)), pool_(pool), id_(id) {}
+  ~Slot() { release(); }
+  Slot(const Slot&) = delete;
+  Slot& operator=(const Slot&) = delete;
+
+  void onEvict(std::function<void()> close) {
+    if (id_) state_->closers[id_] = std::move(close);
   }
-  ~Counted() { --state_->connections; }
-  Counted(const Counted&) = delete;
-  Counted& operator=(const Counted&) = delete;
-  const std::shared_ptr<State>& state() const { return state_; }
+  void release() {
+    if (!id_) return;
+    ((*state_).*pool_).release(id_);
+    state_->closers.erase(id_);
+    id_ = 0;
+  }
 
  private:
   std::shared_ptr<State> state_;
+  FairSlots State::*pool_;
+  std::uint64_t id_;
 };
 
-/// Connections beyond the browsers allowed: requests for the page, and upgrades under way.
-constexpr std::size_t kSpareConnections = 64;
+/// Closes the connection whose slot was taken back, if any.
+void evict(State& state, const std::optional<std::uint64_t>& slot) {
+  if (!slot) return;
+  const auto it = state.closers.find(*slot);
+  if (it == state.closers.end()) return;
+  const std::function<void()> close = std::move(it->second);
+  state.closers.erase(it);
+  ++state.refused;
+  close();
+}
 
 /// One browser's WebSocket: reads its watch requests, writes the gateway's messages in order.
 class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
  public:
-  BrowserSession(tcp::socket&& socket, std::shared_ptr<State> state)
-      : counted_connection_(state),
+  BrowserSession(tcp::socket&& socket, std::shared_ptr<State> state, std::uint64_t slot)
+      : slot_(state, &State::browsers, slot),
         ws_(std::move(socket)),
         state_(std::move(state)),
         queue_(state_->options.queue_bytes) {}
@@ -86,11 +122,16 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
     beast::error_code ignored;
     beast::get_lowest_layer(ws_).socket().set_option(
         asio::socket_base::send_buffer_size(kSendBuffer), ignored);
-    ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    websocket::stream_base::timeout timeouts;
+    timeouts.handshake_timeout = seconds(state_->options.http_timeout);
+    timeouts.idle_timeout = seconds(state_->options.idle_timeout);
+    timeouts.keep_alive_pings = true;
+    ws_.set_option(timeouts);
     ws_.read_message_max(4096);
     ws_.text(true);
-    ++state_->browsers;
-    counted_ = true;
+    slot_.onEvict([weak = weak_from_this()] {
+      if (const auto self = weak.lock()) self->close(true);
+    });
     ws_.async_accept(request,
                      [self = shared_from_this()](beast::error_code ec) { self->onAccept(ec); });
   }
@@ -159,14 +200,13 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
     closed_ = true;
     if (detach && attached_) state_->gateway.detach(id_);
     attached_ = false;
-    if (counted_) --state_->browsers;
-    counted_ = false;
+    slot_.release();
     beast::error_code ignored;
     beast::get_lowest_layer(ws_).socket().shutdown(tcp::socket::shutdown_both, ignored);
     beast::get_lowest_layer(ws_).socket().close(ignored);
   }
 
-  Counted counted_connection_;
+  Slot slot_;
   websocket::stream<beast::tcp_stream> ws_;
   std::shared_ptr<State> state_;
   OutQueue queue_;
@@ -175,26 +215,39 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
   bool writing_ = false;
   bool closed_ = false;
   bool attached_ = false;
-  bool counted_ = false;
 };
 
 /// One HTTP connection: GET of the page's files, or the upgrade to /ws.
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(tcp::socket&& socket, std::shared_ptr<State> state)
-      : counted_connection_(state), stream_(std::move(socket)), state_(std::move(state)) {}
+  HttpSession(tcp::socket&& socket, std::shared_ptr<State> state, std::uint64_t slot,
+              std::string address)
+      : slot_(state, &State::pending, slot),
+        stream_(std::move(socket)),
+        state_(std::move(state)),
+        address_(std::move(address)) {}
 
+  void start() {
+    slot_.onEvict([weak = weak_from_this()] {
+      if (const auto self = weak.lock()) {
+        beast::error_code ignored;
+        self->stream_.socket().close(ignored);
+      }
+    });
+    read();
+  }
+
+ private:
   void read() {
     parser_.emplace();
     parser_->header_limit(8192);
     parser_->body_limit(4096);
-    stream_.expires_after(std::chrono::seconds(30));
+    stream_.expires_after(seconds(state_->options.http_timeout));
     http::async_read(
         stream_, buffer_, *parser_,
         [self = shared_from_this()](beast::error_code ec, std::size_t) { self->onRead(ec); });
   }
 
- private:
   void onRead(beast::error_code ec) {
     if (ec) {
       beast::error_code ignored;
@@ -205,13 +258,17 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     const std::string target(request.target());
     const std::string path = target.substr(0, target.find('?'));
     if (websocket::is_upgrade(request) && path == "/ws") {
-      if (state_->browsers >= state_->options.max_browsers) {
+      const std::uint64_t slot = state_->next_slot++;
+      const auto admission = state_->browsers.admit(address_, slot);
+      if (!admission.admitted) {
         ++state_->refused;
         return respond(request, http::status::service_unavailable, "text/plain",
                        "too many browsers\n");
       }
+      evict(*state_, admission.evicted);
+      slot_.release();
       stream_.expires_never();
-      std::make_shared<BrowserSession>(stream_.release_socket(), state_)
+      std::make_shared<BrowserSession>(stream_.release_socket(), state_, slot)
           ->accept(std::move(request));
       return;
     }
@@ -240,6 +297,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     if (request.method() != http::verb::head) response->body() = body;
     response->prepare_payload();
     if (request.method() == http::verb::head) response->content_length(body.size());
+    stream_.expires_after(seconds(state_->options.http_timeout));
     http::async_write(stream_, *response,
                       [self = shared_from_this(), response](beast::error_code ec, std::size_t) {
                         if (ec) return;
@@ -252,9 +310,10 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
                       });
   }
 
-  Counted counted_connection_;
+  Slot slot_;
   beast::tcp_stream stream_;
   std::shared_ptr<State> state_;
+  std::string address_;
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
 };
@@ -263,16 +322,23 @@ void acceptNext(const std::shared_ptr<State>& state) {
   state->acceptor.async_accept([state](beast::error_code ec, tcp::socket socket) {
     if (!state->acceptor.is_open()) return;
     if (!ec) {
-      if (state->connections >= state->options.max_browsers + kSpareConnections) {
-        ++state->refused;  // too many at once: closed unanswered
+      beast::error_code peer_error;
+      const auto peer = socket.remote_endpoint(peer_error);
+      const std::uint64_t slot = state->next_slot++;
+      const std::string address = peer_error ? std::string() : addressKey(peer.address());
+      const auto admission =
+          peer_error ? FairSlots::Admission{} : state->pending.admit(address, slot);
+      if (!admission.admitted) {
+        ++state->refused;  // too many at once from this address: closed unanswered
         beast::error_code ignored;
         socket.close(ignored);
       } else {
-        std::make_shared<HttpSession>(std::move(socket), state)->read();
+        evict(*state, admission.evicted);
+        std::make_shared<HttpSession>(std::move(socket), state, slot, address)->start();
       }
       return acceptNext(state);
     }
-    // Out of file descriptors, say (a flood of idle connections, each closed within 30 s): try
+    // Out of file descriptors, say: try
     // again a little later rather than spin.
     auto pause = std::make_shared<asio::steady_timer>(state->io, std::chrono::milliseconds(100));
     pause->async_wait([state, pause](beast::error_code) { acceptNext(state); });
@@ -280,6 +346,15 @@ void acceptNext(const std::shared_ptr<State>& state) {
 }
 
 }  // namespace
+
+std::string addressKey(const asio::ip::address& address) {
+  if (address.is_v4()) return address.to_string();
+  const auto v6 = address.to_v6();
+  if (v6.is_v4_mapped()) return asio::ip::make_address_v4(asio::ip::v4_mapped, v6).to_string();
+  auto bytes = v6.to_bytes();
+  for (std::size_t i = 8; i < bytes.size(); ++i) bytes[i] = 0;
+  return asio::ip::address_v6(bytes).to_string() + "/64";
+}
 
 Result<std::map<std::string, std::string>> loadPage(const std::filesystem::path& root) {
   using R = Result<std::map<std::string, std::string>>;

@@ -11,6 +11,8 @@
 
 #include "client/web/gateway.h"
 
+#include <boost/asio/ip/address.hpp>
+
 namespace boost::asio {
 class io_context;
 }
@@ -22,10 +24,23 @@ struct WebServerOptions {
   std::uint16_t port = 8080;   ///< 0: any free port (see WebServer::port)
   std::filesystem::path root;  ///< the page's folder (index.html, app.js, three.module.js, ...)
   std::size_t queue_bytes = 4u << 20;  ///< a browser's queue budget: past it, it is dropped
-  /// WebSocket connections at once; more are answered 503 (and past 64 more connections of any
-  /// kind, new ones are closed unanswered).
+  /// WebSocket connections at once. When all are taken, a browser from an address holding at
+  /// least two fewer than the address holding the most takes the oldest of that address's;
+  /// otherwise it is answered 503.
   std::size_t max_browsers = 256;
+  /// HTTP connections not (yet) upgraded to a WebSocket, shared among addresses as the browsers
+  /// are; past them a new connection is closed unanswered.
+  std::size_t max_pending = 64;
+  /// Seconds to receive a whole HTTP request (the upgrade included), and to send a response.
+  double http_timeout = 10.0;
+  /// Seconds a WebSocket may stay silent: it is pinged after half of it (a browser answers by
+  /// itself) and closed when nothing at all came back by its end.
+  double idle_timeout = 30.0;
 };
+
+/// The key a connection's slots are shared by: an IPv4 address (a mapped one as IPv4), or an
+/// IPv6 address's /64 (one host's usual share of a network).
+std::string addressKey(const boost::asio::ip::address& address);
 
 /// The page's files, read once at start: every regular file directly in `root` whose name is
 /// made of [A-Za-z0-9._-], by name. Fails when `root` has no index.html.

@@ -48,6 +48,8 @@ enum Domain : std::uint32_t {
   kWebGateway = 41,
   kWebSlowBrowser = 43,  ///< (42: web_bench)
   kWebLimits = 44,
+  kWebConnectionFlood = 45,
+  kWebLobbyFlood = 46,
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,
