@@ -18,17 +18,21 @@ std::string errorJson(const std::string& text) {
 
 }  // namespace
 
-Gateway::Gateway(client::GameClient& client, double join_retry)
-    : client_(client), join_retry_(join_retry) {}
+Gateway::Gateway(client::GameClient& client, double join_retry, LobbyLimits lobby_limits)
+    : client_(client), join_retry_(join_retry), lobby_entries_(lobby_limits) {}
+
+const Message& Gateway::lobbyMessage() {
+  if (!lobby_ || lobby_stale_) {
+    lobby_ = share(lobby_entries_.message());
+    lobby_stale_ = false;
+    ++stats_.messages;
+  }
+  return lobby_;
+}
 
 void Gateway::attach(std::uint64_t browser, Sink sink) {
   browsers_[browser] = Browser{std::move(sink), {}};
-  if (!lobby_ || lobby_changed_) {
-    lobby_ = share(lobbyJson(lobby_entries_));
-    lobby_changed_ = false;
-    ++stats_.messages;
-  }
-  sendTo(browser, lobby_);
+  sendTo(browser, lobbyMessage());
   dropSlow();
 }
 
@@ -116,15 +120,20 @@ void Gateway::step(double now) {
     }
     ++it;
   }
-  if (lobby_changed_) sendLobby();
+  if (lobby_changed_ && now - lobby_sent_at_ >= kLobbyEvery) {
+    lobby_sent_at_ = now;
+    sendLobby();
+  }
   dropSlow();
 }
 
 void Gateway::handle(const client::ClientEvent& event) {
   if (std::holds_alternative<client::LobbyEntry>(event) ||
       std::holds_alternative<client::MatchGone>(event)) {
-    lobby_changed_ = true;
-    if (const auto* entry = std::get_if<client::LobbyEntry>(&event)) lobby_entries_.update(*entry);
+    lobby_changed_ = lobby_stale_ = true;
+    if (const auto* entry = std::get_if<client::LobbyEntry>(&event)) {
+      if (!lobby_entries_.update(*entry)) ++stats_.lobby_refused;
+    }
     if (const auto* gone = std::get_if<client::MatchGone>(&event)) {
       lobby_entries_.remove(gone->match);
       states_.erase(gone->match);
@@ -177,10 +186,9 @@ void Gateway::fanOut(const std::string& match, const Message& message) {
 }
 
 void Gateway::sendLobby() {
-  lobby_ = share(lobbyJson(lobby_entries_));
+  const Message message = lobbyMessage();
   lobby_changed_ = false;
-  ++stats_.messages;
-  for (const auto& [id, browser] : browsers_) sendTo(id, lobby_);
+  for (const auto& [id, browser] : browsers_) sendTo(id, message);
 }
 
 void Gateway::dropSlow() {

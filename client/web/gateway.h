@@ -10,18 +10,23 @@
 #include <string>
 
 #include "client/net/game_client.h"
+#include "client/web/bounded_lobby.h"
 #include "client/web/out_queue.h"
 
 namespace pool::web {
 
 /// How long a match nobody watches stays joined, s.
 inline constexpr double kLeaveAfter = 10.0;
+/// The least time between two lobby messages to every browser, s: a flood of lobby entries
+/// costs a browser at most one lobby (bounded by LobbyLimits) this often.
+inline constexpr double kLobbyEvery = 0.5;
 
 /// Counters for the log and the benchmark.
 struct GatewayStats {
   std::uint64_t messages = 0;  ///< messages made (each shared by every browser of its match)
   std::uint64_t deliveries = 0;
-  std::uint64_t refused = 0;  ///< watch requests refused (unknown match, bad input)
+  std::uint64_t refused = 0;        ///< watch requests refused (unknown match, bad input)
+  std::uint64_t lobby_refused = 0;  ///< lobby entries not kept (BoundedLobby's bounds)
 };
 
 /// Fans out one GameClient (a spectator: it sends spectate and leave requests only, never seat
@@ -32,7 +37,8 @@ class Gateway {
   /// detached by the gateway, and its connection closed by the caller).
   using Sink = std::function<bool(const Message&)>;
 
-  explicit Gateway(client::GameClient& client, double join_retry = 1.0);
+  explicit Gateway(client::GameClient& client, double join_retry = 1.0,
+                   LobbyLimits lobby_limits = {});
 
   /// A browser connected: it gets the lobby at once.
   void attach(std::uint64_t browser, Sink sink);
@@ -44,7 +50,8 @@ class Gateway {
 
   /// Takes what DDS received and fans it out; sends spectate requests for newly watched matches
   /// (again every `join_retry` s until answered) and leaves matches nobody has watched for
-  /// kLeaveAfter s (a browser hopping between matches makes no flood of requests).
+  /// kLeaveAfter s (a browser hopping between matches makes no flood of requests); sends a
+  /// changed lobby to every browser, at most every kLobbyEvery s.
   void step(double now);
   /// Fans out one event as step() does (tests feed events without DDS).
   void handle(const client::ClientEvent& event);
@@ -53,6 +60,7 @@ class Gateway {
   /// Browsers watching `match`.
   std::size_t watchers(const std::string& match) const;
   const GatewayStats& stats() const { return stats_; }
+  const BoundedLobby& lobby() const { return lobby_entries_; }
 
  private:
   struct Watched {
@@ -73,6 +81,8 @@ class Gateway {
   void sendTo(std::uint64_t browser, const Message& message);
   void fanOut(const std::string& match, const Message& message);
   void sendLobby();
+  /// The lobby message, made again when an entry changed since.
+  const Message& lobbyMessage();
   /// The table message of `match` from its lobby entry (cached by table name).
   Message tableOf(const std::string& match);
   void dropSlow();
@@ -82,10 +92,12 @@ class Gateway {
   std::map<std::uint64_t, Browser> browsers_;
   std::map<std::string, Watched> watched_;
   std::map<std::string, Message> tables_;  ///< by table name
-  client::Lobby lobby_entries_;            ///< as the events told it
+  BoundedLobby lobby_entries_;             ///< as the events told it, bounded
   std::map<std::string, Message> states_;  ///< the latest state of every match
   Message lobby_;
-  bool lobby_changed_ = true;
+  bool lobby_stale_ = true;    ///< lobby_ must be made again
+  bool lobby_changed_ = true;  ///< the browsers have not been sent the lobby as it is
+  double lobby_sent_at_ = -1e9;
   std::set<std::uint64_t> slow_;  ///< browsers whose sink refused a message this pass
   GatewayStats stats_;
 };

@@ -55,22 +55,29 @@ bool validTableName(const std::string& name) {
   return true;
 }
 
-std::string lobbyJson(const client::Lobby& lobby) {
-  json matches = json::array();
-  for (const auto* e : lobby.entries()) {
-    matches.push_back({{"match", e->match},
-                       {"server", e->server},
-                       {"name", e->name},
-                       {"table", e->table},
-                       {"phase", toString(e->phase)},
-                       {"in_play", protocol::inPlay(e->phase)},
-                       {"players", json::array({e->players[0], e->players[1]})},
-                       {"racks_won", json::array({e->racks_won[0], e->racks_won[1]})},
-                       {"race_to", e->settings.race_to},
-                       {"settings", protocol::describe(e->settings)},
-                       {"spectators", e->spectators}});
+std::string lobbyEntryJson(const client::LobbyEntry& e) {
+  return json{{"match", e.match},
+              {"server", e.server},
+              {"name", e.name},
+              {"table", e.table},
+              {"phase", toString(e.phase)},
+              {"in_play", protocol::inPlay(e.phase)},
+              {"players", json::array({e.players[0], e.players[1]})},
+              {"racks_won", json::array({e.racks_won[0], e.racks_won[1]})},
+              {"race_to", e.settings.race_to},
+              {"settings", protocol::describe(e.settings)},
+              {"spectators", e.spectators}}
+      .dump();
+}
+
+std::string lobbyJson(const std::vector<const std::string*>& entries) {
+  std::string out = R"({"type":"lobby","matches":[)";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (i) out += ',';
+    out += *entries[i];
   }
-  return json{{"type", "lobby"}, {"matches", matches}}.dump();
+  out += "]}";
+  return out;
 }
 
 Result<std::string> tableJson(const std::string& table_name) {

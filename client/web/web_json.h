@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
@@ -14,9 +15,12 @@ namespace pool::web {
 /// can never reach outside assets/tables.
 bool validTableName(const std::string& name);
 
-/// {"type":"lobby","matches":[{match, server, name, table, phase, players, racks_won, game,
-/// race_to, settings, spectators, in_play}...]}, lowest-numbered first.
-std::string lobbyJson(const client::Lobby& lobby);
+/// One lobby entry: {match, server, name, table, phase, players, racks_won, race_to, settings,
+/// spectators, in_play}.
+std::string lobbyEntryJson(const client::LobbyEntry& entry);
+
+/// {"type":"lobby","matches":[entries...]} of entries made by lobbyEntryJson, in their order.
+std::string lobbyJson(const std::vector<const std::string*>& entries);
 
 /// {"type":"table","name":...,"length","width","cushion_width","rail_width","nose_height",
 /// "ball_radius","noses":[{a,b,normal}],"holes":[{name,centre,radius}],"lamps":{...},

@@ -70,7 +70,10 @@ int main(int argc, char** argv) {
         {domain, "", "web", pins, [](const std::string& line, bool problem) {
            std::cerr << "pool-web: " << (problem ? "dropped: " : "") << line << '\n';
          }});
-    pool::web::Gateway gateway(client);
+    // The lobby message takes at most a quarter of a browser's queue.
+    pool::web::LobbyLimits lobby_limits;
+    lobby_limits.served_bytes = options.queue_bytes / 4;
+    pool::web::Gateway gateway(client, 1.0, lobby_limits);
     boost::asio::io_context io;
     pool::web::WebServer server(io, gateway, options, std::move(*files));
     if (const std::string problem = server.start(); !problem.empty()) {
@@ -94,7 +97,9 @@ int main(int argc, char** argv) {
         last_stats = now;
         std::cerr << "pool-web: browsers " << gateway.browsers() << ", messages "
                   << gateway.stats().messages << ", deliveries " << gateway.stats().deliveries
-                  << ", dropped " << server.dropped() << '\n';
+                  << ", lobby " << gateway.lobby().size() << " kept "
+                  << gateway.stats().lobby_refused << " refused, dropped " << server.dropped()
+                  << '\n';
       }
       tick.expires_after(std::chrono::milliseconds(5));
       tick.async_wait([&](const boost::system::error_code& ec) {
