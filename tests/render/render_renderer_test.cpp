@@ -1,7 +1,8 @@
 // The renderer in-process on an offscreen context: overlay lines on top, pocketed balls in the
-// trough where drawnBalls says, and a ball's markings turning with its orientation.
+// trough slots the table spec gives, and a ball's markings turning with its orientation.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 #include <optional>
 
@@ -10,6 +11,8 @@
 #include "client/render/scene.h"
 #include "support/display_check.h"
 #include "support/png_image.h"
+#include "support/reported_camera.h"
+#include "table/table_spec.h"
 
 namespace pool::client::test {
 namespace {
@@ -67,21 +70,55 @@ TEST_F(RendererTest, OverlayLinesAreDrawnUnlitOnTopOfTheBalls) {
 }
 
 TEST_F(RendererTest, PocketedBallsAreDrawnInTheTrough) {
+  // The trough as promised (ball_trough.h): a row along the near (-y) side, in front of the near
+  // rail's outer face, the balls' centres a radius under the slate's top, 2 R apart, the row of
+  // 16 centred on the table's middle and filled in pocketing order from the foot (+x) end. Slot
+  // i's centre: x = (15 - 2 i) R, y = -(w / 2 + cushion + rail) - R, z = -R, from the spec.
+  const auto spec = table::loadTableSpec("wpa-9ft");  // rackScene's table
+  ASSERT_TRUE(spec) << spec.error();
+  const double r = spec->params.ball_radius;
+  const double face = -(0.5 * spec->width + spec->cushion_width + spec->rail_width);
+  const auto slot = [&](int i) {
+    return glm::vec3(float((15 - 2 * i) * r), float(face - r), float(-r));
+  };
+  // The test's own camera, in front of the near side and above it, and its own projection.
+  const render::Camera near_side{glm::vec3(0.2f, -1.5f, 0.45f), glm::vec3(0.2f, -0.75f, -0.03f),
+                                 30.0f};
+  ReportedCamera own;
+  own.width = kW;
+  own.height = kH;
+  own.view = glm::lookAt(near_side.eye, near_side.target, glm::vec3(0.0f, 0.0f, 1.0f));
+  own.projection = glm::perspective(glm::radians(near_side.fov_y_deg), float(kW) / float(kH),
+                                    render::kNearPlane, render::kFarPlane);
+  ASSERT_EQ(own.mirrored(), "");
+
+  // The 6 goes down first, then the 2: the 6 in slot 0, the 2 in slot 1.
   std::vector<render::SceneBall> balls = scene_.balls;
+  for (auto& b : balls) b.pocketed = b.id == 6;
+  renderer_->setBalls(balls);
   for (auto& b : balls) b.pocketed = b.id == 2 || b.id == 6;
   renderer_->setBalls(balls);
-  const Image image = frame(camera_);
-  int seen = 0;
-  for (const auto& b : renderer_->drawnBalls()) {
-    if (!b.pocketed) continue;
-    ++seen;
-    EXPECT_LT(b.pos.z(), 0.0) << "under the slate";
-    const glm::vec3 px = toPixels(camera_, b.pos);
-    EXPECT_GE(
-        countInDisc(image, px.x, px.y, 3.0, [&](const Rgb& p) { return ballColour(b.id, p); }), 3)
-        << "ball " << b.id << " at " << px.x << ", " << px.y;
-  }
-  EXPECT_EQ(seen, 2);
+  const Image image = frame(near_side);
+  // A ball drawn in its slot covers the disc of 0.8 of its projected radius round the slot's
+  // centre, and more than half of that disc shows its colour (the rest: its number's white circle
+  // and the lamp's highlight). The centre as computed leaves out the few mm between the rail and
+  // the ball the layout allows (under 0.2 R): the disc still lies inside the ball. A neighbour
+  // 2 R away stays 0.2 of a radius clear of the disc: its colour there is at most an antialiased
+  // pixel or two, under a tenth of the disc.
+  const auto share = [&](int i, int id) {
+    const glm::vec3 c = own.pixel(slot(i));
+    const glm::vec3 top = own.pixel(slot(i) + glm::vec3(0.0f, 0.0f, float(r)));
+    const double radius = 0.8 * glm::length(glm::vec2(top - c));
+    const double area = std::numbers::pi * radius * radius;
+    EXPECT_TRUE(own.inside(c, 20.0f)) << "slot " << i << " at " << c.x << ", " << c.y;
+    return countInDisc(image, c.x, c.y, radius, [&](const Rgb& p) { return ballColour(id, p); }) /
+           area;
+  };
+  EXPECT_GT(share(0, 6), 0.5) << "the 6, pocketed first, in the foot end's slot";
+  EXPECT_GT(share(1, 2), 0.5) << "the 2 beside it";
+  EXPECT_LT(share(0, 2), 0.1);
+  EXPECT_LT(share(1, 6), 0.1);
+  for (int id : {2, 6}) EXPECT_LT(share(2, id), 0.1) << "slot 2 is empty";
 }
 
 TEST_F(RendererTest, ABallsMarkingsTurnWithItsOrientation) {
