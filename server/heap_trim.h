@@ -1,11 +1,12 @@
-// Gives the heap that a flood of join requests freed back to the system once the flood is over.
+// Gives the heap that a flood (joins, commands, aims) freed back to the system once it is over.
 #pragma once
 
 #include <cstdint>
 
 namespace pool::server {
 
-/// Decides when to hand freed heap back: once at least `kFloodEvents` join events have been
+/// Decides when to hand freed heap back: once at least `kFloodEvents` events (joins, refused
+/// commands, dropped aims) have been
 /// counted since the last time and none for `kQuiet` s (a flood is over). The memory a flood
 /// used (DDS receive buffers and instances, replies, tallies) is freed when its clients are
 /// gone, but glibc keeps freed memory in its arenas; returning it puts the resident size back
@@ -15,7 +16,7 @@ class HeapTrim {
   static constexpr std::uint64_t kFloodEvents = 1000;
   static constexpr double kQuiet = 2.0;
 
-  /// `events`: every join event counted so far (JoinTally::total()); true when it is time to
+  /// `events`: every such event counted so far; true when it is time to
   /// trim (then the next flood is counted from here).
   bool due(std::uint64_t events, double now);
 

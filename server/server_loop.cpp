@@ -155,13 +155,17 @@ void ServerLoop::readJoins(double now) {
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
     spdlog::info("{}", *summary);
   }
-  if (heap_trim_.due(joins_.total(), now)) {
+  // Joins, refused commands and dropped aims alike: a flood of any of them frees what it used
+  // once it is over (DDS samples and instances, answers), which glibc keeps until trimmed.
+  std::uint64_t aims_dropped = 0;
+  for (int i = 1; i < static_cast<int>(AimDrop::Count); ++i) {
+    aims_dropped += aims_.dropped(static_cast<AimDrop>(i));
+  }
+  if (heap_trim_.due(joins_.total() + counters_.commands_refused + aims_dropped, now)) {
     const long released = releaseFreeHeap();
-    spdlog::info(
-        "a flood of joins is over: {:.1f} MB of freed memory given back, {:.1f} MB of "
-        "heap in use",
-        static_cast<double>(released) / (1024.0 * 1024.0),
-        static_cast<double>(heapInUse()) / (1024.0 * 1024.0));
+    spdlog::info("a flood is over: {:.1f} MB of freed memory given back, {:.1f} MB of heap in use",
+                 static_cast<double>(released) / (1024.0 * 1024.0),
+                 static_cast<double>(heapInUse()) / (1024.0 * 1024.0));
   }
 }
 
@@ -206,7 +210,8 @@ std::string ServerLoop::senderClient(const std::string& sender, const std::strin
 }
 
 std::size_t ServerLoop::trackedClients() const {
-  return transport_.keptReplies() + rate_.tracked() + sender_rate_.tracked();
+  return transport_.keptReplies() + rate_.tracked() + sender_rate_.tracked() +
+         stray_answers_.tracked();
 }
 
 bool ServerLoop::withinSenderLimit(const std::string& sender, const JoinCommand& echo, double now) {
@@ -277,12 +282,12 @@ void ServerLoop::readCommands(double now) {
       refusal.seat = in.seat;
       refusal.seq = in.seq;
       refusal.rejection = {in.bad_signature ? Reject::BadSignature : Reject::Malformed, in.problem};
-      refused(in.match, refusal, now);  // logged escaped
+      refused(in.match, refusal, now, in.sender);  // logged escaped
       continue;
     }
     const CommandAnswer answer = registry_.shoot(*in.request, now);
     if (!answer.accepted()) {
-      refused(in.match, answer, now);
+      refused(in.match, answer, now, in.sender);
       continue;
     }
     ++counters_.commands_accepted;
@@ -302,12 +307,12 @@ void ServerLoop::readPractice(double now) {
       refusal.seat = in.seat;
       refusal.seq = in.seq;
       refusal.rejection = {in.bad_signature ? Reject::BadSignature : Reject::Malformed, in.problem};
-      refused(in.match, refusal, now);
+      refused(in.match, refusal, now, in.sender);
       continue;
     }
     const CommandAnswer answer = registry_.practice(*in.request, now);
     if (!answer.accepted()) {
-      refused(in.match, answer, now);
+      refused(in.match, answer, now, in.sender);
       continue;
     }
     ++counters_.commands_accepted;
@@ -371,11 +376,14 @@ void ServerLoop::relayAims(double now) {
   }
 }
 
-void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, double now) {
+void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, double now,
+                         const std::string& sender) {
   spdlog::debug("command {} seat {} seq {}: {} ({})", escapedForLog(match), answer.seat, answer.seq,
                 toString(answer.rejection.reason), escapedForLog(answer.rejection.text));
   rejections_.add(answer.rejection.reason, now);
   ++counters_.commands_refused;
+  const bool ours = registry_.find(match) && (answer.seat == 0 || answer.seat == 1);
+  if (!ours && !stray_answers_.allow(sender, now)) return;  // counted, not answered
   publishResult(match, answer);
 }
 

@@ -106,7 +106,9 @@ class ServerLoop {
   void relayAims(double now);
   void publishFrames(double now);
   void publishResult(const std::string& match, const CommandAnswer& answer);
-  void refused(const std::string& match, const CommandAnswer& answer, double now);
+  /// Counts and answers a refusal of a command from `sender` (IncomingSigned::sender).
+  void refused(const std::string& match, const CommandAnswer& answer, double now,
+               const std::string& sender);
   /// Publishes the state and lobby entry of every match that changed, and the lobby entry of
   /// one whose spectators changed (at most once a kSpectatorCountPeriod).
   void publishChanges(double now);
@@ -163,6 +165,10 @@ class ServerLoop {
   /// Join requests per DDS participant: one that asks under many client ids (a flood), from one
   /// writer or many, is limited as one. Twice a client's rate: a program may run a few clients.
   JoinRateLimit sender_rate_{2 * JoinRateLimit::kPerSecond, 2 * JoinRateLimit::kBurst};
+  /// Answers to commands that name no match or seat of this server, per DDS participant: each
+  /// answer is a sample keyed by a match id the sender chose, which the DDS writer pays for, so a
+  /// flood of invented ids is answered a few times a second, not command by command.
+  JoinRateLimit stray_answers_{JoinRateLimit::kPerSecond, JoinRateLimit::kBurst};
   std::chrono::steady_clock::time_point epoch_;
   std::optional<double> last_step_;  ///< when the previous pass ran, s
   double file_checked_ = 0.0;        ///< when the store's file was last checked, s

@@ -58,7 +58,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         check(server_check ? std::move(server_check) : ServerCheck(protocol::sealProblem)),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
-        stray_results(participant, result_topic, deeper(qos::result())),
+        stray_results(participant, result_topic, deeper(qos::strayResult())),
         join_requests(participant, join_request_topic, qos::joinRequest()),
         commands(participant, command_topic, qos::command()),
         practice(participant, practice_topic, qos::command()),

@@ -20,6 +20,9 @@ struct IncomingSigned {
   std::optional<Request> request;
   bool bad_signature = false;  ///< the signature field itself is malformed (not 64 bytes)
   std::string problem;         ///< "<field>: <reason>" when `request` is empty
+  /// The DDS participant it came from, as IncomingJoin::sender names it: what a refusal's
+  /// answer is charged to (the match and seat are the sender's to invent).
+  std::string sender;
 };
 
 /// A shot command off the wire (its fields checked by validateShotCommand).

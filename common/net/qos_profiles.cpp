@@ -43,12 +43,20 @@ QosProfile result() {
   return make(Reliability::Reliable, Durability::TransientLocal, 1);
 }
 
+QosProfile strayResult() {
+  return make(Reliability::Reliable, Durability::Volatile, 1);
+}
+
 QosProfile snapshot() {
   return make(Reliability::BestEffort, Durability::Volatile, 1);
 }
 
 QosProfile aim() {
   return make(Reliability::BestEffort, Durability::Volatile, 1);
+}
+
+QosProfile aimReader() {
+  return make(Reliability::BestEffort, Durability::Volatile, 64);
 }
 
 QosProfile state() {

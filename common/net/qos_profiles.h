@@ -46,6 +46,10 @@ QosProfile joinReply();
 QosProfile command(std::chrono::nanoseconds lease = kPlayerLease);
 /// ShotResult: reliable, transient-local, keep-last 1 per match and seat.
 QosProfile result();
+/// ShotResult answering a command that names no match or seat of the server's (in the default
+/// partition): reliable, volatile, keep-last 1. Nobody joins late for a refusal, and a writer
+/// that kept one would hold a stranger's every invented key.
+QosProfile strayResult();
 /// TableSnapshot: best-effort, volatile, keep-last 1 (a lost frame is replaced by the next one).
 QosProfile snapshot();
 /// MatchState: reliable, transient-local, keep-last 1 (a late joiner gets the latest at once).
@@ -53,6 +57,9 @@ QosProfile state();
 /// AimCommand and CueAim: best-effort, volatile, keep-last 1 (cosmetic: only the latest aim
 /// matters, and a lost one is replaced by the next).
 QosProfile aim();
+/// The server's reader of AimCommand: as aim() but keep-last 64. The topic has no key, so every
+/// seat's aims (and a stranger's) share one history, which the server takes every loop.
+QosProfile aimReader();
 
 }  // namespace qos
 }  // namespace pool::net

@@ -54,8 +54,8 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         practice(participant, practice_topic, qos::command()),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
-        stray_results(participant, result_topic, qos::result()),
-        aim_commands(participant, aim_command_topic, qos::aim()),
+        stray_results(participant, result_topic, qos::strayResult()),
+        aim_commands(participant, aim_command_topic, qos::aimReader()),
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
@@ -89,13 +89,15 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   WaitSet waitset;
   MatchScopes<Publisher, MatchWriters> matches;  ///< per-match writers, each in its partition
   std::unordered_set<std::string> replied;       ///< clients whose last reply is kept
-  /// The participant of each join-request writer seen (IncomingJoin::sender), looked up once.
+  /// The participant of each writer of joins and commands seen (IncomingJoin::sender), looked up
+  /// once.
   std::unordered_map<std::uint64_t, std::string> senders;
 
-  /// The sender of a join request written by `publication`.
-  std::string senderOf(std::uint64_t publication) {
+  /// The sender of a sample `reader` received from `publication`.
+  template <class T>
+  std::string senderOf(const Reader<T>& reader, std::uint64_t publication) {
     if (const auto it = senders.find(publication); it != senders.end()) return it->second;
-    const std::string guid = join_requests.participantOf(publication);
+    const std::string guid = reader.participantOf(publication);
     if (guid.empty()) return "writer " + std::to_string(publication);
     // Writers come and go: a full cache starts again rather than keep the gone ones.
     if (senders.size() >= kMaxSenders) senders.clear();
@@ -121,12 +123,13 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
     if (!sample.meta().valid) {
       // The client's JoinRequest writer is gone (lease expired or deleted): it vanished.
       if (sample.meta().instance != InstanceState::Alive) {
-        out.emplace_back(ClientGone{client, toString(sample.meta().instance),
-                                    e_->senderOf(sample.meta().publication_handle)});
+        out.emplace_back(
+            ClientGone{client, toString(sample.meta().instance),
+                       e_->senderOf(e_->join_requests, sample.meta().publication_handle)});
       }
       continue;
     }
-    std::string sender = e_->senderOf(sample.meta().publication_handle);
+    std::string sender = e_->senderOf(e_->join_requests, sample.meta().publication_handle);
     // Its writer went away before the request was read: no separate notice follows, so the
     // client is gone right after its request (joined or not, it is noticed).
     std::optional<ClientGone> gone;
@@ -148,13 +151,19 @@ std::vector<JoinEvent> ServerTransport::takeJoins() {
 
 std::vector<IncomingCommand> ServerTransport::takeCommands(const protocol::CommandLimits& limits) {
   std::vector<IncomingCommand> out;
-  for (auto& sample : e_->commands.take()) out.push_back(readCommand(*sample, limits));
+  for (auto& sample : e_->commands.take()) {
+    out.push_back(readCommand(*sample, limits));
+    out.back().sender = e_->senderOf(e_->commands, sample.meta().publication_handle);
+  }
   return out;
 }
 
 std::vector<IncomingPractice> ServerTransport::takePractice(const protocol::CommandLimits& limits) {
   std::vector<IncomingPractice> out;
-  for (auto& sample : e_->practice.take()) out.push_back(readPractice(*sample, limits));
+  for (auto& sample : e_->practice.take()) {
+    out.push_back(readPractice(*sample, limits));
+    out.back().sender = e_->senderOf(e_->practice, sample.meta().publication_handle);
+  }
   return out;
 }
 

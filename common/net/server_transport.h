@@ -74,8 +74,9 @@ class ServerTransport {
   std::vector<JoinEvent> takeJoins();
   std::vector<IncomingCommand> takeCommands(const protocol::CommandLimits& limits);
   std::vector<IncomingPractice> takePractice(const protocol::CommandLimits& limits);
-  /// The shooters' aim samples since the last take (keep-last 1 per match and seat: a flood
-  /// collapses to the latest), each read with net::fromWire or why it could not be.
+  /// The shooters' aim samples since the last take (the latest 64, whoever wrote them: the topic
+  /// has no key, so a flood costs no instances; aims are cosmetic and a lost one is replaced by
+  /// the next), each read with net::fromWire or why it could not be.
   std::vector<Result<protocol::AimSample>> takeAims();
 
   std::string publish(const protocol::LobbyEntry& entry);

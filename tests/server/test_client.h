@@ -51,6 +51,7 @@ class TestClient {
         replies_(bus_.participant, bus_.join_reply_topic, keepAll(net::qos::joinReply())),
         every_match_(bus_.participant, pool::test::everyPartition()),
         results_(every_match_, bus_.result_topic, keepAll(net::qos::result())),
+        strays_(bus_.participant, bus_.result_topic, keepAll(net::qos::strayResult())),
         snapshots_(every_match_, bus_.snapshot_topic, keepAll(net::qos::snapshot())),
         states_(every_match_, bus_.state_topic, keepAll(net::qos::state())),
         waitset_(bus_.participant) {
@@ -59,6 +60,7 @@ class TestClient {
     waitset_.attachData(results_, 3);
     waitset_.attachData(snapshots_, 4);
     waitset_.attachData(states_, 5);
+    waitset_.attachData(strays_, 6);
   }
 
   const std::string& id() const { return id_; }
@@ -278,6 +280,7 @@ class TestClient {
     }
     drain(replies_, replies);
     drain(results_, results);
+    drain(strays_, results);
     drain(snapshots_, snapshots);
     drain(states_, states);
   }
@@ -293,6 +296,8 @@ class TestClient {
   net::Reader<pool_JoinReply> replies_;
   net::Subscriber every_match_;  ///< the default partition and every match's
   net::Reader<pool_ShotResult> results_;
+  /// Refusals of commands naming no match or seat of the server's (volatile, default partition).
+  net::Reader<pool_ShotResult> strays_;
   net::Reader<pool_TableSnapshot> snapshots_;
   net::Reader<pool_MatchState> states_;
   net::WaitSet waitset_;
