@@ -108,25 +108,70 @@ PinCheck ServerPins::check(const std::string& server, std::span<const std::uint8
   if (!protocol::validServerId(server) || key.size() != protocol::kPublicKeyBytes) {
     return PinCheck::Refused;
   }
+  ++checks_;
   const auto it = pins_.find(server);
   if (it != pins_.end()) {
     return std::equal(key.begin(), key.end(), it->second.begin()) ? PinCheck::Same
                                                                   : PinCheck::Changed;
   }
-  if (pins_.size() >= kMaxPins) return PinCheck::Refused;
-  auto& pin = pins_[server];
-  std::copy(key.begin(), key.end(), pin.begin());
-  append(server, key);
+  const auto waiting = probation_.find(server);
+  if (waiting != probation_.end()) {
+    if (!std::equal(key.begin(), key.end(), waiting->second.key.begin())) return PinCheck::Changed;
+    if (!settle(server)) {
+      probation_order_.erase({waiting->second.last, server});
+      waiting->second.last = checks_;
+      probation_order_.emplace(checks_, server);
+    }
+    return PinCheck::Same;
+  }
+  if (pins_.size() < kMaxPins) {
+    auto& pin = pins_[server];
+    std::copy(key.begin(), key.end(), pin.begin());
+    append(server, key);
+    return PinCheck::FirstSight;
+  }
+  if (probation_.size() >= kMaxProbation) {
+    const auto oldest = probation_order_.begin();
+    probation_.erase(oldest->second);
+    probation_order_.erase(oldest);
+    ++evicted_;
+  }
+  auto& pin = probation_[server];
+  std::copy(key.begin(), key.end(), pin.key.begin());
+  pin.last = checks_;
+  probation_order_.emplace(checks_, server);
   return PinCheck::FirstSight;
+}
+
+bool ServerPins::settle(const std::string& server) {
+  const auto it = probation_.find(server);
+  if (it == probation_.end() || pins_.size() >= kMaxPins) return false;
+  pins_[server] = it->second.key;
+  append(server, it->second.key);
+  probation_order_.erase({it->second.last, server});
+  probation_.erase(it);
+  return true;
 }
 
 const std::array<std::uint8_t, protocol::kPublicKeyBytes>* ServerPins::pinned(
     const std::string& server) const {
   const auto it = pins_.find(server);
-  return it == pins_.end() ? nullptr : &it->second;
+  if (it != pins_.end()) return &it->second;
+  const auto waiting = probation_.find(server);
+  return waiting == probation_.end() ? nullptr : &waiting->second.key;
+}
+
+bool ServerPins::onProbation(const std::string& server) const {
+  return probation_.count(server) != 0;
 }
 
 bool ServerPins::forget(const std::string& server) {
+  const auto waiting = probation_.find(server);
+  if (waiting != probation_.end()) {
+    probation_order_.erase({waiting->second.last, server});
+    probation_.erase(waiting);
+    return true;
+  }
   if (pins_.erase(server) == 0) return false;
   rewrite();
   return true;

@@ -17,7 +17,7 @@ namespace pool::web {
 struct LobbyLimits {
   std::size_t per_server = 256;         ///< entries kept per server id
   std::size_t kept = 4096;              ///< entries kept in all
-  std::size_t served = 1024;            ///< entries in the lobby message
+  std::size_t served = 4096;            ///< entries in the lobby message
   std::size_t served_bytes = 1u << 20;  ///< bytes of the lobby message
 };
 

@@ -1,5 +1,6 @@
 // Pinned server keys: first sight pins, the same key passes, another is refused, the file keeps
-// them owner-only, forgetting rewrites it, and server ids that could forge lines are refused.
+// them owner-only, forgetting rewrites it, server ids that could forge lines are refused, and a
+// flood of made-up ids neither evicts a kept pin nor keeps a new server from being pinned.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -71,6 +72,42 @@ TEST(ServerPinsTest, ServerIdsThatCouldForgeALineAreRefused) {
   ServerPins pins(path);
   EXPECT_EQ(pins.check("lab", a.public_key), PinCheck::Same);
   EXPECT_EQ(pins.pinned("den"), nullptr);
+}
+
+TEST(ServerPinsTest, AFloodOfNewIdsNeverEvictsAKeptPinAndANewServerIsStillPinned) {
+  ServerPins pins;
+  const auto real = protocol::generateKeyPair();
+  const auto late = protocol::generateKeyPair();
+  const auto evil = protocol::generateKeyPair();
+  ASSERT_EQ(pins.check("srv", real.public_key), PinCheck::FirstSight);
+  // 1 100 made-up ids: the pins kept for good fill up, the rest wait on probation.
+  for (int i = 0; i < 1100; ++i) {
+    ASSERT_EQ(pins.check("flood" + std::to_string(i), evil.public_key), PinCheck::FirstSight) << i;
+  }
+  EXPECT_FALSE(pins.onProbation("srv"));
+  EXPECT_FALSE(pins.onProbation("flood1022"));
+  EXPECT_TRUE(pins.onProbation("flood1023"));
+  // A server seen first now is pinned (on probation) and its key checked.
+  EXPECT_EQ(pins.check("late", late.public_key), PinCheck::FirstSight);
+  EXPECT_TRUE(pins.onProbation("late"));
+  EXPECT_EQ(pins.check("late", evil.public_key), PinCheck::Changed);
+  // Thousands more made-up ids evict only probation pins, the ones that signed longest ago: a
+  // server that keeps signing (here every 100 ids) stays pinned, the kept pins stay.
+  for (int i = 1100; i < 5000; ++i) {
+    pins.check("flood" + std::to_string(i), evil.public_key);
+    if (i % 100 == 0) {
+      ASSERT_EQ(pins.check("late", late.public_key), PinCheck::Same) << i;
+    }
+  }
+  EXPECT_GT(pins.evicted(), 3000u);
+  EXPECT_EQ(pins.check("late", late.public_key), PinCheck::Same);
+  EXPECT_EQ(pins.check("srv", real.public_key), PinCheck::Same);
+  EXPECT_EQ(pins.check("srv", evil.public_key), PinCheck::Changed);
+  EXPECT_EQ(pins.pinned("flood1200"), nullptr) << "a probation pin that never signed again stays";
+  // Once a kept pin is forgotten, the next probation pin to sign is kept for good.
+  EXPECT_TRUE(pins.forget("flood5"));
+  EXPECT_EQ(pins.check("late", late.public_key), PinCheck::Same);
+  EXPECT_FALSE(pins.onProbation("late"));
 }
 
 }  // namespace

@@ -50,6 +50,7 @@ enum Domain : std::uint32_t {
   kWebLimits = 44,
   kWebConnectionFlood = 45,
   kWebLobbyFlood = 46,
+  kWebPinFlood = 47,
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,
