@@ -8,6 +8,7 @@
 #include <boost/asio.hpp>
 #include <cerrno>
 #include <chrono>
+#include <functional>
 #include <regex>
 #include <string>
 #include <thread>
@@ -50,6 +51,19 @@ inline boost::asio::ip::tcp::socket connectFrom(boost::asio::io_context& io,
   socket.connect(asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
   return socket;
 }
+
+/// Runs a function when it goes out of scope: a test's reading thread is stopped and joined even
+/// when an assertion ends the test early (a joinable thread destroyed would abort the run).
+class AtScopeExit {
+ public:
+  explicit AtScopeExit(std::function<void()> run) : run_(std::move(run)) {}
+  ~AtScopeExit() { run_(); }
+  AtScopeExit(const AtScopeExit&) = delete;
+  AtScopeExit& operator=(const AtScopeExit&) = delete;
+
+ private:
+  std::function<void()> run_;
+};
 
 /// Whether the peer has closed `socket` (what it sent before is read and discarded first).
 inline bool closedByPeer(boost::asio::ip::tcp::socket& socket) {

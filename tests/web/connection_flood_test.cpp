@@ -108,6 +108,11 @@ TEST_F(ConnectionFloodTest, IdleAndSlowConnectionsFromOneAddressNeverLockOutABro
     }
     reader_closed = true;
   });
+  AtScopeExit stop_reading([&] {
+    beast::error_code ignored;
+    reader->next_layer().shutdown(tcp::socket::shutdown_both, ignored);
+    reading.join();
+  });
   std::this_thread::sleep_for(std::chrono::seconds(3));
   EXPECT_FALSE(reader_closed.load()) << "the browser that reads was closed\n" << web.err();
 
@@ -121,10 +126,6 @@ TEST_F(ConnectionFloodTest, IdleAndSlowConnectionsFromOneAddressNeverLockOutABro
   auto again = openBrowser(io, attacker, port, ec);
   EXPECT_FALSE(ec) << "the flooding address is still refused: " << ec.message();
   std::printf("a browser of another address was served %.2f s into the flood\n", served_after);
-
-  beast::error_code ignored;
-  reader->next_layer().shutdown(tcp::socket::shutdown_both, ignored);
-  reading.join();
 }
 
 }  // namespace

@@ -82,6 +82,11 @@ TEST_F(LobbyFloodTest, ABrowserThatReadsKeepsABoundedLobbyThroughAFloodOfSignedE
     }
     reader_closed = true;
   });
+  AtScopeExit stop_reading([&] {
+    beast::error_code ignored;
+    reader.next_layer().shutdown(tcp::socket::shutdown_both, ignored);
+    reading.join();
+  });
   const auto lastLobby = [&] {
     const std::lock_guard<std::mutex> lock(mutex);
     return lobbies.empty() ? LobbySeen{} : lobbies.back();
@@ -144,10 +149,6 @@ TEST_F(LobbyFloodTest, ABrowserThatReadsKeepsABoundedLobbyThroughAFloodOfSignedE
       "2000 entries written in %.2f s; the reading browser heard %zu lobbies (largest %zu B); "
       "a late browser's lobby: %zu entries, %zu of the flood, %zu B\n",
       flood_s, heard, largest, first.entries, first.flood, first.bytes);
-
-  beast::error_code ignored;
-  reader.next_layer().shutdown(tcp::socket::shutdown_both, ignored);
-  reading.join();
 }
 
 }  // namespace

@@ -58,6 +58,11 @@ TEST_F(PinFloodTest, ANewServerIsSeenPastAThousandMadeUpIdsAndAKnownOneKeepsItsK
     }
     reader_closed = true;
   });
+  AtScopeExit stop_reading([&] {
+    beast::error_code ignored;
+    reader.next_layer().shutdown(tcp::socket::shutdown_both, ignored);
+    reading.join();
+  });
   const auto lobby = [&] {
     const std::lock_guard<std::mutex> lock(mutex);
     return matches;
@@ -99,10 +104,6 @@ TEST_F(PinFloodTest, ANewServerIsSeenPastAThousandMadeUpIdsAndAKnownOneKeepsItsK
   EXPECT_EQ(seen.count("srv-9"), 0u) << "an entry under a known id signed by another key was taken";
   EXPECT_FALSE(reader_closed.load()) << "the browser that reads was dropped";
   std::printf("lobby after the flood: %zu matches\n", seen.size());
-
-  beast::error_code ignored;
-  reader.next_layer().shutdown(tcp::socket::shutdown_both, ignored);
-  reading.join();
 }
 
 }  // namespace
