@@ -312,11 +312,15 @@ std::uint32_t& floorOf(std::map<Key, std::uint32_t>& floors, const Key& key, std
 }  // namespace
 
 void GameClient::pollStates(std::vector<ClientEvent>& out) {
+  // Per match: states taken in this poll, and whether one was dropped as older.
+  std::map<std::string, std::pair<std::uint32_t, bool>> taken;
   for (auto& view : transport_->takeStates()) {
     if (!view) {
       problem(view.error());
       continue;
     }
+    auto& [count, dropped_older] = taken[view->match];
+    ++count;
     if (auto why = impossibleJump(view->match, "MatchState", view->revision, view->shot_number);
         !why.empty()) {
       problem(why);
@@ -327,10 +331,27 @@ void GameClient::pollStates(std::vector<ClientEvent>& out) {
     if (goesBack(floorOf(state_floor_, view->match, kMaxFloors), view->revision,
                  "MatchState of " + escapedForLog(view->match) +
                      " dropped: older than the revision already taken (a replay?)")) {
+      dropped_older = true;
       continue;
     }
     states_[view->match] = *view;
     out.emplace_back(std::move(*view));
+  }
+  // A reader keeps the last kReaderDepth states: replays that filled it since the last poll may
+  // have pushed out a newer genuine one, which the server would not send again until its next
+  // change. Then the match is followed afresh, and the server's writer hands its latest state
+  // over again (at most once a second per match, whatever a stranger keeps sending).
+  const auto now = std::chrono::steady_clock::now();
+  for (const auto& [match, seen] : taken) {
+    if (seen.first < net::kReaderDepth || !seen.second) continue;
+    if (refetched_.size() >= kMaxFloors && !refetched_.count(match)) refetched_.clear();
+    auto [at, first] = refetched_.try_emplace(match, now);
+    if (!first && now - at->second < std::chrono::seconds(1)) continue;
+    at->second = now;
+    if (auto why = transport_->refetch(match); !why.empty()) continue;
+    note("MatchState of " + escapedForLog(match) + ": " + std::to_string(seen.first) +
+         " states at once, older ones among them (replays?): following the match afresh for "
+         "its latest state");
   }
 }
 

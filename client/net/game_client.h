@@ -207,6 +207,9 @@ class GameClient {
   std::map<std::string, std::uint32_t> frame_floor_;
   std::map<std::pair<std::string, int>, std::uint32_t> result_floor_;
   static constexpr std::size_t kMaxFloors = 4096;
+  /// When each match was last followed afresh because replays filled its state reader's history
+  /// (a newer genuine state may have been pushed out): at most once a second per match.
+  std::map<std::string, std::chrono::steady_clock::time_point> refetched_;
   std::string last_problem_;
   std::optional<protocol::MatchSettings> table_settings_;
   std::uint32_t aim_shot_ = 0;  ///< the turn our aim numbers count in

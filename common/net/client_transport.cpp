@@ -224,6 +224,12 @@ std::string ClientTransport::follow(const std::set<std::string>& matches) {
   return problem;
 }
 
+std::string ClientTransport::refetch(const std::string& match) {
+  if (!e_->matches.find(match)) return "not followed";
+  e_->close(match);
+  return e_->open(match);
+}
+
 std::set<std::string> ClientTransport::followed() const {
   std::set<std::string> out;
   e_->matches.forEach([&](const std::string& match, const MatchReaders&) { out.insert(match); });

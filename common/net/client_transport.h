@@ -69,6 +69,10 @@ class ClientTransport {
   /// reason is returned (empty: all followed).
   std::string follow(const std::set<std::string>& matches);
   std::set<std::string> followed() const;
+  /// Follows the followed `match` afresh (its readers made again, what was not taken dropped):
+  /// its latest state and results come again from the writers' histories, as when first
+  /// followed. Empty when done, else why not.
+  std::string refetch(const std::string& match);
 
   /// Writes the shooter's signed aim (best effort: it may be lost, the next one replaces it).
   std::string send(const protocol::AimSample& aim);

@@ -1,9 +1,12 @@
 // A stranger captures a genuine, server-signed MatchState off the wire and replays it over the
-// live match later on: the players drop it as older than what they have, and the match goes on.
+// live match later on: the players drop it as older than what they have, and the match goes on;
+// replayed more often than a reader keeps, it hides no newer state from a client.
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <thread>
 
+#include "net/client_transport.h"
 #include "net/partition.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
@@ -18,8 +21,9 @@ namespace {
 
 using namespace std::chrono_literals;
 
-/// This test's DDS domain (124–127: the stranger's attacks on matches and servers).
+/// These tests' DDS domains (124–128: the stranger's attacks on matches and servers).
 constexpr auto kReplayedState = static_cast<Domain>(125);
+constexpr auto kReplayFlood = static_cast<Domain>(128);
 
 class ReplayedStateTest : public ClientIntegrationTest {};
 
@@ -32,20 +36,27 @@ class StateReplayer {
         subscriber_(bus_.participant, pool::test::everyPartition()),
         publisher_(bus_.participant, pool::test::everyPartition()),
         reader_(subscriber_, bus_.state_topic, keepAll(net::qos::state())),
-        writer_(publisher_, bus_.state_topic, net::qos::state()) {}
+        writer_(publisher_, bus_.state_topic, keepAll(net::qos::state())) {}
 
   /// Keeps the first state read with `shot_number` shots played (one at most).
   void capture(std::uint32_t shot_number) {
     for (auto& sample : reader_.take()) {
+      newest_ = std::max(newest_, sample->revision);
       if (!captured_ && sample->shot_number == shot_number) captured_ = std::move(sample);
     }
   }
+  /// The highest revision read so far.
+  std::uint32_t newest() const { return newest_; }
   const pool_MatchState* captured() const { return captured_ ? captured_->get() : nullptr; }
 
-  /// Writes the captured state again once `readers` readers of the match are matched.
-  bool replay(std::uint32_t readers) {
+  /// Writes the captured state again, `times` times, once `readers` readers of the match are
+  /// matched (every copy is delivered: the writer keeps all).
+  bool replay(std::uint32_t readers, int times = 1) {
     if (!captured_ || !writer_.waitForReaders(readers, 30s)) return false;
-    return static_cast<bool>(writer_.write(**captured_));
+    for (int i = 0; i < times; ++i) {
+      if (!writer_.write(**captured_)) return false;
+    }
+    return true;
   }
 
  private:
@@ -60,6 +71,7 @@ class StateReplayer {
   net::Reader<pool_MatchState> reader_;
   net::Writer<pool_MatchState> writer_;
   std::optional<net::Sample<pool_MatchState>> captured_;
+  std::uint32_t newest_ = 0;
 };
 
 TEST_F(ReplayedStateTest, AnOlderGenuineStateChangesNothingAndTheMatchGoesOn) {
@@ -101,6 +113,56 @@ TEST_F(ReplayedStateTest, AnOlderGenuineStateChangesNothingAndTheMatchGoesOn) {
   ASSERT_FALSE(stalledOnLayout(recorder));
   EXPECT_TRUE(on) << "the match froze at shot " << recorder.latest("srv-1")->shot_number << "\n"
                   << logs();
+}
+
+TEST_F(ReplayedStateTest, ReplaysPastTheReadersDepthHideNoNewerState) {
+  open(kReplayFlood, "replay-flood");
+  StateReplayer stranger(kReplayFlood);
+  MatchRecorder recorder(kReplayFlood);
+  startServer({"--fast"});
+  ASSERT_TRUE(recorder.pump(20s, [&] { return recorder.latest("srv-1") != nullptr; })) << logs();
+  // Bots that think 6 s between shots: the server publishes nothing for that long at rest.
+  startBot("alice", 61, {"--think", "6"});
+  startBot("bob", 62, {"--think", "6"});
+  ASSERT_TRUE(recorder.pump(60s, [&] {
+    stranger.capture(1);
+    const MatchView* v = recorder.latest("srv-1");
+    return stalledOnLayout(recorder) ||
+           (stranger.captured() && v && v->shot_number >= 2 && v->shooter >= 0);
+  })) << logs();
+  ASSERT_FALSE(stalledOnLayout(recorder));
+  const std::uint32_t shots = recorder.latest("srv-1")->shot_number;
+
+  // The recorder's client stops taking samples. The server's state after the next shot reaches
+  // its reader (seen by the stranger, unchanged for 1 s: at rest, the bots thinking); then the
+  // stranger writes the old state twice as often as the reader keeps (net::kReaderDepth), which
+  // pushes the newer genuine state out of that reader's history.
+  std::uint32_t genuine = 0;
+  auto changed = std::chrono::steady_clock::now();
+  for (const auto until = changed + 60s; std::chrono::steady_clock::now() < until;) {
+    stranger.capture(1);
+    if (stranger.newest() != genuine) {
+      genuine = stranger.newest();
+      changed = std::chrono::steady_clock::now();
+    } else if (genuine > recorder.latest("srv-1")->revision &&
+               std::chrono::steady_clock::now() - changed >= 1s) {
+      break;
+    }
+    std::this_thread::sleep_for(50ms);
+  }
+  ASSERT_GT(genuine, recorder.latest("srv-1")->revision) << "no shot after shot " << shots;
+  ASSERT_TRUE(stranger.replay(4, 2 * static_cast<int>(net::kReaderDepth))) << logs();
+  std::this_thread::sleep_for(300ms);
+
+  // The client takes the replays, drops them as older, and follows the match afresh: the
+  // server's writer hands it the state it had missed, before anything newer is published.
+  EXPECT_TRUE(recorder.pump(2s, [&] { return recorder.latest("srv-1")->revision >= genuine; }))
+      << "the client stayed at revision " << recorder.latest("srv-1")->revision << " of " << genuine
+      << "\n"
+      << logs();
+  stranger.capture(1);
+  EXPECT_EQ(stranger.newest(), genuine) << "the server published again meanwhile: inconclusive";
+  EXPECT_GE(recorder.client().stale(), 1u);
 }
 
 }  // namespace
