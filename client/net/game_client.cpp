@@ -1,6 +1,7 @@
 // Join requests, shots and polling of the protocol's topics.
 #include "client/net/game_client.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
@@ -372,6 +373,20 @@ void GameClient::pollResults(std::vector<ClientEvent>& out) {
                      " dropped: of an earlier shot than one already taken (a replay?)")) {
       continue;
     }
+    const std::pair<std::string, int> seat_key(report->match, report->seat);
+    if (results_seen_.size() >= kMaxFloors && !results_seen_.count(seat_key)) {
+      results_seen_.clear();
+    }
+    auto& seen_here = results_seen_[seat_key];
+    const ResultSeen key{report->seq, report->shot_number, report->accepted, report->final()};
+    if (std::find(seen_here.begin(), seen_here.end(), key) != seen_here.end()) {
+      ++stale_;
+      note("ShotResult of " + escapedForLog(report->match) +
+           " dropped: the same as one already taken (a replay?)");
+      continue;
+    }
+    if (seen_here.size() >= kResultsRemembered) seen_here.erase(seen_here.begin());
+    seen_here.push_back(key);
     // Only a number the seat's own key used up counts: anyone may send a command with any
     // number, and its refusal must not move ours (up to a wrap-around, say).
     if (report->usesUpSequence()) {

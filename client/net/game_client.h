@@ -206,6 +206,17 @@ class GameClient {
   std::map<std::string, std::uint32_t> state_floor_;
   std::map<std::string, std::uint32_t> frame_floor_;
   std::map<std::pair<std::string, int>, std::uint32_t> result_floor_;
+  /// Per seat, the last few results taken (seq, shot, accepted, final): a genuine result replayed
+  /// as it was is not older than the floor, but it is one of these. Bounded like the floors.
+  struct ResultSeen {
+    std::uint32_t seq = 0;
+    std::uint32_t shot = 0;
+    bool accepted = false;
+    bool final = false;
+    bool operator==(const ResultSeen&) const = default;
+  };
+  std::map<std::pair<std::string, int>, std::vector<ResultSeen>> results_seen_;
+  static constexpr std::size_t kResultsRemembered = 8;
   static constexpr std::size_t kMaxFloors = 4096;
   /// When each match was last followed afresh because replays filled its state reader's history
   /// (a newer genuine state may have been pushed out): at most once a second per match.

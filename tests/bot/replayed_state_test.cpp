@@ -1,6 +1,7 @@
 // A stranger captures a genuine, server-signed MatchState off the wire and replays it over the
 // live match later on: the players drop it as older than what they have, and the match goes on;
-// replayed more often than a reader keeps, it hides no newer state from a client.
+// replayed more often than a reader keeps, it hides no newer state from a client; and a genuine
+// ShotResult replayed is taken once.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -21,9 +22,10 @@ namespace {
 
 using namespace std::chrono_literals;
 
-/// These tests' DDS domains (124–128: the stranger's attacks on matches and servers).
+/// These tests' DDS domains (124–129: the stranger's attacks on matches and servers).
 constexpr auto kReplayedState = static_cast<Domain>(125);
 constexpr auto kReplayFlood = static_cast<Domain>(128);
+constexpr auto kReplayedResult = static_cast<Domain>(129);
 
 class ReplayedStateTest : public ClientIntegrationTest {};
 
@@ -72,6 +74,48 @@ class StateReplayer {
   net::Writer<pool_MatchState> writer_;
   std::optional<net::Sample<pool_MatchState>> captured_;
   std::uint32_t newest_ = 0;
+};
+
+/// The stranger for results: keeps the first final ShotResult it reads (of an accepted shot,
+/// with its verdict), in any match's partition, and writes it back as it was.
+class ResultReplayer {
+ public:
+  explicit ResultReplayer(std::uint32_t domain)
+      : bus_(domain),
+        subscriber_(bus_.participant, pool::test::everyPartition()),
+        publisher_(bus_.participant, pool::test::everyPartition()),
+        reader_(subscriber_, bus_.result_topic, all(net::qos::result())),
+        writer_(publisher_, bus_.result_topic, all(net::qos::result())) {}
+
+  void capture() {
+    for (auto& sample : reader_.take()) {
+      if (!captured_ && sample->accepted && sample->verdict_text[0] != '\0') {
+        captured_ = std::move(sample);
+      }
+    }
+  }
+  const pool_ShotResult* captured() const { return captured_ ? captured_->get() : nullptr; }
+
+  bool replay(std::uint32_t readers, int times) {
+    if (!captured_ || !writer_.waitForReaders(readers, 30s)) return false;
+    for (int i = 0; i < times; ++i) {
+      if (!writer_.write(**captured_)) return false;
+    }
+    return true;
+  }
+
+ private:
+  static net::QosProfile all(net::QosProfile profile) {
+    profile.history_depth = 0;
+    return profile;
+  }
+
+  net::ProtocolTopics bus_;
+  net::Subscriber subscriber_;
+  net::Publisher publisher_;
+  net::Reader<pool_ShotResult> reader_;
+  net::Writer<pool_ShotResult> writer_;
+  std::optional<net::Sample<pool_ShotResult>> captured_;
 };
 
 TEST_F(ReplayedStateTest, AnOlderGenuineStateChangesNothingAndTheMatchGoesOn) {
@@ -163,6 +207,42 @@ TEST_F(ReplayedStateTest, ReplaysPastTheReadersDepthHideNoNewerState) {
   stranger.capture(1);
   EXPECT_EQ(stranger.newest(), genuine) << "the server published again meanwhile: inconclusive";
   EXPECT_GE(recorder.client().stale(), 1u);
+}
+
+TEST_F(ReplayedStateTest, AGenuineResultReplayedIsTakenOnce) {
+  open(kReplayedResult, "replayed-result");
+  ResultReplayer stranger(kReplayedResult);
+  MatchRecorder recorder(kReplayedResult);
+  startServer({"--fast"});
+  ASSERT_TRUE(recorder.pump(20s, [&] { return recorder.latest("srv-1") != nullptr; })) << logs();
+  startBot("alice", 71, {"--think", "3"});
+  startBot("bob", 72, {"--think", "3"});
+  // The break's final result (the latest result of its seat while the bots think).
+  ASSERT_TRUE(recorder.pump(60s, [&] {
+    stranger.capture();
+    return stalledOnLayout(recorder) || stranger.captured() != nullptr;
+  })) << logs();
+  ASSERT_FALSE(stalledOnLayout(recorder));
+  const pool_ShotResult& final = *stranger.captured();
+  const auto copies = [&] {
+    std::size_t n = 0;
+    for (const ShotReport& r : recorder.reports()) {
+      n += r.seat == final.seat && r.seq == final.seq && r.shot_number == final.shot_number &&
+                   r.final()
+               ? 1
+               : 0;
+    }
+    return n;
+  };
+  ASSERT_TRUE(recorder.pump(10s, [&] { return copies() == 1; })) << logs();
+  const std::uint64_t stale = recorder.client().stale();
+
+  // Written back three times into the match's partition (once the recorder's and the bots'
+  // readers are matched): the recorder drops each copy, and its record keeps the one.
+  ASSERT_TRUE(stranger.replay(3, 3)) << logs();
+  EXPECT_TRUE(recorder.pump(5s, [&] { return recorder.client().stale() >= stale + 3; }))
+      << "stale " << recorder.client().stale() << " of " << stale + 3;
+  EXPECT_EQ(copies(), 1u);
 }
 
 }  // namespace
