@@ -89,6 +89,11 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
     }
     return R::ok(step);
   }
+  if (verb == "capture") {
+    step.kind = ScriptStep::Kind::Capture;
+    if (!(words >> step.path)) return R::fail("capture needs a file");
+    return R::ok(step);
+  }
   if (verb == "quit") {
     step.kind = ScriptStep::Kind::Quit;
     return R::ok(step);

@@ -29,6 +29,7 @@ struct ScriptStep {
     MouseRelease,  ///< release the left button at (`x`, `y`)
     MouseOnCue,    ///< move the mouse onto the cue ball as drawn and press the left button there
     MouseBy,       ///< move the mouse by (`x`, `y`) pixels
+    Capture,       ///< write this frame, as drawn, to the PNG file `path`
   };
   Kind kind = Kind::Frames;
   Key key = Key::Space;
@@ -36,12 +37,13 @@ struct ScriptStep {
   int count = 0;
   double x = 0.0;
   double y = 0.0;
+  std::string path;  ///< Capture's file
 };
 
 /// Parses a script: one step a line, '#' starts a comment.
 ///   down KEY [shift] [ctrl] [alt] | up KEY | frames N | wait aiming | wait shot N | wait over |
 ///   wait table | wait live | wait rest | quit | mouse press X Y | mouse move X Y | mouse release X
-///   Y
+///   Y | capture FILE
 /// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
 Result<std::vector<ScriptStep>> parseScript(const std::string& text);
 

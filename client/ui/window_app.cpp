@@ -152,6 +152,7 @@ class WindowApp {
       frame(now, script_ ? kScriptStep : now - last);
       last = now;
       if (!options_.capture.empty()) capture();
+      captureForScript();
       glfwSwapBuffers(window_.get());
       // Without vsync (e.g. under Xvfb) the loop would spin: no more frames than a fast screen.
       std::this_thread::sleep_until(frame_start + kMinFrame);
@@ -165,6 +166,16 @@ class WindowApp {
     if (!quit_ && !glfwWindowShouldClose(window_.get())) return;
     captured_ = writeFramePng(window_.get(), options_.capture);
     if (!captured_) std::cerr << "could not write " << options_.capture << '\n';
+  }
+
+  /// Writes the frame just drawn (read before the swap) where a script's capture step says.
+  void captureForScript() {
+    if (script_mouse_.capture.empty()) return;
+    if (!writeFramePng(window_.get(), script_mouse_.capture)) {
+      std::cerr << "could not write " << script_mouse_.capture << '\n';
+      captured_ = false;
+    }
+    script_mouse_.capture.clear();
   }
 
   void applyScript() {
@@ -413,6 +424,7 @@ class WindowApp {
     f.replay_time = session_.replay().replayTime();
     f.quality = quality_ == render::Quality::Light ? "light" : "full";
     f.mouse = script_mouse_.at;
+    f.capture = script_mouse_.capture;
     const glm::mat4 view = render::viewMatrix(camera);
     const glm::mat4 projection =
         render::projectionMatrix(camera, static_cast<float>(width) / static_cast<float>(height));

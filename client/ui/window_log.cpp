@@ -73,6 +73,7 @@ void printDrawnLine(const DrawnFrame& f) {
                         {"stroke", a.stroke}};
   }
   line["aim_dropped"] = f.aim_dropped;
+  if (!f.capture.empty()) line["capture"] = f.capture;
   printLine(line);
 }
 

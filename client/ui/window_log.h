@@ -54,6 +54,7 @@ struct DrawnFrame {
   std::string cue_source;             ///< whose: "local", "remote" (a live aim) or "stroke"
   std::optional<protocol::AimSample> live_aim;  ///< the latest live aim shown (unsmoothed)
   std::uint64_t aim_dropped = 0;                ///< live aims dropped so far
+  std::string capture;  ///< the PNG file this frame is written to (a script's capture step)
 };
 
 /// Prints {"event": "drawn", ...}.

@@ -45,6 +45,9 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
         if (step.count == 0) mouse.at = {step.x, step.y};
         controls.mouseButton(app::MouseButton::Left, false, mouse.at.x(), mouse.at.y());
         break;
+      case app::ScriptStep::Kind::Capture:
+        mouse.capture = step.path;
+        break;
       case app::ScriptStep::Kind::Quit:
         quit = true;
         break;

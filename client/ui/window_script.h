@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "client/app/controls.h"
 #include "client/app/input_script.h"
@@ -14,10 +15,12 @@ namespace pool::ui {
 struct ScriptMouse {
   Eigen::Vector2d at = Eigen::Vector2d::Zero();
   std::optional<Eigen::Vector2d> cue_ball;
+  std::string capture;  ///< a PNG file to write this frame to (a script's capture step)
 };
 
 /// Plays this frame's steps of `script` on `controls`, given whether they can aim and the
-/// session's shot number. True when the script says to quit.
+/// session's shot number; a capture step leaves its file in `mouse.capture`. True when the
+/// script says to quit.
 bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
                      const app::MatchSession& session, ScriptMouse& mouse);
 

@@ -44,6 +44,8 @@ TEST(InputScriptTest, ABadLineNamesItsNumber) {
   EXPECT_EQ(parseScript("mouse press cue\nmouse by -2.5 3\nmouse press 4 5\n")->size(), 3u);
   EXPECT_EQ((*parseScript("mouse press cue\n"))[0].kind, ScriptStep::Kind::MouseOnCue);
   EXPECT_EQ((*parseScript("mouse by -2.5 3\n"))[0].x, -2.5);
+  EXPECT_EQ(parseScript("capture\n").error(), "line 1: capture needs a file");
+  EXPECT_EQ((*parseScript("capture /tmp/a.png\n"))[0].path, "/tmp/a.png");
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
   EXPECT_EQ(parseScript("jump\n").error(), "line 1: unknown step 'jump'");
   EXPECT_EQ(parseScript("wait forever\n").error(),

@@ -8,8 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <glm/glm.hpp>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -18,7 +20,10 @@
 #include "rules/eight_ball.h"
 #include "support/client_fixture.h"
 #include "support/display_check.h"
+#include "support/png_image.h"
+#include "support/reported_camera.h"
 #include "support/window_output.h"
+#include "table/table_spec.h"
 
 namespace pool::client::test {
 namespace {
@@ -458,15 +463,36 @@ struct ServerPath {
   std::vector<double> turns;
 };
 
-// The breaker drags the cue ball in hand across the kitchen: in every frame drawn while dragging
-// the ball sits within 2 px of the cursor. Then the break: in every frame drawn, the cue ball is
-// where the server's frames put it at the time played back (within 2 px), from the release on.
+/// Where the ray through pixel `px` of `camera` meets the horizontal plane at height `z` (table
+/// frame, m): the inverse of the camera's own projection.
+glm::vec3 onPlane(const ReportedCamera& camera, const Eigen::Vector2d& px, float z) {
+  const glm::mat4 inverse = glm::inverse(camera.projection * camera.view);
+  const float nx = static_cast<float>(px.x() / camera.width * 2.0 - 1.0);
+  const float ny = static_cast<float>(1.0 - px.y() / camera.height * 2.0);
+  const glm::vec4 a = inverse * glm::vec4(nx, ny, -1.0f, 1.0f);
+  const glm::vec4 b = inverse * glm::vec4(nx, ny, 1.0f, 1.0f);
+  const glm::vec3 near = glm::vec3(a) / a.w, far = glm::vec3(b) / b.w;
+  return near + (far - near) * ((z - near.z) / (far.z - near.z));
+}
+
+// The breaker drags the cue ball in hand across the kitchen: in two frames captured while dragging
+// the ball is drawn under the cursor, and no longer where the other had it. Then the break: in
+// every frame drawn, the cue ball is where the server's frames put it at the time played back
+// (within 2 px), from the release on.
 TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames) {
   open(kWindowBallInHand, "window-ball-in-hand");
   MatchRecorder recorder(kWindowBallInHand);
   startServer({});  // frames paced at 60 Hz, as a player sees them
   std::string script = "wait aiming\nframes 60\nmouse press cue\nframes 2\n";
-  for (int i = 0; i < 30; ++i) script += "mouse by -2 3\nframes 1\n";  // back and to the left
+  const Eigen::Vector2d step(-2.0, 3.0);  // each move: back and to the left, px
+  const std::array<int, 2> captured_after{10, 30};
+  for (int i = 1; i <= 30; ++i) {
+    script += "mouse by -2 3\n";
+    if (i == captured_after[0] || i == captured_after[1]) {
+      script += "capture " + file("drag-" + std::to_string(i) + ".png") + "\n";
+    }
+    script += "frames 1\n";
+  }
   script +=
       "mouse release\nframes 10\ndown SPACE\nframes 10\nup SPACE\nwait shot 1\n"
       "frames 30\nquit\n";
@@ -475,19 +501,68 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   const auto drawn = windowLines("drawn");
   ASSERT_FALSE(drawn.empty());
 
-  // The drag: the ball under the cursor in every frame, and it went somewhere.
-  int dragged = 0;
-  Eigen::Vector2d first_px(0, 0), last_px(0, 0);
+  // The drag, in the captured pixels. The cursor is where the test's script moved it: the press
+  // (on the ball, before any move) plus `step` a move. The captured frame's camera, as the window
+  // reports it (not mirrored), gives the ball's size there: the cursor's ray meets the plane of
+  // the ball's centre (z = R) at P, and R seen at P is r px. A ball drawn within 0.4 r of the
+  // cursor covers the disc of 0.6 r round it; more than half of that disc shows the cue ball's
+  // white (as lit anywhere on the table: a light neutral grey), the rest its shading. Where the
+  // other capture had the cursor (20 moves, 72 px, away: beyond the ball's radius and the disc's,
+  // asserted) the ball is gone: under a tenth of the disc is white there (the aim line may cross
+  // it).
+  std::optional<Eigen::Vector2d> press;
   for (const auto& d : drawn) {
-    if (!d["dragging"].get<bool>() || !d.contains("cue_px")) continue;
-    const Eigen::Vector2d px(d["cue_px"][0].get<double>(), d["cue_px"][1].get<double>());
-    const Eigen::Vector2d mouse(d["mouse"][0].get<double>(), d["mouse"][1].get<double>());
-    EXPECT_LT((px - mouse).norm(), 2.0) << d.dump();
-    if (dragged++ == 0) first_px = px;
-    last_px = px;
+    if (d["dragging"].get<bool>()) {
+      press = Eigen::Vector2d(d["mouse"][0].get<double>(), d["mouse"][1].get<double>());
+      break;
+    }
   }
-  EXPECT_GE(dragged, 25);
-  EXPECT_GT((last_px - first_px).norm(), 80.0);
+  ASSERT_TRUE(press) << "no frame drawn dragging";
+  const auto spec = table::loadTableSpec("wpa-9ft");
+  ASSERT_TRUE(spec) << spec.error();
+  const auto radius = static_cast<float>(spec->params.ball_radius);
+  std::array<Eigen::Vector2d, 2> cursor;
+  std::array<double, 2> disc{};
+  std::array<Image, 2> image;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::string png = file("drag-" + std::to_string(captured_after[k]) + ".png");
+    const auto line = std::find_if(drawn.begin(), drawn.end(), [&](const nlohmann::json& d) {
+      return d.value("capture", "") == png;
+    });
+    ASSERT_NE(line, drawn.end()) << "no frame drawn for " << png;
+    ASSERT_TRUE((*line)["dragging"].get<bool>());
+    ReportedCamera camera;
+    camera.width = (*line)["width"];
+    camera.height = (*line)["height"];
+    camera.view = matrixOf((*line)["view"]);
+    camera.projection = matrixOf((*line)["projection"]);
+    ASSERT_EQ(camera.mirrored(), "");
+    image[k] = loadPng(png);
+    ASSERT_EQ(image[k].width, camera.width) << png;
+    ASSERT_EQ(image[k].height, camera.height) << png;
+    cursor[k] = *press + captured_after[k] * step;
+    const Eigen::Vector2d mouse((*line)["mouse"][0].get<double>(),
+                                (*line)["mouse"][1].get<double>());
+    ASSERT_LT((mouse - cursor[k]).norm(), 1e-6) << "the script's cursor went elsewhere";
+    const glm::vec3 at = onPlane(camera, cursor[k], radius);
+    const glm::vec3 centre = camera.pixel(at);
+    ASSERT_LT(glm::length(glm::vec2(centre) - glm::vec2(cursor[k].x(), cursor[k].y())), 0.5f);
+    const double r =
+        glm::length(glm::vec2(camera.pixel(at + radius * camera.up())) - glm::vec2(centre));
+    ASSERT_GT(r, 3.0) << "the ball too small to judge";
+    disc[k] = 0.6 * r;
+  }
+  const auto white = [&](std::size_t k, std::size_t at) {
+    const double area = std::numbers::pi * disc[at] * disc[at];
+    return countInDisc(image[k], cursor[at].x(), cursor[at].y(), disc[at],
+                       [](const Rgb& p) { return ballColourInAnyLight(physics::kCueBall, p); }) /
+           area;
+  };
+  ASSERT_GT((cursor[1] - cursor[0]).norm(), (1.0 + 0.6) * std::max(disc[0], disc[1]) / 0.6 + 2.0);
+  EXPECT_GT(white(0, 0), 0.5) << "after 10 moves: the ball under the cursor";
+  EXPECT_GT(white(1, 1), 0.5) << "after 30 moves: the ball under the cursor";
+  EXPECT_LT(white(1, 0), 0.1) << "after 30 moves: the ball gone from where it was";
+  EXPECT_LT(white(0, 1), 0.1) << "after 10 moves: the ball not yet where it will be";
 
   // The break (a soft one: it runs long enough to see) as drawn against the server's frames.
   const ServerPath path(recorder.frames(match, 1));
