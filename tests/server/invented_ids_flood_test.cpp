@@ -29,16 +29,6 @@ constexpr std::uint32_t kInventedIds = 139;  ///< in the flood tests' 135–149
 constexpr std::uint32_t kIds = 50'000;
 constexpr double kPerSecond = 8'000.0;
 
-/// The resident memory of process `pid` in MB (0 when unreadable).
-double residentMb(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  }
-  return 0.0;
-}
-
 /// Commands the server refused so far, by its one-line-a-second summaries.
 std::uint64_t refusedCommands(const std::string& log) {
   std::uint64_t n = 0;

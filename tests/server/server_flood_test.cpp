@@ -332,16 +332,6 @@ std::string lastLine(const std::string& log, const std::string& prefix) {
   return log.substr(at, log.find('\n', at) - at);
 }
 
-/// The resident memory of process `pid` in MB (0 when unreadable).
-double residentMb(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  }
-  return 0.0;
-}
-
 /// Size and modification time of every file of the database (the file, its journal or WAL).
 std::string storeFiles(const std::string& db) {
   std::string out;

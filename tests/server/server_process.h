@@ -102,4 +102,14 @@ class ServerProcess {
   bool exited_ = false;
 };
 
+/// The resident memory of process `pid` in MB (0 when unreadable).
+inline double residentMb(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return 0.0;
+}
+
 }  // namespace pool::server::test
