@@ -1,8 +1,9 @@
-// Lobby bookkeeping and match selection.
+// Lobby bookkeeping within its bounds, and match selection.
 #include "client/net/lobby.h"
 
 #include <algorithm>
 #include <charconv>
+#include <utility>
 
 namespace pool::client {
 namespace {
@@ -22,13 +23,46 @@ bool matchOrder(const std::string& a, const std::string& b) {
   return na != nb ? na < nb : a < b;
 }
 
-void Lobby::update(LobbyEntry entry) {
+LobbyUpdate Lobby::update(LobbyEntry entry) {
+  const auto it = entries_.find(entry.match);
+  if (it != entries_.end() && it->second.server == entry.server) {
+    it->second = std::move(entry);
+    return {true, {}};
+  }
+  if (it != entries_.end()) remove(entry.match);  // the same match under another server id
+  const auto server = servers_.find(entry.server);
+  const std::size_t held = server == servers_.end() ? 0 : server->second.matches.size();
+  if (held >= bounds_.per_server) {
+    ++refused_;
+    return {};
+  }
+  LobbyUpdate done{true, {}};
+  if (entries_.size() >= bounds_.kept) {
+    const auto most = heaviest();
+    if (most == servers_.end() || most->second.matches.size() < held + 2) {
+      ++refused_;
+      return {};
+    }
+    done.gave_way = *most->second.matches.rbegin();
+    remove(done.gave_way);
+  }
+  auto [kept, fresh] = servers_.try_emplace(entry.server);
+  if (fresh) kept->second.seen = next_seen_++;
+  kept->second.matches.insert(entry.match);
   std::string key = entry.match;
   entries_[key] = std::move(entry);
+  return done;
 }
 
 void Lobby::remove(const std::string& match) {
-  entries_.erase(match);
+  const auto it = entries_.find(match);
+  if (it == entries_.end()) return;
+  const auto server = servers_.find(it->second.server);
+  if (server != servers_.end()) {
+    server->second.matches.erase(match);
+    if (server->second.matches.empty()) servers_.erase(server);
+  }
+  entries_.erase(it);
 }
 
 const LobbyEntry* Lobby::find(const std::string& match) const {
@@ -51,6 +85,18 @@ std::optional<std::string> Lobby::lowestWithFreeSeat() const {
     if (open && e->seats_taken < 2) return e->match;
   }
   return std::nullopt;
+}
+
+std::map<std::string, Lobby::Server>::iterator Lobby::heaviest() {
+  auto most = servers_.end();
+  for (auto it = servers_.begin(); it != servers_.end(); ++it) {
+    if (most == servers_.end() ||
+        std::make_pair(it->second.matches.size(), it->second.seen) >
+            std::make_pair(most->second.matches.size(), most->second.seen)) {
+      most = it;
+    }
+  }
+  return most;
 }
 
 std::optional<std::string> Lobby::firstInPlay() const {

@@ -1,95 +1,50 @@
-// The gateway's lobby with its bounds per server id and in total, largest first.
+// The gateway's lobby: client::Lobby's bounds, each entry's JSON, the message cut largest first.
 #include "client/web/bounded_lobby.h"
 
 #include <algorithm>
+#include <set>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "client/net/lobby.h"
 #include "client/web/web_json.h"
 
 namespace pool::web {
 
-bool BoundedLobby::MatchLess::operator()(const std::string& a, const std::string& b) const {
-  return client::matchOrder(a, b);
-}
-
 bool BoundedLobby::update(const client::LobbyEntry& entry) {
-  const auto it = entries_.find(entry.match);
-  if (it != entries_.end() && it->second.entry.server == entry.server) {
-    it->second = Kept{entry, lobbyEntryJson(entry)};
-    return true;
-  }
-  if (it != entries_.end()) remove(entry.match);  // the same match under another server id
-  const auto server = servers_.find(entry.server);
-  const std::size_t held = server == servers_.end() ? 0 : server->second.matches.size();
-  if (held >= limits_.per_server) {
-    ++refused_;
+  const client::LobbyUpdate done = lobby_.update(entry);
+  if (!done.kept) {
+    json_.erase(entry.match);  // not kept (a kept match moved to a full server id is gone)
     return false;
   }
-  if (entries_.size() >= limits_.kept) {
-    const auto most = heaviest();
-    if (most == servers_.end() || most->second.matches.size() < held + 2) {
-      ++refused_;
-      return false;
-    }
-    remove(*most->second.matches.rbegin());
-  }
-  add(entry);
+  if (!done.gave_way.empty()) json_.erase(done.gave_way);
+  json_[entry.match] = lobbyEntryJson(entry);
   return true;
 }
 
-void BoundedLobby::add(const client::LobbyEntry& entry) {
-  auto [server, fresh] = servers_.try_emplace(entry.server);
-  if (fresh) server->second.seen = next_seen_++;
-  server->second.matches.insert(entry.match);
-  entries_[entry.match] = Kept{entry, lobbyEntryJson(entry)};
-}
-
 void BoundedLobby::remove(const std::string& match) {
-  const auto it = entries_.find(match);
-  if (it == entries_.end()) return;
-  const auto server = servers_.find(it->second.entry.server);
-  if (server != servers_.end()) {
-    server->second.matches.erase(match);
-    if (server->second.matches.empty()) servers_.erase(server);
-  }
-  entries_.erase(it);
-}
-
-const client::LobbyEntry* BoundedLobby::find(const std::string& match) const {
-  const auto it = entries_.find(match);
-  return it == entries_.end() ? nullptr : &it->second.entry;
-}
-
-std::map<std::string, BoundedLobby::Server>::iterator BoundedLobby::heaviest() {
-  auto most = servers_.end();
-  for (auto it = servers_.begin(); it != servers_.end(); ++it) {
-    if (most == servers_.end() ||
-        std::make_pair(it->second.matches.size(), it->second.seen) >
-            std::make_pair(most->second.matches.size(), most->second.seen)) {
-      most = it;
-    }
-  }
-  return most;
+  lobby_.remove(match);
+  json_.erase(match);
 }
 
 std::string BoundedLobby::message() const {
   // How many entries each server id keeps in the message: its lowest-numbered ones.
+  using Json = std::map<std::string, std::string>::value_type;  // match, its JSON
   struct Share {
-    const Server* server;
-    std::vector<const Kept*> kept;  ///< lowest-numbered first
+    const client::Lobby::Server* server;
+    std::vector<const Json*> kept;  ///< lowest-numbered first
   };
   std::map<std::string, Share> shares;
   std::size_t count = 0;
   std::size_t bytes = lobbyJson({}).size();
-  for (const auto& [id, server] : servers_) {
+  for (const auto& [id, server] : lobby_.servers()) {
     Share& share = shares[id];
     share.server = &server;
     for (const std::string& match : server.matches) {
-      const Kept& kept = entries_.at(match);
-      share.kept.push_back(&kept);
-      bytes += kept.json.size() + 1;
+      const Json& json = *json_.find(match);
+      share.kept.push_back(&json);
+      bytes += json.second.size() + 1;
       ++count;
     }
   }
@@ -101,20 +56,19 @@ std::string BoundedLobby::message() const {
     const std::string id = std::get<2>(*largest);
     order.erase(largest);
     Share& share = shares.at(id);
-    bytes -= share.kept.back()->json.size() + 1;
+    bytes -= share.kept.back()->second.size() + 1;
     --count;
     share.kept.pop_back();
     if (!share.kept.empty()) order.emplace(share.kept.size(), share.server->seen, id);
   }
-  std::vector<const Kept*> served;
+  std::vector<const Json*> served;
   for (const auto& [id, share] : shares)
     served.insert(served.end(), share.kept.begin(), share.kept.end());
-  std::sort(served.begin(), served.end(), [](const Kept* a, const Kept* b) {
-    return client::matchOrder(a->entry.match, b->entry.match);
-  });
+  std::sort(served.begin(), served.end(),
+            [](const Json* a, const Json* b) { return client::matchOrder(a->first, b->first); });
   std::vector<const std::string*> texts;
   texts.reserve(served.size());
-  for (const Kept* kept : served) texts.push_back(&kept->json);
+  for (const Json* kept : served) texts.push_back(&kept->second);
   return lobbyJson(texts);
 }
 
