@@ -94,8 +94,17 @@ TEST_F(ForcedForfeitTest, ADisposalAndAFloodUnderHerIdDoNotTakeHerSeat) {
   })) << logs();
   ASSERT_FALSE(stalledOnLayout(recorder));
 
-  // Her presence, disposed by someone else: nothing happens.
+  // Her presence, disposed by someone else: nothing happens. (Seen by the server before the flood
+  // below writes to her instance again: a disposal not yet read when a new sample of its instance
+  // arrives is no longer there to read.)
   ASSERT_TRUE(stranger.dispose(victim));
+  ASSERT_TRUE(recorder.pump(20s,
+                            [&] {
+                              return server.err().find("disposal by another participant ignored") !=
+                                     std::string::npos;
+                            }))
+      << "the server never told of the disposal\n"
+      << logs();
   // Then spectate requests under her id, 3000 a second, while she stalls past her lease (5 s; at
   // most her participant's, 10 s, after the disposal) and shows away, and comes back: her rejoin
   // must get through.

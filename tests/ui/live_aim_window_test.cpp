@@ -181,6 +181,23 @@ TEST_F(LiveAimWindowTest, TheSpectatorSeesTheShootersCueMoveAndSettleOnTheirAim)
     }
     return std::nullopt;
   };
+  // The sweep's start, held until the window draws it (a loaded machine may take a while to
+  // show the first aims: the sweep itself must not run past a window not yet drawing them).
+  const auto drewStart = [&] {
+    for (const auto& d : windowLines("drawn")) {
+      if (d.contains("cue_stick") && d["cue_stick"]["source"] == "remote" &&
+          std::abs(drawnYaw(d["cue_stick"]) - kFrom) < 1 * kDeg) {
+        return true;
+      }
+    }
+    return false;
+  };
+  for (const auto until = std::chrono::steady_clock::now() + 20s;
+       !drewStart() && std::chrono::steady_clock::now() < until;) {
+    ASSERT_TRUE(shooter.sendAim(aimAt(kFrom, 0.0, false)));
+    pump([] { return false; }, 100ms);
+  }
+  ASSERT_TRUE(drewStart()) << "the window never drew the sweep's start\n" << windowErr();
   // Aim: 1.2 s sweeping from 26 to 3 degrees at 30 Hz, then still (keep-alives) for at least
   // 1.5 s and until the window captured a settled frame (at most 20 s).
   const auto start = std::chrono::steady_clock::now();
