@@ -8,12 +8,12 @@ namespace pool::net::topics {
 inline constexpr std::string_view kMatchInfo = "pool/MatchInfo";              ///< lobby, key match
 inline constexpr std::string_view kJoinRequest = "pool/JoinRequest";          ///< key client
 inline constexpr std::string_view kJoinReply = "pool/JoinReply";              ///< key client
-inline constexpr std::string_view kShotCommand = "pool/ShotCommand";          ///< key match + seat
+inline constexpr std::string_view kShotCommand = "pool/ShotCommand";          ///< no key
 inline constexpr std::string_view kShotResult = "pool/ShotResult";            ///< key match + seat
 inline constexpr std::string_view kTableSnapshot = "pool/TableSnapshot";      ///< key match
 inline constexpr std::string_view kMatchState = "pool/MatchState";            ///< key match
-inline constexpr std::string_view kPracticeCommand = "pool/PracticeCommand";  ///< key match + seat
-inline constexpr std::string_view kAimCommand = "pool/AimCommand";            ///< key match + seat
+inline constexpr std::string_view kPracticeCommand = "pool/PracticeCommand";  ///< no key
+inline constexpr std::string_view kAimCommand = "pool/AimCommand";            ///< no key
 inline constexpr std::string_view kCueAim = "pool/CueAim";                    ///< key match
 
 }  // namespace pool::net::topics
