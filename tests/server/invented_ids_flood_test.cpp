@@ -183,11 +183,12 @@ TEST_F(InventedIdsFlood, CostsNoMemoryAndTheRealShotIsReadWithin100Ms) {
       stranger.sent(), stranger.seconds(), stranger.sent() / stranger.seconds(), delay_ms, before,
       after, after - before);
   EXPECT_GT(stranger.sent() / stranger.seconds(), 2'000.0) << "not a flood";
-  // 50 000 ids at the ~320 B a reader's instance costs would be 16 MB: 10 MB is the bound
-  // on what a flood may leave behind (allocator slack included).
-  EXPECT_LT(after - before, 10.0);
-  // Read within 100 ms (the bound); the sanitizers' slowdown is not the server's.
+  // Both bounds are the issue's, for the plain build: 10 MB on what a flood may leave behind
+  // (allocator slack included; 50 000 ids at the ~320 B a reader's instance costs would be
+  // 16 MB), and 100 ms to read the real shot. Under AddressSanitizer freed memory waits in its
+  // quarantine (256 MB by default) and malloc_trim does not apply, and everything is slower.
   if (!POOL_UNDER_ASAN) {
+    EXPECT_LT(after - before, 10.0);
     EXPECT_LT(delay_ms, 100.0);
   }
   EXPECT_GT(delay_ms, -5.0) << "an answer written before its command: clocks not comparable";

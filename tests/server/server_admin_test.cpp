@@ -135,7 +135,8 @@ TEST_F(ServerAdmin, OperatorListsClosesBansAndReadsCountersOnALiveServer) {
   ASSERT_TRUE(closed);
   EXPECT_STREQ(closed->last_verdict, "closed by the operator: table needs new cloth");
   EXPECT_TRUE(d.waitUntil(
-      [&] { return std::count(d.disposed_infos.begin(), d.disposed_infos.end(), "t-2") > 0; }));
+      [&] { return std::count(d.disposed_infos.begin(), d.disposed_infos.end(), "t-2") > 0; },
+      30s));
   EXPECT_FALSE(listed(admin(db, {"list"}), "t-2"));
   const std::size_t mark = c.mark();
   c.send(breakShot(two, 0, 1));
