@@ -5,7 +5,10 @@
 #include <utility>  // before Asio: Boost 1.74's awaitable.hpp uses std::exchange without it
 
 #include <sys/socket.h>
+#include <atomic>
 #include <boost/asio.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
 #include <cerrno>
 #include <chrono>
 #include <functional>
@@ -52,18 +55,53 @@ inline boost::asio::ip::tcp::socket connectFrom(boost::asio::io_context& io,
   return socket;
 }
 
-/// Runs a function when it goes out of scope: a test's reading thread is stopped and joined even
-/// when an assertion ends the test early (a joinable thread destroyed would abort the run).
-class AtScopeExit {
+/// A browser's WebSocket read on a thread of its own (answering pings, as a browser does): each
+/// message goes to `each` on that thread. The socket is shut down and the thread joined when it
+/// goes, also when an assertion ends the test early (a joinable thread destroyed would abort the
+/// run).
+class ReadingBrowser {
  public:
-  explicit AtScopeExit(std::function<void()> run) : run_(std::move(run)) {}
-  ~AtScopeExit() { run_(); }
-  AtScopeExit(const AtScopeExit&) = delete;
-  AtScopeExit& operator=(const AtScopeExit&) = delete;
+  using Socket = boost::beast::websocket::stream<boost::asio::ip::tcp::socket>;
+
+  explicit ReadingBrowser(Socket& socket, std::function<void(const std::string&)> each = {})
+      : socket_(socket), thread_([this, each = std::move(each)] {
+          boost::beast::flat_buffer in;
+          boost::beast::error_code ec;
+          for (;;) {
+            socket_.read(in, ec);
+            if (ec) break;
+            if (each) each(boost::beast::buffers_to_string(in.data()));
+            in.consume(in.size());
+          }
+          closed_ = true;
+        }) {}
+  ~ReadingBrowser() {
+    boost::beast::error_code ignored;
+    socket_.next_layer().shutdown(boost::asio::ip::tcp::socket::shutdown_both, ignored);
+    thread_.join();
+  }
+  ReadingBrowser(const ReadingBrowser&) = delete;
+  ReadingBrowser& operator=(const ReadingBrowser&) = delete;
+
+  /// Whether its reading ended before the test stopped it (pool-web closed it, or a read failed).
+  bool closed() const { return closed_.load(); }
 
  private:
-  std::function<void()> run_;
+  Socket& socket_;
+  std::atomic<bool> closed_{false};
+  std::thread thread_;  ///< last: starts once the rest is made
 };
+
+/// Polls `done` every 20 ms until it holds or `limit` passes; whether it held.
+template <class Done>
+bool pollUntil(Done&& done, std::chrono::seconds limit) {
+  for (const auto until = std::chrono::steady_clock::now() + limit;
+       std::chrono::steady_clock::now() < until;) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return done();
+}
 
 /// Whether the peer has closed `socket` (what it sent before is read and discarded first).
 inline bool closedByPeer(boost::asio::ip::tcp::socket& socket) {

@@ -98,23 +98,9 @@ TEST_F(ConnectionFloodTest, IdleAndSlowConnectionsFromOneAddressNeverLockOutABro
 
   // The browser goes on reading (answering pings as a browser does) while the flood's timeouts
   // pass: three idle timeouts.
-  std::atomic<bool> reader_closed{false};
-  std::thread reading([&] {
-    beast::flat_buffer in;
-    beast::error_code read_error;
-    while (!read_error) {
-      reader->read(in, read_error);
-      in.consume(in.size());
-    }
-    reader_closed = true;
-  });
-  AtScopeExit stop_reading([&] {
-    beast::error_code ignored;
-    reader->next_layer().shutdown(tcp::socket::shutdown_both, ignored);
-    reading.join();
-  });
+  ReadingBrowser reading(*reader);
   std::this_thread::sleep_for(std::chrono::seconds(3));
-  EXPECT_FALSE(reader_closed.load()) << "the browser that reads was closed\n" << web.err();
+  EXPECT_FALSE(reading.closed()) << "the browser that reads was closed\n" << web.err();
 
   int idle_open = 0, pending_open = 0;
   for (auto& ws : idle) idle_open += closedByPeer(ws->next_layer()) ? 0 : 1;

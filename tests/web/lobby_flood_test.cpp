@@ -67,39 +67,16 @@ TEST_F(LobbyFloodTest, ABrowserThatReadsKeepsABoundedLobbyThroughAFloodOfSignedE
   reader.handshake("127.0.0.1", "/ws");
   std::mutex mutex;
   std::vector<LobbySeen> lobbies;
-  std::atomic<bool> reader_closed{false};
-  std::thread reading([&] {
-    beast::flat_buffer in;
-    beast::error_code ec;
-    for (;;) {
-      reader.read(in, ec);
-      if (ec) break;
-      const std::string text = beast::buffers_to_string(in.data());
-      in.consume(in.size());
-      if (text.find(R"("type":"lobby")") == std::string::npos) continue;
-      const std::lock_guard<std::mutex> lock(mutex);
-      lobbies.push_back(lobbySeen(text));
-    }
-    reader_closed = true;
-  });
-  AtScopeExit stop_reading([&] {
-    beast::error_code ignored;
-    reader.next_layer().shutdown(tcp::socket::shutdown_both, ignored);
-    reading.join();
+  ReadingBrowser reading(reader, [&](const std::string& text) {
+    if (text.find(R"("type":"lobby")") == std::string::npos) return;
+    const std::lock_guard<std::mutex> lock(mutex);
+    lobbies.push_back(lobbySeen(text));
   });
   const auto lastLobby = [&] {
     const std::lock_guard<std::mutex> lock(mutex);
     return lobbies.empty() ? LobbySeen{} : lobbies.back();
   };
-  const auto waitFor = [&](auto done, std::chrono::seconds limit) {
-    for (const auto until = std::chrono::steady_clock::now() + limit;
-         std::chrono::steady_clock::now() < until;) {
-      if (done()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return done();
-  };
-  ASSERT_TRUE(waitFor([&] { return lastLobby().real; }, std::chrono::seconds(20)))
+  ASSERT_TRUE(pollUntil([&] { return lastLobby().real; }, std::chrono::seconds(20)))
       << "the real server's match never reached the browser\n"
       << logs();
 
@@ -115,7 +92,7 @@ TEST_F(LobbyFloodTest, ABrowserThatReadsKeepsABoundedLobbyThroughAFloodOfSignedE
       std::chrono::duration<double>(std::chrono::steady_clock::now() - flood_from).count();
   // pool-web has taken all of them: 256 kept for that id, the other 1 744 refused.
   const std::regex taken("lobby 257 kept 1744 refused");
-  ASSERT_TRUE(waitFor(
+  ASSERT_TRUE(pollUntil(
       [&] {
         const std::string err = web.err();
         return std::regex_search(err, taken);
@@ -123,8 +100,8 @@ TEST_F(LobbyFloodTest, ABrowserThatReadsKeepsABoundedLobbyThroughAFloodOfSignedE
       std::chrono::seconds(20)))
       << web.err().substr(0, 4000);
   // and its browsers heard the lobby as it is now (sent at most every 0.5 s).
-  EXPECT_TRUE(
-      waitFor([&] { return lastLobby().flood > 0 && lastLobby().real; }, std::chrono::seconds(5)));
+  EXPECT_TRUE(pollUntil([&] { return lastLobby().flood > 0 && lastLobby().real; },
+                        std::chrono::seconds(5)));
 
   // A browser connecting now gets the bounded lobby, the real server's match in it.
   websocket::stream<tcp::socket> late(connectFrom(io, "127.0.0.1", port));
@@ -138,7 +115,7 @@ TEST_F(LobbyFloodTest, ABrowserThatReadsKeepsABoundedLobbyThroughAFloodOfSignedE
   EXPECT_GT(first.flood, 0u);
   EXPECT_LT(first.flood, 256u) << "the lobby was not cut to its bytes";
 
-  EXPECT_FALSE(reader_closed.load()) << "the browser that reads was dropped\n" << web.err();
+  EXPECT_FALSE(reading.closed()) << "the browser that reads was dropped\n" << web.err();
   std::size_t heard = 0, largest = 0;
   {
     const std::lock_guard<std::mutex> lock(mutex);

@@ -41,41 +41,19 @@ TEST_F(PinFloodTest, ANewServerIsSeenPastAThousandMadeUpIdsAndAKnownOneKeepsItsK
   reader.handshake("127.0.0.1", "/ws");
   std::mutex mutex;
   std::set<std::string> matches;
-  std::atomic<bool> reader_closed{false};
-  std::thread reading([&] {
-    beast::flat_buffer in;
-    beast::error_code ec;
-    for (;;) {
-      reader.read(in, ec);
-      if (ec) break;
-      const auto message = nlohmann::json::parse(beast::buffers_to_string(in.data()));
-      in.consume(in.size());
-      if (message["type"] != "lobby") continue;
-      std::set<std::string> now;
-      for (const auto& entry : message["matches"]) now.insert(entry["match"].get<std::string>());
-      const std::lock_guard<std::mutex> lock(mutex);
-      matches = std::move(now);
-    }
-    reader_closed = true;
-  });
-  AtScopeExit stop_reading([&] {
-    beast::error_code ignored;
-    reader.next_layer().shutdown(tcp::socket::shutdown_both, ignored);
-    reading.join();
+  ReadingBrowser reading(reader, [&](const std::string& text) {
+    const auto message = nlohmann::json::parse(text);
+    if (message["type"] != "lobby") return;
+    std::set<std::string> now;
+    for (const auto& entry : message["matches"]) now.insert(entry["match"].get<std::string>());
+    const std::lock_guard<std::mutex> lock(mutex);
+    matches = std::move(now);
   });
   const auto lobby = [&] {
     const std::lock_guard<std::mutex> lock(mutex);
     return matches;
   };
-  const auto waitFor = [&](auto done, std::chrono::seconds limit) {
-    for (const auto until = std::chrono::steady_clock::now() + limit;
-         std::chrono::steady_clock::now() < until;) {
-      if (done()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return done();
-  };
-  ASSERT_TRUE(waitFor([&] { return lobby().count("srv-1") != 0; }, std::chrono::seconds(20)))
+  ASSERT_TRUE(pollUntil([&] { return lobby().count("srv-1") != 0; }, std::chrono::seconds(20)))
       << logs();
 
   // The flood: 1 100 server ids, each with a key of its own and one lobby entry.
@@ -85,7 +63,7 @@ TEST_F(PinFloodTest, ANewServerIsSeenPastAThousandMadeUpIdsAndAKnownOneKeepsItsK
     const std::string id = "made-up" + std::to_string(i);
     ASSERT_TRUE(forger.publishInfo(id, id + "-1")) << i;
   }
-  ASSERT_TRUE(waitFor([&] { return lobby().size() >= 1101; }, std::chrono::seconds(20)))
+  ASSERT_TRUE(pollUntil([&] { return lobby().size() >= 1101; }, std::chrono::seconds(20)))
       << "the flood's entries never all reached the browser: " << lobby().size();
   // An entry under the known server's id, signed by yet another key.
   forger.signWith(protocol::generateKeyPair());
@@ -96,13 +74,13 @@ TEST_F(PinFloodTest, ANewServerIsSeenPastAThousandMadeUpIdsAndAKnownOneKeepsItsK
         {"--domain", std::to_string(domain_), "--tables", "1", "--server-id", "late", "--db",
          file("late.db")},
         "late");
-  EXPECT_TRUE(waitFor([&] { return lobby().count("late-1") != 0; }, std::chrono::seconds(20)))
+  EXPECT_TRUE(pollUntil([&] { return lobby().count("late-1") != 0; }, std::chrono::seconds(20)))
       << "the server started after the flood is not in the lobby\n"
       << web.err().substr(0, 4000);
   const auto seen = lobby();
   EXPECT_EQ(seen.count("srv-1"), 1u);
   EXPECT_EQ(seen.count("srv-9"), 0u) << "an entry under a known id signed by another key was taken";
-  EXPECT_FALSE(reader_closed.load()) << "the browser that reads was dropped";
+  EXPECT_FALSE(reading.closed()) << "the browser that reads was dropped";
   std::printf("lobby after the flood: %zu matches\n", seen.size());
 }
 
