@@ -382,16 +382,20 @@ void ServerLoop::refused(const std::string& match, const CommandAnswer& answer, 
                 toString(answer.rejection.reason), escapedForLog(answer.rejection.text));
   rejections_.add(answer.rejection.reason, now);
   ++counters_.commands_refused;
-  const bool ours = registry_.find(match) && (answer.seat == 0 || answer.seat == 1);
-  if (!ours && !stray_answers_.allow(sender, now)) return;  // counted, not answered
+  if (!ourSeat(match, answer.seat) && !stray_answers_.allow(sender, now))
+    return;  // counted, not answered
   publishResult(match, answer);
+}
+
+bool ServerLoop::ourSeat(const std::string& match, int seat) const {
+  return registry_.find(match) && (seat == 0 || seat == 1);
 }
 
 void ServerLoop::publishResult(const std::string& match, const CommandAnswer& answer) {
   const auto result = answer.done ? finalReport(match, *answer.done) : commandReport(match, answer);
   // A result keyed by a match or seat that does not exist is not kept for late readers: the
   // writer would otherwise hold one instance per made-up key for good.
-  const bool keep = registry_.find(match) && (answer.seat == 0 || answer.seat == 1);
+  const bool keep = ourSeat(match, answer.seat);
   warnIfFailed(transport_.publish(result, keep), "shot result");
 }
 

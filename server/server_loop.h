@@ -105,6 +105,8 @@ class ServerLoop {
   /// Relays the shooters' aims that pass the gate (aim_gate.h); drops the rest, counted.
   void relayAims(double now);
   void publishFrames(double now);
+  /// Whether `match` is one of this server's and `seat` one of its seats (0 or 1).
+  bool ourSeat(const std::string& match, int seat) const;
   void publishResult(const std::string& match, const CommandAnswer& answer);
   /// Counts and answers a refusal of a command from `sender` (IncomingSigned::sender).
   void refused(const std::string& match, const CommandAnswer& answer, double now,
