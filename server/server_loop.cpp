@@ -157,11 +157,7 @@ void ServerLoop::readJoins(double now) {
   }
   // Joins, refused commands and dropped aims alike: a flood of any of them frees what it used
   // once it is over (DDS samples and instances, answers), which glibc keeps until trimmed.
-  std::uint64_t aims_dropped = 0;
-  for (int i = 1; i < static_cast<int>(AimDrop::Count); ++i) {
-    aims_dropped += aims_.dropped(static_cast<AimDrop>(i));
-  }
-  if (heap_trim_.due(joins_.total() + counters_.commands_refused + aims_dropped, now)) {
+  if (heap_trim_.due(joins_.total() + counters_.commands_refused + aims_.droppedInAll(), now)) {
     const long released = releaseFreeHeap();
     spdlog::info("a flood is over: {:.1f} MB of freed memory given back, {:.1f} MB of heap in use",
                  static_cast<double>(released) / (1024.0 * 1024.0),
@@ -359,10 +355,7 @@ void ServerLoop::relayAims(double now) {
     warnIfFailed(transport_.publish(*read), "aim");
   }
   // The drops are counted, not logged one by one: one line at most every 10 s while they come.
-  std::uint64_t dropped = 0;
-  for (int i = 1; i < static_cast<int>(AimDrop::Count); ++i) {
-    dropped += aims_.dropped(static_cast<AimDrop>(i));
-  }
+  const std::uint64_t dropped = aims_.droppedInAll();
   if (dropped != aims_seen_ && now - aims_logged_ >= 10.0) {
     aims_logged_ = now;
     aims_seen_ = dropped;

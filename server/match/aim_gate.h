@@ -61,6 +61,12 @@ class AimGate {
   /// Aims dropped so far, by reason (index: AimDrop), and relayed.
   std::uint64_t dropped(AimDrop why) const { return dropped_[static_cast<std::size_t>(why)]; }
   std::uint64_t relayed() const { return dropped_[0]; }
+  /// Aims dropped so far, whatever the reason.
+  std::uint64_t droppedInAll() const {
+    std::uint64_t n = 0;
+    for (std::size_t i = 1; i < static_cast<std::size_t>(AimDrop::Count); ++i) n += dropped_[i];
+    return n;
+  }
 
  private:
   struct SeatTrack {
