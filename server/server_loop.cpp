@@ -65,7 +65,10 @@ void ServerLoop::step(double now) {
     publishResult(match, answer);
   }
   const auto closed = registry_.sweepEmpty();
-  for (const auto& id : closed) dispose(id);
+  for (const auto& id : closed) {
+    publishClosing(id);
+    dispose(id);
+  }
   // A table is always free for the next players (two asking at once meet there).
   if (const int opened = registry_.keepFreeTables(config_.tables); opened > 0) {
     spdlog::info("opened {} free table{}", opened, opened == 1 ? "" : "s");
@@ -483,7 +486,8 @@ void ServerLoop::publishChanges(double now) {
     }
     published.spectators = m->spectators();
     published.info_at = now;
-    warnIfFailed(transport_.publish(lobbyEntryOf(*m, registry_.serverId())), "match info");
+    published.entry = lobbyEntryOf(*m, registry_.serverId());
+    warnIfFailed(transport_.publish(*published.entry), "match info");
   }
 }
 
@@ -492,6 +496,16 @@ void ServerLoop::dispose(const std::string& match) {
   transport_.dispose(match);
   published_.erase(match);
   aims_.forget(match);
+}
+
+void ServerLoop::publishClosing(const std::string& match) {
+  const auto it = published_.find(match);
+  if (it == published_.end() || !it->second.entry ||
+      it->second.entry->phase == protocol::MatchPhase::Closed) {
+    return;
+  }
+  it->second.entry->phase = protocol::MatchPhase::Closed;
+  warnIfFailed(transport_.publish(*it->second.entry), "match info");
 }
 
 void ServerLoop::disposeAll() {

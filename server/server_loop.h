@@ -117,6 +117,9 @@ class ServerLoop {
   void storeShot(const CommandAnswer& answer, const std::string& match);
   void stepReplay(double now);
   void storeChanges(const std::vector<std::string>& closed);
+  /// Sends a match's last lobby entry again, saying it is closed: a client that reads the entry
+  /// and its disposal in one take sees only the entry (DDS sends no separate notice then).
+  void publishClosing(const std::string& match);
   void dispose(const std::string& match);
   void serveAdmin(double now);
   /// Runs `write` (one transaction) and counts the time it took.
@@ -137,6 +140,7 @@ class ServerLoop {
     std::uint64_t revision = 0;
     std::size_t spectators = 0;
     double info_at = -1e9;  ///< when its lobby entry went out
+    std::optional<protocol::LobbyEntry> entry;  ///< the lobby entry that went out last
   };
   std::map<std::string, Published> published_;   ///< by match id
   std::map<std::string, std::uint64_t> stored_;  ///< match id -> revision last stored

@@ -198,6 +198,14 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
     auto entry = fromWire(*sample);
     if (!entry) {
       out.push_back(Result<LobbyEvent>::fail(entry.error()));
+    } else if (entry->phase == protocol::MatchPhase::Closed ||
+               sample.meta().instance == InstanceState::NoWriters) {
+      // A signed last entry saying the match is closed, or an entry whose server went before it
+      // was read: DDS then marks the entry's instance and sends no separate notice, so the
+      // match is gone now. (A disposal on its own counts only from the entry's writer, above.)
+      e_->lobby_writers.erase(match);
+      const bool closed = entry->phase == protocol::MatchPhase::Closed;
+      out.push_back(Result<LobbyEvent>::ok(protocol::MatchGone{std::move(match), closed}));
     } else {
       if (e_->lobby_writers.size() >= kMaxLobbyWriters) e_->lobby_writers.clear();
       e_->lobby_writers[match] = sample.meta().publication_handle;

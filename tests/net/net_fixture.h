@@ -39,6 +39,8 @@ enum Domain : std::uint32_t {
   kReadCache,
   kLateReply,
   kConstruction,
+  kDisposeBeforeTake,
+  kClosingEntry,
 };
 
 /// Points Cyclone at the loopback-only configuration; call before creating participants.

@@ -272,11 +272,12 @@ class TestClient {
 
   void pump() {
     for (auto& s : infos_.takeWithNotices()) {
-      if (s.meta().valid) {
-        infos.push_back(std::move(s));
-      } else if (s.meta().instance == net::InstanceState::Disposed) {
+      // A disposal that comes before the entry's last sample is read marks that sample's
+      // instance, with no notice of its own.
+      if (s.meta().instance == net::InstanceState::Disposed) {
         disposed_infos.emplace_back(net::textOf(s->match));
       }
+      if (s.meta().valid) infos.push_back(std::move(s));
     }
     drain(replies_, replies);
     drain(results_, results);
