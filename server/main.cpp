@@ -197,7 +197,8 @@ int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStor
   const std::size_t count = commands.size();
   MatchRegistry registry(registryOptions(config), *kit);
   for (int i = 0; i < config.tables; ++i) registry.open();
-  Match* target = registry.open("Replay of " + stored->id, stored->rack_seed);
+  Match* target =
+      registry.open("Replay of " + stored->id, stored->rack_seed, stored->rack_generator);
   TokenSource tokens(randomSeed());
   MatchReplay replay(*stored, std::move(commands), *target, {tokens.token(), tokens.token()},
                      config.fast ? 0.0 : 1.0);

@@ -10,6 +10,7 @@
 #include "physics/ball.h"
 #include "physics/cue_strike.h"
 #include "physics/simulation.h"
+#include "table/rack.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
 
@@ -23,6 +24,8 @@ struct Scenario {
   physics::CueShot shot;
   physics::SimOptions options;
   std::uint64_t seed = 0;
+  /// How `rack` lays out its balls: frozen (default) or with a hand rack's gaps, from `seed`.
+  table::RackGenerator rack_generator = table::RackGenerator::Frozen;
 };
 
 /// Parses and validates scenario JSON text. A failure's reason is one line naming the field,

@@ -42,7 +42,8 @@ std::string readRack(const nlohmann::json& rack, Scenario& s, Positions& racked)
   const auto type =
       rack.is_string() ? table::rackTypeFromString(rack.get<std::string>()) : std::nullopt;
   if (!type) return "rack: must be \"8ball\", \"9ball\" or \"10ball\", got " + shortDump(rack);
-  for (const auto& b : table::rackBalls(*type, s.spec, s.spec.params.ball_radius, s.seed))
+  const double r = s.spec.params.ball_radius;
+  for (const auto& b : table::rackFor(*type, s.spec, r, s.seed, s.rack_generator))
     racked[b.id] = b.pos;
   racked[physics::kCueBall] = table::spotsFor(s.spec).head_spot;
   return "";

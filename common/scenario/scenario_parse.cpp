@@ -21,8 +21,8 @@ struct TopLevel {
 
 std::string readTopLevel(const nlohmann::json& doc, TopLevel& top, Scenario& s) {
   ObjectReader reader(doc, "");
-  reader.onlyKnown({"description", "table", "params", "models", "balls", "rack", "shot", "seed",
-                    "max_time", "trajectory_hz"});
+  reader.onlyKnown({"description", "table", "params", "models", "balls", "rack", "rack_gaps",
+                    "shot", "seed", "max_time", "trajectory_hz"});
   std::string description;  // free text for people; not used
   reader.string("description", description);
   reader.string("table", top.table);
@@ -31,6 +31,13 @@ std::string readTopLevel(const nlohmann::json& doc, TopLevel& top, Scenario& s) 
   top.balls = reader.member("balls");
   top.rack = reader.member("rack");
   top.shot = reader.member("shot", Presence::Required);
+  std::string gaps = "frozen";
+  reader.string("rack_gaps", gaps);
+  if (gaps == "hand") {
+    s.rack_generator = table::RackGenerator::Hand;
+  } else if (gaps != "frozen") {
+    reader.fail("rack_gaps", "must be \"frozen\" or \"hand\"");
+  }
   reader.unsignedInteger("seed", s.seed);
   reader.numberIn("max_time", kMaxTime, s.options.max_time);
   reader.numberIn("trajectory_hz", kTrajectoryHz, s.options.sample_hz);

@@ -1,4 +1,5 @@
-// Spots, 8-ball and 9-ball racks (deterministic shuffles) and re-spotting on the long string.
+// Spots, 8-, 9- and 10-ball racks (deterministic shuffles, frozen or hand-racked) and re-spotting
+// on the long string.
 #include "table/rack.h"
 
 #include <algorithm>
@@ -146,6 +147,27 @@ std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, doubl
       return tenBall(spec, ball_radius, seed, gap);
   }
   return {};
+}
+
+std::optional<RackGenerator> rackGeneratorOf(std::int64_t value) {
+  if (value == static_cast<int>(RackGenerator::Frozen)) return RackGenerator::Frozen;
+  if (value == static_cast<int>(RackGenerator::Hand)) return RackGenerator::Hand;
+  return std::nullopt;
+}
+
+std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double ball_radius,
+                                   std::uint64_t seed, RackGenerator generator) {
+  if (generator == RackGenerator::Frozen) return rackBalls(type, spec, ball_radius, seed);
+  auto balls = rackBalls(type, spec, ball_radius, seed, 2.0 * kRackStray);
+  // Its own stream, so that the order of the balls stays the one a Frozen rack of the seed has.
+  SplitMix64 rng(splitMix64(seed ^ 0x68616e647261636bULL));
+  constexpr double kTwoPi = 6.283185307179586;
+  for (BallPlacement& b : balls) {
+    const double r = kRackStray * std::sqrt(rng.uniform());  // uniform over the disc
+    const double a = kTwoPi * rng.uniform();
+    b.pos += Vec2(r * std::cos(a), r * std::sin(a));
+  }
+  return balls;
 }
 
 Vec2 respotPosition(const TableSpec& spec, double ball_radius, const std::vector<Vec2>& occupied) {

@@ -40,6 +40,28 @@ struct BallPlacement {
 std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
                                      std::uint64_t seed, double gap = 0.0);
 
+/// How a match's racks are laid out; stored with each match, so that a stored match racks the
+/// same after an upgrade that changes the generator.
+enum class RackGenerator : int {
+  Frozen = 0,  ///< every ball touching its neighbours (matches stored before racks had gaps)
+  Hand = 1,    ///< small seeded gaps and offsets, as a racking with a triangle leaves
+};
+inline constexpr RackGenerator kCurrentRackGenerator = RackGenerator::Hand;
+/// The generator stored as `value`; none for a value this program does not know.
+std::optional<RackGenerator> rackGeneratorOf(std::int64_t value);
+
+/// The most a hand-racked ball's centre strays from its slot in a frozen rack, m: the WPA's
+/// tolerance on a ball's diameter, 2 1/4 in ± 0.005 in (WPA Equipment Specifications, "Balls"),
+/// 0.127 mm. Balls of a set differ by up to twice that, so no triangle freezes them all; each
+/// neighbour pair is 0 to 0.51 mm apart (its slots 0.254 mm apart, each ball within 0.127 mm).
+inline constexpr double kRackStray = 0.127e-3;
+
+/// The rack of `type` laid out by `generator`: Frozen is rackBalls with no gap; Hand puts the
+/// slots 2 × kRackStray apart and moves each ball by up to kRackStray in a direction, both drawn
+/// from `seed` (the same seed also chooses the order, as for Frozen). No two balls overlap.
+std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double ball_radius,
+                                   std::uint64_t seed, RackGenerator generator);
+
 /// Where a re-spotted ball goes: the foot spot, or the nearest free point behind it on the long
 /// string (toward the foot cushion), then in front of it. `occupied` are the centres of the balls
 /// on the table.

@@ -35,14 +35,15 @@ std::vector<double> timesOf(const std::vector<physics::Sample>& frames) {
 }  // namespace
 
 Match::Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner,
-             MatchOptions options, std::uint64_t rack_seed)
+             MatchOptions options, std::uint64_t rack_seed, table::RackGenerator generator)
     : id_(std::move(id)),
       name_(std::move(name)),
       runner_(std::move(runner)),
       options_(options),
       rack_seed_(rack_seed),
+      rack_generator_(generator),
       settings_(options.settings) {
-  balls_ = rackLayout(runner_->kit(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
+  balls_ = layout(layouts_++, settings_.game);
 }
 
 Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
@@ -53,6 +54,7 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
       options_(options),
       rack_seed_(snapshot.rack_seed),
       layouts_(snapshot.layouts),
+      rack_generator_(snapshot.rack_generator),
       seats_(snapshot.seats),
       started_(snapshot.started),
       closed_(snapshot.closed),
@@ -105,7 +107,7 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   if (opens && settings && *settings != settings_) {
     settings_ = *settings;
     // The same layout number again: the racks of a match do not depend on who chose what.
-    balls_ = rackLayout(table(), rack_seed_ + layouts_ - 1, rules::rackTypeOf(settings_.game));
+    balls_ = layout(layouts_ - 1, settings_.game);
   }
   touch();
   if (practice() && !started_) startPractice();
@@ -463,6 +465,7 @@ MatchSnapshot Match::snapshot() const {
   out.id = id_;
   out.name = name_;
   out.rack_seed = rack_seed_;
+  out.rack_generator = rack_generator_;
   out.layouts = settled.layouts_;
   out.started = settled.started_;
   out.closed = settled.closed_;
@@ -483,7 +486,7 @@ bool Match::empty() const {
 
 void Match::startRack(int breaker) {
   game_ = rules::newRack(breaker);
-  balls_ = rackLayout(table(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
+  balls_ = layout(layouts_++, settings_.game);
   ++rack_;
   started_ = true;
   last_verdict_.clear();
@@ -496,6 +499,10 @@ void Match::startRack(int breaker) {
   touch();
 }
 
+std::vector<physics::Ball> Match::layout(std::uint64_t number, rules::Game game) const {
+  return rackLayout(table(), rack_seed_ + number, rules::rackTypeOf(game), rack_generator_);
+}
+
 void Match::commit(const rules::Verdict& verdict, std::vector<physics::Ball> after, int shooter) {
   game_ = verdict.next;
   balls_ = std::move(after);
@@ -503,7 +510,7 @@ void Match::commit(const rules::Verdict& verdict, std::vector<physics::Ball> aft
   if (!verdict.legal()) ++seats_[static_cast<std::size_t>(shooter)].fouls;
   if (verdict.rerack) {
     // A re-rack is a fresh rack of the same game: new layout, fouls cleared.
-    balls_ = rackLayout(table(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
+    balls_ = layout(layouts_++, settings_.game);
     for (Seat& s : seats_) s.fouls = 0;
   }
   restartClock(0.0);

@@ -40,8 +40,10 @@ struct DueFrames {
 /// signed uses up its sequence number.
 class Match {
  public:
+  /// A new match whose racks `generator` lays out from `rack_seed`.
   Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner, MatchOptions options,
-        std::uint64_t rack_seed);
+        std::uint64_t rack_seed,
+        table::RackGenerator generator = table::kCurrentRackGenerator);
   /// A match resumed from `snapshot` (a restarted server): its seated players are away since
   /// `now`, so the grace period starts at the resume.
   Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner, MatchOptions options,
@@ -195,6 +197,8 @@ class Match {
     std::optional<ShotPlan> plan;
   };
 
+  /// The match's rack number `number` (from 0) of `game`: each number racks the same every time.
+  std::vector<physics::Ball> layout(std::uint64_t number, rules::Game game) const;
   CommandAnswer accept(const protocol::ShotRequest& command);
   /// Runs a checked shot (handleShot, or a practice table's Again) and puts it in motion.
   CommandAnswer runPlan(const protocol::ShotRequest& command, ShotPlan plan, double now);
@@ -228,6 +232,8 @@ class Match {
   MatchOptions options_;
   std::uint64_t rack_seed_;
   std::uint64_t layouts_ = 0;  ///< racks laid out so far (each from its own seed)
+  /// How its racks are laid out: the generator of the program that opened it.
+  table::RackGenerator rack_generator_ = table::kCurrentRackGenerator;
   std::array<Seat, 2> seats_{};
   std::set<std::string> spectators_;
   bool started_ = false;

@@ -23,7 +23,7 @@ void sortById(std::vector<physics::Ball>& balls) {
 
 void Match::startPractice() {
   game_ = rules::practiceState();
-  balls_ = rackLayout(table(), rack_seed_ + layouts_++, rules::rackTypeOf(settings_.game));
+  balls_ = layout(layouts_++, settings_.game);
   rack_ = 1;
   started_ = true;
   last_verdict_ = "practice: " + std::string(rules::toString(settings_.game)) + " rack";
@@ -127,8 +127,7 @@ Rejection Match::practiceChange(const protocol::PracticeRequest& command) {
         return refuse(Reject::BadPractice, "rack: must be 8, 9, 10 or 0 (clear)");
       }
       rememberStep({}, {});
-      const auto type = rules::rackTypeOf(game.value_or(settings_.game));
-      balls_ = rackLayout(table(), rack_seed_ + layouts_++, type);
+      balls_ = layout(layouts_++, game.value_or(settings_.game));
       if (game) {
         settings_.game = *game;
         last_verdict_ = "practice: " + std::string(rules::toString(*game)) + " rack";

@@ -35,13 +35,14 @@ MatchRegistry::MatchRegistry(RegistryOptions options, std::shared_ptr<const Tabl
       server_id_(options_.server_id.empty() ? randomHex(random_) : options_.server_id),
       runner_(std::make_shared<ShotRunner>(std::move(kit))) {}
 
-Match* MatchRegistry::open(std::string name, std::optional<std::uint64_t> rack_seed) {
+Match* MatchRegistry::open(std::string name, std::optional<std::uint64_t> rack_seed,
+                           table::RackGenerator generator) {
   if (matches_.size() >= options_.max_matches) return nullptr;
   ++opened_;
   if (name.empty()) name = "Table " + std::to_string(opened_);
   const std::string id = server_id_ + "-" + std::to_string(opened_);
   matches_.push_back(std::make_unique<Match>(id, std::move(name), runner_, options_.match,
-                                             rack_seed ? *rack_seed : random_.next()));
+                                             rack_seed ? *rack_seed : random_.next(), generator));
   return matches_.back().get();
 }
 

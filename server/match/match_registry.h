@@ -44,9 +44,10 @@ class MatchRegistry {
   /// The table every match of this registry is played on.
   const TableKit& table() const { return runner_->kit(); }
 
-  /// Opens an empty match named `name` (default "Table <n>") whose racks come from `rack_seed`
-  /// (default: random); null when the server is full.
-  Match* open(std::string name = {}, std::optional<std::uint64_t> rack_seed = {});
+  /// Opens an empty match named `name` (default "Table <n>") whose racks `generator` lays out
+  /// from `rack_seed` (default: random); null when the server is full.
+  Match* open(std::string name = {}, std::optional<std::uint64_t> rack_seed = {},
+              table::RackGenerator generator = table::kCurrentRackGenerator);
   /// The open match of `id`, or null.
   Match* find(std::string_view id);
   /// Every open match, oldest first.

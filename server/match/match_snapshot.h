@@ -10,6 +10,7 @@
 #include "protocol/match_settings.h"
 #include "rules/game_state.h"
 #include "server/match/seat.h"
+#include "table/rack.h"
 
 namespace pool::server {
 
@@ -21,6 +22,8 @@ struct MatchSnapshot {
   std::uint64_t number = 0;     ///< n of the id "<server id>-<n>"
   std::uint64_t rack_seed = 0;  ///< seed of the match's racks
   std::uint64_t layouts = 0;    ///< racks laid out so far
+  /// How its racks are laid out (Frozen for matches stored before racks had gaps).
+  table::RackGenerator rack_generator = table::RackGenerator::Frozen;
   bool started = false;
   bool closed = false;
   bool client_made = false;  ///< opened by a join to "new" (closed once empty)

@@ -21,11 +21,11 @@ Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name) {
 }
 
 std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed,
-                                      table::RackType type) {
+                                      table::RackType type, table::RackGenerator generator) {
   const double r = kit.context.ball_radius;
   const Eigen::Vector2d cue_at = kit.context.spots.head_spot - Eigen::Vector2d(kBreakCueSetback, 0);
   std::vector<physics::Ball> balls{physics::restingBall(physics::kCueBall, cue_at, r)};
-  for (const auto& p : table::rackBalls(type, kit.spec, r, seed)) {
+  for (const auto& p : table::rackFor(type, kit.spec, r, seed, generator)) {
     balls.push_back(physics::restingBall(p.id, p.pos, r));
   }
   std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });

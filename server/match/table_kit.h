@@ -30,9 +30,11 @@ Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name);
 /// head spot.
 inline constexpr double kBreakCueSetback = 0.01;
 
-/// A fresh rack of `type` at rest: the object balls from the foot spot, shuffled by `seed`, and
-/// the cue ball kBreakCueSetback behind the head spot. In id order.
-std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed,
-                                      table::RackType type = table::RackType::EightBall);
+/// A fresh rack of `type` at rest: the object balls from the foot spot, laid out by `generator`
+/// from `seed` (table::rackFor), and the cue ball kBreakCueSetback behind the head spot. In id
+/// order.
+std::vector<physics::Ball> rackLayout(
+    const TableKit& kit, std::uint64_t seed, table::RackType type = table::RackType::EightBall,
+    table::RackGenerator generator = table::RackGenerator::Frozen);
 
 }  // namespace pool::server

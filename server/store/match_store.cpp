@@ -15,7 +15,7 @@ namespace {
 
 constexpr const char* kMatchColumns =
     "id, number, name, table_name, rack_seed, layouts, started, closed, client_made, shot_number, "
-    "rack, revision, last_verdict, game, balls, settings";
+    "rack, revision, last_verdict, game, balls, settings, rack_generator";
 
 std::int64_t i64(std::uint64_t v) {
   return static_cast<std::int64_t>(v);
@@ -42,6 +42,12 @@ server::MatchSnapshot matchAt(const Statement& row) {
   m.game = gameFrom(row.text(13));
   m.balls = ballsFrom(row.text(14));
   m.settings = settingsFrom(row.text(15));
+  const auto generator = table::rackGeneratorOf(row.integer(16));
+  if (!generator) {
+    throw StoreError("stored match " + m.id + " unreadable: rack generator " +
+                     std::to_string(row.integer(16)) + " is not one this program knows");
+  }
+  m.rack_generator = *generator;
   return m;
 }
 
@@ -135,7 +141,7 @@ std::uint64_t MatchStore::opened() {
 
 void MatchStore::writeMatch(const server::MatchSnapshot& m) {
   db_.prepare(std::string("INSERT OR REPLACE INTO matches(") + kMatchColumns +
-              ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+              ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
       .bind(1, m.id)
       .bind(2, i64(m.number))
       .bind(3, m.name)
@@ -152,6 +158,7 @@ void MatchStore::writeMatch(const server::MatchSnapshot& m) {
       .bind(14, gameJson(m.game))
       .bind(15, ballsJson(m.balls))
       .bind(16, settingsJson(m.settings))
+      .bind(17, std::int64_t{static_cast<int>(m.rack_generator)})
       .run();
   auto seat = db_.prepare(
       "INSERT OR REPLACE INTO seats(match, seat, player, token, client, last_seq, fouls, "

@@ -1,5 +1,5 @@
 // Schema version 1 (matches, seats, shots), 2 (seats' public keys), 3 (banned keys), 4 (the
-// server's own key) and 5 (match settings), and the refusals.
+// server's own key), 5 (match settings) and 6 (rack generators), and the refusals.
 #include "server/store/schema.h"
 
 #include <array>
@@ -53,8 +53,13 @@ constexpr const char* kVersion5 = R"sql(
 ALTER TABLE matches ADD COLUMN settings TEXT NOT NULL DEFAULT '{}';
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3, kVersion4,
-                                                         kVersion5};
+// The rack generator of each match (table::RackGenerator); 0, frozen: matches stored before.
+constexpr const char* kVersion6 = R"sql(
+ALTER TABLE matches ADD COLUMN rack_generator INTEGER NOT NULL DEFAULT 0;
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3,
+                                                         kVersion4, kVersion5, kVersion6};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

@@ -171,12 +171,14 @@ inline ShotOutcome shootReal(const std::vector<Ball>& balls, const CueShot& shot
 }
 
 /// The 8-ball break of the issue: rack of seed 0, cue ball on the head spot, 8 m/s at the apex.
-inline std::vector<Ball> breakBalls() {
+/// An 8-ball rack of `seed` laid out by `generator`, the cue ball on the head spot.
+inline std::vector<Ball> breakBalls(table::RackGenerator generator = table::RackGenerator::Frozen,
+                                    std::uint64_t seed = 0) {
   const auto& t = realTable();
   const double R = t.spec.params.ball_radius;
   const auto spots = table::spotsFor(t.spec);
   std::vector<Ball> balls{ballAt(0, spots.head_spot.x(), spots.head_spot.y(), R)};
-  for (const auto& p : table::rackBalls(table::RackType::EightBall, t.spec, R, 0)) {
+  for (const auto& p : table::rackFor(table::RackType::EightBall, t.spec, R, seed, generator)) {
     balls.push_back(ballAt(p.id, p.pos.x(), p.pos.y(), R));
   }
   return balls;

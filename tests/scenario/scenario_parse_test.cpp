@@ -115,6 +115,24 @@ TEST(ScenarioParse, RackFollowsTheSeedAndTheRackFunction) {
   }
 }
 
+TEST(ScenarioParse, HandRackGapsFollowTheSeed) {
+  const Scenario s = parseOk(R"({"rack": "9ball", "rack_gaps": "hand", "seed": 5,
+                                 "shot": {"speed": 8}})");
+  EXPECT_EQ(s.rack_generator, table::RackGenerator::Hand);
+  for (const auto& placed :
+       table::rackFor(table::RackType::NineBall, s.spec, kR, 5, table::RackGenerator::Hand)) {
+    const physics::Ball* b = ballById(s, placed.id);
+    ASSERT_NE(b, nullptr);
+    EXPECT_DOUBLE_EQ(b->pos.x(), placed.pos.x());
+    EXPECT_DOUBLE_EQ(b->pos.y(), placed.pos.y());
+  }
+  EXPECT_EQ(parseOk(R"({"rack": "8ball", "shot": {"speed": 8}})").rack_generator,
+            table::RackGenerator::Frozen);
+  EXPECT_EQ(parseScenario(R"({"rack": "8ball", "rack_gaps": "loose", "shot": {"speed": 8}})")
+                .error(),
+            "rack_gaps: must be \"frozen\" or \"hand\"");
+}
+
 TEST(ScenarioParse, BallsOverrideTheRack) {
   const Scenario s = parseOk(
       R"({"rack": "9ball", "balls": [{"id": 0, "x": -0.9, "y": 0.3}, {"id": 9, "x": 0.0, "y": -0.4},

@@ -24,6 +24,7 @@ void expectSameMatch(const server::MatchSnapshot& a, const server::MatchSnapshot
   EXPECT_EQ(a.name, b.name);
   EXPECT_EQ(a.rack_seed, b.rack_seed);
   EXPECT_EQ(a.layouts, b.layouts);
+  EXPECT_EQ(a.rack_generator, b.rack_generator);
   EXPECT_EQ(a.started, b.started);
   EXPECT_EQ(a.shot_number, b.shot_number);
   EXPECT_EQ(a.rack, b.rack);

@@ -107,6 +107,8 @@ TEST(SchemaTest, AVersionOneFileMadeByHandOpensMigratedWithItsMatches) {
   EXPECT_EQ(m->seats[1].player, "Bob");
   EXPECT_EQ(m->seats[1].fouls, 1);
   EXPECT_TRUE(m->seats[0].public_key.empty());  // the column version 2 added
+  // Version 6: a match stored before racks had gaps goes on racking frozen triangles.
+  EXPECT_EQ(m->rack_generator, table::RackGenerator::Frozen);
 
   // Version 2's column takes a key from now on.
   auto changed = *m;

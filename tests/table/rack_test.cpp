@@ -1,4 +1,5 @@
-// Racks and spots: 8-ball and 9-ball layouts, seeds, and re-spotting on the long string.
+// Racks and spots: 8-, 9- and 10-ball layouts, hand racks, seeds, and re-spotting on the long
+// string.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -207,6 +208,76 @@ TEST(Respot, BehindTheBlockingBallThenInFront) {
   EXPECT_EQ(q.y(), 0.0);
   for (const Vec2& c : row) EXPECT_GE((q - c).norm(), 2.0 * kR);
   EXPECT_LT(foot.x() - q.x(), 2.0 * kR + 1e-3);
+}
+
+// A hand rack (rack.h, kRackStray: the WPA's ±0.005 in on a ball's diameter). Tolerance 1e-12 m
+// on distances (the positions' rounding).
+TEST(HandRack, EachBallWithinItsStrayOfItsSlotAndNoneOverlapping) {
+  const TableSpec spec = nineFoot();
+  constexpr double kEps = 1e-12;
+  for (RackType type : {RackType::EightBall, RackType::NineBall, RackType::TenBall}) {
+    double smallest_gap = 1.0, largest_gap = 0.0;
+    for (std::uint64_t seed = 0; seed < 200; ++seed) {
+      const auto hand = rackFor(type, spec, kR, seed, RackGenerator::Hand);
+      const auto slots = rackBalls(type, spec, kR, seed, 2.0 * kRackStray);
+      const auto frozen = rackBalls(type, spec, kR, seed);
+      ASSERT_EQ(hand.size(), slots.size());
+      for (std::size_t i = 0; i < hand.size(); ++i) {
+        EXPECT_EQ(hand[i].id, frozen[i].id) << "the seed orders the balls as a frozen rack";
+        EXPECT_LE((hand[i].pos - slots[i].pos).norm(), kRackStray + kEps) << hand[i].id;
+      }
+      expectNoOverlap(hand);
+      // Neighbours: slots one pitch apart. Their gap lies in [0, 4 kRackStray].
+      const double pitch = 2.0 * kR + 2.0 * kRackStray;
+      for (std::size_t i = 0; i < hand.size(); ++i) {
+        for (std::size_t k = i + 1; k < hand.size(); ++k) {
+          if (std::abs((slots[i].pos - slots[k].pos).norm() - pitch) > 1e-9) continue;
+          const double gap = (hand[i].pos - hand[k].pos).norm() - 2.0 * kR;
+          EXPECT_GE(gap, -kEps);
+          EXPECT_LE(gap, 4.0 * kRackStray + kEps);
+          smallest_gap = std::min(smallest_gap, gap);
+          largest_gap = std::max(largest_gap, gap);
+        }
+      }
+    }
+    // Over 200 racks the gaps fill most of their range: from nearly touching to nearly 0.5 mm.
+    EXPECT_LT(smallest_gap, 0.5 * kRackStray);
+    EXPECT_GT(largest_gap, 3.0 * kRackStray);
+  }
+}
+
+TEST(HandRack, TheSeedFixesItAndNoTwoSeedsRackAlike) {
+  const TableSpec spec = nineFoot();
+  const auto a = rackFor(RackType::NineBall, spec, kR, 42, RackGenerator::Hand);
+  const auto again = rackFor(RackType::NineBall, spec, kR, 42, RackGenerator::Hand);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].id, again[i].id);
+    EXPECT_EQ(a[i].pos.x(), again[i].pos.x());  // bit for bit
+    EXPECT_EQ(a[i].pos.y(), again[i].pos.y());
+  }
+  std::set<std::pair<double, double>> apexes;
+  for (std::uint64_t seed = 0; seed < 50; ++seed) {
+    const auto r = rackFor(RackType::NineBall, spec, kR, seed, RackGenerator::Hand);
+    apexes.insert({r[0].pos.x(), r[0].pos.y()});
+  }
+  EXPECT_EQ(apexes.size(), 50u);
+}
+
+TEST(HandRack, AFrozenGeneratorIsTheRackStoredMatchesHad) {
+  const TableSpec spec = nineFoot();
+  for (std::uint64_t seed : {0ULL, 7ULL, 123456789ULL}) {
+    const auto old = rackBalls(RackType::EightBall, spec, kR, seed);
+    const auto frozen = rackFor(RackType::EightBall, spec, kR, seed, RackGenerator::Frozen);
+    ASSERT_EQ(old.size(), frozen.size());
+    for (std::size_t i = 0; i < old.size(); ++i) {
+      EXPECT_EQ(old[i].id, frozen[i].id);
+      EXPECT_EQ(old[i].pos, frozen[i].pos);
+    }
+  }
+  EXPECT_EQ(rackGeneratorOf(0), RackGenerator::Frozen);
+  EXPECT_EQ(rackGeneratorOf(1), RackGenerator::Hand);
+  EXPECT_FALSE(rackGeneratorOf(2));
+  EXPECT_FALSE(rackGeneratorOf(-1));
 }
 
 }  // namespace
