@@ -1,0 +1,180 @@
+// Benchmark: the bot's break on seeded hand racks under the olympiad execution noise, in 8-, 9-
+// and 10-ball: how often it pots a ball, is legal and keeps the turn, against a centred 9 m/s
+// break (the bot's before racks had gaps) on the same racks; and the grid the breaks come from.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+#include "bench_run.h"
+#include "client/bot/ai/break_shot.h"
+#include "client/bot/ai/execution_noise.h"
+#include "client/bot/ai/shot_planner.h"
+#include "client/bot/ai/shot_verifier.h"
+#include "rules/game_state.h"
+#include "table/rack.h"
+
+namespace {
+
+using namespace pool;
+using bot::Vec2;
+
+const bot::TableView& tableFor(rules::Game game) {
+  static std::vector<std::unique_ptr<bot::TableView>> views(3);
+  auto& view = views[static_cast<std::size_t>(game)];
+  if (!view) {
+    auto loaded = bot::loadTableView("wpa-9ft");
+    if (!loaded) throw std::runtime_error(loaded.error());
+    view = std::make_unique<bot::TableView>(std::move(*loaded));
+    view->rules.game = game;
+  }
+  return *view;
+}
+
+/// The hand rack of `seed` for `game`, the cue ball on the head spot (the break places it).
+std::vector<physics::Ball> rackOf(const bot::TableView& view, std::uint64_t seed) {
+  const table::RackType type = rules::rackTypeOf(view.rules.game);
+  std::vector<physics::Ball> balls(16);
+  for (int id = 0; id < 16; ++id) {
+    auto& b = balls[static_cast<std::size_t>(id)];
+    b.id = id;
+    b.state = physics::MotionState::Pocketed;
+    b.pos = physics::Vec3(0, 0, -0.2);
+  }
+  const double r = view.radius();
+  const auto placed = table::rackFor(type, view.spec, r, seed, table::RackGenerator::Hand);
+  for (const auto& p : placed) balls[static_cast<std::size_t>(p.id)] = physics::restingBall(p.id, p.pos, r);
+  balls[0] = physics::restingBall(0, view.context.spots.head_spot, r);
+  return balls;
+}
+
+struct Tally {
+  int breaks = 0, pots = 0, legal = 0, keeps = 0;
+  void add(const bot::Trial& t) {
+    ++breaks;
+    pots += t.verdict.pocketed.empty() ? 0 : 1;
+    legal += t.verdict.legal() ? 1 : 0;
+    keeps += t.verdict.turn_continues ? 1 : 0;
+  }
+  double share(int n) const { return breaks ? 100.0 * n / breaks : 0.0; }
+};
+
+/// `shot` played with the olympiad noise on `balls` (the cue ball where the shot puts it).
+bot::Trial played(bot::ShotVerifier& verifier, std::vector<physics::Ball> balls,
+                  const bot::PlannedShot& shot, bot::Rng& rng, const bot::TableView& view) {
+  if (shot.cue_ball_at) balls[0] = physics::restingBall(0, *shot.cue_ball_at, view.radius());
+  bot::PlannedShot noisy = shot;
+  noisy.cue = bot::perturbed(shot.cue, bot::olympiadNoise(view.radius()), rng);
+  return verifier.run(balls, rules::newRack(0), noisy);
+}
+
+void report(benchmark::State& state, const Tally& t) {
+  state.counters["pots%"] = t.share(t.pots);
+  state.counters["legal%"] = t.share(t.legal);
+  state.counters["keeps%"] = t.share(t.keeps);
+}
+
+constexpr std::uint64_t kFirstRack = 5000;  // not the grid's racks: the figures are out of sample
+
+int racks() {
+  return pool::bench::smokeOr(200, 3);
+}
+
+void BM_BotBreak(benchmark::State& state) {
+  const auto game = static_cast<rules::Game>(state.range(0));
+  const bot::TableView& view = tableFor(game);
+  bot::ShotVerifier verifier(view);
+  Tally tally;
+  double plan_ms = 0.0;
+  for (auto _ : state) {
+    bot::Rng rng(11);
+    tally = {};
+    plan_ms = 0.0;
+    for (int k = 0; k < racks(); ++k) {
+      const auto balls = rackOf(view, kFirstRack + static_cast<std::uint64_t>(k));
+      bot::ShotPlanner planner(view);
+      const auto start = std::chrono::steady_clock::now();
+      const bot::PlannedShot shot = planner.plan(balls, rules::newRack(0));
+      plan_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                     .count();
+      tally.add(played(verifier, balls, shot, rng, view));
+    }
+  }
+  report(state, tally);
+  state.counters["plan_ms"] = plan_ms / racks();
+}
+BENCHMARK(BM_BotBreak)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_BaselineCentredBreak(benchmark::State& state) {
+  const auto game = static_cast<rules::Game>(state.range(0));
+  const bot::TableView& view = tableFor(game);
+  bot::ShotVerifier verifier(view);
+  Tally tally;
+  for (auto _ : state) {
+    bot::Rng rng(11);
+    tally = {};
+    for (int k = 0; k < racks(); ++k) {
+      const auto balls = rackOf(view, kFirstRack + static_cast<std::uint64_t>(k));
+      const Vec2 apex = bot::apexBall(view, balls);
+      const auto shot = bot::breakShot(view, apex, {0.0, 0.0, 9.0, -0.1}, 1);
+      tally.add(played(verifier, balls, shot, rng, view));
+    }
+  }
+  report(state, tally);
+}
+BENCHMARK(BM_BaselineCentredBreak)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+/// The grid measuredBreaks was chosen from: each stroke over 200 racks (seeds 1000–1199).
+void BM_BreakGrid(benchmark::State& state) {
+  const auto game = static_cast<rules::Game>(state.range(0));
+  const bot::TableView& view = tableFor(game);
+  bot::ShotVerifier verifier(view);
+  const int n = pool::bench::smokeOr(200, 1);
+  struct Row {
+    bot::BreakStroke stroke;
+    Tally tally;
+  };
+  std::vector<Row> rows;
+  for (auto _ : state) {
+    rows.clear();
+    bot::Rng rng(7);
+    for (double y : {0.0, 0.2, 0.4, 0.55}) {
+      for (double offset : {-0.3, 0.0, 0.3, 0.6}) {
+        for (double speed : {9.0, 11.0}) {
+          for (double tip : {-0.1, 0.2}) {
+            Row row{{y, offset, speed, tip}, {}};
+            for (int k = 0; k < n; ++k) {
+              const auto balls = rackOf(view, 1000 + static_cast<std::uint64_t>(k));
+              const auto shot = bot::breakShot(view, bot::apexBall(view, balls), row.stroke, 1);
+              row.tally.add(played(verifier, balls, shot, rng, view));
+            }
+            rows.push_back(row);
+          }
+        }
+      }
+    }
+  }
+  std::sort(rows.begin(), rows.end(),
+            [](const Row& a, const Row& b) { return a.tally.keeps > b.tally.keeps; });
+  std::printf("%s-ball break grid over %d racks, best first (pots / legal / keeps the turn):\n",
+              game == rules::Game::EightBall ? "8" : game == rules::Game::NineBall ? "9" : "10",
+              n);
+  for (std::size_t i = 0; i < std::min<std::size_t>(rows.size(), 8); ++i) {
+    const Row& r = rows[i];
+    std::printf("  y %.2f offset %+.1f R speed %4.1f tip %+.1f: %5.1f / %5.1f / %5.1f %%\n",
+                r.stroke.y, r.stroke.offset, r.stroke.speed, r.stroke.tip,
+                r.tally.share(r.tally.pots), r.tally.share(r.tally.legal),
+                r.tally.share(r.tally.keeps));
+  }
+}
+BENCHMARK(BM_BreakGrid)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  pool::bench::CheckedReporter reporter;
+  return pool::bench::runBenchmarks(argc, argv, reporter);
+}
