@@ -83,6 +83,36 @@ TEST(ShotPlannerTest, NothingOnGivesADeclaredSafety) {
   EXPECT_FALSE(shot.called_ball);
 }
 
+// Ball in hand behind the head string (after a scratch on the break): a ball that lies behind
+// the head string too may not be played directly (rules: Foul::BehindHeadStringDirect). Three
+// solids sit in the kitchen with easy lines; the only legal pot is the 5, beyond the head string.
+TEST(ShotPlannerTest, FromTheKitchenTheOnlyLegalPotBeyondTheHeadStringIsPlayed) {
+  const auto& view = nineFoot();
+  const double hs = view.headStringX();
+  const Vec2 five = onPocketLine("foot_left_corner", Vec2::Zero(), 0.35);
+  ASSERT_GT(five.x(), hs);
+  const auto balls = layout({resting(0, hs - 0.2, 0.0), resting(1, hs - 0.3, 0.35),
+                             resting(2, hs - 0.3, -0.35), resting(3, hs - 0.45, 0.1),
+                             resting(5, five.x(), five.y()), resting(8, 0.9, -0.45),
+                             resting(10, 0.2, -0.3), resting(12, -0.2, 0.45)});
+  rules::GameState state = solidsToShoot();
+  state.ball_in_hand = rules::BallInHand::BehindHeadString;
+  ShotPlanner planner(view);
+  const PlannedShot shot = planner.plan(balls, state);
+  ASSERT_EQ(shot.kind, ShotKind::Pot) << describe(shot);
+  EXPECT_EQ(shot.called_ball, 5);
+  ASSERT_TRUE(shot.cue_ball_at);
+  EXPECT_LT(shot.cue_ball_at->x(), hs);
+  // Played on its own, it pockets the 5 legally.
+  ShotVerifier verifier(view);
+  auto placed = balls;
+  placed[0] = resting(0, shot.cue_ball_at->x(), shot.cue_ball_at->y());
+  const Trial trial = verifier.run(placed, state, shot);
+  ASSERT_TRUE(trial.judged) << trial.error;
+  EXPECT_TRUE(trial.verdict.legal());
+  EXPECT_TRUE(trial.potted_call);
+}
+
 TEST(ShotPlannerTest, BreakIsFromBehindTheHeadStringAndHard) {
   std::vector<physics::Ball> balls{resting(0, 0.0, 0.0)};
   for (const auto& p :

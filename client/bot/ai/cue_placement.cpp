@@ -87,7 +87,7 @@ bool placementLegal(const PlanContext& context, const Vec2& at) {
 
 std::vector<PotCandidate> potsFromHand(const PlanContext& context) {
   const auto table = withoutCueBall(context.balls);
-  const auto legal = context.legalBalls();
+  const auto legal = context.directBalls();
   std::vector<PotCandidate> out;
   addSpotsBehindGhosts(context, legal, table, out);
   if (context.play_state.ball_in_hand == rules::BallInHand::BehindHeadString) {

@@ -22,6 +22,16 @@ std::vector<int> PlanContext::legalBalls() const {
   return rules::firstBallsFor(view.rules, play_state, balls);
 }
 
+std::vector<int> PlanContext::directBalls() const {
+  auto ids = legalBalls();
+  if (play_state.ball_in_hand != rules::BallInHand::BehindHeadString) return ids;
+  std::erase_if(ids, [&](int id) {
+    const auto at = ballAt(balls, id);
+    return at && at->x() < view.headStringX();
+  });
+  return ids;
+}
+
 double shooterChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
                       const TableView& view) {
   if (state.phase == rules::Phase::Over) return 0.0;

@@ -30,6 +30,10 @@ struct PlanContext {
   PlannedShot blank(ShotKind kind) const;
   /// The legal object balls for the shooter (legalFirstBalls on play_state).
   std::vector<int> legalBalls() const;
+  /// The legal balls the cue ball may hit first straight from where it lies or is placed: with
+  /// ball in hand behind the head string, not those behind it too (a foul played directly:
+  /// rules::Foul::BehindHeadStringDirect).
+  std::vector<int> directBalls() const;
 };
 
 /// How good a layout is for the player to shoot in `state`: 1 with the cue ball in hand, else

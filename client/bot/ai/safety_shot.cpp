@@ -32,7 +32,7 @@ std::optional<double> safetyValue(const Trial& trial, const TableView& view) {
 void trySafetiesFrom(PlanContext& context, const Vec2& from, const std::optional<Vec2>& place,
                      std::optional<PlannedShot>& best) {
   const double r = context.view.radius();
-  for (int id : context.legalBalls()) {
+  for (int id : context.directBalls()) {
     const auto object = ballAt(context.balls, id);
     if (!object || !pathClear(from, *object - 2 * r * (*object - from).normalized(), context.balls,
                               r, physics::kCueBall, id)) {
@@ -73,7 +73,7 @@ PlannedShot fallbackShot(const PlanContext& context, const std::optional<Vec2>& 
   shot.safety = true;
   shot.cue_ball_at = spot;
   const Vec2 from = spot ? *spot : ballAt(context.balls, physics::kCueBall).value_or(Vec2::Zero());
-  auto targets = context.legalBalls();
+  auto targets = context.directBalls();
   if (targets.empty()) {
     for (const auto& b : context.balls) {
       if (b.id != physics::kCueBall && physics::onTable(b.state)) targets.push_back(b.id);
