@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "rules/eight_ball.h"
+#include "rules/game_rules.h"
 
 namespace pool::app {
 namespace {
@@ -76,10 +76,12 @@ AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
 }
 
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
-                  const std::vector<physics::Ball>& balls, const bot::TableView& view) {
+                  const std::vector<physics::Ball>& balls, const bot::TableView& view,
+                  rules::Game game) {
   ShotCall call;
   if (state.phase == rules::Phase::Break || state.phase == rules::Phase::Over) return call;
-  const auto legal = rules::legalFirstBalls(state, balls);
+  if (game == rules::Game::NineBall) return call;
+  const auto legal = rules::firstBallsFor(rules::GameRules{game, {}}, state, balls);
   const bool callable = aim.ball && aim.pocket >= 0 &&
                         std::find(legal.begin(), legal.end(), *aim.ball) != legal.end();
   if (!callable) {

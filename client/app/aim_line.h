@@ -10,6 +10,7 @@
 #include "client/app/aim.h"
 #include "client/bot/ai/table_view.h"
 #include "physics/ball.h"
+#include "rules/game_rules.h"
 #include "rules/game_state.h"
 
 namespace pool::app {
@@ -28,9 +29,11 @@ struct AimPrediction {
 AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
                          const std::vector<physics::Ball>& balls, const bot::TableView& view);
 
-/// The call for `aim` in `state`: none on the break; the first ball touched and the pocket it
-/// heads for when that ball is the shooter's to call; otherwise a safety.
+/// The call for `aim` in `state` of `game`: none on the break, and none in 9-ball (it needs no
+/// call); else the first ball touched and the pocket it heads for when that ball is the
+/// shooter's to hit first (rules::firstBallsFor); otherwise a safety.
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
-                  const std::vector<physics::Ball>& balls, const bot::TableView& view);
+                  const std::vector<physics::Ball>& balls, const bot::TableView& view,
+                  rules::Game game);
 
 }  // namespace pool::app

@@ -208,6 +208,13 @@ void Controls::toggle(Key key) {
 }
 
 void Controls::cyclePocket() {
+  // A ball clicked and not yet given a pocket is the one C calls; with no ball called (a safety,
+  // or nothing yet) there is no pocket to move on.
+  if (picked_ball_) {
+    aim_.call.ball = picked_ball_;
+    picked_ball_.reset();
+  }
+  if (!aim_.call.ball) return;
   const auto& names = rules::pocketNames();
   const auto it = std::find(names.begin(), names.end(), aim_.call.pocket);
   const std::size_t next = it == names.end() ? 0 : (it - names.begin() + 1) % names.size();

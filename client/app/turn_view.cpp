@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "rules/ball_groups.h"
-#include "rules/eight_ball.h"
+#include "rules/game_rules.h"
 
 namespace pool::app {
 namespace {
@@ -33,8 +33,8 @@ std::optional<double> nearest(const Eigen::Vector2d& cue, const std::vector<phys
 
 std::optional<double> turnStartYaw(const Eigen::Vector2d& cue,
                                    const std::vector<physics::Ball>& balls,
-                                   const rules::GameState& state) {
-  const auto legal = rules::legalFirstBalls(state, balls);
+                                   const rules::GameState& state, rules::Game game) {
+  const auto legal = rules::firstBallsFor(rules::GameRules{game, {}}, state, balls);
   if (!legal.empty()) {
     if (auto yaw = nearest(cue, balls, legal)) return yaw;
   }

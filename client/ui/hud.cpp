@@ -108,12 +108,25 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
     if (!seat.name.empty() && !seat.connected) line += " (away)";
     say.text(line);
     std::string detail = "    ";
-    detail += seat.group == rules::Group::None ? "no group yet"
-                                               : app::spoken(rules::toString(seat.group));
-    detail += ", " + std::to_string(seat.balls_left) + " left, " + std::to_string(seat.fouls) +
+    // Groups and balls left are 8-ball's; in 9- and 10-ball both players shoot the lowest ball.
+    if (view.settings.game == rules::Game::EightBall) {
+      detail += seat.group == rules::Group::None ? "no group yet"
+                                                 : app::spoken(rules::toString(seat.group));
+      detail += ", " + std::to_string(seat.balls_left) + " left, ";
+    }
+    detail += std::to_string(seat.fouls) +
               (seat.fouls == 1 ? " foul, " : " fouls, ") + std::to_string(seat.racks_won) +
               (seat.racks_won == 1 ? " rack won" : " racks won");
     say.wrapped(detail);
+  }
+  if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {
+    int lowest = 0;
+    for (const auto& b : view.balls) {
+      if (b.id != physics::kCueBall && physics::onTable(b.state) && (!lowest || b.id < lowest)) {
+        lowest = b.id;
+      }
+    }
+    if (lowest) say.text("  ball on: the " + std::to_string(lowest));
   }
 }
 
@@ -216,7 +229,7 @@ void choicePanel(Say& say, const HudInput& in) {
   ImGui::End();
 }
 
-void callLine(Say& say, const app::Controls& c) {
+void callLine(Say& say, const app::Controls& c, const client::MatchView* v) {
   const app::AimState& aim = c.aim();
   if (c.pickedBall()) {
     say.text("the " + std::to_string(*c.pickedBall()) + " picked: click the pocket to call");
@@ -229,8 +242,12 @@ void callLine(Say& say, const app::Controls& c) {
                        (aim.call.by_player ? "" : " (C: next pocket; or click a ball, a pocket)");
     say.wrapped(line);
     if (*aim.call.ball == rules::kEightBall) say.coloured(kProblem, "the 8: check the pocket");
-  } else {
+  } else if (!v || v->phase == client::MatchPhase::Break) {
     say.text("call: none needed on the break");
+  } else if (v->settings.game == rules::Game::NineBall) {
+    say.text("call: none needed in 9-ball");
+  } else {
+    say.wrapped("call: none yet (aim at a ball, or click a ball and then a pocket)");
   }
 }
 
@@ -282,7 +299,7 @@ void shotPanel(Say& say, const HudInput& in) {
   ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(px(220), 0),
                      c.charging() ? "charging" : "power");
   drawTipWidget(aim.tip_side, aim.tip_height, c.limits().miscue_limit);
-  callLine(say, c);
+  callLine(say, c, in.view);
   if (aim.cue_ball_at) {
     say.text("cue ball in hand: drag it");
     if (!in.placement_problem.empty()) {

@@ -16,7 +16,8 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   const app::Toggles& t = controls.toggles();
   const auto prediction =
       app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
-  controls.suggestCall(app::autoCall(prediction, client::gameStateOf(match), balls, view));
+  controls.suggestCall(
+      app::autoCall(prediction, client::gameStateOf(match), balls, view, match.settings.game));
   controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()});
   app::ClickTargets targets;
   for (const auto& b : balls) {

@@ -89,10 +89,10 @@ TEST(AimLineTest, TheCallFollowsTheRules) {
   rules::GameState state;
 
   state.phase = rules::Phase::Break;
-  EXPECT_EQ(autoCall(at_eleven, state, balls, nineFoot()), ShotCall{});
+  EXPECT_EQ(autoCall(at_eleven, state, balls, nineFoot(), rules::Game::EightBall), ShotCall{});
 
   state.phase = rules::Phase::Open;
-  const ShotCall call = autoCall(at_eleven, state, balls, nineFoot());
+  const ShotCall call = autoCall(at_eleven, state, balls, nineFoot(), rules::Game::EightBall);
   EXPECT_EQ(call.ball, 11);
   EXPECT_EQ(call.pocket, nineFoot().pockets[at_eleven.pocket].name);
   EXPECT_FALSE(call.safety);
@@ -101,16 +101,40 @@ TEST(AimLineTest, TheCallFollowsTheRules) {
   state.phase = rules::Phase::Assigned;
   state.groups = {rules::Group::Solids, rules::Group::Stripes};
   state.shooter = 0;
-  const ShotCall safe = autoCall(at_eleven, state, balls, nineFoot());
+  const ShotCall safe = autoCall(at_eleven, state, balls, nineFoot(), rules::Game::EightBall);
   EXPECT_TRUE(safe.safety);
   EXPECT_FALSE(safe.ball);
 
   // On the 8 (no solids left): aiming at it calls it, with the pocket it heads for.
   const int pocket = easiestPocket(cue, {-0.9, 0.35});
   const auto at_eight = predictAim(cue, aimAt(cue, {-0.9, 0.35}, pocket), balls, nineFoot());
-  const ShotCall eight = autoCall(at_eight, state, balls, nineFoot());
+  const ShotCall eight = autoCall(at_eight, state, balls, nineFoot(), rules::Game::EightBall);
   EXPECT_EQ(eight.ball, 8);
   EXPECT_EQ(eight.pocket, nineFoot().pockets[pocket].name);
+}
+
+// The WPA's rules: 9-ball calls no shot; in 10-ball every shot is called, and the lowest ball is
+// hit first. The automatic call follows: none in 9-ball, the lowest ball when the aim meets it
+// first in 10-ball, else a safety.
+TEST(AimLineTest, RotationGamesCallByTheirOwnRules) {
+  const Eigen::Vector2d cue(0.3, -0.2);
+  const std::vector balls{resting(0, cue.x(), cue.y()), resting(7, 0.9, 0.35),
+                          resting(4, -0.9, 0.35)};
+  const auto at_seven =
+      predictAim(cue, aimAt(cue, {0.9, 0.35}, easiestPocket(cue, {0.9, 0.35})), balls, nineFoot());
+  const int pocket = easiestPocket(cue, {-0.9, 0.35});
+  const auto at_four = predictAim(cue, aimAt(cue, {-0.9, 0.35}, pocket), balls, nineFoot());
+  rules::GameState state;
+  state.phase = rules::Phase::Open;
+  EXPECT_EQ(autoCall(at_four, state, balls, nineFoot(), rules::Game::NineBall), ShotCall{});
+  const ShotCall four = autoCall(at_four, state, balls, nineFoot(), rules::Game::TenBall);
+  EXPECT_EQ(four.ball, 4);
+  EXPECT_EQ(four.pocket, nineFoot().pockets[pocket].name);
+  const ShotCall seven = autoCall(at_seven, state, balls, nineFoot(), rules::Game::TenBall);
+  EXPECT_TRUE(seven.safety);
+  EXPECT_FALSE(seven.ball);
+  // In 8-ball with open groups the 7 is the shooter's to call.
+  EXPECT_EQ(autoCall(at_seven, state, balls, nineFoot(), rules::Game::EightBall).ball, 7);
 }
 
 }  // namespace

@@ -274,6 +274,27 @@ TEST_F(BallInHandTest, AtAPracticeTableAnyBallIsDraggedAndLetGoOnce) {
   EXPECT_FALSE(controls.takeBallMove());
 }
 
+// A slip found in play: with "call: a safety" showing, clicking the 8 and pressing C left a call
+// with a pocket and no ball (the HUD then read "none needed on the break").
+TEST_F(BallInHandTest, CAfterClickingABallCallsThatBallAndWithNoBallChangesNothing) {
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::None);
+  controls.setClickTargets({{{8, Eigen::Vector2d(0.2, 0.1)}}, {}});
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);
+  controls.suggestCall({.ball = std::nullopt, .pocket = "", .safety = true});
+  controls.keyDown(Key::C, {});  // nothing called: no pocket to move on
+  EXPECT_TRUE(controls.aim().call.safety);
+  EXPECT_FALSE(controls.aim().call.ball);
+  const Eigen::Vector2d eight = pixelOf(Eigen::Vector2d(0.2, 0.1));
+  controls.mouseButton(MouseButton::Left, true, eight.x(), eight.y());
+  controls.mouseButton(MouseButton::Left, false, eight.x(), eight.y());
+  ASSERT_EQ(controls.pickedBall(), 8);
+  controls.keyDown(Key::C, {});
+  EXPECT_EQ(controls.aim().call.ball, 8);
+  EXPECT_FALSE(controls.aim().call.pocket.empty());
+  EXPECT_FALSE(controls.aim().call.safety);
+  EXPECT_FALSE(controls.pickedBall());
+}
+
 TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {
   controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::BehindHeadString);
   drag(Eigen::Vector2d(-0.8, 0.0), Eigen::Vector2d(-0.5, 0.0));

@@ -28,11 +28,11 @@ TEST(TurnViewTest, TheTurnFacesTheNearestBallOfTheShootersGroup) {
   const std::vector<physics::Ball> balls{ballAt(0, 0.0, 0.0), ballAt(2, 0.1, 0.0),
                                          ballAt(8, 0.0, 0.15), ballAt(12, -0.3, -0.3),
                                          ballAt(11, 0.5, 0.5)};
-  const auto yaw = turnStartYaw(cue, balls, state);
+  const auto yaw = turnStartYaw(cue, balls, state, rules::Game::EightBall);
   ASSERT_TRUE(yaw);
   EXPECT_NEAR(*yaw, std::atan2(-0.3, -0.3), 1e-12);  // the 12, not the nearer 2 or 8
   state.shooter = 0;
-  EXPECT_NEAR(*turnStartYaw(cue, balls, state), 0.0, 1e-12);  // the 2 for solids
+  EXPECT_NEAR(*turnStartYaw(cue, balls, state, rules::Game::EightBall), 0.0, 1e-12);  // the 2 for solids
 }
 
 TEST(TurnViewTest, OnTheEightTheTurnFacesTheEight) {
@@ -40,16 +40,32 @@ TEST(TurnViewTest, OnTheEightTheTurnFacesTheEight) {
   state.phase = rules::Phase::Assigned;
   state.groups = {rules::Group::Solids, rules::Group::Stripes};
   std::vector<physics::Ball> balls{ballAt(0, 0.0, 0.0), ballAt(8, 0.0, -0.6), ballAt(12, 0.1, 0.0)};
-  EXPECT_NEAR(*turnStartYaw({0.0, 0.0}, balls, state), -std::acos(0.0), 1e-12);
+  EXPECT_NEAR(*turnStartYaw({0.0, 0.0}, balls, state, rules::Game::EightBall), -std::acos(0.0), 1e-12);
+}
+
+// 9- and 10-ball: the lowest numbered ball on the table is the one to hit first (the WPA's rules
+// of both games), however near the others lie.
+TEST(TurnViewTest, InRotationGamesTheTurnFacesTheLowestBall) {
+  rules::GameState state;
+  state.phase = rules::Phase::Open;
+  const std::vector<physics::Ball> balls{ballAt(0, 0.0, 0.0), ballAt(7, 0.1, 0.0),
+                                         ballAt(4, -0.5, 0.2), ballAt(9, 0.0, 0.12)};
+  for (rules::Game game : {rules::Game::NineBall, rules::Game::TenBall}) {
+    const auto yaw = turnStartYaw({0.0, 0.0}, balls, state, game);
+    ASSERT_TRUE(yaw);
+    EXPECT_NEAR(*yaw, std::atan2(0.2, -0.5), 1e-12);  // the 4, not the nearer 7 or 9
+  }
+  // The same table in 8-ball with open groups: the nearest ball but the 8, the 7.
+  EXPECT_NEAR(*turnStartYaw({0.0, 0.0}, balls, state, rules::Game::EightBall), 0.0, 1e-12);
 }
 
 TEST(TurnViewTest, TheBreakFacesTheRackAndAnEmptyTableNothing) {
   const rules::GameState state = rules::newRack(0);
   std::vector<physics::Ball> balls{ballAt(0, -0.7, 0.1), ballAt(1, 0.635, 0.0),
                                    ballAt(9, 0.68, 0.03)};
-  EXPECT_NEAR(*turnStartYaw({-0.7, 0.1}, balls, state), std::atan2(-0.1, 1.335), 1e-12);
+  EXPECT_NEAR(*turnStartYaw({-0.7, 0.1}, balls, state, rules::Game::EightBall), std::atan2(-0.1, 1.335), 1e-12);
   balls.resize(1);
-  EXPECT_FALSE(turnStartYaw({-0.7, 0.1}, balls, state));
+  EXPECT_FALSE(turnStartYaw({-0.7, 0.1}, balls, state, rules::Game::EightBall));
 }
 
 TEST(TurnViewTest, ANewTurnDropsTheLastTurnsOrbitHeightTipAndElevation) {
