@@ -44,15 +44,15 @@ web_port=${POOL_WEB_PORT:-8080}
 pids+=($!)
 echo "Watch from a browser: http://127.0.0.1:$web_port/ (pool-web; --bind 0.0.0.0 for the LAN)" >&2
 
-bot() {  # name seed
+bot() {  # name seed [more flags]
   "$bin/pool-bot" --domain "$domain" --name "$1" --skill 0.8 --seed "$2" --think 0.8 \
-    --log-level warn > /dev/null &
+    --log-level warn "${@:3}" > /dev/null &
   pids+=($!)
 }
 
 case $mode in
   play)
-    bot Bert 2
+    bot Bert 2 --stay  # plays rematches (R) until you leave
     echo "You against the bot Bert: aim with the arrows, hold Space to shoot (keys: README.md)" >&2
     "$bin/pool-client" --domain "$domain" --play --name "${USER:-Player}"
     ;;

@@ -135,6 +135,8 @@ int main(int argc, char** argv) {
   app.add_option("--race", flags.race, "with --game: racks to win (1-15)");
   app.add_option("--breaks", flags.breaks, "with --game: alternate or winner");
   app.add_option("--shot-clock", flags.shot_clock, "with --game: seconds per shot, 0: none");
+  app.add_flag("--stay", flags.bot.stay,
+               "at game over ask for a rematch and stay while the opponent keeps their seat");
   app.add_option("--think", flags.bot.think, "seconds to wait on each turn before shooting")
       ->check(CLI::Range(0.0, 60.0));
   app.add_option("--timeout", flags.timeout, "give up (exit 3) after this many seconds; 0: never");

@@ -212,9 +212,15 @@ void BotPlayer::onState(const client::MatchView& view, double now) {
   const auto& seat = client_.seat();
   if (!seat || view.match != seat->match || stage_ != BotStage::Playing) return;
   if (view.phase == client::MatchPhase::Over) {
-    finish(view);
+    const auto& other = view.seats[static_cast<std::size_t>(1 - seat->seat)];
+    if (config_.stay && !other.name.empty()) {
+      askRematch(view);
+    } else {
+      finish(view);
+    }
     return;
   }
+  rematch_asked_ = false;
   // The server takes us for gone while we are here: our liveliness lease ran out while this
   // process was starved of CPU, or the server restarted and resumed the match before its old
   // self's lease ran out. Take the seat back with our token and key before the grace runs out
@@ -358,7 +364,14 @@ const TableView* BotPlayer::tableFor(const std::string& match) {
   return slot.get();
 }
 
-void BotPlayer::finish(const client::MatchView& view) {
+void BotPlayer::askRematch(const client::MatchView& view) {
+  if (rematch_asked_) return;
+  rematch_asked_ = true;
+  spdlog::info("{}; staying: asked for a rematch", resultOf(view));
+  client_.requestRematch();
+}
+
+std::string BotPlayer::resultOf(const client::MatchView& view) const {
   const int me = client_.seat()->seat;
   const int other = 1 - me;
   const bool won = view.winner == me;
@@ -368,7 +381,11 @@ void BotPlayer::finish(const client::MatchView& view) {
   char line[160];
   std::snprintf(line, sizeof line, "result: %s %d-%d (%s after %u shots)", won ? "win" : "loss",
                 mine, theirs, rules::toString(view.end), view.shot_number);
-  result_line_ = line;
+  return line;
+}
+
+void BotPlayer::finish(const client::MatchView& view) {
+  result_line_ = resultOf(view);
   stage_ = BotStage::Finished;
   if (!config_.seat_file.empty()) {
     std::error_code ec;

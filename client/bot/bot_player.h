@@ -34,6 +34,9 @@ struct BotConfig {
   /// Concedes every rack from this one on (the match's rack number, from 1) on its first turn in
   /// it instead of shooting; 0: never.
   std::uint32_t concede_from_rack = 0;
+  /// At game over, asks for a rematch and plays it, as long as its opponent keeps their seat;
+  /// leaves once they leave. Off: the bot is done at game over.
+  bool stay = false;
 };
 
 /// How long before the shot clock runs out the bot shoots at the latest (planning, delivery), s.
@@ -79,6 +82,10 @@ class BotPlayer {
   void maybeShoot(double now);
   void loseSeat(double now, const std::string& why);
   void finish(const client::MatchView& view);
+  /// With `stay`: asks once per game over for a rematch.
+  void askRematch(const client::MatchView& view);
+  /// "result: win 1-0 (...)" of the game over `view`, for our seat.
+  std::string resultOf(const client::MatchView& view) const;
   void saveSeat();
   bool myTurn(const client::MatchView& view) const;
   /// The plan of this turn's state (made once per state: the think time shows it being aimed).
@@ -128,6 +135,7 @@ class BotPlayer {
   std::string planner_table_;
   SkillNoise noise_;
   std::string result_line_;
+  bool rematch_asked_ = false;  ///< the game over on the table has our rematch request
   std::string failure_;
 };
 
