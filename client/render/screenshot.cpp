@@ -38,10 +38,6 @@ struct FrameSource {
 int renderFrames(const ScreenshotOptions& options, const std::function<FrameSource()>& make) {
   OffscreenContext context(options.width, options.height);
   const FrameSource source = make();
-  if (!options.info_path.empty() && !source.info) {
-    std::cerr << "--screenshot-info: this scene has no balls to describe\n";
-    return 2;
-  }
   std::vector<std::uint8_t> pixels;
   for (int frame = 0; frame < options.frames; ++frame) {
     context.bind();
@@ -123,7 +119,13 @@ int renderEightBallScreenshot(const ScreenshotOptions& options, const std::strin
   return guarded(options, [&] {
     room = std::make_shared<EightBallRoom>();
     room->setOptions(options.render);
-    return FrameSource{[&](int) { room->draw(camera, options.width, options.height, answer); }, {}};
+    return FrameSource{[&](int) { room->draw(camera, options.width, options.height, answer); },
+                       [&] {
+                         return eightBallInfoJson(camera, options.width, options.height,
+                                                  EightBallRoom::ballCentre(),
+                                                  EightBallRoom::ballRadius(),
+                                                  EightBallRoom::windowCentre(camera), answer);
+                       }};
   });
 }
 

@@ -23,29 +23,51 @@ json matrix(const glm::mat4& m) {
   return out;
 }
 
+/// The image size and the camera, which every sidecar starts with.
+json frameJson(const Camera& camera, int width, int height) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  return json{{"width", width},
+              {"height", height},
+              {"camera",
+               {{"eye", vec(camera.eye)},
+                {"target", vec(camera.target)},
+                {"up", vec(camera.up)},
+                {"fov_y_deg", camera.fov_y_deg},
+                {"view", matrix(viewMatrix(camera))},
+                {"projection", matrix(projectionMatrix(camera, aspect))}}}};
+}
+
 }  // namespace
+
+nlohmann::json pointJson(const Camera& camera, int width, int height, glm::vec3 p) {
+  const glm::vec3 px = projectToPixels(camera, width, height, p);
+  const bool behind = px.z < 0.0f;  // projectToPixels' mark for a point behind the eye
+  const bool on_screen = !behind && px.x >= 0.0f && px.x <= static_cast<float>(width) &&
+                         px.y >= 0.0f && px.y <= static_cast<float>(height) && px.z <= 1.0f;
+  return json{{"pos", vec(p)},
+              {"px", behind ? json(nullptr) : json::array({px.x, px.y})},
+              {"on_screen", on_screen}};
+}
+
+std::string eightBallInfoJson(const Camera& camera, int width, int height, glm::vec3 centre,
+                              float radius, glm::vec3 window, const std::string& answer) {
+  json info = frameJson(camera, width, height);
+  info["eight_ball"] = {{"centre", pointJson(camera, width, height, centre)},
+                        {"radius", radius},
+                        {"window", pointJson(camera, width, height, window)},
+                        {"answer", answer}};
+  return info.dump(2) + "\n";
+}
 
 std::string screenshotInfoJson(const Camera& camera, int width, int height,
                                const Renderer& renderer, double ball_radius,
                                const pool::table::TableGeometry& geometry) {
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const auto point = [&](glm::vec3 p) {
-    const glm::vec3 px = projectToPixels(camera, width, height, p);
-    return json{{"pos", vec(p)}, {"px", json::array({px.x, px.y})}};
-  };
-  json info{{"width", width},
-            {"height", height},
-            {"ball_radius", ball_radius},
-            {"camera",
-             {{"eye", vec(camera.eye)},
-              {"target", vec(camera.target)},
-              {"up", vec(camera.up)},
-              {"fov_y_deg", camera.fov_y_deg},
-              {"view", matrix(viewMatrix(camera))},
-              {"projection", matrix(projectionMatrix(camera, aspect))}}},
+  const auto point = [&](glm::vec3 p) { return pointJson(camera, width, height, p); };
+  json info = frameJson(camera, width, height);
+  info.update(json{{"ball_radius", ball_radius},
             {"balls", json::array()},
             {"lamps", json::array()},
-            {"diamonds", json::array()}};
+            {"diamonds", json::array()}});
   for (const SceneBall& b : renderer.drawnBalls()) {
     info["balls"].push_back({{"id", b.id},
                              {"pos", json::array({b.pos.x(), b.pos.y(), b.pos.z()})},

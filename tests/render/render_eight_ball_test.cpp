@@ -89,14 +89,36 @@ TEST_F(RenderEightBallTest, ABlankQuestionIsRefused) {
   EXPECT_EQ(loadPng(png_).width, 0) << "no picture written";
 }
 
-TEST_F(RenderEightBallTest, ASidecarIsRefusedForTheRoomWithoutWritingAnything) {
+// The room's sidecar (it exited 2 before: "no balls to describe"): the camera, the ball, its
+// answer window and the answer, each point where the picture shows it.
+TEST_F(RenderEightBallTest, TheRoomsSidecarSaysWhereTheBallAndItsAnswerAre) {
   const std::string json = png_ + ".json";
-  const std::string cmd = std::string("env -u DISPLAY ") + POOL_BIN_DIR +
-                          "/pool-client --screenshot " + png_ +
-                          " --scene eightball --screenshot-info " + json + " 2>/dev/null";
-  EXPECT_EQ(std::system(cmd.c_str()) >> 8, 2);
-  EXPECT_EQ(loadPng(png_).width, 0) << "no picture written";
-  EXPECT_NE(::access(json.c_str(), F_OK), 0) << "no sidecar written";
+  const Image image = screenshot("--scene eightball --question \"Shall I break?\" --seed 3 " +
+                                 std::string("--screenshot-info ") + json);
+  ASSERT_EQ(image.width, 1280);
+  const auto info = readInfo(json);
+  std::remove(json.c_str());
+  const ReportedCamera camera = reportedCamera(info);
+  const auto& ball = info.at("eight_ball");
+  EXPECT_EQ(ball.at("answer"), *room::answer("Shall I break?", 3));
+  // Each point's pixel is where the reported camera puts its position (0.5 px of rounding).
+  for (const char* part : {"centre", "window"}) {
+    const auto& p = ball.at(part);
+    ASSERT_TRUE(p.at("on_screen").get<bool>()) << part;
+    const glm::vec3 at(p.at("pos")[0].get<float>(), p.at("pos")[1].get<float>(),
+                       p.at("pos")[2].get<float>());
+    const glm::vec3 px = camera.pixel(at);
+    EXPECT_NEAR(p.at("px")[0].get<double>(), px.x, 0.5) << part;
+    EXPECT_NEAR(p.at("px")[1].get<double>(), px.y, 0.5) << part;
+  }
+  // The window's pixel shows the blue answer triangle; the ball is the room's.
+  const RoomOnScreen room = project(image.width, image.height);
+  const auto& window = ball.at("window").at("px");
+  const auto blue = [](const Rgb& p) { return shadeOf(p, kTriangle); };
+  EXPECT_GT(countInDisc(image, window[0].get<double>(), window[1].get<double>(), 10.0, blue),
+            150);
+  EXPECT_NEAR(ball.at("radius").get<double>(), render::EightBallRoom::ballRadius(), 1e-6);
+  EXPECT_NEAR(ball.at("centre").at("px")[0].get<double>(), room.ball.x, 0.5);
 }
 
 }  // namespace
