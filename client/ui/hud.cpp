@@ -261,6 +261,15 @@ void liveAimLines(Say& say, const app::AimState& aim, const protocol::CommandLim
   ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(px(220), 0), "their power");
 }
 
+/// The shot this screen played last, in numbers.
+void lastShotLines(Say& say, const protocol::ShotRequest& shot) {
+  say.wrapped("your shot: aim " + fixed(degrees(shot.cue.yaw), 2) + " deg, cue elevation " +
+              fixed(degrees(shot.cue.elevation), 1) + " deg, cue speed " +
+              fixed(shot.cue.speed, 2) + " m/s");
+  say.text("tip side " + fixed(shot.cue.tip_side, 2, true) + " R   height " +
+           fixed(shot.cue.tip_height, 2, true) + " R");
+}
+
 void shotPanel(Say& say, const HudInput& in) {
   const app::Controls& c = *in.controls;
   const app::AimState& aim = c.aim();
@@ -285,11 +294,13 @@ void shotPanel(Say& say, const HudInput& in) {
     if (in.live_aim && in.view && in.live_aim->seat == in.view->shooter && !in.in_motion) {
       liveAimLines(say, in.live_aim->aim, c.limits());
     }
-    if (!localSeat(in, in.view ? in.view->shooter : -1)) {
-      say.text("F1: keys");
-      ImGui::End();
-      return;
+    // Our own shot on its way: what was played, not the aim the controls reset for the next turn.
+    if (localSeat(in, in.view ? in.view->shooter : -1) && in.last_shot) {
+      lastShotLines(say, *in.last_shot);
     }
+    say.text("F1: keys");
+    ImGui::End();
+    return;
   }
   say.text("aim " + fixed(degrees(aim.yaw), 2) + " deg   cue elevation " +
            fixed(degrees(aim.elevation), 1) + " deg");

@@ -43,6 +43,8 @@ struct HudInput {
   bool replaying = false;      ///< the instant replay is showing
   /// The other shooter's live aim (as drawn, smoothed), while it arrives.
   std::optional<app::FollowedAim> live_aim;
+  /// The last shot played from this screen (shown while it runs, instead of the reset aim).
+  std::optional<protocol::ShotRequest> last_shot;
 };
 
 /// What the player clicked.

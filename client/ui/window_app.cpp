@@ -492,6 +492,7 @@ class WindowApp {
     in.settings = currentSettings();
     in.can_concede = canConcede();
     in.can_replay = session_.replay().shot().has_value() && !session_.inMotion();
+    in.last_shot = session_.lastShot();
     in.replaying = session_.replay().playing();
     in.concede_asked = concede_asked_;
     in.settings_note = !settings_.problem.empty() ? settings_.problem

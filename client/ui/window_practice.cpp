@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "client/app/practice_layout.h"
+#include "client/bot/ai/break_shot.h"
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/shot_command.h"
 #include "scenario/scenario.h"
@@ -101,13 +103,7 @@ PracticeOutcome PracticeDesk::key(app::Key key, app::MatchSession& session,
 
 void PracticeDesk::moveBall(const client::MatchView& view, int id, const Eigen::Vector2d& at) {
   PracticeRequest layout = command(PracticeAction::Layout);
-  for (const auto& b : view.balls) {
-    if (b.id == id) {
-      layout.balls.push_back({id, at.x(), at.y()});
-    } else if (physics::onTable(b.state)) {
-      layout.balls.push_back({b.id, b.pos.x(), b.pos.y()});
-    }
-  }
+  layout.balls = app::layoutWithMove(view.balls, id, at, view_.context);
   queue(std::move(layout));
 }
 
@@ -180,7 +176,11 @@ app::SessionNote PracticeDesk::advise(const app::MatchSession& session,
   bot::TableView table = view_;
   table.rules.game = v->settings.game;
   bot::ShotPlanner planner(table);
-  const bot::PlannedShot plan = planner.plan(v->balls, client::gameStateOf(*v));
+  // A fresh rack wants a break, whatever the practice table's own state says.
+  const rules::GameState state = bot::looksRacked(table, v->balls)
+                                     ? rules::newRack(std::max(0, v->shooter))
+                                     : client::gameStateOf(*v);
+  const bot::PlannedShot plan = planner.plan(v->balls, state);
   if (plan.cue_ball_at) controls.moveCueBall(*plan.cue_ball_at);
   controls.setYaw(plan.cue.yaw);
   return {"the bot would play: " + bot::describe(plan), false};

@@ -85,5 +85,27 @@ TEST(BreakShotTest, UnderTheOlympiadNoiseTheBreakPotsABallInMostRacks) {
                                  << ")";
 }
 
+// A practice table's "ask the bot" on a fresh rack advised "safety at 2.00 m/s": a racked table
+// is now told apart, frozen or hand-racked, 8- and 9-ball, and a broken one is not.
+TEST(BreakShotTest, ARackedTableIsToldFromABrokenOne) {
+  const auto& view = nineFoot();
+  for (auto generator : {table::RackGenerator::Frozen, table::RackGenerator::Hand}) {
+    for (auto type : {table::RackType::EightBall, table::RackType::NineBall}) {
+      std::vector<physics::Ball> balls{resting(0, -0.7, 0.0)};
+      for (const auto& p : table::rackFor(type, view.spec, view.radius(), 9, generator)) {
+        balls.push_back(resting(p.id, p.pos.x(), p.pos.y()));
+      }
+      EXPECT_TRUE(looksRacked(view, balls));
+      balls.back().pos.x() = view.context.spots.foot_spot.x() - 0.1;  // out in front of the apex
+      EXPECT_FALSE(looksRacked(view, balls));
+    }
+  }
+  // A planner asked with the break's state from a racked practice table plays a break.
+  std::vector<physics::Ball> balls = handRack(4);
+  ASSERT_TRUE(looksRacked(view, balls));
+  ShotPlanner planner(view);
+  EXPECT_EQ(planner.plan(balls, rules::newRack(0)).kind, ShotKind::Break);
+}
+
 }  // namespace
 }  // namespace pool::bot::test

@@ -63,6 +63,25 @@ std::span<const BreakStroke> measuredBreaks(rules::Game game) {
   return kEightBall;
 }
 
+bool looksRacked(const TableView& view, const std::vector<physics::Ball>& balls) {
+  const Vec2 foot = view.context.spots.foot_spot;
+  const double r = view.radius();
+  constexpr double kSpare = 3e-3;  // m: a hand rack's gaps (up to 1 mm over four rows)
+  const double depth = 4.0 * std::sqrt(3.0) * r;  // apex row to the fifth row's centres
+  int racked = 0;
+  for (const auto& b : balls) {
+    if (b.id == physics::kCueBall || !physics::onTable(b.state)) continue;
+    const Vec2 p = b.pos.head<2>() - foot;
+    // Inside the triangle of the five rows' centres, grown by the spare.
+    const double half_width_here = std::max(0.0, p.x()) / std::sqrt(3.0);
+    if (p.x() < -kSpare || p.x() > depth + kSpare || std::abs(p.y()) > half_width_here + kSpare) {
+      return false;
+    }
+    ++racked;
+  }
+  return racked >= 9;
+}
+
 Vec2 apexBall(const TableView& view, const std::vector<physics::Ball>& balls) {
   const Vec2 foot = view.context.spots.foot_spot;
   Vec2 apex = foot;

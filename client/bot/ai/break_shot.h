@@ -27,6 +27,11 @@ std::span<const BreakStroke> measuredBreaks(rules::Game game);
 /// the table of `view`. The cue ball sits 1 cm behind the head string.
 PlannedShot breakShot(const TableView& view, const Vec2& apex, const BreakStroke& plan, int side);
 
+/// True when the object balls on the table lie as a rack: at least nine of them, every one inside
+/// the footprint of a five-row rack on the foot spot (with 3 mm to spare). A practice
+/// table's fresh rack is such a table: the advice for it is a break.
+bool looksRacked(const TableView& view, const std::vector<physics::Ball>& balls);
+
 /// The object ball nearest the foot spot: the apex of the rack.
 Vec2 apexBall(const TableView& view, const std::vector<physics::Ball>& balls);
 
