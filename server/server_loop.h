@@ -139,7 +139,7 @@ class ServerLoop {
   struct Published {
     std::uint64_t revision = 0;
     std::size_t spectators = 0;
-    double info_at = -1e9;  ///< when its lobby entry went out
+    double info_at = -1e9;                      ///< when its lobby entry went out
     std::optional<protocol::LobbyEntry> entry;  ///< the lobby entry that went out last
   };
   std::map<std::string, Published> published_;   ///< by match id

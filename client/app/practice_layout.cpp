@@ -22,8 +22,8 @@ std::vector<protocol::BallSpot> layoutWithMove(const std::vector<physics::Ball>&
     }
   }
   if (!has_cue) {
-    if (const auto spot = nearestLegalPlacement(rules::BallInHand::Anywhere,
-                                                table.spots.head_spot, on_table, table)) {
+    if (const auto spot = nearestLegalPlacement(rules::BallInHand::Anywhere, table.spots.head_spot,
+                                                on_table, table)) {
       out.insert(out.begin(), {physics::kCueBall, spot->x(), spot->y()});
     }
   }

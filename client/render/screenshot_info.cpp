@@ -65,9 +65,9 @@ std::string screenshotInfoJson(const Camera& camera, int width, int height,
   const auto point = [&](glm::vec3 p) { return pointJson(camera, width, height, p); };
   json info = frameJson(camera, width, height);
   info.update(json{{"ball_radius", ball_radius},
-            {"balls", json::array()},
-            {"lamps", json::array()},
-            {"diamonds", json::array()}});
+                   {"balls", json::array()},
+                   {"lamps", json::array()},
+                   {"diamonds", json::array()}});
   for (const SceneBall& b : renderer.drawnBalls()) {
     info["balls"].push_back({{"id", b.id},
                              {"pos", json::array({b.pos.x(), b.pos.y(), b.pos.z()})},

@@ -114,9 +114,8 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
                                                  : app::spoken(rules::toString(seat.group));
       detail += ", " + std::to_string(seat.balls_left) + " left, ";
     }
-    detail += std::to_string(seat.fouls) +
-              (seat.fouls == 1 ? " foul, " : " fouls, ") + std::to_string(seat.racks_won) +
-              (seat.racks_won == 1 ? " rack won" : " racks won");
+    detail += std::to_string(seat.fouls) + (seat.fouls == 1 ? " foul, " : " fouls, ") +
+              std::to_string(seat.racks_won) + (seat.racks_won == 1 ? " rack won" : " racks won");
     say.wrapped(detail);
   }
   if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {

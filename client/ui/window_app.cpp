@@ -219,9 +219,8 @@ class WindowApp {
       }
     }
     // The turn opens behind the cue ball, facing the nearest ball the shooter may hit first.
-    if (const auto yaw =
-            app::turnStartYaw(controls_.cueBall().head<2>(), v->balls, client::gameStateOf(*v),
-                              v->settings.game)) {
+    if (const auto yaw = app::turnStartYaw(controls_.cueBall().head<2>(), v->balls,
+                                           client::gameStateOf(*v), v->settings.game)) {
       controls_.setYaw(*yaw);
     }
   }

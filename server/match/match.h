@@ -42,8 +42,7 @@ class Match {
  public:
   /// A new match whose racks `generator` lays out from `rack_seed`.
   Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runner, MatchOptions options,
-        std::uint64_t rack_seed,
-        table::RackGenerator generator = table::kCurrentRackGenerator);
+        std::uint64_t rack_seed, table::RackGenerator generator = table::kCurrentRackGenerator);
   /// A match resumed from `snapshot` (a restarted server): its seated players are away since
   /// `now`, so the grace period starts at the resume.
   Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner, MatchOptions options,

@@ -20,8 +20,8 @@ Result<std::shared_ptr<const TableKit>> loadTableKit(const std::string& name) {
   return Out::ok(std::move(kit));
 }
 
-std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed,
-                                      table::RackType type, table::RackGenerator generator) {
+std::vector<physics::Ball> rackLayout(const TableKit& kit, std::uint64_t seed, table::RackType type,
+                                      table::RackGenerator generator) {
   const double r = kit.context.ball_radius;
   const Eigen::Vector2d cue_at = kit.context.spots.head_spot - Eigen::Vector2d(kBreakCueSetback, 0);
   std::vector<physics::Ball> balls{physics::restingBall(physics::kCueBall, cue_at, r)};

@@ -32,7 +32,8 @@ TEST(TurnViewTest, TheTurnFacesTheNearestBallOfTheShootersGroup) {
   ASSERT_TRUE(yaw);
   EXPECT_NEAR(*yaw, std::atan2(-0.3, -0.3), 1e-12);  // the 12, not the nearer 2 or 8
   state.shooter = 0;
-  EXPECT_NEAR(*turnStartYaw(cue, balls, state, rules::Game::EightBall), 0.0, 1e-12);  // the 2 for solids
+  EXPECT_NEAR(*turnStartYaw(cue, balls, state, rules::Game::EightBall), 0.0,
+              1e-12);  // the 2 for solids
 }
 
 TEST(TurnViewTest, OnTheEightTheTurnFacesTheEight) {
@@ -40,7 +41,8 @@ TEST(TurnViewTest, OnTheEightTheTurnFacesTheEight) {
   state.phase = rules::Phase::Assigned;
   state.groups = {rules::Group::Solids, rules::Group::Stripes};
   std::vector<physics::Ball> balls{ballAt(0, 0.0, 0.0), ballAt(8, 0.0, -0.6), ballAt(12, 0.1, 0.0)};
-  EXPECT_NEAR(*turnStartYaw({0.0, 0.0}, balls, state, rules::Game::EightBall), -std::acos(0.0), 1e-12);
+  EXPECT_NEAR(*turnStartYaw({0.0, 0.0}, balls, state, rules::Game::EightBall), -std::acos(0.0),
+              1e-12);
 }
 
 // 9- and 10-ball: the lowest numbered ball on the table is the one to hit first (the WPA's rules
@@ -63,7 +65,8 @@ TEST(TurnViewTest, TheBreakFacesTheRackAndAnEmptyTableNothing) {
   const rules::GameState state = rules::newRack(0);
   std::vector<physics::Ball> balls{ballAt(0, -0.7, 0.1), ballAt(1, 0.635, 0.0),
                                    ballAt(9, 0.68, 0.03)};
-  EXPECT_NEAR(*turnStartYaw({-0.7, 0.1}, balls, state, rules::Game::EightBall), std::atan2(-0.1, 1.335), 1e-12);
+  EXPECT_NEAR(*turnStartYaw({-0.7, 0.1}, balls, state, rules::Game::EightBall),
+              std::atan2(-0.1, 1.335), 1e-12);
   balls.resize(1);
   EXPECT_FALSE(turnStartYaw({-0.7, 0.1}, balls, state, rules::Game::EightBall));
 }

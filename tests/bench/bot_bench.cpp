@@ -46,7 +46,8 @@ std::vector<physics::Ball> rackOf(const bot::TableView& view, std::uint64_t seed
   }
   const double r = view.radius();
   const auto placed = table::rackFor(type, view.spec, r, seed, table::RackGenerator::Hand);
-  for (const auto& p : placed) balls[static_cast<std::size_t>(p.id)] = physics::restingBall(p.id, p.pos, r);
+  for (const auto& p : placed)
+    balls[static_cast<std::size_t>(p.id)] = physics::restingBall(p.id, p.pos, r);
   balls[0] = physics::restingBall(0, view.context.spots.head_spot, r);
   return balls;
 }
@@ -160,7 +161,9 @@ void BM_BreakGrid(benchmark::State& state) {
   std::sort(rows.begin(), rows.end(),
             [](const Row& a, const Row& b) { return a.tally.keeps > b.tally.keeps; });
   std::printf("%s-ball break grid over %d racks, best first (pots / legal / keeps the turn):\n",
-              game == rules::Game::EightBall ? "8" : game == rules::Game::NineBall ? "9" : "10",
+              game == rules::Game::EightBall  ? "8"
+              : game == rules::Game::NineBall ? "9"
+                                              : "10",
               n);
   for (std::size_t i = 0; i < std::min<std::size_t>(rows.size(), 8); ++i) {
     const Row& r = rows[i];

@@ -91,10 +91,10 @@ TEST(ShotPlannerTest, FromTheKitchenTheOnlyLegalPotBeyondTheHeadStringIsPlayed) 
   const double hs = view.headStringX();
   const Vec2 five = onPocketLine("foot_left_corner", Vec2::Zero(), 0.35);
   ASSERT_GT(five.x(), hs);
-  const auto balls = layout({resting(0, hs - 0.2, 0.0), resting(1, hs - 0.3, 0.35),
-                             resting(2, hs - 0.3, -0.35), resting(3, hs - 0.45, 0.1),
-                             resting(5, five.x(), five.y()), resting(8, 0.9, -0.45),
-                             resting(10, 0.2, -0.3), resting(12, -0.2, 0.45)});
+  const auto balls =
+      layout({resting(0, hs - 0.2, 0.0), resting(1, hs - 0.3, 0.35), resting(2, hs - 0.3, -0.35),
+              resting(3, hs - 0.45, 0.1), resting(5, five.x(), five.y()), resting(8, 0.9, -0.45),
+              resting(10, 0.2, -0.3), resting(12, -0.2, 0.45)});
   rules::GameState state = solidsToShoot();
   state.ball_in_hand = rules::BallInHand::BehindHeadString;
   ShotPlanner planner(view);

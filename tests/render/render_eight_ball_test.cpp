@@ -115,8 +115,7 @@ TEST_F(RenderEightBallTest, TheRoomsSidecarSaysWhereTheBallAndItsAnswerAre) {
   const RoomOnScreen room = project(image.width, image.height);
   const auto& window = ball.at("window").at("px");
   const auto blue = [](const Rgb& p) { return shadeOf(p, kTriangle); };
-  EXPECT_GT(countInDisc(image, window[0].get<double>(), window[1].get<double>(), 10.0, blue),
-            150);
+  EXPECT_GT(countInDisc(image, window[0].get<double>(), window[1].get<double>(), 10.0, blue), 150);
   EXPECT_NEAR(ball.at("radius").get<double>(), render::EightBallRoom::ballRadius(), 1e-6);
   EXPECT_NEAR(ball.at("centre").at("px")[0].get<double>(), room.ball.x, 0.5);
 }

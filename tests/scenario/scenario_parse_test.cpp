@@ -128,9 +128,9 @@ TEST(ScenarioParse, HandRackGapsFollowTheSeed) {
   }
   EXPECT_EQ(parseOk(R"({"rack": "8ball", "shot": {"speed": 8}})").rack_generator,
             table::RackGenerator::Frozen);
-  EXPECT_EQ(parseScenario(R"({"rack": "8ball", "rack_gaps": "loose", "shot": {"speed": 8}})")
-                .error(),
-            "rack_gaps: must be \"frozen\" or \"hand\"");
+  EXPECT_EQ(
+      parseScenario(R"({"rack": "8ball", "rack_gaps": "loose", "shot": {"speed": 8}})").error(),
+      "rack_gaps: must be \"frozen\" or \"hand\"");
 }
 
 TEST(ScenarioParse, BallsOverrideTheRack) {
