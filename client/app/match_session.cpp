@@ -124,7 +124,7 @@ bool MatchSession::joining() const {
 }
 
 void MatchSession::sendJoin(std::size_t i) {
-  if (want_ == Want::Play && saved_[i]) {
+  if (want_ == Want::Play && saved_[i] && client::takesBackKeptSeat(*saved_[i], wanted_match_)) {
     // A seat this player held when the window last ran: take it back first.
     clients_[i]->requestRejoin(saved_[i]->match, saved_[i]->token, saved_[i]->seat);
   } else if (want_ == Want::Play) {
@@ -139,7 +139,8 @@ void MatchSession::sendJoin(std::size_t i) {
 void MatchSession::startPending() {
   // Requests go out once the lobby names a match to send them to.
   if (want_ == Want::None || joining() || !match_.empty()) return;
-  const bool rejoin = want_ == Want::Play && saved_.front().has_value();
+  const bool rejoin = want_ == Want::Play && saved_.front().has_value() &&
+                      client::takesBackKeptSeat(*saved_.front(), wanted_match_);
   if (wanted_match_.empty() && !rejoin) {
     const auto found = want_ == Want::Play ? lobby().lowestWithFreeSeat() : lobby().firstInPlay();
     if (!found) return;

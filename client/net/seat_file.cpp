@@ -30,6 +30,10 @@ Result<std::optional<SeatRecord>> readSeatFile(const std::filesystem::path& path
   }
 }
 
+bool takesBackKeptSeat(const SeatRecord& kept, const std::string& wanted) {
+  return wanted.empty() || wanted == kept.match;
+}
+
 std::filesystem::path keyFileFor(const std::filesystem::path& seat_file) {
   return seat_file.string() + ".key";
 }

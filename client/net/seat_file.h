@@ -20,6 +20,11 @@ struct SeatRecord {
   std::uint32_t last_seq = 0;  ///< the last sequence number sent
 };
 
+/// Whether a player who asks to play `wanted` (empty: the first free seat; "new": a table of
+/// their own; else a match id) takes back the seat they kept: only when they asked for no other
+/// table (a practice table asked for with a finished match's seat kept took that seat back).
+bool takesBackKeptSeat(const SeatRecord& kept, const std::string& wanted);
+
 /// Reads a seat file (JSON: {"match", "seat", "token", "last_seq"}). Empty when the file does
 /// not exist; a failure when it exists but cannot be read.
 Result<std::optional<SeatRecord>> readSeatFile(const std::filesystem::path& path);
