@@ -65,7 +65,7 @@ std::string GameClient::checkServer(const protocol::SealedSample& sample) {
       break;
     case PinCheck::Refused:
       return std::string(protocol::toString(sample.kind)) + " from server '" + server +
-             "' dropped: not a valid server id, or too many servers pinned";
+             "' dropped: not a valid server id";
   }
   const auto* pinned = pins_.pinned(sample.server);
   return std::string(protocol::toString(sample.kind)) + " from server '" + server +
