@@ -12,6 +12,7 @@
 #include "client/app/shot_story.h"
 #include "client/app/spoken.h"
 #include "client/bot/shot_command.h"
+#include "rules/rotation.h"
 
 namespace pool::ui {
 namespace {
@@ -119,13 +120,8 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
     say.wrapped(detail);
   }
   if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {
-    int lowest = 0;
-    for (const auto& b : view.balls) {
-      if (b.id != physics::kCueBall && physics::onTable(b.state) && (!lowest || b.id < lowest)) {
-        lowest = b.id;
-      }
-    }
-    if (lowest) say.text("  ball on: the " + std::to_string(lowest));
+    const int lowest = rules::lowestBall(view.balls);
+    if (lowest > 0) say.text("  ball on: the " + std::to_string(lowest));
   }
 }
 

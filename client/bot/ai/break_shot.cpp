@@ -44,9 +44,10 @@ double breakValue(const Trial& trial) {
   return value;
 }
 
-bool keepsTheCueBall(const Trial& trial) {
-  return trial.judged && !trial.loses && !trial.dead_layout && trial.verdict.legal() &&
-         physics::onTable(trial.after.front().state);
+// Legal, and so with the cue ball still on the table: a scratch or a cue ball off the table is a
+// foul in every game (rules::leavingFouls).
+bool legalBreak(const Trial& trial) {
+  return trial.judged && !trial.loses && !trial.dead_layout && trial.verdict.legal();
 }
 
 }  // namespace
@@ -121,7 +122,7 @@ PlannedShot planBreak(PlanContext& context) {
       const auto trial = context.tryShot(shot);
       if (!trial) break;
       shot.value = breakValue(*trial);
-      if (keepsTheCueBall(*trial)) return shot;
+      if (legalBreak(*trial)) return shot;
       if (!best || shot.value > best->value) best = shot;
     }
   }
