@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <numbers>
@@ -104,7 +106,9 @@ inline protocol::ShotRequest softShot(const Seated& s, int seat, std::uint32_t s
 }
 
 /// A safety by whoever is to shoot in `state`: the first offered choice that shoots, the cue
-/// ball placed behind the head string when it is in hand.
+/// ball placed behind the head string when it is in hand, at 8 m/s toward the cushion point
+/// farthest from every pocket, so that it moves for seconds wherever the rack's break left it
+/// (yaw 0 from a cue ball resting by a foot corner drops it in the pocket within a few frames).
 inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Seated& s,
                                           std::uint32_t seq) {
   protocol::ShotRequest r = breakShot(s, state.shooter, seq);
@@ -116,7 +120,38 @@ inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Se
   }
   const bool in_hand =
       state.ball_in_hand != pool_IN_HAND_NONE || r.option == protocol::ShotOption::BallInHand;
-  if (in_hand) r.cue_ball_at = Eigen::Vector2d(-0.9, 0.3);
+  Eigen::Vector2d from(-0.9, 0.3);
+  if (in_hand) {
+    r.cue_ball_at = from;
+  } else {
+    for (std::uint32_t i = 0; i < state.balls._length; ++i) {
+      const auto& b = state.balls._buffer[i];
+      if (b.id == 0) from = Eigen::Vector2d(b.pos.x, b.pos.y);
+    }
+  }
+  // The standard 9-ft table (table::TableSpec): pockets at the corners and the long cushions'
+  // middles. Each of 72 directions is followed to the cushion it meets.
+  const double hx = 2.54 / 2;
+  const double hy = 1.27 / 2;
+  const Eigen::Vector2d pockets[] = {{-hx, -hy}, {0, -hy}, {hx, -hy}, {-hx, hy}, {0, hy}, {hx, hy}};
+  double best = -1.0;
+  for (int k = 0; k < 72; ++k) {
+    const double yaw = k * std::numbers::pi / 36;
+    const Eigen::Vector2d d(std::cos(yaw), std::sin(yaw));
+    const double tx = d.x() > 1e-9 ? (hx - from.x()) / d.x()
+                      : d.x() < -1e-9 ? (-hx - from.x()) / d.x()
+                                      : 1e9;
+    const double ty = d.y() > 1e-9 ? (hy - from.y()) / d.y()
+                      : d.y() < -1e-9 ? (-hy - from.y()) / d.y()
+                                      : 1e9;
+    const Eigen::Vector2d hit = from + std::min(tx, ty) * d;
+    double clear = 1e9;
+    for (const auto& p : pockets) clear = std::min(clear, (hit - p).norm());
+    if (clear > best) {
+      best = clear;
+      r.cue.yaw = yaw;
+    }
+  }
   return r;
 }
 
