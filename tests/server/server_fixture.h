@@ -138,10 +138,10 @@ inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Se
   for (int k = 0; k < 72; ++k) {
     const double yaw = k * std::numbers::pi / 36;
     const Eigen::Vector2d d(std::cos(yaw), std::sin(yaw));
-    const double tx = d.x() > 1e-9 ? (hx - from.x()) / d.x()
+    const double tx = d.x() > 1e-9    ? (hx - from.x()) / d.x()
                       : d.x() < -1e-9 ? (-hx - from.x()) / d.x()
                                       : 1e9;
-    const double ty = d.y() > 1e-9 ? (hy - from.y()) / d.y()
+    const double ty = d.y() > 1e-9    ? (hy - from.y()) / d.y()
                       : d.y() < -1e-9 ? (-hy - from.y()) / d.y()
                                       : 1e9;
     const Eigen::Vector2d hit = from + std::min(tx, ty) * d;
