@@ -27,10 +27,10 @@ inline constexpr std::size_t kPartCount = 8;
 
 /// A part's name for reports: "prediction", "pocket setup", ...
 inline const char* partName(Part part) {
-  constexpr const char* kNames[kPartCount] = {"other",   "prediction",  "integration",
-                                              "ode",     "resolution",  "watchdog",
-                                              "pockets", "pocket setup"};
-  return kNames[static_cast<std::size_t>(part)];
+  constexpr const char* kPartNames[kPartCount] = {"other",   "prediction",  "integration",
+                                                  "ode",     "resolution",  "watchdog",
+                                                  "pockets", "pocket setup"};
+  return kPartNames[static_cast<std::size_t>(part)];
 }
 
 /// Seconds spent in each part (exclusive: a part called from another is charged to itself).
