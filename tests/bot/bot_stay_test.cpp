@@ -33,8 +33,8 @@ TEST_F(BotStayTest, AStayingBotPlaysRematchesUntilItsOpponentLeaves) {
 
   // Two games over, one after the other at the same table: the rematch was asked and played. A
   // game is a race to one rack (pool-server's default), so the second one ends at rack 2 or later;
-  // games are told apart by their rack, not by phase changes in the samples as they arrived (a
-  // reader matched to the match's writer again takes an older state again).
+  // games are told apart by their rack, not by phase changes in the samples as they arrived
+  // (under the sanitizers those once counted two games over while the latest state was rack 1).
   const auto secondGameOver = [&] {
     for (const auto& st : recorder.states(match)) {
       if (st.phase == MatchPhase::Over && st.rack >= 2) return true;
