@@ -13,6 +13,8 @@
 
 #include "server_process.h"
 #include "support/domain_claim.h"
+#include "table/table_geometry.h"
+#include "table/table_spec.h"
 #include "test_client.h"
 
 namespace pool::server::test {
@@ -129,11 +131,11 @@ inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Se
       if (b.id == 0) from = Eigen::Vector2d(b.pos.x, b.pos.y);
     }
   }
-  // The standard 9-ft table (table::TableSpec): pockets at the corners and the long cushions'
-  // middles. Each of 72 directions is followed to the cushion it meets.
-  const double hx = 2.54 / 2;
-  const double hy = 1.27 / 2;
-  const Eigen::Vector2d pockets[] = {{-hx, -hy}, {0, -hy}, {hx, -hy}, {-hx, hy}, {0, hy}, {hx, hy}};
+  // The 9-ft table (TableSpec's defaults, as the server's wpa-9ft); each of 72 directions is
+  // followed to the cushion it meets.
+  const table::TableGeometry table = table::buildTableGeometry(table::TableSpec{});
+  const double hx = table.length / 2;
+  const double hy = table.width / 2;
   double best = -1.0;
   for (int k = 0; k < 72; ++k) {
     const double yaw = k * std::numbers::pi / 36;
@@ -146,7 +148,7 @@ inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Se
                                       : 1e9;
     const Eigen::Vector2d hit = from + std::min(tx, ty) * d;
     double clear = 1e9;
-    for (const auto& p : pockets) clear = std::min(clear, (hit - p).norm());
+    for (const auto& hole : table.holes) clear = std::min(clear, (hit - hole.centre).norm());
     if (clear > best) {
       best = clear;
       r.cue.yaw = yaw;
