@@ -13,7 +13,7 @@ void JoinTally::add(const std::string& what, double now) {
 
 std::optional<std::string> JoinTally::summary(double now, std::size_t watching,
                                               std::size_t tracked) {
-  if (!since_ || now - *since_ < period_) return std::nullopt;
+  if (!due(now)) return std::nullopt;
   std::string what;
   for (const auto& [name, n] : counts_) {
     what += (what.empty() ? "" : ", ") + name + " " + std::to_string(n);

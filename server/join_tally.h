@@ -21,6 +21,8 @@ class JoinTally {
   /// Once `period` s have passed since the first event counted: "joins and leaves in T s: what
   /// n, ... (W watching, C clients tracked)", and the counts start over. Empty otherwise.
   std::optional<std::string> summary(double now, std::size_t watching, std::size_t tracked);
+  /// Whether summary() would give a line at `now`.
+  bool due(double now) const { return since_ && now - *since_ >= period_; }
 
   /// Every event counted since the tally was made.
   std::uint64_t total() const { return total_; }

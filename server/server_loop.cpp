@@ -120,41 +120,29 @@ void ServerLoop::warnIfFailed(const std::string& error, const char* what) const 
 
 void ServerLoop::readJoins(double now) {
   for (auto& event : transport_.takeJoins()) {
-    if (const auto* gone = std::get_if<net::ClientGone>(&event)) {
-      if (!goneForReal(*gone, now)) continue;
-      // A seated player's going matters to an operator (once: anyone may write and let go of
-      // her instance again and again while she is away); a spectator's is counted.
-      const auto seated = seated_from_.find(gone->client);
-      const bool told = seated != seated_from_.end() && seated->second.gone_told;
-      if (registry_.clientGone(gone->client, now) && !told) {
-        if (seated != seated_from_.end()) seated->second.gone_told = true;
-        spdlog::info("client {} is gone ({})", escapedForLog(gone->client), gone->why);
-      } else {
-        spdlog::debug("client {} is gone ({})", escapedForLog(gone->client), gone->why);
-        joins_.add("gone", now);
-      }
-      transport_.forgetClient(gone->client);  // its last reply need not be kept any more
-      rate_.forget(senderClient(gone->sender, gone->client));
-    } else if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
+    if (const auto* bad = std::get_if<net::UnreadableJoin>(&event)) {
       // The action itself may be what could not be read, so the reply does not echo it.
       JoinCommand echo;
       echo.client = bad->client;
       echo.request = bad->request;
       echo.match = bad->match;
-      if (!withinSenderLimit(bad->sender, echo, now)) continue;
+      if (!withinSenderLimit(bad->sender, bad->writer, echo, now)) continue;
       spdlog::debug("unreadable join request from {}: {}", escapedForLog(bad->client), bad->reason);
       joins_.add("unreadable", now);
       ++counters_.joins_refused;
-      warnIfFailed(
-          transport_.publish(replyTo(echo, JoinAnswer::refuse(JoinOutcome::NotAllowed, bad->reason),
-                                     registry_.serverId())),
-          "join reply");
+      reply(echo, JoinAnswer::refuse(JoinOutcome::NotAllowed, bad->reason), bad->sender,
+            bad->writer, false, now);
     } else {
       const auto& join = std::get<net::IncomingJoin>(event);
       answerJoin(join.request, join.sender, join.writer, now);
     }
   }
-  sweepSeated(now);
+  sweepPresence(now);
+  if (joins_.due(now)) {
+    // What a summary counts is what is still held: the buckets full again go first.
+    rate_.sweep(now);
+    stray_answers_.sweep(now);
+  }
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
     spdlog::info("{}", *summary);
   }
@@ -168,40 +156,46 @@ void ServerLoop::readJoins(double now) {
   }
 }
 
-void ServerLoop::sweepSeated(double now) {
-  if (now - seated_swept_ < 1.0) return;
-  seated_swept_ = now;
-  // A seat's client id stays its participant's while the seat names it (away too: a player back
-  // from a stall rejoins under it); seats freed, left or rejoined from elsewhere let it go.
-  std::erase_if(seated_from_, [&](const auto& entry) { return !registry_.seats(entry.first); });
-  // A disposed instance whose writers then go is dropped by DDS without a notice: once another
-  // participant disposed a client's instance, its presence is its own writer's (unmatched when
-  // its participant's lease runs out).
-  for (auto& [client, seated] : seated_from_) {
-    if (!seated.watch_writer || transport_.writerMatched(seated.writer)) continue;
-    seated.watch_writer = false;
-    if (registry_.clientGone(client, now)) {
-      spdlog::info("client {} is gone (its writer is gone)", escapedForLog(client));
-    }
+void ServerLoop::reply(const JoinCommand& to, const JoinAnswer& answer, const std::string& sender,
+                       std::uint64_t writer, bool seated, double now) {
+  warnIfFailed(transport_.publish(replyTo(to, answer, registry_.serverId())), "join reply");
+  // The reply is kept (an instance per client) until the client is gone: its presence is tracked
+  // from now on, whoever it is.
+  for (const auto& gone : presence_.answered(to.client, writer, sender, seated)) {
+    letGo(gone, now, "one writer's clients past their bound");
   }
 }
 
-bool ServerLoop::goneForReal(const net::ClientGone& gone, double now) {
-  // "No writers" is the reader's own finding: every writer of the instance is gone. A disposal is
-  // a sample someone wrote, and anyone may write one for any client id: it counts only from the
-  // participant the client's seat request came from (a client never disposes its own instance,
-  // so in practice it does not count at all).
-  if (gone.why != "disposed") return true;
-  const auto seated = seated_from_.find(gone.client);
-  if (seated == seated_from_.end()) return true;  // no seat: nothing to keep
-  if (seated->second.sender == gone.sender) return true;
-  seated->second.watch_writer = true;
-  spdlog::debug(
-      "client {}'s instance disposed by {}, not by the participant it joined from: "
-      "ignored",
-      escapedForLog(gone.client), gone.sender);
-  joins_.add("disposal by another participant ignored", now);
-  return false;
+void ServerLoop::sweepPresence(double now) {
+  if (now - untied_at_ >= 1.0) {
+    untied_at_ = now;
+    // A client's presence stays its seat request's writer's while a seat names it (away too: a
+    // player back from a stall rejoins under it); seats freed or left let it go.
+    presence_.untieUnless([this](const std::string& client) { return registry_.seats(client); });
+    // The join buckets of clients that asked once (a flood of invented ids) go once full again,
+    // whether or not anyone asks after them.
+    rate_.sweep(now);
+    sender_rate_.sweep(now);
+    stray_answers_.sweep(now);
+  }
+  const std::uint64_t epoch = transport_.joinWriterEpoch();
+  if (epoch == join_writer_epoch_ && !presence_.fresh()) return;
+  join_writer_epoch_ = epoch;
+  for (const auto& gone : presence_.sweep(transport_.joinWriters())) {
+    letGo(gone, now, "its writer is gone");
+  }
+}
+
+void ServerLoop::letGo(const Presence::Gone& gone, double now, const char* why) {
+  // A seated player's going matters to an operator; a spectator's is counted.
+  if (registry_.clientGone(gone.client, now)) {
+    spdlog::info("client {} is gone ({})", escapedForLog(gone.client), why);
+  } else {
+    spdlog::debug("client {} is gone ({})", escapedForLog(gone.client), why);
+    joins_.add("gone", now);
+  }
+  transport_.forgetClient(gone.client);  // its last reply need not be kept any more
+  rate_.forget(senderClient(gone.sender, gone.client));
 }
 
 std::string ServerLoop::senderClient(const std::string& sender, const std::string& client) {
@@ -209,11 +203,11 @@ std::string ServerLoop::senderClient(const std::string& sender, const std::strin
 }
 
 std::size_t ServerLoop::trackedClients() const {
-  return transport_.keptReplies() + rate_.tracked() + sender_rate_.tracked() +
-         stray_answers_.tracked();
+  return transport_.keptReplies() + rate_.tracked();
 }
 
-bool ServerLoop::withinSenderLimit(const std::string& sender, const JoinCommand& echo, double now) {
+bool ServerLoop::withinSenderLimit(const std::string& sender, std::uint64_t writer,
+                                   const JoinCommand& echo, double now) {
   if (sender_rate_.allow(sender, now)) return true;
   joins_.add("over the per-participant limit", now);
   ++counters_.joins_refused;
@@ -223,7 +217,7 @@ bool ServerLoop::withinSenderLimit(const std::string& sender, const JoinCommand&
         "too many join requests: at most " +
             std::to_string(static_cast<int>(2 * JoinRateLimit::kPerSecond)) +
             " a second from one DDS participant, whatever client ids they carry");
-    warnIfFailed(transport_.publish(replyTo(echo, refusal, registry_.serverId())), "join reply");
+    reply(echo, refusal, sender, writer, false, now);
   }
   return false;
 }
@@ -242,19 +236,12 @@ void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sende
         JoinOutcome::NotAllowed, "too many join requests: at most " +
                                      std::to_string(static_cast<int>(JoinRateLimit::kPerSecond)) +
                                      " a second per client from one DDS participant");
-    warnIfFailed(transport_.publish(replyTo(command, refusal, registry_.serverId())), "join reply");
+    reply(command, refusal, sender, writer, false, now);
     return;
   }
-  if (!withinSenderLimit(sender, command, now)) return;
+  if (!withinSenderLimit(sender, writer, command, now)) return;
   const JoinAnswer answer = registry_.join(command);
   ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
-  if (answer.accepted() && protocol::changesSeat(command)) {
-    if (command.action == JoinAction::Leave) {
-      seated_from_.erase(command.client);
-    } else {
-      seated_from_[command.client] = Seated{sender, writer, false, false};
-    }
-  }
   const auto line = [&] {
     return fmt::format("join {} {} by {} ({}): {} {}", toString(command.action),
                        escapedForLog(command.match), escapedForLog(command.client),
@@ -271,7 +258,10 @@ void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sende
   // A seat (and its token) is stored before the player hears of it: a crash right after the
   // reply cannot take the seat away again. Spectators change nothing stored.
   storeChanges({});
-  warnIfFailed(transport_.publish(replyTo(command, answer, registry_.serverId())), "join reply");
+  // An accepted seat request (signed by the seat's key) ties the client's presence to its writer.
+  const bool seated =
+      answer.accepted() && protocol::changesSeat(command) && command.action != JoinAction::Leave;
+  reply(command, answer, sender, writer, seated, now);
 }
 
 void ServerLoop::readCommands(double now) {

@@ -21,6 +21,7 @@
 #include "server/match/join_rate_limit.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
+#include "server/presence.h"
 #include "server/rejection_tally.h"
 #include "server/server_config.h"
 #include "server/server_counters.h"
@@ -33,9 +34,9 @@ namespace pool::server {
 /// flight are published as their time comes, while other matches go on).
 ///
 /// Presence: players and spectators keep their JoinRequest writer for the session; its automatic
-/// liveliness lease (net::qos::kPlayerLease) runs out when the process dies, and when it is deleted
-/// on a clean exit. Either way the client's JoinRequest instance turns "no writers", the reader
-/// hands the server a notice, and the client's seats go away for `grace` seconds.
+/// liveliness lease (net::qos::kPlayerLease) runs out when the process stops or dies, and it is
+/// deleted on a clean exit. Either way every client the server answered from that writer is gone
+/// (presence.h), and its seats go away for `grace` seconds.
 class ServerLoop {
  public:
   /// With a `store`, every accepted command is committed to it before its result is published,
@@ -84,19 +85,26 @@ class ServerLoop {
   /// participant's limits.
   void answerJoin(const JoinCommand& command, const std::string& sender, std::uint64_t writer,
                   double now);
-  /// Once a second: forgets the seated clients no seat names any more, and ends the presence of
-  /// those whose instance another participant disposed once their own writer is gone.
-  void sweepSeated(double now);
+  /// Publishes `answer` to `to`'s client and tracks the client's presence from `writer` (tied to
+  /// it when `seated`, Presence::answered).
+  void reply(const JoinCommand& to, const JoinAnswer& answer, const std::string& sender,
+             std::uint64_t writer, bool seated, double now);
+  /// Lets go of the clients whose join-request writer is gone or not alive (when the writers
+  /// changed, or a client was tied to a writer since), and once a second unties the clients no
+  /// seat names.
+  void sweepPresence(double now);
+  /// `gone` is gone: its seats go away for the grace period, its reply and join bucket are dropped.
+  void letGo(const Presence::Gone& gone, double now, const char* why);
   /// Whether a join request from `sender` is within its participant's limit; one over it is
   /// counted, and refused with a reply to `echo`'s client at most once a second (the rest go
   /// unanswered: each reply is an instance the server writes).
-  bool withinSenderLimit(const std::string& sender, const JoinCommand& echo, double now);
-  /// Whether `gone` ends its client's presence: "no writers" always; a disposal only when the
-  /// participant the client's seat request came from wrote it (others are counted and ignored).
-  bool goneForReal(const net::ClientGone& gone, double now);
+  bool withinSenderLimit(const std::string& sender, std::uint64_t writer, const JoinCommand& echo,
+                         double now);
   /// The key of a client's join-rate bucket: its id as sent by `sender`.
   static std::string senderClient(const std::string& sender, const std::string& client);
-  /// Clients the server holds something for: kept replies and join-rate buckets.
+  /// Clients the server holds something for: kept replies and per-client join buckets (not the
+  /// per-participant buckets: one per DDS participant that asked lately, however many ids it
+  /// sent under, each gone once full again).
   std::size_t trackedClients() const;
   void warnIfFailed(const std::string& error, const char* what) const;
   void readCommands(double now);
@@ -157,17 +165,10 @@ class ServerLoop {
   /// Join requests per client id from one DDS participant (keyed by both): a client id is
   /// anyone's to write, so a flood under a player's id empties the flooder's bucket, not hers.
   JoinRateLimit rate_;
-  /// The DDS participant each seated client's last seat request came from: only a disposal of
-  /// its JoinRequest instance by that participant ends its presence (anyone may dispose any
-  /// instance). One entry per client a seat names.
-  struct Seated {
-    std::string sender;         ///< the participant its seat request came from
-    std::uint64_t writer = 0;   ///< that request's writer
-    bool watch_writer = false;  ///< another disposed its instance: its presence is the writer's
-    bool gone_told = false;     ///< its going was logged at info since its last seat request
-  };
-  std::unordered_map<std::string, Seated> seated_from_;
-  double seated_swept_ = 0.0;  ///< when seated_from_ last let go of clients that hold no seat, s
+  /// Each answered client, present while its join-request writer is matched.
+  Presence presence_;
+  double untied_at_ = 0.0;  ///< when presence_ last untied clients that hold no seat, s
+  std::uint64_t join_writer_epoch_ = 0;  ///< transport_.joinWriterEpoch() at the last sweep
   /// Join requests per DDS participant: one that asks under many client ids (a flood), from one
   /// writer or many, is limited as one. Twice a client's rate: a program may run a few clients.
   JoinRateLimit sender_rate_{2 * JoinRateLimit::kPerSecond, 2 * JoinRateLimit::kBurst};

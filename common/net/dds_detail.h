@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "net/dds_error.h"
 #include "net/qos_profiles.h"
@@ -65,6 +66,8 @@ std::string participantOf(std::int32_t reader, std::uint64_t publication);
 /// The GUID of `entity` in hex, as participantOf writes a participant's; empty on failure.
 std::string guidOf(std::int32_t entity);
 MatchedStatus subscriptionMatched(std::int32_t reader);
+/// The publication handles of the writers matched with `reader` now, in ascending order.
+std::vector<std::uint64_t> matchedPublications(std::int32_t reader);
 LivelinessStatus livelinessChanged(std::int32_t reader);
 /// Blocks until `entity` (a writer or reader) matches at least `count` peers or `timeout` passes.
 bool waitForMatches(std::int32_t entity, bool is_writer, std::uint32_t count,

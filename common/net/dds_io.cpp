@@ -163,6 +163,23 @@ MatchedStatus subscriptionMatched(std::int32_t reader) {
   return {s.current_count, s.total_count};
 }
 
+std::vector<std::uint64_t> matchedPublications(std::int32_t reader) {
+  std::vector<dds_instance_handle_t> handles(16);
+  for (;;) {
+    // Returns how many are matched, filling at most handles.size(): a larger count asks again.
+    const std::int32_t n = check(
+        dds_get_matched_publications(reader, handles.data(), handles.size()), "matched writers");
+    if (static_cast<std::size_t>(n) <= handles.size()) {
+      handles.resize(static_cast<std::size_t>(n));
+      break;
+    }
+    handles.resize(static_cast<std::size_t>(n));
+  }
+  std::vector<std::uint64_t> out(handles.begin(), handles.end());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 std::string participantOf(std::int32_t reader, std::uint64_t publication) {
   dds_builtintopic_endpoint_t* data = dds_get_matched_publication_data(reader, publication);
   if (data == nullptr) return {};

@@ -64,6 +64,12 @@ class Reader {
   /// Writers matched with this reader.
   MatchedStatus subscriptionMatched() const { return detail::subscriptionMatched(handle()); }
 
+  /// The publication handles (as `meta().publication_handle`) of the writers matched now, in
+  /// ascending order.
+  std::vector<std::uint64_t> matchedWriters() const {
+    return detail::matchedPublications(handle());
+  }
+
   /// The liveliness of matched writers; reading it resets the change counts.
   LivelinessStatus livelinessChanged() const { return detail::livelinessChanged(handle()); }
 

@@ -1,11 +1,14 @@
 // The server's topics, readers, writers and waitset, and the conversions at their edge.
 #include "net/server_transport.h"
 
+#include <algorithm>
+#include <iterator>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "net/aim_convert.h"
+#include "net/liveliness_watch.h"
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
@@ -79,6 +82,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
 
   protocol::KeyPair key;
   Reader<pool_JoinRequest> join_requests;
+  LivelinessWatch join_liveliness{join_requests.handle()};  ///< after join_requests: it goes first
   Reader<pool_ShotCommand> commands;
   Reader<pool_PracticeCommand> practice;
   Writer<pool_MatchInfo> match_info;
@@ -117,34 +121,20 @@ void ServerTransport::wait(std::chrono::nanoseconds timeout) const {
 
 std::vector<JoinEvent> ServerTransport::takeJoins() {
   std::vector<JoinEvent> out;
-  for (auto& sample : e_->join_requests.takeWithNotices()) {
+  // JoinRequest has no key: its one instance's notices (a disposal anyone may write, "no writers"
+  // when every client is gone) say nothing about any one client, so only data is taken.
+  for (auto& sample : e_->join_requests.take()) {
     const pool_JoinRequest& r = *sample;
-    const std::string client(textOf(r.client));
-    if (!sample.meta().valid) {
-      // The client's JoinRequest writer is gone (lease expired or deleted): it vanished.
-      if (sample.meta().instance != InstanceState::Alive) {
-        out.emplace_back(
-            ClientGone{client, toString(sample.meta().instance),
-                       e_->senderOf(e_->join_requests, sample.meta().publication_handle)});
-      }
-      continue;
-    }
     std::string sender = e_->senderOf(e_->join_requests, sample.meta().publication_handle);
-    // Its writer went away before the request was read: no separate notice follows, so the
-    // client is gone right after its request (joined or not, it is noticed).
-    std::optional<ClientGone> gone;
-    if (sample.meta().instance != InstanceState::Alive) {
-      gone = ClientGone{client, toString(sample.meta().instance), sender};
-    }
     auto request = fromWire(r);
     if (!request) {
-      out.emplace_back(UnreadableJoin{client, r.request, std::string(textOf(r.match)),
-                                      request.error(), std::move(sender)});
+      out.emplace_back(UnreadableJoin{std::string(textOf(r.client)), r.request,
+                                      std::string(textOf(r.match)), request.error(),
+                                      std::move(sender), sample.meta().publication_handle});
     } else {
       out.emplace_back(
           IncomingJoin{std::move(*request), std::move(sender), sample.meta().publication_handle});
     }
-    if (gone) out.emplace_back(std::move(*gone));
   }
   return out;
 }
@@ -224,8 +214,20 @@ std::size_t ServerTransport::matchPartitions() const {
   return e_->matches.size();
 }
 
-bool ServerTransport::writerMatched(std::uint64_t writer) const {
-  return !e_->join_requests.participantOf(writer).empty();
+std::vector<std::uint64_t> ServerTransport::joinWriters() const {
+  const std::vector<std::uint64_t> matched = e_->join_requests.matchedWriters();
+  const std::vector<std::uint64_t> stopped = e_->join_liveliness.notAlive();
+  std::vector<std::uint64_t> alive;
+  std::set_difference(matched.begin(), matched.end(), stopped.begin(), stopped.end(),
+                      std::back_inserter(alive));
+  return alive;
+}
+
+std::uint64_t ServerTransport::joinWriterEpoch() const {
+  // Each match adds one to total and current, each unmatch takes one from current: 2 total -
+  // current grows by one at every one of them.
+  const MatchedStatus s = e_->join_requests.subscriptionMatched();
+  return 2 * std::uint64_t{s.total} - s.current + e_->join_liveliness.changes();
 }
 
 std::string ServerTransport::participantGuid() const {

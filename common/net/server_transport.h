@@ -29,30 +29,24 @@ struct UnreadableJoin {
   std::uint32_t request = 0;
   std::string match;
   std::string reason;
-  std::string sender;  ///< the DDS participant it came from (IncomingJoin::sender)
+  std::string sender;        ///< the DDS participant it came from (IncomingJoin::sender)
+  std::uint64_t writer = 0;  ///< its writer (IncomingJoin::writer)
 };
 
-/// A join request as read, with the DDS participant it came from: a client names itself, but one
-/// participant sending under many client ids (from one writer or many) is still one asking.
+/// A join request as read, with the DDS participant and the writer it came from: a client names
+/// itself, but one participant sending under many client ids (from one writer or many) is still
+/// one asking, and a client is present while the writer of its requests is matched
+/// (ServerTransport::joinWriters).
 struct IncomingJoin {
   protocol::SeatRequest request;
   /// "participant <GUID in hex>", or "writer <publication handle>" when its writer was no
   /// longer matched by the time it was read.
   std::string sender;
-  std::uint64_t writer = 0;  ///< the writer's publication handle (for writerMatched)
-};
-
-/// A client whose JoinRequest writer went away (its liveliness lease ran out, or it exited).
-struct ClientGone {
-  std::string client;
-  std::string why;  ///< "no_writers" or "disposed"
-  /// The DDS participant whose writer wrote the instance last (for "disposed": the one that
-  /// disposed it), as IncomingJoin::sender names it.
-  std::string sender;
+  std::uint64_t writer = 0;  ///< the writer's publication handle (as joinWriters lists them)
 };
 
 /// What the join-request topic delivered.
-using JoinEvent = std::variant<IncomingJoin, UnreadableJoin, ClientGone>;
+using JoinEvent = std::variant<IncomingJoin, UnreadableJoin>;
 
 /// The server's participant, its readers of requests and commands and its writers of lobby
 /// entries, replies, results, frames and states (QoS from qos_profiles.h). Lobby entries and
@@ -94,9 +88,14 @@ class ServerTransport {
   /// Matches whose writers are open, each in its own partition (until dispose).
   std::size_t matchPartitions() const;
 
-  /// Whether the join-request writer `writer` (IncomingJoin::writer) is still matched: false once
-  /// its participant's lease ran out or it was deleted.
-  bool writerMatched(std::uint64_t writer) const;
+  /// The join-request writers alive now (IncomingJoin::writer), ascending: a writer leaves the
+  /// list when its liveliness lease runs out (its process stopped or died: net::qos::kPlayerLease),
+  /// when it is deleted, or when its participant's lease runs out. JoinRequest has no key, so this,
+  /// not an instance per client id, is how the server knows who is still there.
+  std::vector<std::uint64_t> joinWriters() const;
+  /// A number that grows whenever joinWriters() may have changed (a writer matched or unmatched,
+  /// lost or regained its liveliness).
+  std::uint64_t joinWriterEpoch() const;
   /// The GUID of the server's DDS participant in hex (as a reader's participantOf names it).
   std::string participantGuid() const;
   /// Clients whose last join reply is kept for late readers (until forgetClient).

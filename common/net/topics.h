@@ -6,7 +6,7 @@
 namespace pool::net::topics {
 
 inline constexpr std::string_view kMatchInfo = "pool/MatchInfo";              ///< lobby, key match
-inline constexpr std::string_view kJoinRequest = "pool/JoinRequest";          ///< key client
+inline constexpr std::string_view kJoinRequest = "pool/JoinRequest";          ///< no key
 inline constexpr std::string_view kJoinReply = "pool/JoinReply";              ///< key client
 inline constexpr std::string_view kShotCommand = "pool/ShotCommand";          ///< no key
 inline constexpr std::string_view kShotResult = "pool/ShotResult";            ///< key match + seat

@@ -10,7 +10,8 @@ namespace pool::protocol {
 /// of the match's own (an older client, listening in the default partition, would see none);
 /// practice tables (the practice setting, PracticeCommand, the practice fields of MatchInfo and
 /// MatchState); a seat may concede its rack (JOIN_CONCEDE); the shooter's live aim
-/// (AimCommand in, CueAim relayed by the server).
-inline constexpr unsigned kProtocolVersion = 5;
+/// (AimCommand in, CueAim relayed by the server). 6: JoinRequest has no key (a client's presence
+/// is its writer's, so client ids anyone invents cost the server no instance).
+inline constexpr unsigned kProtocolVersion = 6;
 
 }  // namespace pool::protocol

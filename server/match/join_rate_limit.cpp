@@ -6,7 +6,7 @@
 namespace pool::server {
 
 bool JoinRateLimit::allow(const std::string& client, double now) {
-  sweep(now);
+  if (now - swept_ >= 1.0) sweep(now);
   auto [it, fresh] = buckets_.try_emplace(client, Bucket{burst_, now});
   Bucket& b = it->second;
   if (!fresh) {
@@ -26,7 +26,6 @@ bool JoinRateLimit::tellRefusal(const std::string& client, double now) {
 }
 
 void JoinRateLimit::sweep(double now) {
-  if (now - swept_ < 1.0) return;
   swept_ = now;
   std::erase_if(buckets_, [&](const auto& entry) {
     const Bucket& b = entry.second;

@@ -27,6 +27,9 @@ class JoinRateLimit {
   bool tellRefusal(const std::string& client, double now);
   /// `client` is gone: its bucket goes too.
   void forget(const std::string& client) { buckets_.erase(client); }
+  /// Drops the buckets that have filled up again by `now` (allow() does so once a second; this is
+  /// for the quiet after a flood, and before the buckets are counted).
+  void sweep(double now);
   /// Clients tracked now.
   std::size_t tracked() const { return buckets_.size(); }
 
@@ -39,8 +42,6 @@ class JoinRateLimit {
     double at = 0.0;       ///< when `tokens` was last brought up to date
     double told = -1.0e9;  ///< when a refusal was last sent
   };
-  /// Drops the buckets that have filled up again by `now` (at most once a second).
-  void sweep(double now);
 
   double per_second_;
   double burst_;

@@ -46,7 +46,10 @@ class BotRejoinTest : public ClientIntegrationTest {
 TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   open(kRejoin, "rejoin");
   MatchRecorder recorder(kRejoin);
-  startServer({"--fast", "--grace", "30"});
+  // A race to two racks: racks differ per match, and a first rack that ends before alice's turn
+  // comes (her opponent runs it out, or pots the 8 early) leaves none to interrupt; the second
+  // rack gives her one.
+  startServer({"--fast", "--grace", "30", "--race", "2"});
   const std::vector<std::string> alice_args{"--think", "0.2", "--token-file", file("alice.json")};
   ChildProcess* alice = &startBot("alice", 5, alice_args);
   ChildProcess& bob = startBot("bob", 6, {"--think", "0.2"});
@@ -103,7 +106,10 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
 TEST_F(BotRejoinTest, ABotStalledPastItsLeaseTakesItsSeatBackAndPlaysOn) {
   open(kStarved, "starved");
   MatchRecorder recorder(kStarved);
-  startServer({"--fast", "--grace", "30"});
+  // A race to two racks: racks differ per match, and a first rack that ends before alice's turn
+  // comes (her opponent runs it out, or pots the 8 early) leaves none to interrupt; the second
+  // rack gives her one.
+  startServer({"--fast", "--grace", "30", "--race", "2"});
   ChildProcess* alice = &startBot("alice", 9, {"--think", "0.2"});
   ChildProcess& bob = startBot("bob", 10, {"--think", "0.2"});
   ASSERT_TRUE(untilTurnOf(recorder, "alice", 1))

@@ -251,26 +251,29 @@ TEST_F(ServerFlood, EveryBadCommandIsRefusedAndOtherMatchesKeepTheirSnapshotRate
   EXPECT_GE(flooded, 0.5 * base);
 }
 
-/// Spectators that each ask to watch `match` once and vanish at once (their JoinRequest instance
-/// unregistered right after the request: the server may read the request after it is gone), as
-/// fast as `per_second` allows, each with a client id of its own, from `writers` writers of one
-/// participant in turn (so that neither the client id nor the writer names the flood).
+/// Spectators that each ask to watch `match` once, as fast as `per_second` allows, each with a
+/// client id of its own, from `writers` writers of one participant in turn (so that neither the
+/// client id nor the writer names the flood), and vanish with those writers at the end of each
+/// flood (a client's presence is its writer's: the writers go right after the last request, so
+/// the server may read requests after their writer is gone).
 class SpectatorFlooder {
  public:
   SpectatorFlooder(std::uint32_t domain, std::string match, std::size_t writers)
-      : bus_(domain), match_(std::move(match)) {
-    for (std::size_t i = 0; i < writers; ++i) {
+      : bus_(domain), match_(std::move(match)), count_(writers) {}
+
+  /// Makes the writers and waits for the server's reader to match them.
+  bool waitForServer() {
+    for (std::size_t i = writers_.size(); i < count_; ++i) {
       writers_.emplace_back(bus_.participant, bus_.join_request_topic, net::qos::joinRequest());
     }
-  }
-
-  bool waitForServer() {
     return std::all_of(writers_.begin(), writers_.end(),
                        [](const auto& w) { return w.waitForReaders(1, 15s); });
   }
 
-  /// Sends `count` spectators at `per_second`; returns the seconds it took.
+  /// Sends `count` spectators at `per_second`, then deletes the writers; returns the seconds it
+  /// took.
   double flood(std::uint32_t count, double per_second) {
+    EXPECT_TRUE(waitForServer());
     const auto t0 = Clock::now();
     for (std::uint32_t i = 0; i < count; ++i) {
       const auto due = t0 + std::chrono::duration<double>(i / per_second);
@@ -282,17 +285,18 @@ class SpectatorFlooder {
       net::setText(w.match, match_);
       w.action = pool_JOIN_SPECTATE;
       w.seat = -1;
-      const auto& writer = writers_[i % writers_.size()];
-      EXPECT_TRUE(writer.write(w));
-      writer.unregister(w);
+      EXPECT_TRUE(writers_[i % writers_.size()].write(w));
     }
-    return std::chrono::duration<double>(Clock::now() - t0).count();
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    writers_.clear();
+    return seconds;
   }
 
  private:
   net::ProtocolTopics bus_;
   std::deque<net::Writer<pool_JoinRequest>> writers_;
   std::string match_;
+  std::size_t count_;
   std::uint32_t next_ = 0;
 };
 
