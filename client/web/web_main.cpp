@@ -1,7 +1,9 @@
 // pool-web: the web spectator's gateway. Joins the DDS domain as a spectator and serves the page
 // and its WebSocket stream over HTTP.
 #include <CLI/CLI.hpp>
-#include <boost/asio.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
