@@ -133,6 +133,9 @@ void Controls::keyDown(Key key, Mods mods) {
     case Key::F1:
       toggles_.help = !toggles_.help;
       break;
+    case Key::Tab:
+      toggles_.panes = !toggles_.panes;
+      break;
     case Key::R:
     case Key::N:
     case Key::F11:

@@ -55,6 +55,7 @@ struct Toggles {
   bool textures = true;
   bool lighting = true;
   bool help = false;  ///< the help overlay (F1)
+  bool panes = true;  ///< the HUD's panes (Tab hides and shows them)
 };
 
 /// What a click may call: the object balls on the table and the pockets' mouths (m).

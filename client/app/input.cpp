@@ -10,7 +10,7 @@
 namespace pool::app {
 
 std::optional<Key> keyFromName(std::string_view name) {
-  static constexpr std::array<std::pair<std::string_view, Key>, 36> kNames{{
+  static constexpr std::array<std::pair<std::string_view, Key>, 37> kNames{{
       {"LEFT", Key::Left}, {"RIGHT", Key::Right},   {"UP", Key::Up},
       {"DOWN", Key::Down}, {"SPACE", Key::Space},   {"A", Key::A},
       {"Z", Key::Z},       {"S", Key::S},           {"X", Key::X},
@@ -23,6 +23,7 @@ std::optional<Key> keyFromName(std::string_view name) {
       {"J", Key::J},       {"H", Key::H},           {"8", Key::Num8},
       {"9", Key::Num9},    {"0", Key::Num0},        {"BACKSPACE", Key::Backspace},
       {"F5", Key::F5},     {"F6", Key::F6},         {"F7", Key::F7},
+      {"TAB", Key::Tab},
   }};
   std::string upper(name);
   std::transform(upper.begin(), upper.end(), upper.begin(),

@@ -46,6 +46,7 @@ enum class Key : std::uint8_t {
   F5,         ///< save the table and the last shot as a scenario file
   F6,         ///< load a scenario file
   F7,         ///< the physics pane on/off
+  Tab,        ///< every pane hidden / shown again
 };
 
 /// Modifier keys held with a key.

@@ -33,6 +33,7 @@ const std::vector<KeyHelp>& keyHelp() {
       {"practice", "F5 / F6", "save the table and the last shot as a scenario / load one"},
       {"practice", "F7", "the physics pane: this table's coefficients"},
       {"always", "F11", "full screen, on and off"},
+      {"always", "Tab", "hide every pane (a question asked stays) / show them again"},
       {"always", "F1", "this help and the settings, on and off"},
   };
   return kHelp;

@@ -80,6 +80,8 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::F6;
     case GLFW_KEY_F7:
       return Key::F7;
+    case GLFW_KEY_TAB:
+      return Key::Tab;
     default:
       return std::nullopt;
   }

@@ -430,8 +430,19 @@ void settingsLines(Say& say, const HudInput& in) {
   if (changed) say.out().settings = s;
 }
 
+/// With the panes hidden: one small line in the top-left corner, no background.
+void hiddenLine(Say& say) {
+  anchor(ImVec2(0.0f, 0.0f), 0.5f, 0.1f);
+  ImGui::Begin("HUD hidden", nullptr,
+               kPane | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
+                   ImGuiWindowFlags_NoInputs);
+  say.text("Tab: show the panes");
+  ImGui::End();
+}
+
 void helpPanel(Say& say, const HudInput& in) {
   anchor(ImVec2(0.5f, 0.5f), 0.9f, 0.9f, std::min(screenSize().x * 0.9f, px(760.0f)));
+  ImGui::SetNextWindowBgAlpha(1.0f);  // over the table and the other panes: nothing shows through
   ImGui::Begin("Keys (F1 closes)", nullptr, kPane);
   if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     for (const auto& k : app::keyHelp()) {
@@ -476,6 +487,12 @@ float hudScale(int height) {
 HudActions drawHud(const HudInput& input) {
   HudActions actions;
   Say say(actions);
+  if (!input.panes) {
+    hiddenLine(say);
+    gameOverPanel(say, input);
+    concedePanel(say, input);
+    return actions;
+  }
   matchPanel(say, input);
   bannerPanel(say, input);
   choicePanel(say, input);

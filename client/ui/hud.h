@@ -33,6 +33,9 @@ struct HudInput {
   std::string banner;                            ///< the last shot's story (app::shotStory)
   const std::deque<std::string>* log = nullptr;  ///< every shot's story, oldest first
   bool help = false;                             ///< the help overlay (F1)
+  /// The panes (Tab): when false only a question asked (concede, game over) and a line saying
+  /// how to bring them back are drawn.
+  bool panes = true;
   /// The players' names (remembered after a player leaves); empty: read from `view`.
   std::optional<app::SeatNames> names;
   app::Settings settings;      ///< as they are now (shown with the help)

@@ -462,7 +462,7 @@ class WindowApp {
       }
     } else {
       HudActions actions = drawHud(hudInput());
-      if (const client::MatchView* v = session_.view()) {
+      if (const client::MatchView* v = session_.view(); v && controls_.toggles().panes) {
         practice_.drawPhysicsPane(*v, actions.texts);
       }
       hudActions(actions);
@@ -487,6 +487,7 @@ class WindowApp {
     in.banner = session_.banner();
     in.log = &session_.shotLog();
     in.help = controls_.toggles().help;
+    in.panes = controls_.toggles().panes;
     in.names = session_.names();
     in.settings = currentSettings();
     in.can_concede = canConcede();

@@ -190,6 +190,7 @@ void PracticeDesk::drawPhysicsPane(const client::MatchView& view, std::vector<st
   if (!pane_open_ || !view.settings.practice) return;
   if (!editing_) editing_ = view.coefficients;
   ImGui::SetNextWindowPos(ImVec2(10, 300), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // the panes beneath do not show through
   ImGui::Begin("Physics (this table)", &pane_open_, ImGuiWindowFlags_AlwaysAutoResize);
   texts.emplace_back(view.standard_physics ? "physics: standard" : "physics: not standard");
   ImGui::TextUnformatted(view.standard_physics ? "standard coefficients" : "not a standard table");

@@ -1,12 +1,15 @@
 // Every HUD pane lies inside the window at every size from 1024×600 to 2560×1440: the HUD drawn by
 // Dear ImGui (no window needed: its layout is the same without a renderer) with every pane open at
-// once, long texts included, and each pane's rectangle checked against the screen.
+// once, long texts included, and each pane's rectangle checked against the screen. Tab hides every
+// pane but a question asked; the help pane is opaque.
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,13 +49,25 @@ class ImGuiFrames {
       ImGui::Render();
     }
     std::vector<std::pair<std::string, ImRect>> out;
+    backgrounds_.clear();
     for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
       if (!w->WasActive || w->Hidden || (w->Flags & ImGuiWindowFlags_ChildWindow) != 0) continue;
       if (std::string(w->Name).rfind("Debug##", 0) == 0) continue;  // ImGui's own, never shown
       out.emplace_back(w->Name, w->Rect());
+      // A pane's draw list starts with its background (the first vertex's colour), unless it has
+      // none.
+      if ((w->Flags & ImGuiWindowFlags_NoBackground) == 0 && !w->DrawList->VtxBuffer.empty()) {
+        backgrounds_[w->Name] = (w->DrawList->VtxBuffer[0].col >> IM_COL32_A_SHIFT) & 0xFF;
+      }
     }
     return out;
   }
+
+  /// The alpha (0–255) of each pane's background as last laid out by panes().
+  const std::map<std::string, unsigned>& backgrounds() const { return backgrounds_; }
+
+ private:
+  std::map<std::string, unsigned> backgrounds_;
 };
 
 /// A player aiming mid-race with every pane up: the match, the last shot's banner, a choice of
@@ -144,6 +159,43 @@ TEST(HudPanes, EveryPaneOfTheGameOverScreenStaysInsideTheWindow) {
   in.can_concede = in.concede_asked = false;
   // Match, last shot, shot, match log, game over, keys.
   expectInside(imgui, in, 6);
+}
+
+std::vector<std::string> names(const std::vector<std::pair<std::string, ImRect>>& panes) {
+  std::vector<std::string> out;
+  for (const auto& [name, r] : panes) out.push_back(name);
+  return out;
+}
+
+TEST(HudPanes, TabHidesEveryPaneButTheQuestionAskedAndBringsThemBack) {
+  ImGuiFrames imgui;
+  Table table;
+  // The Tab key toggles what the HUD is given.
+  table.controls.keyDown(app::Key::Tab, {});
+  HudInput in = table.input();
+  in.panes = table.controls.toggles().panes;
+  ASSERT_FALSE(in.panes);
+  using ::testing::UnorderedElementsAre;
+  EXPECT_THAT(names(imgui.panes(in, 1280, 720)),
+              UnorderedElementsAre("HUD hidden", "Concede the rack?"));
+  in.concede_asked = false;
+  EXPECT_THAT(names(imgui.panes(in, 1280, 720)), UnorderedElementsAre("HUD hidden"));
+  table.controls.keyDown(app::Key::Tab, {});
+  in.panes = table.controls.toggles().panes;
+  EXPECT_TRUE(in.panes);
+  EXPECT_GE(imgui.panes(in, 1280, 720).size(), 6u) << "the panes are back";
+}
+
+TEST(HudPanes, TheHelpPaneIsOpaqueOverTheOthers) {
+  ImGuiFrames imgui;
+  const Table table;
+  (void)imgui.panes(table.input(), 1280, 720);
+  const auto& bg = imgui.backgrounds();
+  ASSERT_TRUE(bg.count("Keys (F1 closes)"));
+  EXPECT_EQ(bg.at("Keys (F1 closes)"), 255u);
+  // The other panes keep the style's translucent background, so this check can tell them apart.
+  ASSERT_TRUE(bg.count("Match"));
+  EXPECT_LT(bg.at("Match"), 255u);
 }
 
 }  // namespace
