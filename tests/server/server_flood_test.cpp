@@ -398,10 +398,14 @@ TEST_F(ServerFlood, SpectatorsFloodingInAndVanishingCostNoStoreNoLogAndLeaveNoth
   std::uint64_t answered_before = baseline.spectators;
   for (int n = 1; n <= 3; ++n) {
     if (n == 2) {
-      ASSERT_TRUE(a.waitUntil([&] {
-        const auto* st = a.latestState("t-1");
-        return st && st->shot_number >= 2;
-      }));
+      // Shot 2 is anyLegalShot's 8 m/s safety, paced to the wall clock: it may roll for half a
+      // minute.
+      ASSERT_TRUE(a.waitUntil(
+          [&] {
+            const auto* st = a.latestState("t-1");
+            return st && st->shot_number >= 2;
+          },
+          90s));
       a.waitUntil([] { return false; }, 200ms);  // the state is stored before it is published
       stored = storeFiles(db);
     }
