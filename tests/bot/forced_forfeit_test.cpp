@@ -11,8 +11,8 @@
 #include "net/reader.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
-#include "protocol/protocol_version.h"
 #include "support/client_fixture.h"
+#include "support/spectate_request.h"
 
 namespace pool::client::test {
 namespace {
@@ -54,14 +54,7 @@ class Stranger {
   /// Asks to watch `match` under a client id of the stranger's own and waits for the answer: the
   /// server has then read everything this writer wrote before.
   bool answeredAfter(const std::string& match, std::chrono::seconds timeout) {
-    pool_JoinRequest w{};
-    net::setText(w.client, "stranger-probe");
-    w.request = 1;
-    w.protocol_version = protocol::kProtocolVersion;
-    net::setText(w.match, match);
-    w.action = pool_JOIN_SPECTATE;
-    w.seat = -1;
-    if (!writer_.write(w)) return false;
+    if (!writer_.write(*pool::test::spectateRequest("stranger-probe", match, 1))) return false;
     const auto until = std::chrono::steady_clock::now() + timeout;
     while (std::chrono::steady_clock::now() < until) {
       for (auto& reply : replies_.take()) {
@@ -78,15 +71,10 @@ class Stranger {
     const auto t0 = std::chrono::steady_clock::now();
     for (std::uint32_t i = 0; !stop.load(); ++i) {
       std::this_thread::sleep_until(t0 + std::chrono::duration<double>(i / per_second));
-      pool_JoinRequest w{};
-      net::setText(w.client, client);
-      w.request = 1000000 + i;  // numbers of its own: this is about limits, not replies
-      w.protocol_version = protocol::kProtocolVersion;
-      net::setText(w.match, match);
-      w.action = pool_JOIN_SPECTATE;
-      w.seat = -1;
-      if (writer_.write(w)) ++sent_;
-      (void)writer_.unregister(w);  // as above: her own writer's going stays visible
+      // Numbers of its own: this is about limits, not replies.
+      const auto w = pool::test::spectateRequest(client, match, 1000000 + i);
+      if (writer_.write(*w)) ++sent_;
+      (void)writer_.unregister(*w);  // and lets go of the instance again, as the disposal did
     }
   }
 

@@ -18,9 +18,9 @@
 #include "net/qos_profiles.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
-#include "protocol/protocol_version.h"
 #include "server_fixture.h"
 #include "support/sanitizer.h"
+#include "support/spectate_request.h"
 
 namespace pool::server::test {
 namespace {
@@ -94,8 +94,9 @@ class InventedIds {
   ~InventedIds() { join(); }
 
   std::uint32_t sent() const { return sent_.load(); }
-  /// The shot and practice commands sent, or the join requests.
-  std::uint32_t shotsAndPractice() const { return shots_and_practice_.load(); }
+  /// What the server counts one by one: the shot and practice commands sent (aims are best
+  /// effort), or the join requests.
+  std::uint32_t counted() const { return counted_.load(); }
   double seconds() const { return seconds_; }
 
  private:
@@ -106,15 +107,9 @@ class InventedIds {
       if (Clock::now() < due) std::this_thread::sleep_until(due);
       const std::string match = "ghost-" + std::to_string(n);
       if (flood_ == Flood::Joins) {
-        pool_JoinRequest w{};
-        net::setText(w.client, "invented-" + std::to_string(n));
-        w.request = 1;
-        w.protocol_version = protocol::kProtocolVersion;
-        net::setText(w.match, n % 2 == 0 ? "t-1" : match);
-        w.action = pool_JOIN_SPECTATE;
-        w.seat = -1;
-        EXPECT_TRUE(joins_.write(w));
-        ++shots_and_practice_;
+        EXPECT_TRUE(joins_.write(*pool::test::spectateRequest("invented-" + std::to_string(n),
+                                                              n % 2 == 0 ? "t-1" : match, 1)));
+        ++counted_;
         sent_ = n + 1;
         continue;
       }
@@ -126,7 +121,7 @@ class InventedIds {
           r.seat_token = 1;
           r.cue.speed = 2.0;
           EXPECT_TRUE(shots_.write(*net::toWire(r)));
-          ++shots_and_practice_;
+          ++counted_;
           break;
         }
         case 1: {
@@ -135,7 +130,7 @@ class InventedIds {
           r.seq = 1;
           r.seat_token = 1;
           EXPECT_TRUE(practice_.write(*net::toWire(r)));
-          ++shots_and_practice_;
+          ++counted_;
           break;
         }
         default: {
@@ -160,7 +155,7 @@ class InventedIds {
   net::Writer<pool_JoinRequest> joins_;
   std::thread thread_;
   std::atomic<std::uint32_t> sent_{0};
-  std::atomic<std::uint32_t> shots_and_practice_{0};
+  std::atomic<std::uint32_t> counted_{0};
   double seconds_ = 0.0;
 };
 
@@ -215,7 +210,7 @@ void InventedIdsFlood::run(Flood flood) {
   // The server has read the whole flood: every shot and practice command refused, every join
   // request counted (its summaries come once a second; the aims are best effort, some never
   // arrive).
-  const std::uint64_t commands = stranger.shotsAndPractice();
+  const std::uint64_t commands = stranger.counted();
   const auto read = [&] {
     return flood == Flood::Joins ? joinsRead(server_->log()) : refusedCommands(server_->log());
   };

@@ -20,6 +20,7 @@
 #include "server_fixture.h"
 #include "support/child_process.h"
 #include "support/sanitizer.h"
+#include "support/spectate_request.h"
 
 namespace pool::server::test {
 constexpr bool kUnderAddressSanitizer = POOL_UNDER_ASAN;
@@ -278,14 +279,8 @@ class SpectatorFlooder {
     for (std::uint32_t i = 0; i < count; ++i) {
       const auto due = t0 + std::chrono::duration<double>(i / per_second);
       if (Clock::now() < due) std::this_thread::sleep_until(due);
-      pool_JoinRequest w{};
-      net::setText(w.client, "watcher-" + std::to_string(next_++));
-      w.request = 1;
-      w.protocol_version = protocol::kProtocolVersion;
-      net::setText(w.match, match_);
-      w.action = pool_JOIN_SPECTATE;
-      w.seat = -1;
-      EXPECT_TRUE(writers_[i % writers_.size()].write(w));
+      EXPECT_TRUE(writers_[i % writers_.size()].write(
+          *pool::test::spectateRequest("watcher-" + std::to_string(next_++), match_, 1)));
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     writers_.clear();
@@ -507,14 +502,8 @@ TEST_F(ServerFlood, AClientAskingTooOftenIsToldToWaitAndOthersAreNot) {
   const auto t0 = Clock::now();
   for (int i = 0; i < 60; ++i) {
     const protocol::SeatRequest r = eager.request(pool_JOIN_SPECTATE, "t-1");
-    pool_JoinRequest w{};
-    net::setText(w.client, r.client);
-    w.request = last = r.request;
-    w.protocol_version = r.protocol_version;
-    net::setText(w.match, r.match);
-    w.action = pool_JOIN_SPECTATE;
-    w.seat = -1;
-    eager.writeJoin(w);
+    last = r.request;
+    eager.writeJoin(*pool::test::spectateRequest(r.client, r.match, r.request));
   }
   const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
   ASSERT_TRUE(eager.waitUntil([&] {
