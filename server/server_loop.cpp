@@ -139,9 +139,8 @@ void ServerLoop::readJoins(double now) {
   }
   sweepPresence(now);
   if (joins_.due(now)) {
-    // What a summary counts is what is still held: the buckets full again go first.
+    // What a summary counts is what is still held: the client buckets full again go first.
     rate_.sweep(now);
-    stray_answers_.sweep(now);
   }
   if (auto summary = joins_.summary(now, registry_.spectators(), trackedClients())) {
     spdlog::info("{}", *summary);
