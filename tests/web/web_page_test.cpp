@@ -87,6 +87,30 @@ struct PageCamera {
   }
 };
 
+// A ball on the table with no other ball within 3.5 radii and no pocket within 16 cm: the ring
+// just outside its disc should be felt alone.
+bool alone(const protocol::MatchView& view, const physics::Ball& ball) {
+  constexpr double r = 0.028575;
+  if (!physics::onTable(ball.state)) return false;
+  for (const auto& other : view.balls) {
+    if (other.id == ball.id || !physics::onTable(other.state)) continue;
+    if ((other.pos - ball.pos).head<2>().norm() <= 3.5 * r) return false;
+  }
+  for (double px : {-1.27, 0.0, 1.27}) {
+    for (double py : {-0.635, 0.635}) {
+      if (std::hypot(ball.pos.x() - px, ball.pos.y() - py) <= 0.16) return false;
+    }
+  }
+  return true;
+}
+
+bool anyAlone(const protocol::MatchView& view) {
+  for (const auto& ball : view.balls) {
+    if (alone(view, ball)) return true;
+  }
+  return false;
+}
+
 std::optional<PageCamera> pageCamera(ChromiumPage& page) {
   const auto c = page.evaluate("window.poolTest.camera()", 10s);
   if (!c || c->is_null()) return std::nullopt;
@@ -126,11 +150,13 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
   ASSERT_TRUE(page.open(url + "?match=" + match, 20s)) << page.lastError();
   ASSERT_TRUE(page.setViewport(1100, 700, false, 20s)) << page.lastError();
 
-  // Wait until the page shows, at rest, the latest state the server published; take the
-  // screenshot then, and keep it only if the state did not change meanwhile.
+  // Wait until the page shows, at rest, the latest state the server published, with at least one
+  // ball alone (racks differ match to match, and a break can leave every ball beside another or a
+  // pocket: then the bots' next shot is waited for); take the screenshot then, and keep it only if
+  // the state did not change meanwhile.
   Image shot;
   MatchView shown;
-  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
   std::string last_status;
   while (shot.pixels.empty() && std::chrono::steady_clock::now() < deadline) {
     recorder.pump(100ms);
@@ -139,7 +165,7 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
     if (!latest || !status || status->is_null()) continue;
     last_status = status->dump();
     if ((*status)["revision"] != latest->revision || (*status)["inMotion"] != false ||
-        (*status)["frames"].get<int>() < 3) {
+        (*status)["frames"].get<int>() < 3 || !anyAlone(*latest)) {
       continue;
     }
     shown = *latest;
@@ -189,17 +215,7 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
     if (!green) {
       EXPECT_GE(not_felt, 0.8) << "ball " << ball.id << " at (" << cx << ", " << cy << ")";
     }
-    bool alone = true;
-    for (const auto& other : shown.balls) {
-      if (other.id == ball.id || !physics::onTable(other.state)) continue;
-      alone = alone && (other.pos - ball.pos).head<2>().norm() > 3.5 * r;
-    }
-    for (double px : {-1.27, 0.0, 1.27}) {
-      for (double py : {-0.635, 0.635}) {
-        alone = alone && std::hypot(ball.pos.x() - px, ball.pos.y() - py) > 0.16;
-      }
-    }
-    if (alone) {
+    if (alone(shown, ball)) {
       int ring = 0, felt = 0;
       for (int a = 0; a < 48; ++a) {
         const double t = a * 2 * M_PI / 48;
