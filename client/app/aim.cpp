@@ -25,6 +25,10 @@ double cueSpeedOf(double power, const protocol::CommandLimits& limits) {
   return kMinCueSpeed + std::clamp(power, 0.0, 1.0) * (limits.max_speed - kMinCueSpeed);
 }
 
+double powerOfSpeed(double speed, const protocol::CommandLimits& limits) {
+  return std::clamp((speed - kMinCueSpeed) / (limits.max_speed - kMinCueSpeed), 0.0, 1.0);
+}
+
 protocol::ShotRequest requestOf(const AimState& aim, const protocol::CommandLimits& limits) {
   AimState clamped = aim;
   clampAim(clamped, limits);

@@ -31,6 +31,8 @@ struct AimState {
   double tip_height = 0.0;  ///< above centre
   double elevation = 0.0;   ///< cue above horizontal
   double power = 0.0;       ///< 0–1 of the power bar
+  /// A mouse stroke under way: how far the cue is drawn back from the struck point, m.
+  std::optional<double> stroke_back;
   std::optional<Eigen::Vector2d> cue_ball_at;  ///< ball in hand: where the cue ball goes, m
   ShotCall call;
   protocol::ShotOption option = protocol::ShotOption::None;
@@ -42,6 +44,8 @@ void clampAim(AimState& aim, const protocol::CommandLimits& limits);
 
 /// Cue speed of power `power` (0–1), m/s: kMinCueSpeed to the limit's max_speed.
 double cueSpeedOf(double power, const protocol::CommandLimits& limits);
+/// The power (0–1) that gives cue speed `speed` (m/s), the inverse of cueSpeedOf (clamped).
+double powerOfSpeed(double speed, const protocol::CommandLimits& limits);
 
 /// The command for `aim` (match, seat, token and sequence are the client's to fill in): the cue's
 /// speed from the power, the call (none with a safety), the placement and the option.

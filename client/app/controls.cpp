@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "rules/table_context.h"
@@ -21,6 +22,12 @@ int axis(bool minus, bool plus) {
   return (plus ? 1 : 0) - (minus ? 1 : 0);
 }
 
+std::string metresPerSecond(double speed) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f m/s", speed);
+  return text;
+}
+
 }  // namespace
 
 Controls::Controls(protocol::CommandLimits limits, PlacementArea area, CameraRig camera,
@@ -33,6 +40,8 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
   in_hand_ = in_hand;
   charging_ = false;
   aim_.power = 0.0;
+  aim_.stroke_back.reset();
+  stroke_note_.clear();
   // Each turn starts from a plain centre-ball stroke: spin and a raised cue are chosen per shot.
   aim_.tip_side = 0.0;
   aim_.tip_height = 0.0;
@@ -80,8 +89,9 @@ void Controls::stopAiming() {
   mode_ = ControlMode::Watching;
   charging_ = false;
   aim_.power = 0.0;
+  aim_.stroke_back.reset();
   if (drag_ == Drag::CueBall || drag_ == Drag::Ball) camera_.hold(false);
-  if (drag_ == Drag::Cue || drag_ == Drag::CueBall || drag_ == Drag::Ball) drag_ = Drag::None;
+  if (drag_ != Drag::View) drag_ = Drag::None;
   camera_.setAiming(false);
 }
 
@@ -164,6 +174,20 @@ void Controls::keyDown(Key key, Mods mods) {
       requests_.push_back(key);  // also says no to a question asked
       charging_ = false;
       aim_.power = 0.0;
+      if (drag_ == Drag::Stroke) cancelStroke("stroke cancelled (Esc)");
+      break;
+    case Key::Minus:
+    case Key::Equal:
+      if (aiming && !charging_ && drag_ != Drag::Stroke) {
+        stepPower(key == Key::Equal ? 1 : -1,
+                  mods.shift ? rates_.coarse_power_step : rates_.power_step);
+      }
+      break;
+    case Key::Enter:
+      if (aiming && !charging_ && drag_ != Drag::Stroke) {
+        shot_ = requestOf(aim_, limits_);
+        stopAiming();
+      }
       break;
     case Key::C:
       if (aiming) cyclePocket();
@@ -186,6 +210,42 @@ void Controls::keyUp(Key key) {
   if (mode_ != ControlMode::Aiming) return;
   shot_ = requestOf(aim_, limits_);
   stopAiming();
+}
+
+void Controls::stepPower(int dir, double step) {
+  // To the next multiple of the step, so that presses land on round speeds whatever the bar held
+  // (the slowest speed and the limit are kept as they are).
+  const double speed = cueSpeedOf(aim_.power, limits_);
+  const double steps = speed / step;
+  const double near = std::round(steps);
+  const double base =
+      std::abs(steps - near) < 1e-6 ? near : (dir > 0 ? std::floor(steps) : std::ceil(steps));
+  aim_.power = powerOfSpeed((base + dir) * step, limits_);
+}
+
+void Controls::strike(double speed) {
+  const double played = cueSpeedOf(powerOfSpeed(speed, limits_), limits_);
+  if (speed > limits_.max_speed) {
+    stroke_note_ = "stroke " + metresPerSecond(speed) + ": over the limit, played at " +
+                   metresPerSecond(played);
+  } else if (speed < kMinCueSpeed) {
+    stroke_note_ =
+        "stroke " + metresPerSecond(speed) + ": played at the slowest, " + metresPerSecond(played);
+  } else {
+    stroke_note_ = "stroke " + metresPerSecond(speed);
+  }
+  aim_.power = powerOfSpeed(speed, limits_);
+  aim_.stroke_back.reset();
+  drag_ = Drag::None;
+  shot_ = requestOf(aim_, limits_);
+  if (speed >= kMinCueSpeed && speed <= limits_.max_speed) shot_->cue.speed = speed;
+  stopAiming();
+}
+
+void Controls::cancelStroke(const char* why) {
+  aim_.stroke_back.reset();
+  drag_ = Drag::None;
+  stroke_note_ = why;
 }
 
 void Controls::toggle(Key key) {
@@ -245,6 +305,17 @@ void Controls::advance(double dt) {
   for (Key k : {Key::Left, Key::Right, Key::Up, Key::Down}) {
     if (const auto it = held_.find(k); it != held_.end()) mods = it->second.mods;
   }
+  if (drag_ == Drag::Stroke && mode_ == ControlMode::Aiming && aim_.stroke_back) {
+    // The tip reached the struck point during this advance: the cue's speed is its travel over
+    // the advance (dt is a frame: a script's 1/60 s, the window's measured time).
+    const double back = *aim_.stroke_back;
+    if (back <= 0.0 && stroke_drawn_ >= kMinStrokeBack) {
+      strike((stroke_last_ - back) / dt);
+      return;
+    }
+    if (back <= 0.0) aim_.stroke_back = 0.0;  // not drawn back yet: the tip rests at the ball
+    stroke_last_ = *aim_.stroke_back;
+  }
   if (mode_ == ControlMode::Aiming) {
     advanceAim(dt, side, updown, mods);
   } else {
@@ -297,6 +368,10 @@ void Controls::advanceCamera(double dt, int side, int updown) {
 void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mods mods) {
   mouse_ = {x, y};
   if (!down) {
+    if (drag_ == Drag::Stroke) {
+      cancelStroke("stroke let go before the cue reached the ball: no shot");
+      return;
+    }
     if (drag_ == Drag::Cue && !moved_) click(x, y);
     if (drag_ == Drag::Ball) {
       camera_.hold(false);
@@ -319,6 +394,15 @@ void Controls::mouseButton(MouseButton button, bool down, double x, double y, Mo
   moved_ = false;
   if (button == MouseButton::Right || mode_ != ControlMode::Aiming) {
     drag_ = Drag::View;
+    return;
+  }
+  if (mods.ctrl) {
+    drag_ = Drag::Stroke;
+    charging_ = false;
+    aim_.stroke_back = 0.0;
+    stroke_drawn_ = 0.0;
+    stroke_last_ = 0.0;
+    stroke_note_.clear();
     return;
   }
   // A press on the cue ball in hand picks it up (at a practice table, on any ball); anywhere
@@ -358,6 +442,14 @@ void Controls::mouseMove(double x, double y) {
   }
   switch (drag_) {
     case Drag::None:
+      return;
+    case Drag::Stroke:
+      // Down the screen draws the cue back, up pushes it through; sideways does not turn it.
+      if (aim_.stroke_back) {
+        aim_.stroke_back =
+            std::min(*aim_.stroke_back + delta.y() * rates_.stroke_scale, kMaxStrokeBack);
+        stroke_drawn_ = std::max(stroke_drawn_, *aim_.stroke_back);
+      }
       return;
     case Drag::View:
       camera_.orbit(-delta.x() * rates_.mouse_orbit);

@@ -37,7 +37,15 @@ struct ControlRates {
   double mouse_yaw = 0.003;           ///< rad per pixel, dragging while aiming
   double mouse_orbit = 0.006;         ///< rad per pixel, dragging the view
   double scroll_zoom = 0.9;           ///< distance factor per scroll step
+  double stroke_scale = 0.001;        ///< m of cue per pixel of a Ctrl + drag stroke
+  double power_step = 0.05;           ///< m/s per press of - / = (the cue speed set exactly)
+  double coarse_power_step = 0.5;     ///< m/s per press with Shift
 };
+
+/// A mouse stroke's cue: drawn back at most this far (m; the cue stays there while the mouse goes
+/// on), and at least kMinStrokeBack before pushing it through to the ball is a stroke.
+inline constexpr double kMaxStrokeBack = 0.30;
+inline constexpr double kMinStrokeBack = 0.01;
 
 /// Where the cue ball may be put with ball in hand (table frame, m).
 struct PlacementArea {
@@ -94,7 +102,11 @@ class Controls {
 
   void keyDown(Key key, Mods mods);
   void keyUp(Key key);
-  /// A press or release at (`x`, `y`) pixels; Alt (`mods.alt`) makes dragging the cue fine.
+  /// A press or release at (`x`, `y`) pixels; Alt (`mods.alt`) makes dragging the cue fine. A left
+  /// press with Ctrl while aiming starts a stroke: moving the mouse down draws the cue back
+  /// (rates' stroke_scale m a pixel, sideways movement ignored), up pushes it through; when the tip
+  /// reaches the ball the shot is played at the cue's speed over the last advance (clamped to the
+  /// power bar's range, and said so). Letting go before, or Esc, cancels it.
   void mouseButton(MouseButton button, bool down, double x, double y, Mods mods = {});
   void mouseMove(double x, double y);
   void scroll(double steps);
@@ -133,6 +145,10 @@ class Controls {
 
   const AimState& aim() const { return aim_; }
   bool charging() const { return charging_; }
+  bool stroking() const { return drag_ == Drag::Stroke; }
+  /// What the last mouse stroke came to ("stroke 3.60 m/s", clamped or cancelled); empty once a
+  /// new turn starts.
+  const std::string& strokeNote() const { return stroke_note_; }
   bool draggingCueBall() const { return drag_ == Drag::CueBall; }
   /// The cue ball's centre while aiming (its placement when in hand), m.
   Eigen::Vector3d cueBall() const;
@@ -148,7 +164,7 @@ class Controls {
   const protocol::CommandLimits& limits() const { return limits_; }
 
  private:
-  enum class Drag : std::uint8_t { None, Cue, View, CueBall, Ball };
+  enum class Drag : std::uint8_t { None, Cue, View, CueBall, Ball, Stroke };
 
   void advanceAim(double dt, int side, int updown, Mods mods);
   /// The heading's change from the arrows held this advance (past their repeat delay).
@@ -161,6 +177,12 @@ class Controls {
   void placeCueBall(const Eigen::Vector2d& at);
   bool held(Key key) const { return held_.count(key) != 0; }
   void followCue();
+  /// The exact power keys: the cue speed to the next multiple of `step` m/s up (`dir` 1) or down.
+  void stepPower(int dir, double step);
+  /// A stroke's tip reached the ball at `speed` m/s: the shot, at that speed within the bar's
+  /// range.
+  void strike(double speed);
+  void cancelStroke(const char* why);
 
   protocol::CommandLimits limits_;
   PlacementArea area_;
@@ -195,6 +217,9 @@ class Controls {
   std::pair<int, Eigen::Vector2d> dragged_{0, Eigen::Vector2d::Zero()};  ///< with Drag::Ball
   std::optional<std::pair<int, Eigen::Vector2d>> ball_move_;
   Eigen::Vector2d mouse_ = Eigen::Vector2d::Zero();
+  double stroke_drawn_ = 0.0;  ///< the stroke's deepest draw-back so far, m
+  double stroke_last_ = 0.0;   ///< its draw-back at the last advance, m
+  std::string stroke_note_;
   int width_ = 1280;
   int height_ = 720;
 };

@@ -47,6 +47,9 @@ enum class Key : std::uint8_t {
   F6,         ///< load a scenario file
   F7,         ///< the physics pane on/off
   Tab,        ///< every pane hidden / shown again
+  Minus,      ///< power down a step (0.05 m/s; with Shift 0.5)
+  Equal,      ///< power up a step (the '=' / '+' key)
+  Enter,      ///< shoot at the power set
 };
 
 /// Modifier keys held with a key.

@@ -9,6 +9,23 @@
 namespace pool::app {
 namespace {
 
+/// Reads "shift", "ctrl" and "alt" into `mods`; false on any other word (named in `bad`).
+bool readMods(const std::vector<std::string>& words, Mods& mods, std::string& bad) {
+  for (const std::string& mod : words) {
+    if (mod == "shift") {
+      mods.shift = true;
+    } else if (mod == "ctrl") {
+      mods.ctrl = true;
+    } else if (mod == "alt") {
+      mods.alt = true;
+    } else {
+      bad = mod;
+      return false;
+    }
+  }
+  return true;
+}
+
 Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb) {
   using R = Result<ScriptStep>;
   ScriptStep step;
@@ -19,17 +36,10 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
     if (!key) return R::fail("unknown key '" + name + "'");
     step.kind = verb == "down" ? ScriptStep::Kind::Down : ScriptStep::Kind::Up;
     step.key = *key;
-    for (std::string mod; words >> mod;) {
-      if (mod == "shift") {
-        step.mods.shift = true;
-      } else if (mod == "ctrl") {
-        step.mods.ctrl = true;
-      } else if (mod == "alt") {
-        step.mods.alt = true;
-      } else {
-        return R::fail("unknown modifier '" + mod + "'");
-      }
-    }
+    std::vector<std::string> mods;
+    for (std::string mod; words >> mod;) mods.push_back(mod);
+    std::string bad;
+    if (!readMods(mods, step.mods, bad)) return R::fail("unknown modifier '" + bad + "'");
     return R::ok(step);
   }
   if (verb == "frames") {
@@ -83,10 +93,17 @@ Result<ScriptStep> parseLine(std::istringstream& words, const std::string& verb)
     } else {
       return R::fail("mouse needs 'press', 'move', 'release' or 'by'");
     }
-    std::istringstream numbers(args.size() == 2 ? args[0] + " " + args[1] : std::string());
+    std::istringstream numbers(args.size() >= 2 ? args[0] + " " + args[1] : std::string());
     if (!(numbers >> step.x >> step.y) || !std::isfinite(step.x) || !std::isfinite(step.y)) {
       return R::fail("mouse " + what + " needs X Y in pixels");
     }
+    // A press may hold modifiers (Ctrl: a stroke; Alt: fine aim); no other step takes them.
+    const std::vector<std::string> mods(args.begin() + 2, args.end());
+    std::string bad;
+    if (!mods.empty() && step.kind != ScriptStep::Kind::MousePress) {
+      return R::fail("mouse " + what + " takes no modifiers");
+    }
+    if (!readMods(mods, step.mods, bad)) return R::fail("unknown modifier '" + bad + "'");
     return R::ok(step);
   }
   if (verb == "capture") {

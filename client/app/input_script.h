@@ -42,8 +42,8 @@ struct ScriptStep {
 
 /// Parses a script: one step a line, '#' starts a comment.
 ///   down KEY [shift] [ctrl] [alt] | up KEY | frames N | wait aiming | wait shot N | wait over |
-///   wait table | wait live | wait rest | quit | mouse press X Y | mouse move X Y | mouse release X
-///   Y | capture FILE
+///   wait table | wait live | wait rest | quit | mouse press X Y [shift] [ctrl] [alt] | mouse move
+///   X Y | mouse by DX DY | mouse release [X Y] | mouse press cue | capture FILE
 /// KEY as keyFromName spells it. The first bad line fails the whole script, with its number.
 Result<std::vector<ScriptStep>> parseScript(const std::string& text);
 

@@ -31,12 +31,11 @@ std::vector<physics::Ball> physicsBalls(const render::Scene& scene) {
 }  // namespace
 
 render::CueAim cueAimOf(const app::AimState& aim, const Eigen::Vector3d& cue_ball) {
-  return {vec(cue_ball),
-          static_cast<float>(aim.yaw),
-          static_cast<float>(aim.tip_side),
-          static_cast<float>(aim.tip_height),
-          static_cast<float>(aim.elevation),
-          static_cast<float>(aim.power)};
+  return {
+      vec(cue_ball), static_cast<float>(aim.yaw), static_cast<float>(aim.tip_side),
+      static_cast<float>(aim.tip_height), static_cast<float>(aim.elevation),
+      // A mouse stroke draws the cue where the mouse has it; otherwise the power bar does.
+      static_cast<float>(aim.stroke_back ? *aim.stroke_back / render::kMaxDrawBack : aim.power)};
 }
 
 int runAimScreenshot(const render::ScreenshotOptions& options) {

@@ -82,6 +82,15 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::F7;
     case GLFW_KEY_TAB:
       return Key::Tab;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+      return Key::Minus;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD:
+      return Key::Equal;
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER:
+      return Key::Enter;
     default:
       return std::nullopt;
   }

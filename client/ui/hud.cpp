@@ -272,7 +272,7 @@ void shotPanel(Say& say, const HudInput& in) {
   ImGui::Begin("Shot", nullptr, kPane);
   const app::SeatNames names = namesOf(in);
   if (in.local_shooter >= 0) {
-    say.text(names[static_cast<std::size_t>(in.local_shooter)] + ", your turn: aim and hold Space");
+    say.text(names[static_cast<std::size_t>(in.local_shooter)] + ", your turn: aim, then hold Space, Ctrl + drag or Enter");
   } else {
     if (in.view && client::inPlay(in.view->phase) && in.view->shooter >= 0) {
       say.text(names[static_cast<std::size_t>(in.view->shooter)] +
@@ -292,6 +292,7 @@ void shotPanel(Say& say, const HudInput& in) {
     // Our own shot on its way: what was played, not the aim the controls reset for the next turn.
     if (localSeat(in, in.view ? in.view->shooter : -1) && in.last_shot) {
       lastShotLines(say, *in.last_shot);
+      if (!c.strokeNote().empty()) say.wrapped(c.strokeNote());
     }
     say.text("F1: keys");
     ImGui::End();
@@ -301,9 +302,15 @@ void shotPanel(Say& say, const HudInput& in) {
            fixed(degrees(aim.elevation), 1) + " deg");
   say.text("tip side " + fixed(aim.tip_side, 2, true) + " R   height " +
            fixed(aim.tip_height, 2, true) + " R");
-  say.text("cue speed " + fixed(app::cueSpeedOf(aim.power, c.limits()), 2) + " m/s");
+  if (c.stroking() && aim.stroke_back) {
+    say.wrapped("stroke: cue drawn back " + fixed(*aim.stroke_back * 100.0, 0) +
+                " cm (push up through the ball)");
+  } else {
+    say.text("cue speed " + fixed(app::cueSpeedOf(aim.power, c.limits()), 2) + " m/s (- / +)");
+  }
   ImGui::ProgressBar(static_cast<float>(aim.power), ImVec2(px(220), 0),
                      c.charging() ? "charging" : "power");
+  if (!c.strokeNote().empty()) say.wrapped(c.strokeNote());
   drawTipWidget(aim.tip_side, aim.tip_height, c.limits().miscue_limit);
   callLine(say, c, in.view);
   if (aim.cue_ball_at) {

@@ -27,7 +27,8 @@ void onKey(GLFWwindow* win, int key, int, int action, int mods) {
 }
 
 void onMouseButton(GLFWwindow* win, int button, int action, int mods) {
-  if (imGuiWants(false)) return;
+  // A release always reaches the controls: a drag or stroke begun on the table may end over a pane.
+  if (action == GLFW_PRESS && imGuiWants(false)) return;
   if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
   double x = 0, y = 0;
   glfwGetCursorPos(win, &x, &y);

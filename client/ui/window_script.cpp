@@ -26,7 +26,7 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
         break;
       case app::ScriptStep::Kind::MousePress:
         mouse.at = {step.x, step.y};
-        controls.mouseButton(app::MouseButton::Left, true, step.x, step.y);
+        controls.mouseButton(app::MouseButton::Left, true, step.x, step.y, step.mods);
         break;
       case app::ScriptStep::Kind::MouseOnCue:
         if (mouse.cue_ball) mouse.at = *mouse.cue_ball;

@@ -44,6 +44,13 @@ TEST(InputScriptTest, ABadLineNamesItsNumber) {
   EXPECT_EQ(parseScript("mouse press cue\nmouse by -2.5 3\nmouse press 4 5\n")->size(), 3u);
   EXPECT_EQ((*parseScript("mouse press cue\n"))[0].kind, ScriptStep::Kind::MouseOnCue);
   EXPECT_EQ((*parseScript("mouse by -2.5 3\n"))[0].x, -2.5);
+  // A press may hold modifiers (Ctrl: a stroke); a move may not.
+  const auto stroke = parseScript("mouse press 640 360 ctrl\n");
+  ASSERT_TRUE(stroke) << stroke.error();
+  EXPECT_TRUE((*stroke)[0].mods.ctrl);
+  EXPECT_FALSE((*stroke)[0].mods.alt);
+  EXPECT_EQ(parseScript("mouse press 1 2 meta\n").error(), "line 1: unknown modifier 'meta'");
+  EXPECT_EQ(parseScript("mouse move 1 2 ctrl\n").error(), "line 1: mouse move takes no modifiers");
   EXPECT_EQ(parseScript("capture\n").error(), "line 1: capture needs a file");
   EXPECT_EQ((*parseScript("capture /tmp/a.png\n"))[0].path, "/tmp/a.png");
   EXPECT_EQ(parseScript("\n\nframes -1\n").error(), "line 3: frames needs a count >= 0");
@@ -115,15 +122,15 @@ namespace {
 TEST(KeyNamesTest, EveryKeyHasOneNameAndNoNameIsEmpty) {
   std::set<Key> seen;
   for (const char* name :
-       {"LEFT", "RIGHT", "UP",        "DOWN", "SPACE", "A",      "Z",  "S", "X",  "G",
-        "V",    "C",     "K",         "P",    "T",     "L",      "B",  "O", "F1", "R",
-        "N",    "F11",   "Q",         "Y",    "I",     "ESCAPE", "U",  "J", "H",  "8",
-        "9",    "0",     "BACKSPACE", "F5",   "F6",    "F7",     "TAB"}) {
+       {"LEFT", "RIGHT", "UP", "DOWN",   "SPACE", "A",     "Z",    "S",  "X", "G", "V",
+        "C",    "K",     "P",  "T",      "L",     "B",     "O",    "F1", "R", "N", "F11",
+        "Q",    "Y",     "I",  "ESCAPE", "U",     "J",     "H",    "8",  "9", "0", "BACKSPACE",
+        "F5",   "F6",    "F7", "TAB",    "MINUS", "EQUAL", "ENTER"}) {
     const auto key = keyFromName(name);
     ASSERT_TRUE(key) << name;
     EXPECT_TRUE(seen.insert(*key).second) << name;
   }
-  EXPECT_EQ(seen.size(), static_cast<std::size_t>(Key::Tab) + 1) << "a key with no name";
+  EXPECT_EQ(seen.size(), static_cast<std::size_t>(Key::Enter) + 1) << "a key with no name";
   EXPECT_FALSE(keyFromName(""));
   EXPECT_EQ(keyFromName("f1"), Key::F1);
 }

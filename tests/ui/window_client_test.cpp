@@ -35,6 +35,7 @@ constexpr Domain kWindowReplay = static_cast<Domain>(82);
 constexpr Domain kWindowQuality = static_cast<Domain>(83);
 constexpr Domain kWindowConcede = static_cast<Domain>(84);
 constexpr Domain kWindowSpectatorReplay = static_cast<Domain>(85);
+constexpr Domain kWindowStroke = static_cast<Domain>(86);
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -206,6 +207,51 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   ASSERT_EQ(shots.size(), 2u);
   EXPECT_NEAR(shots[0]["yaw"].get<double>(), sent->cue.yaw, 1e-12);
   EXPECT_NEAR(shots[1]["tip_height"].get<double>(), second->cue.tip_height, 1e-12);
+}
+
+TEST_F(WindowClientTest, AMouseStrokeBreaksAtItsSpeedAndKeysSetATouchShot) {
+  open(kWindowStroke, "window-stroke");
+  MatchRecorder recorder(kWindowStroke);
+  startServer({"--fast"});
+  // The break by a mouse stroke: Ctrl + press, 16 frames of 10 px down (the cue drawn back 16 cm
+  // at the default 1 mm a pixel), then 120 px up a frame: the tip reaches the ball in the second
+  // push frame (4 cm short after the first, 8 cm past after the second), so the cue's speed is
+  // that frame's travel, 120 px × 1 mm in 1/60 s of script time = 7.2 m/s. Sideways wobble on the
+  // way does not turn the cue. The next shot, whoever's: the speed set by keys, 13 presses of +
+  // (0.95 m/s), Shift + - (0.50), five of - (0.30, the slowest), and Enter.
+  std::string script = "wait aiming\nmouse press 400 225 ctrl\n";
+  for (int i = 0; i < 16; ++i)
+    script += "mouse by " + std::to_string(i % 2 ? 7 : -7) + " 10\nframes 1\n";
+  script += "mouse by 0 -120\nframes 1\nmouse by 0 -120\nframes 1\nmouse release\n";
+  script += "wait aiming\n";
+  for (int i = 0; i < 13; ++i) script += "down EQUAL\nup EQUAL\n";
+  script += "down MINUS shift\nup MINUS\n";
+  for (int i = 0; i < 5; ++i) script += "down MINUS\nup MINUS\n";
+  script += "frames 2\ndown ENTER\nup ENTER\nframes 30\nquit\n";
+  startWindow({"--hotseat", "--play"}, script);
+
+  const app::ControlRates rates;
+  std::string match;
+  const protocol::ShotRequest* stroke = nullptr;
+  const protocol::ShotRequest* touch = nullptr;
+  const bool seen = recorder.pump(120s, [&] {
+    match = recorder.firstMatch();
+    const MatchView* v = recorder.latest(match);
+    if (!v || v->breaker < 0) return false;
+    stroke = recorder.nthCommand(match, v->breaker, 1);
+    touch = recorder.nthCommand(match, v->breaker, 2);
+    if (!touch) touch = recorder.nthCommand(match, 1 - v->breaker, 1);
+    return stroke && touch && recorder.finals(match).size() >= 2;
+  });
+  const int status = windowExit();
+  ASSERT_TRUE(seen) << "no two accepted shots from the window\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+
+  const double stroke_speed = 120.0 * rates.stroke_scale * 60.0;  // the last push frame's travel
+  EXPECT_NEAR(stroke->cue.speed, stroke_speed, 0.05 * stroke_speed);
+  EXPECT_NEAR(stroke->cue.speed, stroke_speed, 1e-9) << "script time is exact";
+  EXPECT_NEAR(touch->cue.speed, 0.30, 1e-9);
+  EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
 }
 
 TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
