@@ -58,6 +58,22 @@ class WindowClientTest : public ClientIntegrationTest {
     window_ = std::async(std::launch::async, [cmd] { return std::system(cmd.c_str()); });
   }
 
+  /// Waits (up to 120 s) until the first match's break and the shot after it (the breaker's
+  /// second, or the other seat's first) were sent and both verdicts came back.
+  static bool firstTwoShots(MatchRecorder& recorder, std::string& match,
+                            const protocol::ShotRequest*& first,
+                            const protocol::ShotRequest*& second) {
+    return recorder.pump(120s, [&] {
+      match = recorder.firstMatch();
+      const MatchView* v = recorder.latest(match);
+      if (!v || v->breaker < 0) return false;
+      first = recorder.nthCommand(match, v->breaker, 1);
+      second = recorder.nthCommand(match, v->breaker, 2);
+      if (!second) second = recorder.nthCommand(match, 1 - v->breaker, 1);
+      return first && second && recorder.finals(match).size() >= 2;
+    });
+  }
+
   /// Waits until `name` sits in seat 0 of the server's first match.
   static bool seatedFirst(MatchRecorder& recorder, const std::string& name) {
     return recorder.pump(60s, [&] {
@@ -121,15 +137,7 @@ TEST_F(WindowClientTest, ScriptedKeysSendTheShotCommandsTheControlsPromise) {
   std::string match;
   const protocol::ShotRequest* sent = nullptr;
   const protocol::ShotRequest* second = nullptr;
-  const bool seen = recorder.pump(120s, [&] {
-    match = recorder.firstMatch();
-    const MatchView* v = recorder.latest(match);
-    if (!v || v->breaker < 0) return false;
-    sent = recorder.nthCommand(match, v->breaker, 1);
-    second = recorder.nthCommand(match, v->breaker, 2);
-    if (!second) second = recorder.nthCommand(match, 1 - v->breaker, 1);
-    return sent && second && recorder.finals(match).size() >= 2;
-  });
+  const bool seen = firstTwoShots(recorder, match, sent, second);
   const int status = windowExit();
   ASSERT_TRUE(seen) << "no accepted shot from the window\n" << windowErr() << logs();
   EXPECT_EQ(status, 0) << windowErr();
@@ -234,15 +242,7 @@ TEST_F(WindowClientTest, AMouseStrokeBreaksAtItsSpeedAndKeysSetATouchShot) {
   std::string match;
   const protocol::ShotRequest* stroke = nullptr;
   const protocol::ShotRequest* touch = nullptr;
-  const bool seen = recorder.pump(120s, [&] {
-    match = recorder.firstMatch();
-    const MatchView* v = recorder.latest(match);
-    if (!v || v->breaker < 0) return false;
-    stroke = recorder.nthCommand(match, v->breaker, 1);
-    touch = recorder.nthCommand(match, v->breaker, 2);
-    if (!touch) touch = recorder.nthCommand(match, 1 - v->breaker, 1);
-    return stroke && touch && recorder.finals(match).size() >= 2;
-  });
+  const bool seen = firstTwoShots(recorder, match, stroke, touch);
   const int status = windowExit();
   ASSERT_TRUE(seen) << "no two accepted shots from the window\n" << windowErr() << logs();
   EXPECT_EQ(status, 0) << windowErr();
