@@ -54,11 +54,15 @@ TEST_F(ServerIdentityTest, TheSameDatabaseResumesAtOnceAfterACrash) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - restarted).count();
   std::printf("same-database restart resumed srv-1 after %.2f s\n", seconds);
-  // A restart that waited for the crashed run's participant lease (Cyclone's default, 10 s from the
-  // kill, just before `restarted`) or for its own 10 s challenge window to pass before serving
-  // would take over 10 s; 9.5 s leaves the restart itself (its 1.5 s look at the lobby, start-up
-  // under the sanitizers on two loaded cores) all the margin there is.
-  EXPECT_LT(seconds, 9.5);
+  // At once: the restart resumed the match as it started, before any challenge of the domain
+  // ran out (a restart that still sees the crashed run's lobby entries challenges for 10 s and
+  // logs "serving on" when none answered; whether it sees them depends on what discovery still
+  // holds of the dead run). Said by the log's order, not by a clock on a loaded machine (a bound
+  // under the 10 s lease would leave no margin); the time is printed above.
+  const std::string log = again.err();
+  const auto resumed_at = log.find("resumed srv-1");
+  const auto serving_on = log.find("answered in 10 s: serving on");
+  EXPECT_TRUE(serving_on == std::string::npos || resumed_at < serving_on) << log;
   // The rejoin is volatile too: asked again until the restarted server's reader has matched ours.
   asked = std::chrono::steady_clock::time_point{};
   ASSERT_TRUE(pumpUntil(ada, [&] {

@@ -9,36 +9,38 @@
 namespace pool::client::test {
 namespace {
 
-using RenderEightBallTest = ScreenshotTest;
+using RenderEightBallTest = ScreenshotInfoTest;
 
 constexpr Rgb kTriangle{0.10, 0.22, 0.85};
 constexpr Rgb kWood{0.34, 0.17, 0.07};
 
-/// The window's centre and the ball's radius on screen, from the room's default camera and its
-/// ball. The window is the point of the ball's surface nearest the viewer (it faces them: the
-/// room's promise), found here from the eye and the ball alone, not from the room's own code.
+/// The window's centre and the ball's radius on screen, through the camera the sidecar reports
+/// (checked no mirror: projected by the test's own ReportedCamera, not the renderer's code), and
+/// the room's ball. The window is the point of the ball's surface nearest the viewer (it faces
+/// them: the room's promise), found here from the reported eye and the ball alone.
 struct RoomOnScreen {
   glm::vec3 window;
   glm::vec3 ball;
   double ball_radius;
 };
 
-RoomOnScreen project(int width, int height) {
-  const auto camera = render::EightBallRoom::defaultCamera();
+RoomOnScreen project(const ReportedCamera& camera) {
   const glm::vec3 ball = render::EightBallRoom::ballCentre();
   const glm::vec3 side = glm::vec3(render::EightBallRoom::ballRadius(), 0, 0);
-  const glm::vec3 c = render::projectToPixels(camera, width, height, ball);
-  const glm::vec3 e = render::projectToPixels(camera, width, height, ball + side);
+  const glm::vec3 c = camera.pixel(ball);
+  const glm::vec3 e = camera.pixel(ball + side);
   const glm::vec3 toward_viewer = glm::normalize(camera.eye - ball);
   const glm::vec3 window = ball + toward_viewer * render::EightBallRoom::ballRadius();
-  return {render::projectToPixels(camera, width, height, window), c,
-          glm::length(glm::vec2(e) - glm::vec2(c))};
+  return {camera.pixel(window), c, glm::length(glm::vec2(e) - glm::vec2(c))};
 }
 
 TEST_F(RenderEightBallTest, TheBallOnItsStoolShowsTheAnswerTriangleWithText) {
-  const Image image = screenshot("--scene eightball --question \"Shall I break?\" --seed 3");
+  const Image image = view("--scene eightball --question \"Shall I break?\" --seed 3");
   ASSERT_EQ(image.width, 1280);
-  const RoomOnScreen room = project(image.width, image.height);
+  ASSERT_EQ(camera_.mirrored(), "");
+  ASSERT_EQ(camera_.width, image.width);
+  const RoomOnScreen room = project(camera_);
+  ASSERT_TRUE(camera_.inside(room.window)) << "the window faces the viewer, in the image";
   ASSERT_GT(room.ball_radius, 100.0) << "a giant ball";
   const auto blue = [](const Rgb& p) { return shadeOf(p, kTriangle); };
   const double window = room.ball_radius * 0.4;
@@ -63,12 +65,13 @@ TEST_F(RenderEightBallTest, ADifferentAnswerChangesTheTextOnly) {
   // Two seeds with different answers for the same question (found, not assumed).
   std::uint64_t other = 1;
   while (*room::answer("Shall I break?", other) == *room::answer("Shall I break?", 0)) ++other;
-  const Image a = screenshot("--scene eightball --question \"Shall I break?\" --seed 0");
+  const Image a = view("--scene eightball --question \"Shall I break?\" --seed 0");
+  ASSERT_EQ(camera_.mirrored(), "");
   const Image b =
       screenshot("--scene eightball --question \"Shall I break?\" --seed " + std::to_string(other));
   ASSERT_EQ(a.width, 1280);
   ASSERT_EQ(b.width, 1280);
-  const RoomOnScreen room = project(a.width, a.height);
+  const RoomOnScreen room = project(camera_);
   int inside = 0, outside = 0;
   for (int y = 0; y < a.height; ++y) {
     for (int x = 0; x < a.width; ++x) {
@@ -92,13 +95,11 @@ TEST_F(RenderEightBallTest, ABlankQuestionIsRefused) {
 // The room's sidecar (it exited 2 before: "no balls to describe"): the camera, the ball, its
 // answer window and the answer, each point where the picture shows it.
 TEST_F(RenderEightBallTest, TheRoomsSidecarSaysWhereTheBallAndItsAnswerAre) {
-  const std::string json = png_ + ".json";
-  const Image image = screenshot("--scene eightball --question \"Shall I break?\" --seed 3 " +
-                                 std::string("--screenshot-info ") + json);
+  const Image image = view("--scene eightball --question \"Shall I break?\" --seed 3");
   ASSERT_EQ(image.width, 1280);
-  const auto info = readInfo(json);
-  std::remove(json.c_str());
-  const ReportedCamera camera = reportedCamera(info);
+  ASSERT_EQ(camera_.mirrored(), "");
+  const auto info = readInfo(this->info());
+  const ReportedCamera& camera = camera_;
   const auto& ball = info.at("eight_ball");
   EXPECT_EQ(ball.at("answer"), *room::answer("Shall I break?", 3));
   // Each point's pixel is where the reported camera puts its position (0.5 px of rounding).
@@ -112,7 +113,7 @@ TEST_F(RenderEightBallTest, TheRoomsSidecarSaysWhereTheBallAndItsAnswerAre) {
     EXPECT_NEAR(p.at("px")[1].get<double>(), px.y, 0.5) << part;
   }
   // The window's pixel shows the blue answer triangle; the ball is the room's.
-  const RoomOnScreen room = project(image.width, image.height);
+  const RoomOnScreen room = project(camera_);
   const auto& window = ball.at("window").at("px");
   const auto blue = [](const Rgb& p) { return shadeOf(p, kTriangle); };
   EXPECT_GT(countInDisc(image, window[0].get<double>(), window[1].get<double>(), 10.0, blue), 150);

@@ -181,23 +181,26 @@ TEST_F(LiveAimWindowTest, TheSpectatorSeesTheShootersCueMoveAndSettleOnTheirAim)
     }
     return std::nullopt;
   };
-  // The sweep's start, held until the window draws it (a loaded machine may take a while to
-  // show the first aims: the sweep itself must not run past a window not yet drawing them).
-  const auto drewStart = [&] {
+  // The sweep's start, held until the window draws it in a captured frame (a loaded machine may
+  // take a while to show the first aims: the sweep itself must not run past a window not yet
+  // drawing them; the capture is where the pixels show the cue there, below).
+  const auto startCapture = [&]() -> std::optional<nlohmann::json> {
     for (const auto& d : windowLines("drawn")) {
       if (d.contains("cue_stick") && d["cue_stick"]["source"] == "remote" &&
-          std::abs(drawnYaw(d["cue_stick"]) - kFrom) < 1 * kDeg) {
-        return true;
+          d.contains("capture") && std::abs(drawnYaw(d["cue_stick"]) - kFrom) < 0.5 * kDeg) {
+        return d;
       }
     }
-    return false;
+    return std::nullopt;
   };
   for (const auto until = std::chrono::steady_clock::now() + 20s;
-       !drewStart() && std::chrono::steady_clock::now() < until;) {
+       !startCapture() && std::chrono::steady_clock::now() < until;) {
     ASSERT_TRUE(shooter.sendAim(aimAt(kFrom, 0.0, false)));
     pump([] { return false; }, 100ms);
   }
-  ASSERT_TRUE(drewStart()) << "the window never drew the sweep's start\n" << windowErr();
+  const auto at_start = startCapture();
+  ASSERT_TRUE(at_start) << "the window never drew the sweep's start in a captured frame\n"
+                        << windowErr();
   // Aim: 1.2 s sweeping from 26 to 3 degrees at 30 Hz, then still (keep-alives) for at least
   // 1.5 s and until the window captured a settled frame (at most 20 s).
   const auto start = std::chrono::steady_clock::now();
@@ -283,6 +286,17 @@ TEST_F(LiveAimWindowTest, TheSpectatorSeesTheShootersCueMoveAndSettleOnTheirAim)
       << "the cue still drawn along the sweep's start";
   EXPECT_GT(mapleShare(image, camera, centre, kFrom, 2 * kDeg, 0.04, 0.40, nullptr, isFelt), 0.5)
       << "the sweep's starting line is not in view (under a pane?): its check would be empty";
+
+  // It moved, in the pixels: the frame captured while the window drew the sweep's start shows the
+  // maple along the starting line and not along the aim it settled on (the same bounds).
+  const ReportedCamera start_camera = cameraOf(*at_start);
+  ASSERT_EQ(start_camera.mirrored(), "");
+  const Image start_image = loadPng((*at_start)["capture"].get<std::string>());
+  ASSERT_EQ(start_image.width, start_camera.width);
+  EXPECT_GT(mapleShare(start_image, start_camera, centre, kFrom, 2 * kDeg, 0.04, 0.40), 0.8)
+      << "the cue not drawn along the sweep's start: " << (*at_start)["capture"].get<std::string>();
+  EXPECT_LT(mapleShare(start_image, start_camera, centre, kTo, 2 * kDeg, 0.04, 0.40), 0.1)
+      << "the cue already drawn along the settled aim at the sweep's start";
 
   // The spectator's Shot pane gave the shooter's aim in numbers, the settled one among them.
   bool numbers = false;
