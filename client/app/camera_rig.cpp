@@ -92,6 +92,19 @@ void CameraRig::setOverhead(bool overhead) {
   if (overhead == overhead_) return;
   startGlide();
   overhead_ = overhead;
+  overhead_zoom_ = 1.0;
+  overhead_pan_ = Eigen::Vector2d::Zero();
+}
+
+void CameraRig::setClearArea(const ScreenRect& fraction) {
+  const ScreenRect f{std::clamp(fraction.x0, 0.0, 1.0), std::clamp(fraction.y0, 0.0, 1.0),
+                     std::clamp(fraction.x1, 0.0, 1.0), std::clamp(fraction.y1, 0.0, 1.0)};
+  if (!(f.width() > 0.05 && f.height() > 0.05)) return;  // no room: keep the last
+  const double moved = std::max({std::abs(f.x0 - clear_.x0), std::abs(f.y0 - clear_.y0),
+                                 std::abs(f.x1 - clear_.x1), std::abs(f.y1 - clear_.y1)});
+  if (moved <= 0.01) return;
+  if (overhead_) startGlide();
+  clear_ = f;
 }
 
 void CameraRig::hold(bool held) {
@@ -116,17 +129,33 @@ void CameraRig::update(double dt) {
 }
 
 Orbit CameraRig::overheadOrbit() const {
-  // Straight down (as near as an orbit with +z up allows), the long axis across the screen.
+  // Straight down (as near as an orbit with +z up allows), the table as large as the clear area
+  // holds it: lengthwise across (the eye on the -y side) or up the screen (on the -x side, the
+  // head end at the bottom), whichever is larger, its centre at the area's centre.
+  const double length = table_length_ + 2 * kOverheadMargin;
+  const double breadth = table_width_ + 2 * kOverheadMargin;
+  // At distance d the target's plane shows 2 d tan(fov_y / 2) of height and aspect times that of
+  // width; the area is a fraction of each.
+  const double t = std::tan(radians(fov_y_deg_) / 2);
+  const double per_width = clear_.width() * 2 * t * aspect_;  // m of the area's width per m of d
+  const double per_height = clear_.height() * 2 * t;
+  const bool upright = tableUpright({0.0, 0.0, per_width, per_height}, length, breadth);
+  const double across = upright ? breadth : length;
+  const double down = upright ? length : breadth;
   Orbit o;
-  o.target = Eigen::Vector3d::Zero();
-  o.azimuth = -std::numbers::pi / 2;
+  o.azimuth = upright ? std::numbers::pi : -std::numbers::pi / 2;
   o.elevation = limits_.max_elevation;
-  const double half_fov_y = radians(fov_y_deg_) / 2;
-  const double half_fov_x = std::atan(std::tan(half_fov_y) * aspect_);
-  const double along = (table_length_ / 2 + kMargin) / std::tan(half_fov_x);
-  const double across = (table_width_ / 2 + kMargin) / std::tan(half_fov_y);
-  o.distance =
-      std::clamp(std::max(along, across) * 1.05, limits_.min_distance, limits_.max_distance);
+  // 4 % more: the view leans 1.2° off vertical and the balls stand above the slate.
+  o.distance = std::clamp(std::max(across / per_width, down / per_height) * 1.04 * overhead_zoom_,
+                          limits_.min_distance, limits_.max_distance);
+  // The screen's up and right on the table; the table's centre moved from the screen's centre to
+  // the area's, then the pan.
+  const Eigen::Vector2d up(-std::cos(o.azimuth), -std::sin(o.azimuth));
+  const Eigen::Vector2d right(up.y(), -up.x());
+  const double half_h = o.distance * t, half_w = half_h * aspect_;
+  const double cx = clear_.x0 + clear_.x1 - 1.0, cy = 1.0 - (clear_.y0 + clear_.y1);
+  const Eigen::Vector2d target = -cx * half_w * right - cy * half_h * up + overhead_pan_;
+  o.target = Eigen::Vector3d(target.x(), target.y(), 0.0);
   return o;
 }
 
@@ -142,6 +171,10 @@ void CameraRig::followCue(const Eigen::Vector3d& cue_ball, double yaw) {
 }
 
 void CameraRig::orbit(double d_azimuth) {
+  if (overhead_) {
+    panOverhead(d_azimuth, 0.0);
+    return;
+  }
   if (aiming_) {
     aim_turn_ = std::remainder(aim_turn_ + d_azimuth, 2 * std::numbers::pi);
     aim_.azimuth += d_azimuth;
@@ -151,6 +184,10 @@ void CameraRig::orbit(double d_azimuth) {
 }
 
 void CameraRig::raise(double d_elevation) {
+  if (overhead_) {
+    panOverhead(0.0, d_elevation);
+    return;
+  }
   Orbit& o = active();
   o.elevation = std::clamp(o.elevation + d_elevation, limits_.min_elevation, limits_.max_elevation);
 }
@@ -160,8 +197,25 @@ void CameraRig::keepAimAbove(double elevation) {
       std::clamp(std::max(aim_.elevation, elevation), limits_.min_elevation, limits_.max_elevation);
 }
 
+void CameraRig::panOverhead(double right, double up) {
+  // In the screen's directions: + moves the view right and up (the table the other way), so a
+  // drag (orbit by -dx, raise by +dy) carries the table with the cursor.
+  const Orbit o = overheadOrbit();
+  const Eigen::Vector2d screen_up(-std::cos(o.azimuth), -std::sin(o.azimuth));
+  const Eigen::Vector2d screen_right(screen_up.y(), -screen_up.x());
+  const double scale = kOverheadPan * o.distance;
+  overhead_pan_ += scale * (right * screen_right + up * screen_up);
+  // Never so far that the table leaves the view: its centre stays within its own half length.
+  overhead_pan_ = overhead_pan_.cwiseMax(Eigen::Vector2d(-table_length_ / 2, -table_width_ / 2))
+                      .cwiseMin(Eigen::Vector2d(table_length_ / 2, table_width_ / 2));
+}
+
 void CameraRig::zoom(double factor) {
   if (!(factor > 0)) return;
+  if (overhead_) {
+    overhead_zoom_ = std::clamp(overhead_zoom_ * factor, 0.2, 1.5);
+    return;
+  }
   Orbit& o = active();
   o.distance = std::clamp(o.distance * factor, limits_.min_distance, limits_.max_distance);
 }

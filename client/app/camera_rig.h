@@ -7,6 +7,8 @@
 #include <Eigen/Geometry>
 #include <optional>
 
+#include "client/app/clear_area.h"
+
 namespace pool::app {
 
 /// Where the camera is and looks (table frame, m; +z up) and its vertical field of view.
@@ -40,6 +42,11 @@ struct CameraLimits {
 
 /// How long a change of view takes to glide from the old view to the new one, s.
 inline constexpr double kGlideTime = 0.6;
+/// The overhead view frames the playing surface and this much beyond each edge (cushions and
+/// most of the rails), m.
+inline constexpr double kOverheadMargin = 0.16;
+/// The overhead view's pan: metres per radian of orbit or raise, per metre of the view's height.
+inline constexpr double kOverheadPan = 0.18;
 
 /// `from` moved toward `to` by `s` in [0, 1] (eye and target alike, eased at both ends).
 ViewPoint blend(const ViewPoint& from, const ViewPoint& to, double s);
@@ -78,9 +85,17 @@ class CameraRig {
   /// at `contact` (the first contact's ghost ball centre) shows clear above the cue ball at
   /// `cue`, so the view frames both.
   void frameAim(const Eigen::Vector3d& cue, const Eigen::Vector3d& contact, double ball_radius);
-  /// The view straight down on the whole table on or off (O). Glides.
+  /// The view straight down on the whole table on or off (O), framed in the clear area (turned
+  /// lengthwise up the screen where that fits it larger) and neither zoomed nor panned. Glides.
+  /// While it is on, orbit() and raise() pan it (rad of orbit: the view's height × kOverheadPan)
+  /// and zoom() zooms it.
   void setOverhead(bool overhead);
   bool overhead() const { return overhead_; }
+  /// The part of the window no pane covers, as fractions of its width and height from the
+  /// top-left corner (the whole window until told): the overhead view frames the table there. A
+  /// change of more than 1 % of the window glides there.
+  void setClearArea(const ScreenRect& fraction);
+  const ScreenRect& clearArea() const { return clear_; }
   /// Holds the drawn view where it is (dragging the cue ball) or lets it follow again (a glide
   /// to wherever the camera went meanwhile).
   void hold(bool held);
@@ -105,6 +120,8 @@ class CameraRig {
   /// Starts a glide from the view drawn now.
   void startGlide();
   Orbit overheadOrbit() const;
+  /// Moves the overhead view by `right` and `up` (rad, as orbit and raise give them).
+  void panOverhead(double right, double up);
 
   double table_length_;
   double table_width_;
@@ -116,6 +133,9 @@ class CameraRig {
   Orbit aim_;
   double aim_turn_ = 0.0;  ///< the aiming camera's azimuth off the line behind the cue, rad
   bool overhead_ = false;
+  ScreenRect clear_{0.0, 0.0, 1.0, 1.0};
+  double overhead_zoom_ = 1.0;                              ///< distance factor (S, X, wheel)
+  Eigen::Vector2d overhead_pan_ = Eigen::Vector2d::Zero();  ///< m, table frame
   struct Glide {
     ViewPoint from;
     double t = 0.0;  ///< s since it started

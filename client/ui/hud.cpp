@@ -272,8 +272,8 @@ void shotPanel(Say& say, const HudInput& in) {
   ImGui::Begin("Shot", nullptr, kPane);
   const app::SeatNames names = namesOf(in);
   if (in.local_shooter >= 0) {
-    say.text(names[static_cast<std::size_t>(in.local_shooter)] +
-             ", your turn: aim, then hold Space, Ctrl + drag or Enter");
+    say.wrapped(names[static_cast<std::size_t>(in.local_shooter)] +
+                ", your turn: aim, then hold Space, Ctrl + drag or Enter");
   } else {
     if (in.view && client::inPlay(in.view->phase) && in.view->shooter >= 0) {
       say.text(names[static_cast<std::size_t>(in.view->shooter)] +

@@ -37,6 +37,7 @@
 #include "client/ui/eight_ball_room_ui.h"
 #include "client/ui/hud.h"
 #include "client/ui/lobby_screen.h"
+#include "client/ui/pane_rects.h"
 #include "client/ui/scene_convert.h"
 #include "client/ui/window_capture.h"
 #include "client/ui/window_glfw.h"
@@ -462,6 +463,9 @@ class WindowApp {
       }
     } else {
       HudActions actions = drawHud(hudInput());
+      // The overhead view frames the table where the panes just laid out leave it clear.
+      controls_.camera().setClearArea(clearFraction(view_.spec.length + 2 * app::kOverheadMargin,
+                                                    view_.spec.width + 2 * app::kOverheadMargin));
       if (const client::MatchView* v = session_.view(); v && controls_.toggles().panes) {
         practice_.drawPhysicsPane(*v, actions.texts);
       }

@@ -100,6 +100,63 @@ TEST(CameraGlideTest, OverheadLooksDownOnTheWholeTable) {
   }
 }
 
+TEST(CameraGlideTest, TheOverheadViewZoomsAndPansAndOStartsItAfresh) {
+  CameraRig rig(2.54, 1.27, 1280.0 / 720.0);
+  rig.setOverhead(true);
+  rig.settle();
+  const ViewPoint whole = rig.view();
+  // S / X / the wheel: the distance by the factor given (the view still straight down).
+  rig.zoom(0.5);
+  rig.settle();
+  EXPECT_NEAR((rig.view().eye - rig.view().target).norm(), 0.5 * (whole.eye - whole.target).norm(),
+              1e-9);
+  EXPECT_LT((rig.view().target - whole.target).norm(), 1e-12);
+  // Orbit and raise pan it across the screen: + moves the view right (+x here, the table
+  // lengthwise across) and up (+y), by kOverheadPan × the view's distance per radian.
+  const double distance = (rig.view().eye - rig.view().target).norm();
+  rig.orbit(0.2);
+  rig.raise(-0.1);
+  rig.settle();
+  const Eigen::Vector3d moved = rig.view().target - whole.target;
+  EXPECT_NEAR(moved.x(), 0.2 * kOverheadPan * distance, 1e-9);
+  EXPECT_NEAR(moved.y(), -0.1 * kOverheadPan * distance, 1e-9);
+  EXPECT_NEAR(moved.z(), 0.0, 1e-12);
+  // O off and on again: the whole table, neither zoomed nor panned.
+  rig.setOverhead(false);
+  rig.setOverhead(true);
+  rig.settle();
+  EXPECT_LT((rig.view().eye - whole.eye).norm(), 1e-12);
+  EXPECT_LT((rig.view().target - whole.target).norm(), 1e-12);
+}
+
+TEST(CameraGlideTest, TheOverheadViewFramesTheTableInTheClearArea) {
+  // Clear only in the window's left half (a pane over the right): the table turns lengthwise up
+  // the screen (it fits larger so) with its head end at the bottom, centred in that half.
+  CameraRig rig(2.54, 1.27, 1280.0 / 720.0);
+  rig.setClearArea({0.0, 0.0, 0.5, 1.0});
+  rig.setOverhead(true);
+  rig.settle();
+  const auto camera = cameraOf(rig.view());
+  const glm::vec3 head = render::projectToPixels(camera, 1280, 720, glm::vec3(-1.27f, 0, 0));
+  const glm::vec3 foot = render::projectToPixels(camera, 1280, 720, glm::vec3(1.27f, 0, 0));
+  const glm::vec3 centre = render::projectToPixels(camera, 1280, 720, glm::vec3(0, 0, 0));
+  EXPECT_GT(head.y, foot.y) << "the head end at the bottom";
+  // Lengthwise up the screen: within 1 % of its 600 px (the view leans 1.2° off vertical, so a
+  // line off its centre converges a little).
+  EXPECT_NEAR(head.x, foot.x, 6.0) << "lengthwise up the screen";
+  EXPECT_NEAR(centre.x, 320.0, 3.0);
+  EXPECT_NEAR(centre.y, 360.0, 3.0);
+  for (float x : {-1.27f, 1.27f}) {
+    for (float y : {-0.635f, 0.635f}) {
+      const glm::vec3 p = render::projectToPixels(camera, 1280, 720, glm::vec3(x, y, 0.0f));
+      EXPECT_GT(p.x, 0.0f);
+      EXPECT_LT(p.x, 640.0f);
+      EXPECT_GT(p.y, 0.0f);
+      EXPECT_LT(p.y, 720.0f);
+    }
+  }
+}
+
 TEST(CameraGlideTest, BGoesBackBehindTheCueAndOLooksDown) {
   Controls controls = nineFootControls();
   controls.startTurn(Eigen::Vector3d(-0.5, 0.1, kRadius), rules::BallInHand::None);

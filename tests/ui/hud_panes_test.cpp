@@ -14,8 +14,12 @@
 #include <utility>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "client/app/clear_area.h"
 #include "client/app/controls.h"
 #include "client/ui/hud.h"
+#include "table/table_spec.h"
 
 namespace pool::ui::test {
 namespace {
@@ -196,6 +200,88 @@ TEST(HudPanes, TheHelpPaneIsOpaqueOverTheOthers) {
   // The other panes keep the style's translucent background, so this check can tell them apart.
   ASSERT_TRUE(bg.count("Match"));
   EXPECT_LT(bg.at("Match"), 255u);
+}
+
+}  // namespace
+}  // namespace pool::ui::test
+
+namespace pool::ui::test {
+namespace {
+
+/// The bounding box in pixels of the playing surface (z = 0 to a ball's height) of a `length` ×
+/// `breadth` table seen from `v` in a `width` × `height` window: the test's own projection
+/// (glm's lookAt with +z up and perspective, as a camera draws), not the renderer's.
+app::ScreenRect surfaceOnScreen(const app::ViewPoint& v, int width, int height, double length,
+                                double breadth) {
+  const auto g = [](const Eigen::Vector3d& p) {
+    return glm::vec3(static_cast<float>(p.x()), static_cast<float>(p.y()),
+                     static_cast<float>(p.z()));
+  };
+  const glm::mat4 view = glm::lookAt(g(v.eye), g(v.target), glm::vec3(0, 0, 1));
+  const glm::mat4 projection =
+      glm::perspective(glm::radians(static_cast<float>(v.fov_y_deg)),
+                       static_cast<float>(width) / static_cast<float>(height), 0.05f, 50.0f);
+  app::ScreenRect box{1e9, 1e9, -1e9, -1e9};
+  for (double x : {-length / 2, length / 2}) {
+    for (double y : {-breadth / 2, breadth / 2}) {
+      for (double z : {0.0, 0.05715}) {
+        const glm::vec4 c = projection * view * glm::vec4(glm::vec3(g({x, y, z})), 1.0f);
+        const double px = (c.x / c.w * 0.5 + 0.5) * width;
+        const double py = (0.5 - c.y / c.w * 0.5) * height;
+        box = {std::min(box.x0, px), std::min(box.y0, py), std::max(box.x1, px),
+               std::max(box.y1, py)};
+      }
+    }
+  }
+  return box;
+}
+
+// The overhead view (O) at its whole-table zoom: on every table and at 1280×720 and larger, the
+// playing surface lies inside the window and under none of the panes that stay up in play (the
+// match, the last shot's banner with a long story, the shot, a long match log), and it is drawn
+// large: its shorter side on screen at least a third of the window's height.
+TEST(HudPanes, TheOverheadViewShowsThePlayingSurfaceClearOfThePanes) {
+  ImGuiFrames imgui;
+  Table table;
+  table.view.options.clear();
+  HudInput in = table.input();
+  in.help = false;
+  in.concede_asked = false;
+  for (const char* name : {"wpa-7ft", "wpa-8ft", "wpa-9ft"}) {
+    const auto spec = table::loadTableSpec(name);
+    ASSERT_TRUE(spec) << spec.error();
+    const double length = spec->length, breadth = spec->width;
+    for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1366, 768}, std::pair{1920, 1080},
+                               std::pair{2560, 1440}}) {
+      SCOPED_TRACE(std::string(name) + " at " + std::to_string(w) + "x" + std::to_string(h));
+      std::vector<app::ScreenRect> standing;
+      for (const auto& [pane, r] : imgui.panes(in, w, h)) {
+        if (pane == "Match" || pane == "Last shot" || pane == "Shot" || pane == "Match log") {
+          standing.push_back({r.Min.x, r.Min.y, r.Max.x, r.Max.y});
+        }
+      }
+      ASSERT_EQ(standing.size(), 4u);
+      // As the window does each frame: the clear area from the panes laid out, then O.
+      const app::ScreenRect px = app::clearRectFor(
+          w, h, standing, length + 2 * app::kOverheadMargin, breadth + 2 * app::kOverheadMargin);
+      app::CameraRig rig(length, breadth, static_cast<double>(w) / h);
+      rig.setClearArea({px.x0 / w, px.y0 / h, px.x1 / w, px.y1 / h});
+      rig.setOverhead(true);
+      rig.settle();
+      const app::ScreenRect surface = surfaceOnScreen(rig.view(), w, h, length, breadth);
+      EXPECT_GE(surface.x0, 0.0);
+      EXPECT_GE(surface.y0, 0.0);
+      EXPECT_LE(surface.x1, w);
+      EXPECT_LE(surface.y1, h);
+      for (const auto& pane : standing) {
+        EXPECT_FALSE(surface.overlaps(pane))
+            << "surface " << surface.x0 << "," << surface.y0 << "-" << surface.x1 << ","
+            << surface.y1 << " under a pane at " << pane.x0 << "," << pane.y0 << "-" << pane.x1
+            << "," << pane.y1;
+      }
+      EXPECT_GE(std::min(surface.width(), surface.height()), h / 3.0);
+    }
+  }
 }
 
 }  // namespace
