@@ -80,6 +80,20 @@ TEST(CameraGlideTest, HeldTheViewStaysAndReleasedItGlidesOn) {
   EXPECT_LT((rig.view().target - Eigen::Vector3d(0.4, -0.3, kRadius)).norm(), 1e-12);
 }
 
+/// The corners (±x, ±y) of the table plane drawn by `camera` in a 1280 × 720 window, left of
+/// `right_edge` px.
+void expectCornersWithin(const render::Camera& camera, float x, float y, float right_edge) {
+  for (float sx : {-x, x}) {
+    for (float sy : {-y, y}) {
+      const glm::vec3 p = render::projectToPixels(camera, 1280, 720, glm::vec3(sx, sy, 0.0f));
+      EXPECT_GT(p.x, 0.0f);
+      EXPECT_LT(p.x, right_edge);
+      EXPECT_GT(p.y, 0.0f);
+      EXPECT_LT(p.y, 720.0f);
+    }
+  }
+}
+
 TEST(CameraGlideTest, OverheadLooksDownOnTheWholeTable) {
   CameraRig rig(2.54, 1.27, 1280.0 / 720.0);
   rig.setOverhead(true);
@@ -89,15 +103,7 @@ TEST(CameraGlideTest, OverheadLooksDownOnTheWholeTable) {
   EXPECT_LT(down.z(), -0.999);  // within 2.6° of straight down
   const auto camera = cameraOf(view);
   // The rails' outer corners (about 15 cm beyond the playing surface).
-  for (float x : {-1.42f, 1.42f}) {
-    for (float y : {-0.78f, 0.78f}) {
-      const glm::vec3 p = render::projectToPixels(camera, 1280, 720, glm::vec3(x, y, 0.0f));
-      EXPECT_GT(p.x, 0.0f);
-      EXPECT_LT(p.x, 1280.0f);
-      EXPECT_GT(p.y, 0.0f);
-      EXPECT_LT(p.y, 720.0f);
-    }
-  }
+  expectCornersWithin(camera, 1.42f, 0.78f, 1280.0f);
 }
 
 TEST(CameraGlideTest, TheOverheadViewZoomsAndPansAndOStartsItAfresh) {
@@ -146,15 +152,7 @@ TEST(CameraGlideTest, TheOverheadViewFramesTheTableInTheClearArea) {
   EXPECT_NEAR(head.x, foot.x, 6.0) << "lengthwise up the screen";
   EXPECT_NEAR(centre.x, 320.0, 3.0);
   EXPECT_NEAR(centre.y, 360.0, 3.0);
-  for (float x : {-1.27f, 1.27f}) {
-    for (float y : {-0.635f, 0.635f}) {
-      const glm::vec3 p = render::projectToPixels(camera, 1280, 720, glm::vec3(x, y, 0.0f));
-      EXPECT_GT(p.x, 0.0f);
-      EXPECT_LT(p.x, 640.0f);
-      EXPECT_GT(p.y, 0.0f);
-      EXPECT_LT(p.y, 720.0f);
-    }
-  }
+  expectCornersWithin(camera, 1.27f, 0.635f, 640.0f);
 }
 
 TEST(CameraGlideTest, BGoesBackBehindTheCueAndOLooksDown) {
