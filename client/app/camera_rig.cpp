@@ -61,6 +61,8 @@ void CameraRig::setAiming(bool aiming) {
 void CameraRig::behindCue() {
   startGlide();
   aim_turn_ = 0.0;
+  look_ = Eigen::Vector2d::Zero();
+  framed_.reset();
   aim_.elevation = kAimElevation;
   aim_.distance = kAimDistance;
   overhead_ = false;
@@ -193,8 +195,14 @@ void CameraRig::raise(double d_elevation) {
 }
 
 void CameraRig::keepAimAbove(double elevation) {
+  const double before = aim_.elevation;
   aim_.elevation =
       std::clamp(std::max(aim_.elevation, elevation), limits_.min_elevation, limits_.max_elevation);
+  // A raised eye sees the framed shot lower on the screen: frame it again from there.
+  if (aim_.elevation > before + 1e-9 && framed_) {
+    const auto [cue, ahead] = *framed_;
+    frameShot(cue, ahead);
+  }
 }
 
 void CameraRig::panOverhead(double right, double up) {
@@ -222,13 +230,104 @@ void CameraRig::zoom(double factor) {
 
 ViewPoint CameraRig::goal() const {
   if (overhead_) return overheadOrbit().view(fov_y_deg_);
-  return (aiming_ ? aim_ : watch_).view(fov_y_deg_);
+  if (!aiming_) return watch_.view(fov_y_deg_);
+  return aimView(aim_, look_);
+}
+
+ViewPoint CameraRig::aimView(const Orbit& orbit, const Eigen::Vector2d& look) const {
+  // The eye where the orbit has it; the look-at point look.x() m on from the cue ball (away from
+  // the eye) and look.y() m to the left of that line.
+  ViewPoint v = orbit.view(fov_y_deg_);
+  const Eigen::Vector3d on(-std::cos(orbit.azimuth), -std::sin(orbit.azimuth), 0.0);
+  const Eigen::Vector3d left(-on.y(), on.x(), 0.0);
+  v.target += look.x() * on + look.y() * left;
+  return v;
+}
+
+void CameraRig::frameShot(const Eigen::Vector3d& cue, const std::vector<Eigen::Vector3d>& ahead) {
+  constexpr double kEdge = 0.06;     // NDC kept clear inside the area's edges
+  constexpr double kFarthest = 3.0;  // m: the aiming view draws back no further
+  framed_ = std::make_pair(cue, ahead);
+  std::vector<Eigen::Vector3d> points{cue};
+  points.insert(points.end(), ahead.begin(), ahead.end());
+  const double left = 2 * aim_area_.x0 - 1 + kEdge, right = 2 * aim_area_.x1 - 1 - kEdge;
+  const double bottom = 1 - 2 * aim_area_.y1 + kEdge, top = 1 - 2 * aim_area_.y0 - kEdge;
+  if (!(right > left && top > bottom)) return;
+  Orbit probe = aim_;
+  probe.target = cue;
+  double reach = 0.0;  // the farthest point's distance from the cue ball, m
+  for (const auto& p : points) reach = std::max(reach, (p - cue).head<2>().norm());
+  // The points' extent on screen (NDC) for a look offset, and whether all are in the area.
+  struct Extent {
+    Eigen::Vector2d low{1e9, 1e9}, high{-1e9, -1e9};
+    bool fits = true;
+  };
+  const auto extent = [&](const Eigen::Vector2d& look) {
+    Extent out;
+    const ViewPoint v = aimView(probe, look);
+    for (const auto& p : points) {
+      const auto n = ndcOf(v, aspect_, p);
+      if (!n) {
+        out.fits = false;
+        continue;
+      }
+      out.low = out.low.cwiseMin(*n);
+      out.high = out.high.cwiseMax(*n);
+    }
+    out.fits = out.fits && out.low.x() >= left && out.high.x() <= right && out.low.y() >= bottom &&
+               out.high.y() <= top;
+    return out;
+  };
+  // Bisects the look offset's component `axis` for the extent centred on the area along `screen`
+  // (looking further ahead lowers every point; further left moves every point right).
+  const auto centre = [&](Eigen::Vector2d look, int axis, int screen, double lo, double hi) {
+    const double middle = screen == 0 ? (left + right) / 2 : (bottom + top) / 2;
+    for (int i = 0; i < 40; ++i) {
+      look[axis] = (lo + hi) / 2;
+      const Extent e = extent(look);
+      const bool past = e.high[screen] + e.low[screen] > 2 * middle;
+      // Ahead (y on screen): past the middle → look further. Left (x): past → look less left.
+      if (screen == 1) {
+        (past ? lo : hi) = look[axis];
+      } else {
+        (past ? hi : lo) = look[axis];
+      }
+    }
+    look[axis] = (lo + hi) / 2;
+    return look;
+  };
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    Eigen::Vector2d look = Eigen::Vector2d::Zero();
+    for (int pass = 0; pass < 2; ++pass) {
+      look = centre(look, 0, 1, -0.5, reach + 1.0);
+      look = centre(look, 1, 0, -reach - 1.0, reach + 1.0);
+    }
+    if (extent(look).fits) {
+      aim_.distance = probe.distance;
+      look_ = look;
+      return;
+    }
+    if (probe.distance >= kFarthest) break;
+    probe.distance = std::min(probe.distance * 1.12, kFarthest);
+  }
 }
 
 ViewPoint CameraRig::view() const {
   if (held_) return *held_;
   if (glide_) return blend(glide_->from, goal(), glide_->t / kGlideTime);
   return goal();
+}
+
+std::optional<Eigen::Vector2d> ndcOf(const ViewPoint& view, double aspect,
+                                     const Eigen::Vector3d& p) {
+  const Eigen::Vector3d forward = (view.target - view.eye).normalized();
+  const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d up = right.cross(forward);
+  const Eigen::Vector3d d = p - view.eye;
+  const double depth = d.dot(forward);
+  if (!(depth > 1e-6)) return std::nullopt;
+  const double tan_y = std::tan(radians(view.fov_y_deg) / 2);
+  return Eigen::Vector2d(d.dot(right) / (depth * tan_y * aspect), d.dot(up) / (depth * tan_y));
 }
 
 std::optional<Eigen::Vector2d> pointUnderPixel(const ViewPoint& view, int width, int height,

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "client/app/clear_area.h"
 
@@ -70,7 +72,8 @@ class CameraRig {
   void orbit(double d_azimuth);
   /// Raises (+) or lowers the active camera (rad of elevation).
   void raise(double d_elevation);
-  /// Raises the aiming camera to at least `elevation` (rad), e.g. above the cue's line.
+  /// Raises the aiming camera to at least `elevation` (rad), e.g. above the cue's line (and frames
+  /// the last framed shot again from there).
   void keepAimAbove(double elevation);
   /// Multiplies the active camera's distance by `factor` (< 1 zooms in).
   void zoom(double factor);
@@ -85,6 +88,16 @@ class CameraRig {
   /// at `contact` (the first contact's ghost ball centre) shows clear above the cue ball at
   /// `cue`, so the view frames both.
   void frameAim(const Eigen::Vector3d& cue, const Eigen::Vector3d& contact, double ball_radius);
+  /// Then frames the shot: the look-at point moves ahead of the cue ball and beside its line (the
+  /// eye stays behind it) until the cue ball and every point of `ahead` (the ghost ball, the
+  /// object ball, its pocket) sit in the aim area, centred on it, drawing back (up to 3 m) where
+  /// they do not fit. Kept until the next behindCue.
+  void frameShot(const Eigen::Vector3d& cue, const std::vector<Eigen::Vector3d>& ahead);
+  /// The part of the window the aiming view draws the shot in, as fractions from the top-left
+  /// corner (app::clearColumnFor of the panes; the whole window until told).
+  void setAimArea(const ScreenRect& fraction) { aim_area_ = fraction; }
+  /// How far ahead of the cue ball and to the left of its line the aiming view looks, m.
+  const Eigen::Vector2d& look() const { return look_; }
   /// The view straight down on the whole table on or off (O), framed in the clear area (turned
   /// lengthwise up the screen where that fits it larger) and neither zoomed nor panned. Glides.
   /// While it is on, orbit() and raise() pan it (rad of orbit: the view's height × kOverheadPan)
@@ -120,6 +133,8 @@ class CameraRig {
   /// Starts a glide from the view drawn now.
   void startGlide();
   Orbit overheadOrbit() const;
+  /// The aiming view of `orbit` looking `look` m ahead of the cue ball and left of its line.
+  ViewPoint aimView(const Orbit& orbit, const Eigen::Vector2d& look) const;
   /// Moves the overhead view by `right` and `up` (rad, as orbit and raise give them).
   void panOverhead(double right, double up);
 
@@ -134,6 +149,11 @@ class CameraRig {
   double aim_turn_ = 0.0;  ///< the aiming camera's azimuth off the line behind the cue, rad
   bool overhead_ = false;
   ScreenRect clear_{0.0, 0.0, 1.0, 1.0};
+  ScreenRect aim_area_{0.0, 0.0, 1.0, 1.0};
+  Eigen::Vector2d look_ = Eigen::Vector2d::Zero();  ///< m: ahead of the cue ball, left of its line
+  /// The cue ball and the points the last frameShot framed (until behindCue): keepAimAbove frames
+  /// them again when it raises the eye.
+  std::optional<std::pair<Eigen::Vector3d, std::vector<Eigen::Vector3d>>> framed_;
   double overhead_zoom_ = 1.0;                              ///< distance factor (S, X, wheel)
   Eigen::Vector2d overhead_pan_ = Eigen::Vector2d::Zero();  ///< m, table frame
   struct Glide {
@@ -143,6 +163,11 @@ class CameraRig {
   std::optional<Glide> glide_;
   std::optional<ViewPoint> held_;  ///< the view drawn while held
 };
+
+/// Where `p` is drawn by `view` in a window of aspect `aspect`, in normalised device coordinates
+/// (x right, y up, −1 to 1 across the window); empty behind the eye.
+std::optional<Eigen::Vector2d> ndcOf(const ViewPoint& view, double aspect,
+                                     const Eigen::Vector3d& p);
 
 /// The point of the horizontal plane z = `plane_z` under pixel (`px`, `py`) (from the top-left
 /// corner) of a `width` × `height` viewport seen from `view`; empty when the ray misses it.

@@ -33,4 +33,9 @@ bool tableUpright(const ScreenRect& rect, double length, double breadth);
 ScreenRect clearRectFor(double width, double height, const std::vector<ScreenRect>& panes,
                         double length, double breadth);
 
+/// The tallest rectangle of a `width` × `height` window across its middle (x = width / 2) that
+/// overlaps none of `panes`, the widest of those: where the aiming view draws the cue ball and
+/// the shot ahead of it. The whole window when no pane is given.
+ScreenRect clearColumnFor(double width, double height, const std::vector<ScreenRect>& panes);
+
 }  // namespace pool::app

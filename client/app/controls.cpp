@@ -60,13 +60,19 @@ void Controls::startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_h
 
 void Controls::behindCue() {
   camera_.behindCue();
-  if (contact_) camera_.frameAim(cueBall(), *contact_, area_.ball_radius);
   followCue();
+  if (contact_) {
+    camera_.frameAim(cueBall(), *contact_, area_.ball_radius);
+    std::vector<Eigen::Vector3d> ahead{*contact_};
+    ahead.insert(ahead.end(), ahead_.begin(), ahead_.end());
+    camera_.frameShot(cueBall(), ahead);
+  }
 }
 
-void Controls::setContact(const Eigen::Vector3d& contact) {
+void Controls::setContact(const Eigen::Vector3d& contact, std::vector<Eigen::Vector3d> ahead) {
   const bool first = !contact_;
   contact_ = contact;
+  ahead_ = std::move(ahead);
   // The turn's first prediction frames the view it opens with.
   if (first && mode_ == ControlMode::Aiming) behindCue();
 }

@@ -90,9 +90,11 @@ class Controls {
   void startTurn(const Eigen::Vector3d& cue_ball, rules::BallInHand in_hand);
   /// Turns the cue to `yaw` (rad), the camera behind it (e.g. facing the turn's target).
   void setYaw(double yaw);
-  /// The current aim's first contact (the ghost ball's centre, m), told each frame: the view
-  /// behind the cue (a new turn, B) is raised until it shows above the cue ball.
-  void setContact(const Eigen::Vector3d& contact);
+  /// The current aim's first contact (the ghost ball's centre, m), told each frame, and what lies
+  /// ahead of it (the object ball, the pocket it heads for): the view behind the cue (a new turn,
+  /// B) is raised until the contact shows above the cue ball, then frames them all
+  /// (CameraRig::frameShot).
+  void setContact(const Eigen::Vector3d& contact, std::vector<Eigen::Vector3d> ahead = {});
   /// Moves the cue ball in hand to `at` (kept on the slate, behind the head string when it must
   /// be); nothing without ball in hand.
   void moveCueBall(const Eigen::Vector2d& at);
@@ -192,6 +194,7 @@ class Controls {
   AimState aim_;
   Eigen::Vector3d cue_ball_ = Eigen::Vector3d::Zero();
   std::optional<Eigen::Vector3d> contact_;
+  std::vector<Eigen::Vector3d> ahead_;
   void behindCue();
   rules::BallInHand in_hand_ = rules::BallInHand::None;
   bool charging_ = false;

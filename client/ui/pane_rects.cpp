@@ -22,12 +22,25 @@ std::vector<app::ScreenRect> standingPaneRects() {
   return out;
 }
 
+namespace {
+
+/// `px` as fractions of the window.
+app::ScreenRect fractionOf(const app::ScreenRect& px, const ImVec2& size) {
+  return {px.x0 / size.x, px.y0 / size.y, px.x1 / size.x, px.y1 / size.y};
+}
+
+}  // namespace
+
 app::ScreenRect clearFraction(double length, double breadth) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   if (!(size.x > 0.0f && size.y > 0.0f)) return {0.0, 0.0, 1.0, 1.0};
-  const app::ScreenRect px =
-      app::clearRectFor(size.x, size.y, standingPaneRects(), length, breadth);
-  return {px.x0 / size.x, px.y0 / size.y, px.x1 / size.x, px.y1 / size.y};
+  return fractionOf(app::clearRectFor(size.x, size.y, standingPaneRects(), length, breadth), size);
+}
+
+app::ScreenRect clearColumnFraction() {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  if (!(size.x > 0.0f && size.y > 0.0f)) return {0.0, 0.0, 1.0, 1.0};
+  return fractionOf(app::clearColumnFor(size.x, size.y, standingPaneRects()), size);
 }
 
 }  // namespace pool::ui

@@ -17,4 +17,8 @@ std::vector<app::ScreenRect> standingPaneRects();
 /// fractions of the window (app::clearRectFor).
 app::ScreenRect clearFraction(double length, double breadth);
 
+/// The column down the window's middle those panes leave clear for the aiming view, as fractions
+/// of the window (app::clearColumnFor).
+app::ScreenRect clearColumnFraction();
+
 }  // namespace pool::ui

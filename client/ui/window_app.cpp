@@ -466,6 +466,7 @@ class WindowApp {
       // The overhead view frames the table where the panes just laid out leave it clear.
       controls_.camera().setClearArea(clearFraction(view_.spec.length + 2 * app::kOverheadMargin,
                                                     view_.spec.width + 2 * app::kOverheadMargin));
+      controls_.camera().setAimArea(clearColumnFraction());
       if (const client::MatchView* v = session_.view(); v && controls_.toggles().panes) {
         practice_.drawPhysicsPane(*v, actions.texts);
       }

@@ -18,7 +18,18 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
       app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
   controls.suggestCall(
       app::autoCall(prediction, client::gameStateOf(match), balls, view, match.settings.game));
-  controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()});
+  std::vector<Eigen::Vector3d> ahead;  // the object ball and the pocket it heads for
+  if (prediction.ball) {
+    for (const auto& b : balls) {
+      if (b.id == *prediction.ball) ahead.push_back(b.pos);
+    }
+  }
+  if (prediction.pocket >= 0 && prediction.pocket < static_cast<int>(view.pockets.size())) {
+    const Eigen::Vector2d mouth = view.pockets[static_cast<std::size_t>(prediction.pocket)].mouth;
+    ahead.emplace_back(mouth.x(), mouth.y(), view.radius());
+  }
+  controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()},
+                      std::move(ahead));
   app::ClickTargets targets;
   for (const auto& b : balls) {
     if (b.id != physics::kCueBall && physics::onTable(b.state)) {
