@@ -530,10 +530,12 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   MatchRecorder recorder(kWindowBallInHand);
   startServer({});  // frames paced at 60 Hz, as a player sees them
   std::string script = "wait aiming\nframes 60\nmouse press cue\nframes 2\n";
-  const Eigen::Vector2d step(-2.0, 3.0);  // each move: back and to the left, px
+  // Each move: back and to the right, px (over open felt: the Match and Shot panes are on the
+  // left, and the aiming view draws the cue ball low in the column between them and the log).
+  const Eigen::Vector2d step(2.0, 3.0);
   const std::array<int, 2> captured_after{10, 30};
   for (int i = 1; i <= 30; ++i) {
-    script += "mouse by -2 3\n";
+    script += "mouse by 2 3\n";
     if (i == captured_after[0] || i == captured_after[1]) {
       script += "capture " + file("drag-" + std::to_string(i) + ".png") + "\n";
     }
