@@ -485,24 +485,36 @@ void Controls::mouseMove(double x, double y) {
   if (mode_ == ControlMode::Aiming && drag_ != Drag::CueBall) followCue();
 }
 
-void Controls::click(double x, double y) {
-  if (mode_ != ControlMode::Aiming) return;
+std::optional<ClickTarget> Controls::targetAt(double x, double y) const {
+  if (mode_ != ControlMode::Aiming) return std::nullopt;
   const auto hit = pointUnderPixel(camera_.view(), width_, height_, x, y, area_.ball_radius);
-  if (!hit) return;
+  if (!hit) return std::nullopt;
   for (const auto& [id, at] : targets_.balls) {
-    if ((*hit - at).norm() < 1.3 * area_.ball_radius) {
-      picked_ball_ = id;
-      return;
-    }
+    if ((*hit - at).norm() < 1.3 * area_.ball_radius) return ClickTarget{id, {}, at};
   }
-  if (!picked_ball_) return;
+  if (!picked_ball_) return std::nullopt;
   const std::pair<std::string, Eigen::Vector2d>* best = nullptr;
   for (const auto& pocket : targets_.pockets) {
     const double d = (*hit - pocket.second).norm();
     if (d < kPocketReach && (!best || d < (*hit - best->second).norm())) best = &pocket;
   }
-  if (!best) return;
-  aim_.call = ShotCall{picked_ball_, best->first, false, true};
+  if (!best) return std::nullopt;
+  return ClickTarget{std::nullopt, best->first, best->second};
+}
+
+std::optional<ClickTarget> Controls::hovered() const {
+  if (drag_ != Drag::None) return std::nullopt;
+  return targetAt(mouse_.x(), mouse_.y());
+}
+
+void Controls::click(double x, double y) {
+  const auto target = targetAt(x, y);
+  if (!target) return;
+  if (target->ball) {
+    picked_ball_ = target->ball;
+    return;
+  }
+  aim_.call = ShotCall{picked_ball_, target->pocket, false, true};
   picked_ball_.reset();
 }
 

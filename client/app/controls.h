@@ -72,6 +72,13 @@ struct ClickTargets {
   std::vector<std::pair<std::string, Eigen::Vector2d>> pockets;
 };
 
+/// What a click there would pick or call: an object ball, or (with a ball picked) a pocket.
+struct ClickTarget {
+  std::optional<int> ball;                       ///< the object ball under the cursor
+  std::string pocket;                            ///< else the pocket whose mouth is within reach
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();  ///< the ball's centre or the mouth, m
+};
+
 /// What the player may do now.
 enum class ControlMode : std::uint8_t {
   Watching,  ///< balls moving, the other's turn, spectating
@@ -130,6 +137,9 @@ class Controls {
   void setClickTargets(ClickTargets targets) { targets_ = std::move(targets); }
   /// The ball clicked, waiting for its pocket.
   std::optional<int> pickedBall() const { return picked_ball_; }
+  /// What a click at the cursor would pick or call now (nothing while dragging): the window rings
+  /// it.
+  std::optional<ClickTarget> hovered() const;
 
   /// A practice table lets the player drag any object ball (a press on one that then moves);
   /// off, a press on an object ball turns the cue as anywhere else.
@@ -164,6 +174,11 @@ class Controls {
     toggles_.vectors = vectors;
   }
   const protocol::CommandLimits& limits() const { return limits_; }
+  /// A mouse stroke's scale, m of cue a pixel (the player's setting).
+  void setStrokeScale(double metres_per_pixel) {
+    if (metres_per_pixel > 0) rates_.stroke_scale = metres_per_pixel;
+  }
+  double strokeScale() const { return rates_.stroke_scale; }
 
  private:
   enum class Drag : std::uint8_t { None, Cue, View, CueBall, Ball, Stroke };
@@ -214,6 +229,7 @@ class Controls {
   Eigen::Vector2d pressed_at_ = Eigen::Vector2d::Zero();
   bool moved_ = false;  ///< the mouse moved since the press
   void click(double x, double y);
+  std::optional<ClickTarget> targetAt(double x, double y) const;
   ClickTargets targets_;
   std::optional<int> picked_ball_;
   bool ball_dragging_ = false;

@@ -2,6 +2,7 @@
 #include "client/app/overlay.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace pool::app {
 namespace {
@@ -48,6 +49,18 @@ std::vector<OverlaySegment> motionOverlay(const std::vector<physics::Ball>& ball
 std::vector<OverlaySegment> cueDirectionOverlay(const Eigen::Vector3d& cue_ball, double yaw) {
   const Eigen::Vector3d dir(std::cos(yaw), std::sin(yaw), 0.0);
   return {{cue_ball, cue_ball + 0.3 * dir, kCueColour}};
+}
+
+std::vector<OverlaySegment> ringOverlay(const Eigen::Vector2d& centre, double radius, double z,
+                                        const Eigen::Vector3d& colour) {
+  constexpr int kSides = 32;
+  std::vector<OverlaySegment> out;
+  const auto at = [&](int i) {
+    const double t = 2 * std::numbers::pi * i / kSides;
+    return Eigen::Vector3d(centre.x() + radius * std::cos(t), centre.y() + radius * std::sin(t), z);
+  };
+  for (int i = 0; i < kSides; ++i) out.push_back({at(i), at(i + 1), colour});
+  return out;
 }
 
 }  // namespace pool::app

@@ -26,6 +26,10 @@ std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, double radius);
 /// (length ∝ |ω|).
 std::vector<OverlaySegment> motionOverlay(const std::vector<physics::Ball>& balls);
 
+/// A ring of `radius` m round `centre` at height `z`, in `colour` (what a click would call).
+std::vector<OverlaySegment> ringOverlay(const Eigen::Vector2d& centre, double radius, double z,
+                                        const Eigen::Vector3d& colour);
+
 /// The cue's direction as an arrow from the cue ball (the vector overlay while aiming).
 std::vector<OverlaySegment> cueDirectionOverlay(const Eigen::Vector3d& cue_ball, double yaw);
 

@@ -18,6 +18,16 @@ std::string trim(const std::string& s) {
   return s.substr(a, b - a + 1);
 }
 
+/// One number, nothing after it, finite and in [lo, hi].
+bool readNumber(const std::string& value, double lo, double hi, double& out) {
+  std::istringstream v(value);
+  std::string rest;
+  double read = 0.0;
+  if (!(v >> read) || (v >> rest) || !std::isfinite(read) || read < lo || read > hi) return false;
+  out = read;
+  return true;
+}
+
 bool readBool(const std::string& value, bool& out) {
   if (value == "true" || value == "on" || value == "1") {
     out = true;
@@ -70,10 +80,9 @@ Result<Settings> loadSettings(const std::filesystem::path& path) {
       ok = knownQuality(value);
       if (ok) s.quality = value;
     } else if (key == "volume") {
-      std::istringstream v(value);
-      std::string rest;
-      ok = static_cast<bool>(v >> s.volume) && !(v >> rest) && std::isfinite(s.volume) &&
-           s.volume >= 0.0 && s.volume <= 1.0;
+      ok = readNumber(value, 0.0, 1.0, s.volume);
+    } else if (key == "stroke_mm") {
+      ok = readNumber(value, 0.2, 5.0, s.stroke_mm);
     } else {
       return R::fail(where + "unknown setting '" + key + "'");
     }
@@ -95,7 +104,8 @@ Result<bool> saveSettings(const std::filesystem::path& path, const Settings& s) 
         << "volume = " << s.volume << '\n'
         << "aim_line = " << (s.aim_line ? "true" : "false") << '\n'
         << "vectors = " << (s.vectors ? "true" : "false") << '\n'
-        << "quality = " << s.quality << '\n';
+        << "quality = " << s.quality << '\n'
+        << "stroke_mm = " << s.stroke_mm << '\n';
     if (!out.flush()) return R::fail("cannot write " + tmp.string());
   }
   std::filesystem::rename(tmp, path, ec);

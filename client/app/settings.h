@@ -16,6 +16,8 @@ struct Settings {
   bool vectors = false;  ///< direction arrows (V)
   /// The drawing preset: "auto" (light under a software renderer, else full), "full" or "light".
   std::string quality = "auto";
+  /// A mouse stroke's scale: mm of cue a pixel of mouse (0.2–5; ControlRates::stroke_scale).
+  double stroke_mm = 1.0;
 
   bool operator==(const Settings&) const = default;
 };
@@ -28,8 +30,8 @@ std::filesystem::path defaultSettingsPath();
 bool knownQuality(const std::string& name);
 
 /// Reads `key = value` lines ('#' starts a comment). A missing file gives the defaults. An unknown
-/// key, a bad value, a volume outside [0, 1] or a quality not named above fails with the line's
-/// number, and nothing of the file is used.
+/// key, a bad value, a volume outside [0, 1], a stroke scale outside [0.2, 5] or a quality not
+/// named above fails with the line's number, and nothing of the file is used.
 Result<Settings> loadSettings(const std::filesystem::path& path);
 
 /// Writes `settings` to `path` (its folder made if needed) through a temporary file renamed over

@@ -423,6 +423,12 @@ void settingsLines(Say& say, const HudInput& in) {
     s.volume = volume;
     changed = true;
   }
+  float stroke = static_cast<float>(s.stroke_mm);
+  say.out().texts.push_back("Mouse stroke: mm of cue a pixel");
+  if (ImGui::SliderFloat("Mouse stroke: mm of cue a pixel", &stroke, 0.2f, 5.0f, "%.2f")) {
+    s.stroke_mm = stroke;
+    changed = true;
+  }
   say.text("Quality (at once)");
   for (const char* q : {"auto", "full", "light"}) {
     ImGui::SameLine();

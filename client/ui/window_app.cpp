@@ -124,6 +124,7 @@ class WindowApp {
     gl_renderer_ = gl_renderer ? reinterpret_cast<const char*>(gl_renderer) : "";
     applyQuality(options.quality.empty() ? settings_.settings.quality : options.quality);
     controls_.setAimAids(settings_.settings.aim_line, settings_.settings.vectors);
+    controls_.setStrokeScale(settings_.settings.stroke_mm / 1000.0);
     window_.setFullScreen(settings_.settings.full_screen);
     if (!settings_.problem.empty()) addNote({settings_.problem, true});
     installInput(window_.get(), controls_);
@@ -518,6 +519,8 @@ class WindowApp {
     if (actions.new_game) newGame();
     if (actions.settings) {
       controls_.setAimAids(actions.settings->aim_line, actions.settings->vectors);
+      controls_.setStrokeScale(actions.settings->stroke_mm / 1000.0);
+      settings_.settings.stroke_mm = actions.settings->stroke_mm;
       window_.setFullScreen(actions.settings->full_screen);
       settings_.settings.volume = actions.settings->volume;
       if (actions.settings->quality != settings_.settings.quality) {

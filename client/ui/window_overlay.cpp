@@ -39,6 +39,13 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   for (const auto& p : view.pockets) targets.pockets.emplace_back(p.name, p.mouth);
   controls.setClickTargets(std::move(targets));
   if (t.aim_line) append(out.lines, app::aimOverlay(prediction, view.radius()));
+  // What a click would pick (a ball: a yellow ring) or call (a pocket: green round its mouth).
+  if (const auto target = controls.hovered()) {
+    append(out.lines,
+           target->ball
+               ? app::ringOverlay(target->at, 1.5 * view.radius(), view.radius(), {1.0, 0.85, 0.1})
+               : app::ringOverlay(target->at, 0.08, view.radius() * 0.3, {0.2, 1.0, 0.3}));
+  }
   out.aim = prediction;
   if (t.vectors) {
     append(out.lines, app::cueDirectionOverlay(controls.cueBall(), controls.aim().yaw));

@@ -295,6 +295,43 @@ TEST_F(BallInHandTest, CAfterClickingABallCallsThatBallAndWithNoBallChangesNothi
   EXPECT_FALSE(controls.pickedBall());
 }
 
+TEST_F(BallInHandTest, TheBallThenThePocketUnderTheCursorAreWhatAClickWouldCall) {
+  // A pocket's mouth within 15 cm of the point under the cursor calls it (kPocketReach); the
+  // foot right corner's mouth at (1.27, 0.635) and the 8 at (0.2, 0.1), both in view.
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::None);
+  controls.setClickTargets(
+      {{{8, Eigen::Vector2d(0.2, 0.1)}}, {{"foot_right_corner", Eigen::Vector2d(1.22, 0.585)}}});
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);
+  const Eigen::Vector2d eight = pixelOf(Eigen::Vector2d(0.2, 0.1));
+  const Eigen::Vector2d pocket = pixelOf(Eigen::Vector2d(1.22, 0.585));
+  const Eigen::Vector2d felt = pixelOf(Eigen::Vector2d(0.6, -0.3));
+  controls.mouseMove(felt.x(), felt.y());
+  EXPECT_FALSE(controls.hovered()) << "open felt";
+  controls.mouseMove(pocket.x(), pocket.y());
+  EXPECT_FALSE(controls.hovered()) << "a pocket calls nothing before a ball is picked";
+  controls.mouseMove(eight.x(), eight.y());
+  auto target = controls.hovered();
+  ASSERT_TRUE(target);
+  EXPECT_EQ(target->ball, 8);
+  EXPECT_LT((target->at - Eigen::Vector2d(0.2, 0.1)).norm(), 1e-12);
+  controls.mouseButton(MouseButton::Left, true, eight.x(), eight.y());
+  EXPECT_FALSE(controls.hovered()) << "nothing while the button is down";
+  controls.mouseButton(MouseButton::Left, false, eight.x(), eight.y());
+  ASSERT_EQ(controls.pickedBall(), 8);
+  controls.mouseMove(pocket.x(), pocket.y());
+  target = controls.hovered();
+  ASSERT_TRUE(target);
+  EXPECT_FALSE(target->ball);
+  EXPECT_EQ(target->pocket, "foot_right_corner");
+  // The click there calls what was ringed.
+  controls.mouseButton(MouseButton::Left, true, pocket.x(), pocket.y());
+  controls.mouseButton(MouseButton::Left, false, pocket.x(), pocket.y());
+  EXPECT_EQ(controls.aim().call.ball, 8);
+  EXPECT_EQ(controls.aim().call.pocket, "foot_right_corner");
+  controls.stopAiming();
+  EXPECT_FALSE(controls.hovered()) << "nothing to call while watching";
+}
+
 TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {
   controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::BehindHeadString);
   drag(Eigen::Vector2d(-0.8, 0.0), Eigen::Vector2d(-0.5, 0.0));

@@ -37,6 +37,7 @@ TEST_F(SettingsTest, WhatIsSavedIsLoadedBack) {
   s.aim_line = false;
   s.vectors = true;
   s.quality = "light";
+  s.stroke_mm = 2.5;
   ASSERT_TRUE(saveSettings(file(), s));
   const auto back = loadSettings(file());
   ASSERT_TRUE(back) << back.error();
@@ -67,7 +68,8 @@ TEST_F(SettingsTest, ABadLineIsRefusedWithItsNumberAndTheFileKept) {
   ASSERT_FALSE(s);
   EXPECT_EQ(s.error(), file().string() + " line 4: bad value 'maybe' for aim_line");
   for (const char* bad : {"volume = 1.5\n", "volume = nan\n", "volume = 0.5 loud\n",
-                          "colour = red\n", "full_screen\n", "quality = ultra\n", "quality = \n"}) {
+                          "colour = red\n", "full_screen\n", "quality = ultra\n", "quality = \n",
+                          "stroke_mm = 0\n", "stroke_mm = 5.5\n", "stroke_mm = inf\n"}) {
     write(bad);
     EXPECT_FALSE(loadSettings(file())) << bad;
   }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +69,22 @@ enum Domain : std::uint32_t {
 };
 
 /// A test with its own domain, scratch folder and processes (killed in teardown).
+/// Sends volatile requests (seat and spectate requests) again every 2 s while their answers are
+/// missing: one written before the server's reader matched its writer is lost (seen on a loaded
+/// machine). Call it from a pump's predicate.
+class Reask {
+ public:
+  void operator()(const std::function<void()>& ask) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::seconds(2)) return;
+    ask();
+    last_ = now;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_{};
+};
+
 class ClientIntegrationTest : public ::testing::Test {
  protected:
   void SetUp() override { useLoopbackConfig(); }
