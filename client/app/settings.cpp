@@ -48,6 +48,10 @@ std::filesystem::path defaultSettingsPath() {
   return players.parent_path() / "settings.conf";
 }
 
+bool knownPane(const std::string& name) {
+  return name == "match" || name == "shot" || name == "log";
+}
+
 bool knownQuality(const std::string& name) {
   return name == "auto" || name == "full" || name == "light";
 }
@@ -83,6 +87,14 @@ Result<Settings> loadSettings(const std::filesystem::path& path) {
       ok = readNumber(value, 0.0, 1.0, s.volume);
     } else if (key == "stroke_mm") {
       ok = readNumber(value, 0.2, 5.0, s.stroke_mm);
+    } else if (key.rfind("pane_", 0) == 0 && knownPane(key.substr(5))) {
+      // "x, y": two fractions of the window.
+      const auto comma = value.find(',');
+      std::array<double, 2> at{};
+      ok = comma != std::string::npos &&
+           readNumber(trim(value.substr(0, comma)), 0.0, 1.0, at[0]) &&
+           readNumber(trim(value.substr(comma + 1)), 0.0, 1.0, at[1]);
+      if (ok) s.pane_places[key.substr(5)] = at;
     } else {
       return R::fail(where + "unknown setting '" + key + "'");
     }
@@ -106,6 +118,9 @@ Result<bool> saveSettings(const std::filesystem::path& path, const Settings& s) 
         << "vectors = " << (s.vectors ? "true" : "false") << '\n'
         << "quality = " << s.quality << '\n'
         << "stroke_mm = " << s.stroke_mm << '\n';
+    for (const auto& [pane, at] : s.pane_places) {
+      out << "pane_" << pane << " = " << at[0] << ", " << at[1] << '\n';
+    }
     if (!out.flush()) return R::fail("cannot write " + tmp.string());
   }
   std::filesystem::rename(tmp, path, ec);

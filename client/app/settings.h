@@ -2,7 +2,9 @@
 // quality, in a small text file in the user's config folder ($XDG_CONFIG_HOME/pool/settings.conf).
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "core/result.h"
@@ -18,6 +20,9 @@ struct Settings {
   std::string quality = "auto";
   /// A mouse stroke's scale: mm of cue a pixel of mouse (0.2–5; ControlRates::stroke_scale).
   double stroke_mm = 1.0;
+  /// Where the player left a pane ("match", "shot", "log"): its top-left corner as fractions of
+  /// the window's width and height; a pane not named here stays at its anchor.
+  std::map<std::string, std::array<double, 2>> pane_places;
 
   bool operator==(const Settings&) const = default;
 };
@@ -28,6 +33,10 @@ std::filesystem::path defaultSettingsPath();
 
 /// True for the quality names a settings file may hold: auto, full, light.
 bool knownQuality(const std::string& name);
+
+/// True for the panes whose place a settings file may hold (`pane_<name> = x, y`): match, shot,
+/// log.
+bool knownPane(const std::string& name);
 
 /// Reads `key = value` lines ('#' starts a comment). A missing file gives the defaults. An unknown
 /// key, a bad value, a volume outside [0, 1], a stroke scale outside [0.2, 5] or a quality not

@@ -2,6 +2,7 @@
 #include "client/ui/hud.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +87,50 @@ void anchor(ImVec2 pivot, float max_w, float max_h, float width = 0.0f) {
 
 constexpr ImGuiWindowFlags kPane =
     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+/// The panes that stay up in play: the player may drag them by the title (their places are kept
+/// in the settings) and collapse them to it.
+constexpr ImGuiWindowFlags kStandingPane = ImGuiWindowFlags_AlwaysAutoResize;
+
+/// Begins standing pane `title` (settings key `key`): where the player left it, else at its
+/// anchor (`pivot`, sizes as anchor()); while the player drags it, where the drag has it; on the
+/// frame the drag ends, its new place goes out with the settings.
+void beginStandingPane(Say& say, const HudInput& in, const char* title, const std::string& key,
+                       ImVec2 pivot, float max_w, float max_h, float width) {
+  const ImVec2 size = screenSize();
+  ImGuiWindow* window = ImGui::FindWindowByName(title);
+  const bool dragging = window != nullptr && GImGui->MovingWindow == window;
+  const auto kept = in.settings.pane_places.find(key);
+  anchor(pivot, max_w, max_h, width);  // the size limits, and the anchor unless placed below
+  if (dragging) {
+    ImGui::SetNextWindowPos(window->Pos, ImGuiCond_Always);
+  } else if (window != nullptr && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+             window->WasActive) {
+    // A drag that just ended leaves the pane where it was last drawn, if that is not where it
+    // is kept: the player's new place for it.
+    const ImVec2 at = window->Pos;
+    const ImVec2 expected =
+        kept != in.settings.pane_places.end()
+            ? ImVec2(static_cast<float>(kept->second[0]) * size.x,
+                     static_cast<float>(kept->second[1]) * size.y)
+            : ImVec2(kMargin + pivot.x * (size.x - 2 * kMargin) - pivot.x * window->Size.x,
+                     kMargin + pivot.y * (size.y - 2 * kMargin) - pivot.y * window->Size.y);
+    if (std::abs(at.x - expected.x) > 1.0f || std::abs(at.y - expected.y) > 1.0f) {
+      app::Settings changed = say.out().settings ? *say.out().settings : in.settings;
+      changed.pane_places[key] = {std::clamp(static_cast<double>(at.x / size.x), 0.0, 1.0),
+                                  std::clamp(static_cast<double>(at.y / size.y), 0.0, 1.0)};
+      say.out().settings = changed;
+      ImGui::SetNextWindowPos(at, ImGuiCond_Always);
+    } else if (kept != in.settings.pane_places.end()) {
+      ImGui::SetNextWindowPos(expected, ImGuiCond_Always);
+    }
+  } else if (kept != in.settings.pane_places.end()) {
+    // Kept inside the window: at least its title's corner on screen.
+    const float x = std::clamp(static_cast<float>(kept->second[0]) * size.x, 0.0f, size.x - 60.0f);
+    const float y = std::clamp(static_cast<float>(kept->second[1]) * size.y, 0.0f, size.y - 30.0f);
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+  }
+  ImGui::Begin(title, nullptr, kStandingPane);
+}
 
 app::SeatNames namesOf(const HudInput& in) {
   return in.names ? *in.names : app::seatNames(in.view);
@@ -144,8 +189,8 @@ void clockBar(const client::MatchView& v) {
 }
 
 void matchPanel(Say& say, const HudInput& in) {
-  anchor(ImVec2(0, 0), 0.32f, 0.45f, std::min(screenSize().x * 0.32f, px(340.0f)));
-  ImGui::Begin("Match", nullptr, kPane);
+  beginStandingPane(say, in, "Match", "match", ImVec2(0, 0), 0.32f, 0.45f,
+                    std::min(screenSize().x * 0.32f, px(340.0f)));
   say.text(in.match + (in.spectating ? " (watching)" : ""));
 
   if (!in.view) {
@@ -268,8 +313,8 @@ void lastShotLines(Say& say, const protocol::ShotRequest& shot) {
 void shotPanel(Say& say, const HudInput& in) {
   const app::Controls& c = *in.controls;
   const app::AimState& aim = c.aim();
-  anchor(ImVec2(0, 1), 0.32f, 0.5f, std::min(screenSize().x * 0.32f, px(340.0f)));
-  ImGui::Begin("Shot", nullptr, kPane);
+  beginStandingPane(say, in, "Shot", "shot", ImVec2(0, 1), 0.32f, 0.5f,
+                    std::min(screenSize().x * 0.32f, px(340.0f)));
   const app::SeatNames names = namesOf(in);
   if (in.local_shooter >= 0) {
     say.wrapped(names[static_cast<std::size_t>(in.local_shooter)] +
@@ -331,8 +376,8 @@ void logPanel(Say& say, const HudInput& in) {
   const bool notes = in.notes && !in.notes->empty();
   if (!log && !notes) return;
   const ImVec2 size = screenSize();
-  anchor(ImVec2(1, 0), 0.3f, 0.42f, std::min(size.x * 0.3f, px(460.0f)));
-  ImGui::Begin("Match log", nullptr, kPane);
+  beginStandingPane(say, in, "Match log", "log", ImVec2(1, 0), 0.3f, 0.42f,
+                    std::min(size.x * 0.3f, px(460.0f)));
   if (log) {
     const float height = std::min(size.y * 0.25f, px(220.0f));
     ImGui::BeginChild("shots", ImVec2(0, height), true);
@@ -440,6 +485,13 @@ void settingsLines(Say& say, const HudInput& in) {
     }
   }
   say.wrapped("auto: light under software OpenGL (the scene at 0.6 of the resolution), else full");
+  if (!s.pane_places.empty()) {
+    say.out().texts.push_back("Panes back to their places");
+    if (ImGui::Button("Panes back to their places")) {
+      s.pane_places.clear();
+      changed = true;
+    }
+  }
   if (!in.settings_note.empty()) say.wrapped(in.settings_note);
   if (changed) say.out().settings = s;
 }

@@ -521,6 +521,7 @@ class WindowApp {
       controls_.setAimAids(actions.settings->aim_line, actions.settings->vectors);
       controls_.setStrokeScale(actions.settings->stroke_mm / 1000.0);
       settings_.settings.stroke_mm = actions.settings->stroke_mm;
+      settings_.settings.pane_places = actions.settings->pane_places;
       window_.setFullScreen(actions.settings->full_screen);
       settings_.settings.volume = actions.settings->volume;
       if (actions.settings->quality != settings_.settings.quality) {

@@ -47,6 +47,8 @@ void GlfwWindow::startImGui() {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
+  // Panes move by their title bars only: a press on a pane's body stays with its contents.
+  ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");

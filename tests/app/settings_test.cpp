@@ -38,6 +38,8 @@ TEST_F(SettingsTest, WhatIsSavedIsLoadedBack) {
   s.vectors = true;
   s.quality = "light";
   s.stroke_mm = 2.5;
+  s.pane_places["log"] = {0.25, 0.5};
+  s.pane_places["match"] = {0.5, 0.125};
   ASSERT_TRUE(saveSettings(file(), s));
   const auto back = loadSettings(file());
   ASSERT_TRUE(back) << back.error();
@@ -67,9 +69,11 @@ TEST_F(SettingsTest, ABadLineIsRefusedWithItsNumberAndTheFileKept) {
   const auto s = loadSettings(file());
   ASSERT_FALSE(s);
   EXPECT_EQ(s.error(), file().string() + " line 4: bad value 'maybe' for aim_line");
-  for (const char* bad : {"volume = 1.5\n", "volume = nan\n", "volume = 0.5 loud\n",
-                          "colour = red\n", "full_screen\n", "quality = ultra\n", "quality = \n",
-                          "stroke_mm = 0\n", "stroke_mm = 5.5\n", "stroke_mm = inf\n"}) {
+  for (const char* bad :
+       {"volume = 1.5\n", "volume = nan\n", "volume = 0.5 loud\n", "colour = red\n",
+        "full_screen\n", "quality = ultra\n", "quality = \n", "stroke_mm = 0\n",
+        "stroke_mm = 5.5\n", "stroke_mm = inf\n", "pane_match = 0.5\n", "pane_menu = 0.1, 0.1\n",
+        "pane_shot = 1.5, 0\n", "pane_log = 0.2, 0.3, 0.4\n"}) {
     write(bad);
     EXPECT_FALSE(loadSettings(file())) << bad;
   }

@@ -10,6 +10,7 @@
 
 #include <deque>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,6 +66,28 @@ class ImGuiFrames {
       }
     }
     return out;
+  }
+
+  /// One frame of a `width` × `height` window with the mouse at `mouse`, its left button `down`:
+  /// what the HUD asked for.
+  HudActions frame(const HudInput& in, int width, int height, ImVec2 mouse, bool down) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.FontGlobalScale = hudScale(height);
+    io.DeltaTime = 1.0f / 60.0f;
+    io.ConfigWindowsMoveFromTitleBarOnly = true;  // as the window sets it
+    io.MousePos = mouse;
+    io.MouseDown[ImGuiMouseButton_Left] = down;
+    ImGui::NewFrame();
+    HudActions actions = drawHud(in);
+    ImGui::Render();
+    return actions;
+  }
+
+  /// The rectangle of pane `name` as last laid out.
+  static ImRect rectOf(const char* name) {
+    ImGuiWindow* w = ImGui::FindWindowByName(name);
+    return w ? w->Rect() : ImRect();
   }
 
   /// The alpha (0–255) of each pane's background as last laid out by panes().
@@ -207,6 +230,51 @@ TEST(HudPanes, TheHelpPaneIsOpaqueOverTheOthers) {
 
 namespace pool::ui::test {
 namespace {
+
+// A standing pane dragged by its title stays where it is let go, and that place goes out with the
+// settings (fractions of the window); given back, it is drawn there again; a pane not moved
+// stays at its anchor.
+TEST(HudPanes, APaneDraggedByItsTitleStaysWhereItIsLetGoAndThePlaceIsKept) {
+  Table table;
+  table.view.options.clear();
+  HudInput in = table.input();
+  in.help = false;
+  in.concede_asked = false;
+  ImRect match, shot;
+  std::optional<HudActions> let_go;
+  {
+    ImGuiFrames imgui;
+    (void)imgui.panes(in, 1280, 720);
+    match = ImGuiFrames::rectOf("Match");
+    shot = ImGuiFrames::rectOf("Shot");
+    ASSERT_GT(match.GetWidth(), 100.0f);
+    const ImVec2 grab(match.Min.x + 60.0f, match.Min.y + 6.0f);  // on its title bar
+    (void)imgui.frame(in, 1280, 720, grab, false);
+    EXPECT_FALSE(imgui.frame(in, 1280, 720, grab, true).settings);
+    for (int i = 1; i <= 10; ++i) {
+      const float step = static_cast<float>(i);
+      const HudActions during =
+          imgui.frame(in, 1280, 720, ImVec2(grab.x + 40.0f * step, grab.y + 20.0f * step), true);
+      EXPECT_FALSE(during.settings) << "nothing kept while dragging";
+    }
+    let_go = imgui.frame(in, 1280, 720, ImVec2(grab.x + 400.0f, grab.y + 200.0f), false);
+  }
+  ASSERT_TRUE(let_go->settings) << "the place goes out when the drag ends";
+  const auto& places = let_go->settings->pane_places;
+  ASSERT_EQ(places.count("match"), 1u);
+  EXPECT_EQ(places.size(), 1u) << "only the pane moved";
+  EXPECT_NEAR(places.at("match")[0] * 1280.0, match.Min.x + 400.0, 1.0);
+  EXPECT_NEAR(places.at("match")[1] * 720.0, match.Min.y + 200.0, 1.0);
+
+  // Kept (a later run's settings, a fresh HUD): drawn there, the Shot pane still at its anchor.
+  ImGuiFrames fresh;
+  in.settings = *let_go->settings;
+  (void)fresh.panes(in, 1280, 720);
+  EXPECT_NEAR(ImGuiFrames::rectOf("Match").Min.x, match.Min.x + 400.0f, 1.0f);
+  EXPECT_NEAR(ImGuiFrames::rectOf("Match").Min.y, match.Min.y + 200.0f, 1.0f);
+  EXPECT_NEAR(ImGuiFrames::rectOf("Shot").Min.x, shot.Min.x, 1.0f);
+  EXPECT_NEAR(ImGuiFrames::rectOf("Shot").Min.y, shot.Min.y, 1.0f);
+}
 
 /// The bounding box in pixels of the playing surface (z = 0 to a ball's height) of a `length` ×
 /// `breadth` table seen from `v` in a `width` × `height` window: the test's own projection
