@@ -36,6 +36,8 @@ constexpr Domain kWindowQuality = static_cast<Domain>(83);
 constexpr Domain kWindowConcede = static_cast<Domain>(84);
 constexpr Domain kWindowSpectatorReplay = static_cast<Domain>(85);
 constexpr Domain kWindowStroke = static_cast<Domain>(86);
+constexpr Domain kWindowNineBall = static_cast<Domain>(87);
+constexpr Domain kWindowTenBall = static_cast<Domain>(88);
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -253,6 +255,74 @@ TEST_F(WindowClientTest, AMouseStrokeBreaksAtItsSpeedAndKeysSetATouchShot) {
   EXPECT_NEAR(touch->cue.speed, 0.30, 1e-9);
   EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
 }
+
+// 9- and 10-ball in the window: after the break the next turn opens facing the lowest-numbered
+// ball on the table (WPA 9-ball and 10-ball rules: the first ball the cue ball contacts must be
+// the lowest-numbered ball on the table), the shot goes that way, and the HUD names the ball on.
+// In 9-ball nothing is called; in 10-ball, every shot is called: the lowest ball and a pocket,
+// or a safety.
+class WindowRotationTest : public WindowClientTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(WindowRotationTest, TheTurnAfterTheBreakFacesAndCallsTheLowestBall) {
+  const int game = GetParam();
+  const Domain domain = game == 9 ? kWindowNineBall : kWindowTenBall;
+  open(domain, "window-" + std::to_string(game) + "-ball");
+  MatchRecorder recorder(domain);
+  startServer({"--fast", "--game", std::to_string(game)});
+  startWindow({"--hotseat", "--play"},
+              "wait aiming\ndown SPACE\nframes 45\nup SPACE\n"
+              "wait aiming\nframes 10\ndown SPACE\nframes 20\nup SPACE\nframes 30\nquit\n");
+  std::string match;
+  const protocol::ShotRequest* brk = nullptr;
+  const protocol::ShotRequest* next = nullptr;
+  const bool seen = firstTwoShots(recorder, match, brk, next);
+  const int status = windowExit();
+  ASSERT_TRUE(seen) << "no two accepted shots from the window\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  EXPECT_EQ(recorder.latest(match)->settings.game,
+            game == 9 ? rules::Game::NineBall : rules::Game::TenBall);
+
+  // The layout the second shot was played from, and its lowest ball.
+  std::optional<MatchView> before;
+  for (const auto& st : recorder.states(match)) {
+    if (st.shot_number == 1) before = st;
+  }
+  ASSERT_TRUE(before);
+  Eigen::Vector2d cue = Eigen::Vector2d::Zero();
+  int lowest = 99;
+  Eigen::Vector2d lowest_at = Eigen::Vector2d::Zero();
+  for (const auto& b : before->balls) {
+    if (!physics::onTable(b.state)) continue;
+    if (b.id == physics::kCueBall) cue = b.pos.head<2>();
+    if (b.id != physics::kCueBall && b.id < lowest) {
+      lowest = b.id;
+      lowest_at = b.pos.head<2>();
+    }
+  }
+  ASSERT_LT(lowest, 99);
+  if (next->cue_ball_at) cue = *next->cue_ball_at;
+  const Eigen::Vector2d to = lowest_at - cue;
+  EXPECT_NEAR(next->cue.yaw, std::atan2(to.y(), to.x()), 1e-9) << "facing the " << lowest;
+  if (game == 9) {
+    EXPECT_FALSE(next->called_ball) << "9-ball calls nothing";
+  } else if (!next->safety) {
+    EXPECT_EQ(next->called_ball, lowest);
+    EXPECT_FALSE(next->called_pocket.empty());
+  }
+  EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
+  bool ball_on = false;
+  for (const auto& hud : windowLines("hud")) {
+    for (const auto& text : hud["texts"]) {
+      ball_on = ball_on || text.get<std::string>() == "  ball on: the " + std::to_string(lowest);
+    }
+  }
+  EXPECT_TRUE(ball_on) << "the HUD never named the " << lowest << " as the ball on";
+}
+
+INSTANTIATE_TEST_SUITE_P(Games, WindowRotationTest, ::testing::Values(9, 10),
+                         [](const ::testing::TestParamInfo<int>& g) {
+                           return std::to_string(g.param) + "Ball";
+                         });
 
 TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
   open(kWindowSpectate, "window-spectate");
