@@ -38,6 +38,7 @@ constexpr Domain kWindowSpectatorReplay = static_cast<Domain>(85);
 constexpr Domain kWindowStroke = static_cast<Domain>(86);
 constexpr Domain kWindowNineBall = static_cast<Domain>(87);
 constexpr Domain kWindowTenBall = static_cast<Domain>(88);
+constexpr Domain kWindowRematch = static_cast<Domain>(89);
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -323,6 +324,48 @@ INSTANTIATE_TEST_SUITE_P(Games, WindowRotationTest, ::testing::Values(9, 10),
                          [](const ::testing::TestParamInfo<int>& g) {
                            return std::to_string(g.param) + "Ball";
                          });
+
+// Against pool-bot --stay (the main job's bot): the player concedes the only rack of the race
+// (Q, then Y), and at game over R asks for a rematch, which the bot plays: a second game starts
+// at the table with both in their seats.
+TEST_F(WindowClientTest, ARematchAgainstTheStayingBotStartsASecondGame) {
+  open(kWindowRematch, "window-rematch");
+  MatchRecorder recorder(kWindowRematch);
+  startServer({"--fast"});
+  ASSERT_TRUE(recorder.pump(20s, [&] {
+    const std::string m = recorder.firstMatch();
+    return !m.empty() && recorder.latest(m) != nullptr;
+  })) << logs();
+  const std::string match = recorder.firstMatch();
+  ChildProcess& bot = startBot("alice", 41, {"--stay"});
+  ASSERT_TRUE(recorder.pump(20s, [&] {
+    const MatchView* v = recorder.latest(match);
+    return v && v->seats[0].name == "alice";
+  })) << logs();
+  startWindow({"--play", "--match", match, "--name", "Ada"},
+              "wait aiming\ndown Q\nup Q\nframes 5\ndown Y\nup Y\nwait over\nframes 30\n"
+              "down R\nup R\nwait table\nframes 30\nquit\n");
+  const auto secondGame = [&] {
+    for (const auto& st : recorder.states(match)) {
+      if (st.rack >= 2 && inPlay(st.phase) && st.seats[0].name == "alice" &&
+          st.seats[1].name == "Ada") {
+        return true;
+      }
+    }
+    return false;
+  };
+  const bool started = recorder.pump(120s, secondGame);
+  const int status = windowExit(recorder);
+  ASSERT_TRUE(started) << "no second game at the table\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  EXPECT_TRUE(bot.running()) << "the bot left at game over: " << bot.err();
+  // The first game ended by the player's concession (the race was to one rack).
+  bool conceded = false;
+  for (const auto& st : recorder.states(match)) {
+    conceded = conceded || (st.phase == MatchPhase::Over && st.winner == 0);
+  }
+  EXPECT_TRUE(conceded) << "the first game did not end with the bot winning it";
+}
 
 TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
   open(kWindowSpectate, "window-spectate");
