@@ -39,6 +39,7 @@ constexpr Domain kWindowStroke = static_cast<Domain>(86);
 constexpr Domain kWindowNineBall = static_cast<Domain>(87);
 constexpr Domain kWindowTenBall = static_cast<Domain>(88);
 constexpr Domain kWindowRematch = static_cast<Domain>(89);
+constexpr Domain kWindowTab = static_cast<Domain>(62);  // 62-69: free beside the 60s' tests
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -365,6 +366,38 @@ TEST_F(WindowClientTest, ARematchAgainstTheStayingBotStartsASecondGame) {
     conceded = conceded || (st.phase == MatchPhase::Over && st.winner == 0);
   }
   EXPECT_TRUE(conceded) << "the first game did not end with the bot winning it";
+}
+
+// Tab in a game: the HUD drawn is one line saying how to bring the panes back, then, Tab again,
+// the panes (the Shot pane's cue speed among them) once more.
+TEST_F(WindowClientTest, TabHidesTheHudInAGameAndBringsItBack) {
+  open(kWindowTab, "window-tab");
+  MatchRecorder recorder(kWindowTab);
+  startServer({"--fast"});
+  startWindow({"--hotseat", "--play"},
+              "wait aiming\nframes 5\ndown TAB\nup TAB\nframes 10\ndown TAB\nup TAB\n"
+              "frames 10\nquit\n");
+  const int status = windowExit(recorder);
+  ASSERT_EQ(status, 0) << windowErr() << logs();
+  // The HUD's texts each time they changed, in order: the panes, hidden, the panes again.
+  const auto shows = [](const nlohmann::json& hud, const std::string& text) {
+    return std::any_of(hud["texts"].begin(), hud["texts"].end(),
+                       [&](const nlohmann::json& t) { return t.get<std::string>() == text; });
+  };
+  const std::string speed = "cue speed 0.30 m/s (- / +)";
+  int stage = 0;  // 0: before the panes, 1: panes seen, 2: hidden seen, 3: panes seen again
+  for (const auto& hud : windowLines("hud")) {
+    const bool panes = shows(hud, speed);
+    const bool hidden = shows(hud, "Tab: show the panes");
+    if (stage == 0 && panes) stage = 1;
+    if (stage == 1 && hidden) {
+      EXPECT_FALSE(panes) << hud.dump();
+      EXPECT_EQ(hud["texts"].size(), 1u) << "only the line: " << hud.dump();
+      stage = 2;
+    }
+    if (stage == 2 && panes) stage = 3;
+  }
+  EXPECT_EQ(stage, 3) << "panes, hidden, panes: not seen in that order";
 }
 
 TEST_F(WindowClientTest, ASpectatingWindowFollowsABotMatch) {
