@@ -125,7 +125,11 @@ void CameraRig::startGlide() {
 }
 
 void CameraRig::update(double dt) {
-  if (!glide_ || !(dt > 0)) return;
+  if (!(dt > 0)) return;
+  if (chase_ && !aiming_ && !overhead_) {
+    watch_.target += (*chase_ - watch_.target) * (1.0 - std::exp(-3.0 * dt));
+  }
+  if (!glide_) return;
   glide_->t += dt;
   if (glide_->t >= kGlideTime) glide_.reset();
 }

@@ -114,7 +114,11 @@ class CameraRig {
   void hold(bool held);
   bool held() const { return held_.has_value(); }
 
-  /// Lets `dt` seconds of glide pass.
+  /// The watching view follows `ball` (the cue ball while the balls run, when the player's
+  /// setting asks), its look-at point easing toward it (it closes 1 − e^(−3 t) of the way in t s);
+  /// empty: it stays where it got to.
+  void chase(const std::optional<Eigen::Vector3d>& ball) { chase_ = ball; }
+  /// Lets `dt` seconds of glide (and chase) pass.
   void update(double dt);
   /// Ends any glide at once (a screenshot draws the view it set up).
   void settle() { glide_.reset(); }
@@ -148,6 +152,7 @@ class CameraRig {
   Orbit aim_;
   double aim_turn_ = 0.0;  ///< the aiming camera's azimuth off the line behind the cue, rad
   bool overhead_ = false;
+  std::optional<Eigen::Vector3d> chase_;
   ScreenRect clear_{0.0, 0.0, 1.0, 1.0};
   ScreenRect aim_area_{0.0, 0.0, 1.0, 1.0};
   Eigen::Vector2d look_ = Eigen::Vector2d::Zero();  ///< m: ahead of the cue ball, left of its line

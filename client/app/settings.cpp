@@ -78,6 +78,8 @@ Result<Settings> loadSettings(const std::filesystem::path& path) {
       ok = readBool(value, s.full_screen);
     } else if (key == "aim_line") {
       ok = readBool(value, s.aim_line);
+    } else if (key == "follow_cue") {
+      ok = readBool(value, s.follow_cue);
     } else if (key == "vectors") {
       ok = readBool(value, s.vectors);
     } else if (key == "quality") {
@@ -117,7 +119,8 @@ Result<bool> saveSettings(const std::filesystem::path& path, const Settings& s) 
         << "aim_line = " << (s.aim_line ? "true" : "false") << '\n'
         << "vectors = " << (s.vectors ? "true" : "false") << '\n'
         << "quality = " << s.quality << '\n'
-        << "stroke_mm = " << s.stroke_mm << '\n';
+        << "stroke_mm = " << s.stroke_mm << '\n'
+        << "follow_cue = " << (s.follow_cue ? "true" : "false") << '\n';
     for (const auto& [pane, at] : s.pane_places) {
       out << "pane_" << pane << " = " << at[0] << ", " << at[1] << '\n';
     }

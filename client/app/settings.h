@@ -20,6 +20,7 @@ struct Settings {
   std::string quality = "auto";
   /// A mouse stroke's scale: mm of cue a pixel of mouse (0.2–5; ControlRates::stroke_scale).
   double stroke_mm = 1.0;
+  bool follow_cue = false;  ///< the watching view follows the cue ball while the balls run
   /// Where the player left a pane ("match", "shot", "log"): its top-left corner as fractions of
   /// the window's width and height; a pane not named here stays at its anchor.
   std::map<std::string, std::array<double, 2>> pane_places;

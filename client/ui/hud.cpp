@@ -462,6 +462,7 @@ void settingsLines(Say& say, const HudInput& in) {
   check("Aim line and ghost ball (G)", s.aim_line);
   check("Direction arrows (V)", s.vectors);
   check("Full screen (F11)", s.full_screen);
+  check("Follow the cue ball while the balls run", s.follow_cue);
   float volume = static_cast<float>(s.volume);
   say.out().texts.push_back("Volume (from the next start)");
   if (ImGui::SliderFloat("Volume (from the next start)", &volume, 0.0f, 1.0f, "%.2f")) {

@@ -357,6 +357,14 @@ class WindowApp {
       }
     }
     if (balls) renderer_.setBalls(sceneBalls(shown));
+    // The watching view follows the cue ball while the balls run, if the player asked for it.
+    std::optional<Eigen::Vector3d> chased;
+    if (settings_.settings.follow_cue && session_.inMotion() && !replay) {
+      for (const auto& b : shown) {
+        if (b.id == physics::kCueBall && physics::onTable(b.state)) chased = b.pos;
+      }
+    }
+    controls_.camera().chase(chased);
     renderer_.setCue(std::nullopt);
     renderer_.setGhost(std::nullopt);
     cue_source_ = {};
@@ -522,6 +530,7 @@ class WindowApp {
       controls_.setStrokeScale(actions.settings->stroke_mm / 1000.0);
       settings_.settings.stroke_mm = actions.settings->stroke_mm;
       settings_.settings.pane_places = actions.settings->pane_places;
+      settings_.settings.follow_cue = actions.settings->follow_cue;
       window_.setFullScreen(actions.settings->full_screen);
       settings_.settings.volume = actions.settings->volume;
       if (actions.settings->quality != settings_.settings.quality) {

@@ -155,6 +155,28 @@ TEST(CameraGlideTest, TheOverheadViewFramesTheTableInTheClearArea) {
   expectCornersWithin(camera, 1.27f, 0.635f, 640.0f);
 }
 
+TEST(CameraGlideTest, TheWatchingViewChasesTheCueBallEasedAndStaysWhenLetGo) {
+  CameraRig rig(2.54, 1.27, 1280.0 / 720.0);
+  const Eigen::Vector3d start = rig.watching().target;
+  const Eigen::Vector3d ball(0.9, 0.4, kRadius);
+  rig.chase(ball);
+  // 1 s at 60 Hz: the look-at point closes 1 − e^(−3) = 95 % of the way (the eye keeps its
+  // offset from it: an orbit).
+  for (int i = 0; i < 60; ++i) rig.update(1.0 / 60.0);
+  const double closed = 1.0 - (rig.watching().target - ball).norm() / (start - ball).norm();
+  EXPECT_NEAR(closed, 1.0 - std::exp(-3.0), 1e-9);
+  // Let go: it stays where it got to.
+  rig.chase(std::nullopt);
+  const Eigen::Vector3d kept = rig.watching().target;
+  for (int i = 0; i < 30; ++i) rig.update(1.0 / 60.0);
+  EXPECT_LT((rig.watching().target - kept).norm(), 1e-12);
+  // Aiming, nothing is chased.
+  rig.setAiming(true);
+  rig.chase(Eigen::Vector3d(-1.0, -0.5, kRadius));
+  for (int i = 0; i < 30; ++i) rig.update(1.0 / 60.0);
+  EXPECT_LT((rig.watching().target - kept).norm(), 1e-12);
+}
+
 TEST(CameraGlideTest, BGoesBackBehindTheCueAndOLooksDown) {
   Controls controls = nineFootControls();
   controls.startTurn(Eigen::Vector3d(-0.5, 0.1, kRadius), rules::BallInHand::None);

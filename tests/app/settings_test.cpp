@@ -38,6 +38,7 @@ TEST_F(SettingsTest, WhatIsSavedIsLoadedBack) {
   s.vectors = true;
   s.quality = "light";
   s.stroke_mm = 2.5;
+  s.follow_cue = true;
   s.pane_places["log"] = {0.25, 0.5};
   s.pane_places["match"] = {0.5, 0.125};
   ASSERT_TRUE(saveSettings(file(), s));
