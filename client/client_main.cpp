@@ -142,6 +142,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--cue-at", aim.cue_at, "--scene aim: the cue ball's x y on the table, m")
       ->expected(2);
+  app.add_option("--balls", aim.balls,
+                 "--scene aim: ID X Y of each object ball (m), instead of the rack")
+      ->expected(3, 45);
+  app.add_flag("--hud", aim.hud,
+               "--scene aim: drawn with the window's HUD as a player sees it, the view framed");
   app.add_option("--camera-elevation", aim.camera_elevation_deg,
                  "--scene aim: the aiming view raised to this angle, degrees");
   app.add_option("--question", flags.screenshot.question,

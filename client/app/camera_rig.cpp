@@ -200,8 +200,8 @@ void CameraRig::raise(double d_elevation) {
 
 void CameraRig::keepAimAbove(double elevation) {
   const double before = aim_.elevation;
-  aim_.elevation =
-      std::clamp(std::max(aim_.elevation, elevation), limits_.min_elevation, limits_.max_elevation);
+  aim_.elevation = std::clamp(std::max(aim_.elevation, std::min(elevation, kHighestAimEye)),
+                              limits_.min_elevation, limits_.max_elevation);
   // A raised eye sees the framed shot lower on the screen: frame it again from there.
   if (aim_.elevation > before + 1e-9 && framed_) {
     const auto [cue, ahead] = *framed_;

@@ -33,6 +33,10 @@ struct Orbit {
 /// The aiming view's least elevation above the cue's drawn line, rad: the eye over the cue, as a
 /// player's.
 inline constexpr double kEyeOverCue = 0.1745329;  // 10°
+/// keepAimAbove raises the aiming view no higher than this, rad (60°): a cue drawn steeper (a
+/// ball frozen to a rail struck level must be drawn near vertical to clear it) is seen from here,
+/// the shot still framed, rather than from straight above the cue ball.
+inline constexpr double kHighestAimEye = 1.0471976;
 
 /// Limits and steps of the camera controls.
 struct CameraLimits {

@@ -73,7 +73,8 @@ int guarded(const ScreenshotOptions& options, const std::function<FrameSource()>
 }  // namespace
 
 int renderScreenshot(const ScreenshotOptions& options, const Scene& scene, const Camera& camera,
-                     const SceneSetup& setup, const FrameHook& before_frame) {
+                     const SceneSetup& setup, const FrameHook& before_frame,
+                     const FrameOverlay& after_draw, const InfoAmend& amend) {
   std::shared_ptr<Renderer> renderer;
   return guarded(options, [&] {
     renderer = std::make_shared<Renderer>(scene);
@@ -82,10 +83,13 @@ int renderScreenshot(const ScreenshotOptions& options, const Scene& scene, const
     return FrameSource{[&](int frame) {
                          if (before_frame) before_frame(*renderer, frame);
                          renderer->draw(camera, options.width, options.height);
+                         if (after_draw) after_draw(frame);
                        },
                        [&] {
-                         return screenshotInfoJson(camera, options.width, options.height, *renderer,
-                                                   scene.ball_radius, scene.geometry);
+                         const std::string info =
+                             screenshotInfoJson(camera, options.width, options.height, *renderer,
+                                                scene.ball_radius, scene.geometry);
+                         return amend ? amend(info) : info;
                        }};
   });
 }

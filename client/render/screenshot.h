@@ -22,6 +22,9 @@ struct AimOptions {
   std::optional<double> camera_elevation_deg;  ///< the aiming view raised to this; default: eye
   std::optional<double> camera_distance;       ///< the aiming view this far from the cue ball, m
   std::vector<double> cue_at;                  ///< x, y of the cue ball (m); empty: the head spot
+  /// ID X Y of each object ball (m), instead of the rack; empty: the rack.
+  std::vector<double> balls;
+  bool hud = false;  ///< drawn with the window's HUD as a player sees it (and the view framed)
 };
 
 /// What to render and where to write it.
@@ -44,10 +47,17 @@ using FrameHook = std::function<void(Renderer& renderer, int frame)>;
 /// Called once on the new renderer, before the first frame (cue, ghost ball).
 using SceneSetup = std::function<void(Renderer& renderer)>;
 
+/// Drawn over each frame (0-based) after the scene, in its context (the window's HUD).
+using FrameOverlay = std::function<void(int frame)>;
+
+/// Given the sidecar's text, returns it with more in it.
+using InfoAmend = std::function<std::string(const std::string& info)>;
+
 /// Renders `scene` from `camera` and writes the PNG (and the sidecar). Returns the process exit
 /// code (0 on success); errors go to stderr as one line.
 int renderScreenshot(const ScreenshotOptions& options, const Scene& scene, const Camera& camera,
-                     const SceneSetup& setup, const FrameHook& before_frame = {});
+                     const SceneSetup& setup, const FrameHook& before_frame = {},
+                     const FrameOverlay& after_draw = {}, const InfoAmend& amend = {});
 
 /// The same from the overview camera.
 int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,

@@ -3,11 +3,17 @@
 
 #include <cmath>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 
 #include "client/app/aim_line.h"
 #include "client/app/camera_rig.h"
+#include "client/app/clear_area.h"
+#include "client/app/controls.h"
 #include "client/bot/ai/table_view.h"
+#include "client/render/screenshot_info.h"
+#include "client/ui/aim_hud.h"
 #include "client/ui/scene_convert.h"
 
 namespace pool::ui {
@@ -38,6 +44,35 @@ render::CueAim cueAimOf(const app::AimState& aim, const Eigen::Vector3d& cue_bal
       static_cast<float>(aim.stroke_back ? *aim.stroke_back / render::kMaxDrawBack : aim.power)};
 }
 
+namespace {
+
+/// The object balls of --balls (ID X Y triples) in place of the rack; false (said on stderr) when
+/// they are not triples of a ball number 1–15 on the slate.
+bool placeBalls(const std::vector<double>& triples, const bot::TableView& view,
+                render::Scene& scene) {
+  if (triples.empty()) return true;
+  if (triples.size() % 3 != 0) {
+    std::cerr << "--balls needs ID X Y for each ball\n";
+    return false;
+  }
+  const double r = view.radius();
+  scene.balls.resize(1);  // the cue ball stays
+  for (std::size_t i = 0; i < triples.size(); i += 3) {
+    const double id = triples[i], x = triples[i + 1], y = triples[i + 2];
+    if (id != std::floor(id) || id < 1 || id > 15 || std::abs(x) > view.spec.length / 2 - r ||
+        std::abs(y) > view.spec.width / 2 - r) {
+      std::cerr << "--balls: ball " << id << " at " << x << ", " << y
+                << " is not a ball 1-15 on the slate\n";
+      return false;
+    }
+    scene.balls.push_back(
+        {static_cast<int>(id), Eigen::Vector3d(x, y, r), render::numberTowardViewer(), false});
+  }
+  return true;
+}
+
+}  // namespace
+
 int runAimScreenshot(const render::ScreenshotOptions& options) {
   auto view = bot::loadTableView("wpa-9ft");
   auto scene = render::rackScene("wpa-9ft");
@@ -49,6 +84,7 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
     scene->balls.front().pos.head<2>() =
         Eigen::Vector2d(options.aim.cue_at[0], options.aim.cue_at[1]);
   }
+  if (!placeBalls(options.aim.balls, *view, *scene)) return 2;
   const Eigen::Vector3d cue = scene->balls.front().pos;
   const Eigen::Vector2d apex = view->context.spots.foot_spot - cue.head<2>();
   app::AimState aim;
@@ -57,15 +93,43 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
   aim.tip_height = options.aim.tip_height;
   aim.elevation = options.aim.elevation_deg * kDeg;
   aim.power = options.aim.power;
-  const auto prediction = app::predictAim(cue.head<2>(), aim.yaw, physicsBalls(*scene), *view);
-
-  const double aspect = static_cast<double>(options.width) / options.height;
-  app::CameraRig rig(view->spec.length, view->spec.width, aspect);
-  rig.setAiming(true);
-  rig.followCue(cue, aim.yaw);
+  const auto balls = physicsBalls(*scene);
+  const auto prediction = app::predictAim(cue.head<2>(), aim.yaw, balls, *view);
+  const Eigen::Vector3d ghost(prediction.contact.x(), prediction.contact.y(), view->radius());
   // The eye stays above the cue's drawn line, as a player's over the cue.
   const render::CuePlacement placed =
       render::placeCue(cueAimOf(aim, cue), render::cueObstaclesOf(*scene, vec(cue)));
+  // What lies ahead of the ghost ball: the object ball, and the pocket it heads for.
+  std::optional<Eigen::Vector3d> object, pocket;
+  if (prediction.ball) {
+    for (const auto& b : balls) {
+      if (b.id == *prediction.ball) object = b.pos;
+    }
+  }
+  if (prediction.pocket >= 0 && prediction.pocket < static_cast<int>(view->pockets.size())) {
+    const Eigen::Vector2d m = view->pockets[static_cast<std::size_t>(prediction.pocket)].mouth;
+    pocket = Eigen::Vector3d(m.x(), m.y(), view->radius());
+  }
+
+  const double aspect = static_cast<double>(options.width) / options.height;
+  app::Controls controls(protocol::CommandLimits{}, app::PlacementArea{},
+                         app::CameraRig(view->spec.length, view->spec.width, aspect));
+  controls.setViewport(options.width, options.height);
+  controls.startTurn(cue, rules::BallInHand::None);
+  controls.setYaw(aim.yaw);
+  std::optional<AimHud> hud;
+  app::CameraRig& rig = controls.camera();
+  if (options.aim.hud) {
+    // As the window does: the HUD laid out, the shot framed in the column its panes leave.
+    hud.emplace(options.width, options.height, controls);
+    const app::ScreenRect px = app::clearColumnFor(options.width, options.height, hud->standing());
+    rig.setAimArea({px.x0 / options.width, px.y0 / options.height, px.x1 / options.width,
+                    px.y1 / options.height});
+    std::vector<Eigen::Vector3d> ahead;
+    if (object) ahead.push_back(*object);
+    if (pocket) ahead.push_back(*pocket);
+    controls.setContact(ghost, ahead);
+  }
   if (options.aim.camera_elevation_deg) {
     rig.raise(*options.aim.camera_elevation_deg * kDeg - rig.aimingOrbit().elevation);
   }
@@ -74,12 +138,36 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
     rig.zoom(*options.aim.camera_distance / rig.aimingOrbit().distance);
   }
   rig.settle();  // the view set up, not a glide toward it
-  const Eigen::Vector3d ghost(prediction.contact.x(), prediction.contact.y(), view->radius());
-  return render::renderScreenshot(options, *scene, cameraOf(rig.view()),
-                                  [&](render::Renderer& renderer) {
-                                    renderer.setCue(cueAimOf(aim, cue));
-                                    renderer.setGhost(vec(ghost));
-                                  });
+  const render::Camera camera = cameraOf(rig.view());
+  const int frames = options.frames;
+  return render::renderScreenshot(
+      options, *scene, camera,
+      [&](render::Renderer& renderer) {
+        renderer.setCue(cueAimOf(aim, cue));
+        renderer.setGhost(vec(ghost));
+      },
+      {},
+      [&](int frame) {
+        if (hud) hud->draw(frame + 1 == frames);
+      },
+      [&](const std::string& info) {
+        // The shot as the aim prediction has it, each point where the picture shows it, and
+        // every pane drawn.
+        auto json = nlohmann::json::parse(info);
+        const auto point = [&](const Eigen::Vector3d& p) {
+          return render::pointJson(camera, options.width, options.height, vec(p));
+        };
+        nlohmann::json shot{{"cue_ball", point(cue)}, {"ghost", point(ghost)}};
+        shot["first_ball"] = prediction.ball ? nlohmann::json(*prediction.ball) : nullptr;
+        if (object) shot["object_ball"] = point(*object);
+        if (pocket) {
+          shot["pocket"] = view->pockets[static_cast<std::size_t>(prediction.pocket)].name;
+          shot["pocket_mouth"] = point(*pocket);
+        }
+        json["aim"] = shot;
+        if (hud) json["panes"] = hud->panesJson();
+        return json.dump(2);
+      });
 }
 
 }  // namespace pool::ui
