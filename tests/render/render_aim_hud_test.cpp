@@ -110,6 +110,36 @@ TEST_P(AimHudTest, TheCueBallTheBallAndThePocketAreDrawnClearOfEveryPane) {
   EXPECT_LT((tip.head<2>() - cue).norm(), kR + 0.05);
 }
 
+// A jump over a ball: the cue raised 30°, a ball 30 cm ahead on the line and the one to jump to
+// beyond it. The first ball on the cue's line (the sidecar's, a table-plane prediction) is the one
+// in the way; the cue ball, both balls and the cue's line are in the frame under no pane, and the
+// cue is drawn at least as steep as aimed.
+using AimHudJumpTest = ScreenshotInfoTest;
+
+TEST_F(AimHudJumpTest, AJumpOverABallIsFramedWithTheCueRaised) {
+  const Eigen::Vector2d cue(-0.8, 0.0), over(-0.5, 0.0), beyond(0.4, 0.0);
+  const Image image =
+      view("--scene aim --hud --cue-at -0.8 0 --balls 1 -0.5 0 2 0.4 0 --aim 0 --elevation 30");
+  ASSERT_EQ(image.width, 1280);
+  ASSERT_EQ(camera_.mirrored(), "");
+  const auto info = readInfo(this->info());
+  ASSERT_FALSE(info.at("aim").at("first_ball").is_null());
+  EXPECT_EQ(info.at("aim").at("first_ball").get<int>(), 1) << "the ball in the way first";
+  EXPECT_GE(info.at("cue").at("drawn_elevation_deg").get<double>(), 30.0 - 1e-3);
+  for (const auto& [what, p] : std::vector<std::pair<const char*, Eigen::Vector2d>>{
+           {"cue ball", cue}, {"ball jumped", over}, {"ball beyond", beyond}}) {
+    const glm::vec3 px = camera_.pixel(
+        glm::vec3(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(kR)));
+    ASSERT_TRUE(camera_.inside(px, 4.0f)) << what << " at " << px.x << ", " << px.y;
+    for (const auto& pane : info.at("panes")) {
+      const auto& r = pane.at("rect");
+      EXPECT_FALSE(px.x > r[0].get<double>() - 4 && px.x < r[2].get<double>() + 4 &&
+                   px.y > r[1].get<double>() - 4 && px.y < r[3].get<double>() + 4)
+          << what << " under " << pane.at("name");
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Layouts, AimHudTest,
     ::testing::Values(
