@@ -148,6 +148,22 @@ TEST_F(ControlsTest, DraggingTheMouseTurnsTheCue) {
   EXPECT_NEAR(controls.aim().yaw, -100 * kRates.mouse_yaw, 1e-12);
 }
 
+TEST_F(ControlsTest, TheMouseTurnsTheCueAtOneRatePerPixelHoweverTheDragIsCut) {
+  // 100 px to the right: in one move, in 1 px moves (the first 2 within the click's slop), or in
+  // uneven ones with a move back: always 100 × mouse_yaw.
+  const std::vector<std::vector<double>> drags{
+      {100.0}, std::vector<double>(100, 1.0), {2.0, 0.5, 37.5, -10.0, 70.0}};
+  for (const auto& moves : drags) {
+    controls.startTurn(Eigen::Vector3d(-0.8, 0.1, kRadius), rules::BallInHand::None);
+    controls.setYaw(0.0);
+    double x = 600.0;
+    controls.mouseButton(MouseButton::Left, true, x, 400);
+    for (double dx : moves) controls.mouseMove(x += dx, 400);
+    controls.mouseButton(MouseButton::Left, false, x, 400);
+    EXPECT_NEAR(controls.aim().yaw, -100 * kRates.mouse_yaw, 1e-12) << moves.size() << " moves";
+  }
+}
+
 TEST_F(ControlsTest, TheCallCyclesPocketsAndASafetyDropsIt) {
   controls.suggestCall({.ball = 3, .pocket = "foot_left_corner"});
   EXPECT_EQ(controls.aim().call.pocket, "foot_left_corner");
