@@ -104,9 +104,9 @@ void beginStandingPane(Say& say, const HudInput& in, const char* title, const st
   if (dragging) {
     ImGui::SetNextWindowPos(window->Pos, ImGuiCond_Always);
   } else if (window != nullptr && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-             window->WasActive) {
-    // A drag that just ended leaves the pane where it was last drawn, if that is not where it
-    // is kept: the player's new place for it.
+             GImGui->ActiveIdPreviousFrame == window->MoveId) {
+    // A drag of this pane that just ended leaves it where it was last drawn, if that is not where
+    // it is kept: the player's new place for it. (A click released elsewhere moves nothing.)
     const ImVec2 at = window->Pos;
     const ImVec2 expected =
         kept != in.settings.pane_places.end()

@@ -1,13 +1,15 @@
 // Every HUD pane lies inside the window at every size from 1024×600 to 2560×1440: the HUD drawn by
 // Dear ImGui (no window needed: its layout is the same without a renderer) with every pane open at
 // once, long texts included, and each pane's rectangle checked against the screen. Tab hides every
-// pane but a question asked; the help pane is opaque.
+// pane but a question asked; the help pane is opaque; panes move and their places are kept; the
+// Shot pane says the shot that runs; the overhead view keeps the table clear of the panes.
 #include <imgui.h>
 #include <imgui_internal.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <optional>
@@ -211,6 +213,37 @@ TEST(HudPanes, TabHidesEveryPaneButTheQuestionAskedAndBringsThemBack) {
   in.panes = table.controls.toggles().panes;
   EXPECT_TRUE(in.panes);
   EXPECT_GE(imgui.panes(in, 1280, 720).size(), 6u) << "the panes are back";
+}
+
+// While the shot this screen sent runs, the Shot pane says that shot in numbers, not the aim the
+// controls reset for the next turn ("aim 0.00, 0.30 m/s" before).
+TEST(HudPanes, WhileOurShotRunsTheShotPaneSaysThatShot) {
+  ImGuiFrames imgui;
+  Table table;
+  table.view.options.clear();
+  table.controls.stopAiming();  // the shot was sent: the controls are back to watching
+  HudInput in = table.input();
+  in.help = false;
+  in.concede_asked = false;
+  in.local_shooter = -1;
+  in.in_motion = true;
+  protocol::ShotRequest shot;
+  shot.cue.yaw = 0.5;  // 28.65 degrees
+  shot.cue.elevation = 0.1;
+  shot.cue.speed = 3.25;
+  shot.cue.tip_height = -0.3;
+  in.last_shot = shot;
+  HudActions said;
+  for (int frame = 0; frame < 2; ++frame) said = imgui.frame(in, 1280, 720, ImVec2(-1, -1), false);
+  const auto has = [&](const std::string& text) {
+    return std::find(said.texts.begin(), said.texts.end(), text) != said.texts.end();
+  };
+  EXPECT_TRUE(has("your shot: aim 28.65 deg, cue elevation 5.7 deg, cue speed 3.25 m/s"))
+      << ::testing::PrintToString(said.texts);
+  EXPECT_TRUE(has("tip side +0.00 R   height -0.30 R")) << ::testing::PrintToString(said.texts);
+  for (const auto& text : said.texts) {
+    EXPECT_EQ(text.rfind("cue speed 0.30", 0), std::string::npos) << "the reset aim: " << text;
+  }
 }
 
 TEST(HudPanes, TheHelpPaneIsOpaqueOverTheOthers) {
