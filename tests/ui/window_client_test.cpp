@@ -39,7 +39,7 @@ constexpr Domain kWindowStroke = static_cast<Domain>(86);
 constexpr Domain kWindowNineBall = static_cast<Domain>(87);
 constexpr Domain kWindowTenBall = static_cast<Domain>(88);
 constexpr Domain kWindowRematch = static_cast<Domain>(89);
-constexpr Domain kWindowTab = static_cast<Domain>(62);  // 62-69: free beside the 60s' tests
+constexpr Domain kWindowTab = static_cast<Domain>(62);  // 63: the server's concession attacks
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
