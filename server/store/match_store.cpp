@@ -208,11 +208,16 @@ std::string MatchStore::rescue() {
   if (std::filesystem::exists(path, ec)) {
     // Replaced by someone's file: never overwrite it.
     target = path + ".rescued-" + std::to_string(std::time(nullptr));
-  } else {
-    const auto folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
   }
-  const auto done = backupTo(db_, target);
+  // The folder may still be going as we save (a recursive delete takes the file first, then the
+  // folder): it is made again before each try, and a try it lost is made once more.
+  const auto folder = std::filesystem::path(path).parent_path();
+  auto done = Result<BackupDone>::fail("not tried");
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+    done = backupTo(db_, target);
+    if (done || std::filesystem::is_directory(folder, ec)) break;
+  }
   if (!done) {
     return "the open database could not be saved (" + done.error() +
            "): what was stored since the file went is lost with the process";

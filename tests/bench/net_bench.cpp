@@ -37,6 +37,7 @@
 #include "protocol/command_signature.h"
 #include "protocol/key_pair.h"
 #include "protocol/server_signature.h"
+#include "server/match/join_rate_limit.h"
 #include "support/partitions.h"
 
 namespace {
@@ -179,9 +180,27 @@ class Driver {
         if (!tables_.count(id)) tables_[id].match = id;
       }
     }
+    // Seat requests and commands are volatile: one written before the server's reader matched
+    // ours is lost. The lobby reaching us says nothing of that match (another pair of endpoints),
+    // so wait for it; on a loaded machine it can come seconds after the lobby.
+    while ((requests_.publicationMatched().current < 1 ||
+            commands_.publicationMatched().current < 1) &&
+           Clock::now() - t0 < timeout) {
+      std::this_thread::sleep_for(10ms);
+    }
+    // One participant may ask 2 x kBurst at once and 2 x kPerSecond a second after (the server
+    // refuses the rest unread): the driver asks for a hundred tables' seats at a pace it keeps.
+    constexpr double kBurst = server::JoinRateLimit::kBurst,
+                     kRate = server::JoinRateLimit::kPerSecond;
+    const auto paced_from = Clock::now();
     int request = 0;
     for (auto& [id, t] : tables_) {
       for (int seat = 0; seat < 2; ++seat) {
+        if (request >= kBurst) {
+          std::this_thread::sleep_until(
+              paced_from + std::chrono::duration_cast<Clock::duration>(
+                               std::chrono::duration<double>((request - kBurst + 1) / kRate)));
+        }
         protocol::SeatRequest r;
         r.client = clientOf(id, seat);
         r.request = static_cast<std::uint32_t>(++request);
