@@ -45,7 +45,7 @@ pids+=($!)
 echo "Watch from a browser: http://127.0.0.1:$web_port/ (pool-web; --bind 0.0.0.0 for the LAN)" >&2
 
 bot() {  # name seed [more flags]
-  "$bin/pool-bot" --domain "$domain" --name "$1" --skill 0.8 --seed "$2" --think 0.8 \
+  "$bin/pool-bot" --domain "$domain" --name "$1" --level club --seed "$2" --think 0.8 \
     --log-level warn "${@:3}" > /dev/null &
   pids+=($!)
 }
@@ -66,9 +66,9 @@ case $mode in
     "$bin/pool-client" --domain "$domain" --spectate any
     ;;
   headless)
-    "$bin/pool-bot" --domain "$domain" --name Ada --skill 0.8 --seed 1 > /dev/null &
+    "$bin/pool-bot" --domain "$domain" --name Ada --level club --seed 1 > /dev/null &
     pids+=($!)
-    "$bin/pool-bot" --domain "$domain" --name Bert --skill 0.8 --seed 2 &
+    "$bin/pool-bot" --domain "$domain" --name Bert --level club --seed 2 &
     last_bot=$!
     pids+=($last_bot)
     echo "A match between two bots on a local pool-server; watching it (Ctrl+C to stop):" >&2

@@ -121,9 +121,17 @@ int main(int argc, char** argv) {
   app.add_option("--match", flags.bot.match,
                  "match id to sit in (default: the lowest-numbered with a free seat)");
   app.add_option("--name", flags.name, "player name")->required();
-  app.add_option("--skill", flags.bot.skill, "0..1; 1 = no aim or speed error")
-      ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--seed", flags.bot.seed, "seed of the skill noise");
+  std::string level = pool::bot::toString(pool::bot::kDefaultLevel);
+  auto* level_option =
+      app.add_option("--level", level,
+                     "beginner, club, league or pro: its stroke's error and how it plans "
+                     "(default club; pro plays under the computer olympiad's noise)")
+          ->check(CLI::IsMember({"beginner", "club", "league", "pro"}));
+  app.add_option("--skill", flags.bot.skill,
+                 "0..1 instead of a level: aim and speed error only (1 = none), exact planning")
+      ->check(CLI::Range(0.0, 1.0))
+      ->excludes(level_option);
+  app.add_option("--seed", flags.bot.seed, "seed of the execution noise");
   app.add_option("--token-file", flags.bot.seat_file,
                  "file keeping the seat token: read at start to rejoin, written when seated "
                  "(the signing key is kept beside it, in FILE.key)");
@@ -142,6 +150,7 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.timeout, "give up (exit 3) after this many seconds; 0: never");
   app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error, off");
   CLI11_PARSE(app, argc, argv);
+  flags.bot.level = *pool::bot::levelFromString(level);
 
   // Logs go to stderr: stdout carries only the result line.
   spdlog::set_default_logger(spdlog::stderr_color_mt("pool-bot"));

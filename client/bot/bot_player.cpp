@@ -40,7 +40,8 @@ BotPlayer::BotPlayer(client::GameClient& client, BotConfig config,
     : client_(client),
       config_(std::move(config)),
       saved_(std::move(saved)),
-      noise_(config_.skill, config_.seed) {
+      noise_(config_.skill.value_or(1.0), config_.seed),
+      level_rng_(config_.seed) {
   if (saved_) {
     target_ = saved_->match;
     client_.noteSequence(saved_->last_seq);
@@ -305,12 +306,12 @@ void BotPlayer::maybeShoot(double now) {
   PlannedShot shot = planFor(*view);
   if (shoots(shot) && config_.think > 0.0 && stroke_revision_ != view->revision) {
     // The stroke goes out a pass before the command, so that it finds its turn still open.
-    plan_->cue = noise_.apply(plan_->cue);
+    plan_->cue = played(plan_->cue);
     stroke_revision_ = view->revision;
     showAim(*view, *plan_, 1.0, true, now);
     return;
   }
-  if (shoots(shot) && config_.think <= 0.0) shot.cue = noise_.apply(shot.cue);
+  if (shoots(shot) && config_.think <= 0.0) shot.cue = played(shot.cue);
   plan_.reset();
   const auto sent = client_.shoot(requestOf(shot));
   if (!sent) {
@@ -333,6 +334,12 @@ const PlannedShot& BotPlayer::planFor(const client::MatchView& view) {
     plan_revision_ = view.revision;
   }
   return *plan_;
+}
+
+physics::CueShot BotPlayer::played(const physics::CueShot& cue) {
+  if (config_.skill) return noise_.apply(cue);
+  const TableView* view = tables_[planner_table_].get();
+  return perturbed(cue, levelNoise(config_.level, view->radius()), level_rng_);
 }
 
 void BotPlayer::showAim(const client::MatchView& view, const PlannedShot& shot, double progress,
@@ -358,7 +365,8 @@ const TableView* BotPlayer::tableFor(const std::string& match) {
     slot = std::make_unique<TableView>(std::move(*loaded));
   }
   if (planner_table_ != name) {
-    planner_ = std::make_unique<ShotPlanner>(*slot);
+    planner_ = std::make_unique<ShotPlanner>(
+        *slot, config_.skill ? PlannerOptions{} : plannerOptionsFor(config_.level, slot->radius()));
     planner_table_ = name;
   }
   return slot.get();

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "client/bot/ai/bot_level.h"
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/ai/skill_noise.h"
 #include "client/bot/ai/table_view.h"
@@ -20,9 +21,12 @@ namespace pool::bot {
 
 /// What the bot was told on the command line.
 struct BotConfig {
-  std::string match;                ///< a match id; empty: the lowest-numbered with a free seat
-  double skill = 1.0;               ///< 0..1; 1 = no aim or speed error
-  std::uint64_t seed = 1;           ///< seeds the skill noise
+  std::string match;  ///< a match id; empty: the lowest-numbered with a free seat
+  /// How well it plays: a level's execution noise and planning (the default), or with `skill`
+  /// the older aim and speed error of a skill 0..1 (1 = none) and exact planning.
+  Level level = kDefaultLevel;
+  std::optional<double> skill;
+  std::uint64_t seed = 1;           ///< seeds the execution noise
   std::filesystem::path seat_file;  ///< where the seat and its token are kept; empty: nowhere
   double join_retry = 1.0;          ///< s between join attempts while unanswered
   double lost_seat_wait = 5.0;   ///< s a lobby is seen without the lost match before seating anew
@@ -90,6 +94,8 @@ class BotPlayer {
   bool myTurn(const client::MatchView& view) const;
   /// The plan of this turn's state (made once per state: the think time shows it being aimed).
   const PlannedShot& planFor(const client::MatchView& view);
+  /// `cue` as the bot's hand plays it: moved by its level's noise or its skill's error.
+  physics::CueShot played(const physics::CueShot& cue);
   /// Sends the cue as it is aimed `progress` (0–1) into the think time (paced).
   void showAim(const client::MatchView& view, const PlannedShot& shot, double progress, bool stroke,
                double now);
@@ -133,7 +139,8 @@ class BotPlayer {
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;
   std::string planner_table_;
-  SkillNoise noise_;
+  SkillNoise noise_;  ///< with a skill
+  Rng level_rng_;     ///< with a level: the draws of its noise
   std::string result_line_;
   bool rematch_asked_ = false;  ///< the game over on the table has our rematch request
   std::string failure_;

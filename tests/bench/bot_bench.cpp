@@ -7,9 +7,11 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "bench_run.h"
+#include "client/bot/ai/bot_level.h"
 #include "client/bot/ai/break_shot.h"
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/shot_planner.h"
@@ -174,6 +176,132 @@ void BM_BreakGrid(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BreakGrid)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+/// What the bot does with a whole rack, alone at the table (it plays both seats), every shot
+/// under the olympiad noise: pots, fouls, innings and break-and-runs.
+struct RunTally {
+  int racks = 0, break_and_runs = 0, won = 0;
+  int pot_tries = 0, pots = 0;  ///< called pots (the break and safeties excluded)
+  int shots = 0, fouls = 0, innings = 0, inning_balls = 0;
+  int safeties = 0, fallbacks = 0;
+  std::vector<double> plan_ms;
+};
+
+/// Plays rack `seed` of `view`'s game from the break to its end (or 80 shots).
+void runRack(const bot::TableView& view, const bot::PlannerOptions& options,
+             const bot::ExecutionNoise& noise, std::uint64_t seed, bot::ShotVerifier& verifier,
+             bot::Rng& rng, RunTally& tally) {
+  auto balls = rackOf(view, seed);
+  rules::GameState state = rules::newRack(0);
+  bool turn_changed = false;
+  ++tally.racks;
+  for (int shot_no = 0; shot_no < 80; ++shot_no) {
+    bot::ShotPlanner planner(view, options);
+    const auto start = std::chrono::steady_clock::now();
+    const bot::PlannedShot shot = planner.plan(balls, state);
+    tally.plan_ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count());
+    if (!bot::shoots(shot)) return;  // a re-rack: the rack ends here
+    bot::PlannedShot noisy = shot;
+    noisy.cue = bot::perturbed(shot.cue, noise, rng);
+    const bot::Trial trial = verifier.run(balls, state, noisy);
+    if (!trial.judged) return;
+    const bool breaking = shot.kind == bot::ShotKind::Break;
+    ++tally.shots;
+    if (!trial.verdict.legal()) ++tally.fouls;
+    if (shot.kind == bot::ShotKind::Safety) ++tally.safeties;
+    if (shot.kind == bot::ShotKind::Fallback) ++tally.fallbacks;
+    if (shot.kind == bot::ShotKind::Pot) {
+      ++tally.pot_tries;
+      if (trial.potted_call && trial.verdict.legal()) ++tally.pots;
+    }
+    if (!breaking && trial.verdict.legal()) {
+      tally.inning_balls += static_cast<int>(trial.verdict.pocketed.size());
+    }
+    const bool inning_ends = !trial.verdict.turn_continues || trial.verdict.game_over;
+    if (!breaking && inning_ends) ++tally.innings;
+    if (trial.verdict.game_over) {
+      if (trial.verdict.winner == 0) ++tally.won;
+      if (trial.verdict.winner == 0 && !turn_changed) ++tally.break_and_runs;
+      return;
+    }
+    if (trial.verdict.rerack) return;
+    if (!trial.verdict.turn_continues) turn_changed = true;
+    balls = trial.after;
+    state = trial.verdict.next;
+  }
+}
+
+double percentileOf(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+const char* gameName(rules::Game game) {
+  return game == rules::Game::EightBall ? "8" : game == rules::Game::NineBall ? "9" : "10";
+}
+
+/// The bot alone at the table for `n` racks from kFirstRack, planning with `options` and playing
+/// under `options.noise`; the figures go to `state` and one printed line headed `label`.
+void benchRacks(benchmark::State& state, rules::Game game, const bot::PlannerOptions& options,
+                const std::string& label) {
+  const bot::TableView& view = tableFor(game);
+  bot::ShotVerifier verifier(view);
+  RunTally t;
+  const int n = pool::bench::smokeOr(100, 1);
+  for (auto _ : state) {
+    bot::Rng rng(23);
+    t = {};
+    for (int k = 0; k < n; ++k) {
+      runRack(view, options, options.noise, kFirstRack + static_cast<std::uint64_t>(k), verifier,
+              rng, t);
+    }
+  }
+  const auto share = [](int a, int b) { return b ? 100.0 * a / b : 0.0; };
+  const double per_inning = t.innings ? 1.0 * t.inning_balls / t.innings : 0.0;
+  state.counters["pots%"] = share(t.pots, t.pot_tries);
+  state.counters["break_and_run%"] = share(t.break_and_runs, t.racks);
+  state.counters["balls_an_inning"] = per_inning;
+  state.counters["fouls_per_100"] = share(t.fouls, t.shots);
+  state.counters["plan_ms_p50"] = percentileOf(t.plan_ms, 0.5);
+  state.counters["plan_ms_p90"] = percentileOf(t.plan_ms, 0.9);
+  std::printf(
+      "%s-ball, %s, %d racks: pots %.1f %% of %d called, break and run %.1f %%, %.2f balls an "
+      "inning, %.1f fouls / 100 shots, %d safeties, %d fallbacks; planning p50 %.0f ms p90 %.0f "
+      "ms\n",
+      gameName(game), label.c_str(), t.racks, share(t.pots, t.pot_tries), t.pot_tries,
+      share(t.break_and_runs, t.racks), per_inning, share(t.fouls, t.shots), t.safeties,
+      t.fallbacks, percentileOf(t.plan_ms, 0.5), percentileOf(t.plan_ms, 0.9));
+}
+
+/// Under the olympiad noise: pots judged by one exact trial (the planner before sampling) against
+/// the same planner sampling each shortlisted pot 16 times under that noise.
+void BM_BotRacks(benchmark::State& state) {
+  const auto game = static_cast<rules::Game>(state.range(0));
+  bot::PlannerOptions options;
+  options.samples = static_cast<int>(state.range(1));
+  options.noise = bot::olympiadNoise(tableFor(game).radius());
+  benchRacks(state, game, options,
+             "olympiad noise, " + std::to_string(options.samples) + " samples a pot");
+}
+BENCHMARK(BM_BotRacks)
+    ->ArgsProduct({{0, 1, 2}, {0, 16}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+/// Each level of pool-bot --level, alone at the table.
+void BM_BotLevels(benchmark::State& state) {
+  const auto game = static_cast<rules::Game>(state.range(0));
+  const auto level = static_cast<bot::Level>(state.range(1));
+  benchRacks(state, game, bot::plannerOptionsFor(level, tableFor(game).radius()),
+             std::string("level ") + bot::toString(level));
+}
+BENCHMARK(BM_BotLevels)
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2, 3}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 

@@ -11,6 +11,12 @@ std::optional<Trial> PlanContext::tryShot(const PlannedShot& shot) {
   return verifier.run(balls, judge_state, shot);
 }
 
+std::optional<Trial> PlanContext::tryNoisy(const PlannedShot& shot) {
+  PlannedShot played = shot;
+  played.cue = perturbed(shot.cue, noise, rng);
+  return tryShot(played);
+}
+
 PlannedShot PlanContext::blank(ShotKind kind) const {
   PlannedShot shot;
   shot.kind = kind;

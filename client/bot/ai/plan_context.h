@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/ghost_ball.h"
 #include "client/bot/ai/planned_shot.h"
 #include "client/bot/ai/shot_verifier.h"
@@ -23,9 +24,16 @@ struct PlanContext {
   rules::GameState play_state;          ///< the state once the chosen option applies
   std::optional<rules::Choice> choice;  ///< the answer carried with the shot
   int runs_left = 0;                    ///< physics trials still allowed this turn
+  ExecutionNoise noise{};               ///< the bot's own execution error, sampled to judge shots
+  int samples = 0;                      ///< noisy trials a shortlisted pot gets (0: exact only)
+  Rng rng{kPlanSeed};                   ///< the samples' draws (a fixed seed: plans repeat)
+
+  static constexpr std::uint64_t kPlanSeed = 0x5eedULL;
 
   /// Runs `shot` if the budget allows; empty when it is spent.
   std::optional<Trial> tryShot(const PlannedShot& shot);
+  /// Runs `shot` as the bot would play it: its stroke moved by one draw of `noise`.
+  std::optional<Trial> tryNoisy(const PlannedShot& shot);
   /// A shot skeleton carrying the turn's choice.
   PlannedShot blank(ShotKind kind) const;
   /// The legal object balls for the shooter (legalFirstBalls on play_state).

@@ -33,6 +33,8 @@ struct PlannedShot {
   std::optional<Eigen::Vector2d> cue_ball_at;  ///< ball in hand: place the cue ball here, m
   std::optional<rules::Choice> choice;         ///< the answer to pending options
   double value = 0.0;                          ///< the planner's score (for logs)
+  /// The share of noisy tries that made the pot, when it was sampled; else empty.
+  std::optional<double> success;
 };
 
 /// The shooter's declared intent for the rules.

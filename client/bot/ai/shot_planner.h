@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/planned_shot.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "client/bot/ai/table_view.h"
@@ -13,7 +14,12 @@ namespace pool::bot {
 
 /// Limits of one turn's search.
 struct PlannerOptions {
-  int max_runs = 80;  ///< physics trials per turn, at most
+  int max_runs = 240;  ///< physics trials per turn, at most
+  /// The execution error the planner expects of its own stroke: each shortlisted pot is played
+  /// `samples` times under it and chosen by what it is worth on average (0 samples: judged by
+  /// one exact trial, as a flawless player would).
+  ExecutionNoise noise{};
+  int samples = 0;
 };
 
 /// Chooses shots on one table. Pure apart from the physics trials it runs: the same layout and

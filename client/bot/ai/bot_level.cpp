@@ -1,0 +1,61 @@
+// The levels' noise and planning effort.
+#include "client/bot/ai/bot_level.h"
+
+#include <array>
+
+namespace pool::bot {
+namespace {
+
+struct LevelRow {
+  Level level;
+  const char* name;
+  double noise_factor;
+  int samples;
+};
+
+constexpr std::array<LevelRow, 4> kLevels{{
+    {Level::Beginner, "beginner", 6.0, 0},
+    {Level::Club, "club", 3.5, 8},
+    {Level::League, "league", 2.0, 12},
+    {Level::Pro, "pro", 1.0, 16},
+}};
+
+const LevelRow& rowOf(Level level) {
+  return kLevels[static_cast<std::size_t>(level)];
+}
+
+}  // namespace
+
+const char* toString(Level level) {
+  return rowOf(level).name;
+}
+
+std::optional<Level> levelFromString(std::string_view name) {
+  for (const auto& row : kLevels) {
+    if (name == row.name) return row.level;
+  }
+  return std::nullopt;
+}
+
+double noiseFactor(Level level) {
+  return rowOf(level).noise_factor;
+}
+
+ExecutionNoise levelNoise(Level level, double ball_radius) {
+  ExecutionNoise noise = olympiadNoise(ball_radius);
+  const double k = noiseFactor(level);
+  noise.yaw *= k;
+  noise.elevation *= k;
+  noise.speed *= k;
+  noise.tip *= k;
+  return noise;
+}
+
+PlannerOptions plannerOptionsFor(Level level, double ball_radius) {
+  PlannerOptions options;
+  options.noise = levelNoise(level, ball_radius);
+  options.samples = rowOf(level).samples;
+  return options;
+}
+
+}  // namespace pool::bot

@@ -1,0 +1,33 @@
+// Playing levels a player can tell apart: each an execution noise and a planning effort.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "client/bot/ai/execution_noise.h"
+#include "client/bot/ai/shot_planner.h"
+
+namespace pool::bot {
+
+enum class Level : std::uint8_t { Beginner, Club, League, Pro };
+
+inline constexpr Level kDefaultLevel = Level::Club;
+
+/// "beginner", "club", "league", "pro".
+const char* toString(Level level);
+/// The level named `name`; none for any other text.
+std::optional<Level> levelFromString(std::string_view name);
+
+/// How many times the olympiad noise (olympiadNoise) a level's stroke carries: pro 1, league 2,
+/// club 3.5, beginner 6.
+double noiseFactor(Level level);
+
+/// A level's execution noise on a table with balls of `ball_radius` (m).
+ExecutionNoise levelNoise(Level level, double ball_radius);
+
+/// How a level plans: it judges its shortlisted pots under its own noise, with more samples the
+/// stronger it is (pro 16, league 12, club 8); a beginner judges each by one exact trial.
+PlannerOptions plannerOptionsFor(Level level, double ball_radius);
+
+}  // namespace pool::bot
