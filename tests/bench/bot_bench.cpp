@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
@@ -187,26 +188,29 @@ struct RunTally {
   std::vector<double> plan_ms;
 };
 
-/// Plays rack `seed` of `view`'s game from the break to its end (or 80 shots).
-void runRack(const bot::TableView& view, const bot::PlannerOptions& options,
-             const bot::ExecutionNoise& noise, std::uint64_t seed, bot::ShotVerifier& verifier,
-             bot::Rng& rng, RunTally& tally) {
+/// Plays rack `seed` of `view`'s game from `breaker`'s break to its end (or 80 shots), each seat
+/// planning with its options and playing under their noise. The winner's seat, or -1 (a re-rack,
+/// or no end within 80 shots).
+int runRack(const bot::TableView& view, const std::array<const bot::PlannerOptions*, 2>& seats,
+            int breaker, std::uint64_t seed, bot::ShotVerifier& verifier, bot::Rng& rng,
+            RunTally& tally) {
   auto balls = rackOf(view, seed);
-  rules::GameState state = rules::newRack(0);
+  rules::GameState state = rules::newRack(breaker);
   bool turn_changed = false;
   ++tally.racks;
   for (int shot_no = 0; shot_no < 80; ++shot_no) {
+    const bot::PlannerOptions& options = *seats[static_cast<std::size_t>(state.shooter)];
     bot::ShotPlanner planner(view, options);
     const auto start = std::chrono::steady_clock::now();
     const bot::PlannedShot shot = planner.plan(balls, state);
     tally.plan_ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
             .count());
-    if (!bot::shoots(shot)) return;  // a re-rack: the rack ends here
+    if (!bot::shoots(shot)) return -1;  // a re-rack: the rack ends here
     bot::PlannedShot noisy = shot;
-    noisy.cue = bot::perturbed(shot.cue, noise, rng);
+    noisy.cue = bot::perturbed(shot.cue, options.noise, rng);
     const bot::Trial trial = verifier.run(balls, state, noisy);
-    if (!trial.judged) return;
+    if (!trial.judged) return -1;
     const bool breaking = shot.kind == bot::ShotKind::Break;
     ++tally.shots;
     if (!trial.verdict.legal()) ++tally.fouls;
@@ -222,15 +226,16 @@ void runRack(const bot::TableView& view, const bot::PlannerOptions& options,
     const bool inning_ends = !trial.verdict.turn_continues || trial.verdict.game_over;
     if (!breaking && inning_ends) ++tally.innings;
     if (trial.verdict.game_over) {
-      if (trial.verdict.winner == 0) ++tally.won;
-      if (trial.verdict.winner == 0 && !turn_changed) ++tally.break_and_runs;
-      return;
+      if (trial.verdict.winner == breaker) ++tally.won;
+      if (trial.verdict.winner == breaker && !turn_changed) ++tally.break_and_runs;
+      return trial.verdict.winner;
     }
-    if (trial.verdict.rerack) return;
+    if (trial.verdict.rerack) return -1;
     if (!trial.verdict.turn_continues) turn_changed = true;
     balls = trial.after;
     state = trial.verdict.next;
   }
+  return -1;
 }
 
 double percentileOf(std::vector<double> v, double q) {
@@ -255,7 +260,7 @@ void benchRacks(benchmark::State& state, rules::Game game, const bot::PlannerOpt
     bot::Rng rng(23);
     t = {};
     for (int k = 0; k < n; ++k) {
-      runRack(view, options, options.noise, kFirstRack + static_cast<std::uint64_t>(k), verifier,
+      runRack(view, {&options, &options}, 0, kFirstRack + static_cast<std::uint64_t>(k), verifier,
               rng, t);
     }
   }
@@ -300,6 +305,43 @@ void BM_BotLevels(benchmark::State& state) {
 }
 BENCHMARK(BM_BotLevels)
     ->ArgsProduct({{0, 1, 2}, {0, 1, 2, 3}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+/// Each level against the level below it, breaking in turn, over the same racks: the share of
+/// racks the stronger level wins (goal: at least 70 %).
+void BM_BotHeadToHead(benchmark::State& state) {
+  const auto game = static_cast<rules::Game>(state.range(0));
+  const auto upper = static_cast<bot::Level>(state.range(1));
+  const auto lower = static_cast<bot::Level>(state.range(1) - 1);
+  const bot::TableView& view = tableFor(game);
+  const bot::PlannerOptions strong = bot::plannerOptionsFor(upper, view.radius());
+  const bot::PlannerOptions weak = bot::plannerOptionsFor(lower, view.radius());
+  bot::ShotVerifier verifier(view);
+  const int n = pool::bench::smokeOr(100, 2);
+  int upper_wins = 0, decided = 0;
+  for (auto _ : state) {
+    bot::Rng rng(29);
+    upper_wins = decided = 0;
+    for (int k = 0; k < n; ++k) {
+      RunTally ignored;
+      // The stronger level sits in seat 0; the break alternates.
+      const int winner =
+          runRack(view, {&strong, &weak}, k % 2, kFirstRack + static_cast<std::uint64_t>(k),
+                  verifier, rng, ignored);
+      if (winner < 0) continue;
+      ++decided;
+      upper_wins += winner == 0 ? 1 : 0;
+    }
+  }
+  const double share = decided ? 100.0 * upper_wins / decided : 0.0;
+  state.counters["upper_wins%"] = share;
+  std::printf("%s-ball, %s against %s: %d of %d racks decided won by %s (%.0f %%, goal >= 70 %%)\n",
+              gameName(game), bot::toString(upper), bot::toString(lower), upper_wins, decided,
+              bot::toString(upper), share);
+}
+BENCHMARK(BM_BotHeadToHead)
+    ->ArgsProduct({{0, 1, 2}, {1, 2, 3}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

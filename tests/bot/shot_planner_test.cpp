@@ -2,6 +2,8 @@
 // when it is on, safeties when nothing is, the break.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "client/bot/ai/ghost_ball.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "rules/eight_ball.h"
@@ -81,6 +83,32 @@ TEST(ShotPlannerTest, NothingOnGivesADeclaredSafety) {
   EXPECT_TRUE(shot.kind == ShotKind::Safety || shot.kind == ShotKind::Fallback) << describe(shot);
   EXPECT_TRUE(shot.safety);
   EXPECT_FALSE(shot.called_ball);
+}
+
+// No legal ball can be hit directly: the only solid sits behind a wall of stripes. The bot kicks
+// off a cushion (aimed at the ball's mirror image in the cushion) instead of a blind hit at the
+// nearest ball, which fouls (wrong ball first): the kick it plays is legal in the physics.
+TEST(ShotPlannerTest, AHiddenBallIsKickedAtOffACushionLegally) {
+  const auto& view = nineFoot();
+  const double r = view.radius();
+  // The one-cushion kick off either long rail meets it at x = -0.35, clear of the side pockets.
+  std::vector<physics::Ball> balls = layout({resting(0, -0.9, 0.0), resting(1, 0.2, 0.0)});
+  // Stripes 9-15 in a column across the table between them, 3.0 R apart (a gap too narrow for
+  // the cue ball to pass): every direct path to the 1 is blocked.
+  for (int k = 0; k < 7; ++k) {
+    const int id = 9 + k;
+    balls[static_cast<std::size_t>(id)] = resting(id, -0.5, (k - 3) * 3.0 * r);
+  }
+  ShotPlanner planner(view);
+  const rules::GameState state = solidsToShoot();
+  const PlannedShot shot = planner.plan(balls, state);
+  ASSERT_EQ(shot.kind, ShotKind::Safety) << describe(shot);
+  ShotVerifier verifier(view);
+  const Trial trial = verifier.run(balls, state, shot);
+  ASSERT_TRUE(trial.judged) << trial.error;
+  EXPECT_TRUE(trial.verdict.legal()) << rules::describe(trial.verdict);
+  // Not a direct line at the 1: the cue ball heads away from the straight line to it.
+  EXPECT_GT(std::abs(std::sin(shot.cue.yaw)), 0.2) << describe(shot);
 }
 
 // Ball in hand behind the head string (after a scratch on the break): a ball that lies behind

@@ -26,6 +26,7 @@ struct PlanContext {
   int runs_left = 0;                    ///< physics trials still allowed this turn
   ExecutionNoise noise{};               ///< the bot's own execution error, sampled to judge shots
   int samples = 0;                      ///< noisy trials a shortlisted pot gets (0: exact only)
+  double leave_weight = 0.0;            ///< what a sure pot next adds to a clean pot's 100
   Rng rng{kPlanSeed};                   ///< the samples' draws (a fixed seed: plans repeat)
 
   static constexpr std::uint64_t kPlanSeed = 0x5eedULL;

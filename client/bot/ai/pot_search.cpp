@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+
+#include "rules/game_rules.h"
 
 namespace pool::bot {
 namespace {
@@ -12,21 +15,77 @@ struct Variant {
   double speed_factor;
   double tip;
 };
-constexpr std::array<Variant, 5> kVariants{
-    {{1.0, 0.0}, {1.0, -0.3}, {1.3, 0.0}, {0.8, 0.2}, {1.5, -0.35}}};
+constexpr std::array<Variant, 12> kVariants{{{1.0, 0.0},
+                                             {1.0, -0.3},
+                                             {1.3, 0.0},
+                                             {0.8, 0.2},
+                                             {1.5, -0.35},
+                                             {0.75, 0.0},
+                                             {0.75, -0.4},
+                                             {1.0, 0.35},
+                                             {1.3, -0.4},
+                                             {1.3, 0.35},
+                                             {1.8, 0.0},
+                                             {1.8, -0.4}}};
 
 // What a foul costs in a pot's value (a clean pot with a hopeless leave is worth 100).
 constexpr double kFoulCost = 40.0;
+// How far off its line (m, at the pocket) a ball sent straight at a pocket still drops.
+constexpr double kPocketTolerance = 0.03;
+
+// The chance a shooter with aim error `yaw_sigma` (rad) makes `line`: a lateral miss e at the
+// ghost ball turns the object ball by e / (2R cos cut), and the pocket takes it within about 3 cm
+// of its line (less when it comes in at an angle to the pocket's opening). Normal errors: erf.
+double makeChance(const PotLine& line, double yaw_sigma, const TableView& view) {
+  if (yaw_sigma <= 0.0) return 1.0;
+  const auto& pocket = view.pockets[static_cast<std::size_t>(line.pocket)];
+  const Vec2 along = (line.target - line.object).normalized();
+  const double facing = std::max(0.3, along.dot(pocket.outward));
+  const double tolerance = kPocketTolerance * facing / std::max(line.object_distance, 0.05);
+  const double turn =
+      line.cue_distance * yaw_sigma / (2.0 * view.radius() * std::max(std::cos(line.cut), 0.15));
+  return std::erf(tolerance / (std::sqrt(2.0) * std::max(turn, 1e-9)));
+}
+
+// How much a leave offers its shooter: the chance that the easiest of up to three balls (each by
+// its most makeable clear line) goes in for a shooter with aim error `yaw_sigma`, as if each
+// were tried in turn; 1 with the cue ball in hand.
+double leaveChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
+                    const TableView& view, double yaw_sigma) {
+  if (state.phase == rules::Phase::Over) return 0.0;
+  if (state.ball_in_hand != rules::BallInHand::None) return 1.0;
+  const auto cue = ballAt(balls, physics::kCueBall);
+  if (!cue) return 1.0;
+  std::vector<std::pair<int, double>> best;  // ball, chance
+  for (const auto& line :
+       potLines(*cue, balls, rules::firstBallsFor(view.rules, state, balls), view)) {
+    const double chance = makeChance(line, yaw_sigma, view);
+    auto it =
+        std::find_if(best.begin(), best.end(), [&](const auto& b) { return b.first == line.ball; });
+    if (it == best.end()) {
+      best.emplace_back(line.ball, chance);
+    } else {
+      it->second = std::max(it->second, chance);
+    }
+  }
+  std::sort(best.begin(), best.end(),
+            [](const auto& a, const auto& b) { return a.second > b.second; });
+  double miss_all = 1.0;
+  for (std::size_t i = 0; i < std::min<std::size_t>(best.size(), 3); ++i)
+    miss_all *= 1.0 - best[i].second;
+  return 1.0 - miss_all;
+}
 
 // Worth of a trial for a pot; empty when it fails.
-std::optional<double> potValue(const Trial& trial, const TableView& view) {
+std::optional<double> potValue(const Trial& trial, const PlanContext& context) {
   if (!trial.judged || trial.loses) return std::nullopt;
   if (trial.wins) return 1000.0;
   if (trial.dead_layout) return std::nullopt;
   if (!trial.verdict.legal() || !trial.potted_call || !trial.verdict.turn_continues) {
     return std::nullopt;
   }
-  return 100.0 + 10.0 * shooterChances(trial.after, trial.verdict.next, view);
+  return 100.0 + context.leave_weight *
+                     leaveChances(trial.after, trial.verdict.next, context.view, context.noise.yaw);
 }
 
 PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
@@ -43,15 +102,17 @@ PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
 // What one played (noisy) try of a pot is worth: the exact value when it works; a miss leaves
 // the table to the opponent (worth nothing), a foul gives them the cue ball in hand, a loss is the
 // game.
-double playedValue(const Trial& trial, const TableView& view) {
-  if (auto value = potValue(trial, view)) return *value;
+double playedValue(const Trial& trial, const PlanContext& context) {
+  if (auto value = potValue(trial, context)) return *value;
   if (!trial.judged) return 0.0;
   if (trial.loses) return -1000.0;
   return trial.verdict.legal() ? 0.0 : -kFoulCost;
 }
 
-// The shortlist sampled under the bot's noise: the pots with the best exact values.
-constexpr std::size_t kShortlist = 6;
+// The shortlist sampled under the bot's noise: the pots with the best exact values, at most two
+// variants (speed and spin) of one line.
+constexpr std::size_t kShortlist = 8;
+constexpr std::size_t kVariantsShortlisted = 2;
 
 }  // namespace
 
@@ -61,19 +122,25 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
   std::vector<PlannedShot> working;
   const std::size_t lines = std::min<std::size_t>(candidates.size(), kMaxLinesVerified);
   for (std::size_t i = 0; i < lines; ++i) {
+    std::vector<PlannedShot> line;  // this line's working variants
     for (const Variant& variant : kVariants) {
       PlannedShot shot = potShot(context, candidates[i], variant);
       const auto trial = context.tryShot(shot);
       if (!trial) break;
-      const auto value = potValue(*trial, context.view);
+      const auto value = potValue(*trial, context);
       if (!value) continue;
       shot.value = *value;
       // A winning shot needs no comparison; without sampling, another variant of a working line
       // rarely pays.
       if (trial->wins && !sampling) return shot;
-      working.push_back(shot);
+      line.push_back(shot);
       if (!sampling) break;
     }
+    // The shortlist holds every line's best variants, not one line's many.
+    std::stable_sort(line.begin(), line.end(),
+                     [](const PlannedShot& a, const PlannedShot& b) { return a.value > b.value; });
+    if (line.size() > kVariantsShortlisted) line.resize(kVariantsShortlisted);
+    working.insert(working.end(), line.begin(), line.end());
   }
   std::stable_sort(working.begin(), working.end(),
                    [](const PlannedShot& a, const PlannedShot& b) { return a.value > b.value; });
@@ -92,7 +159,7 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
       const auto trial = context.tryNoisy(shot);
       if (!trial) break;
       ++played;
-      sum += playedValue(*trial, context.view);
+      sum += playedValue(*trial, context);
       made += trial->potted_call || trial->wins ? 1 : 0;
     }
     if (played < context.samples) break;

@@ -11,7 +11,8 @@ namespace {
 constexpr std::array<double, 3> kSafetySpeeds{1.2, 2.0, 3.2};  // m/s, ball speed
 // Contact offsets: full, and half-ball either side (fraction of 2R off the centre line).
 constexpr std::array<double, 3> kContact{0.0, 0.5, -0.5};
-constexpr double kFallbackSpeed = 2.5;  // m/s
+constexpr double kFallbackSpeed = 2.5;                  // m/s
+constexpr std::array<double, 2> kKickSpeeds{2.5, 4.0};  // m/s, ball speed
 
 // Heading from `from` that makes the cue ball meet the ball at `object` with the given offset.
 double aimWithOffset(const Vec2& from, const Vec2& object, double offset, double radius) {
@@ -29,6 +30,23 @@ std::optional<double> safetyValue(const Trial& trial, const TableView& view) {
   return 50.0 + 10.0 * (1.0 - shooterChances(trial.after, trial.verdict.next, view));
 }
 
+// Tries a declared safety along `yaw` at `speed` (the cue ball placed at `place` first, when in
+// hand) and keeps it in `best` if it is legal and worth more. False once the budget is spent.
+bool trySafety(PlanContext& context, double yaw, double speed, const std::optional<Vec2>& place,
+               std::optional<PlannedShot>& best) {
+  PlannedShot shot = context.blank(ShotKind::Safety);
+  shot.cue = stroke(yaw, speed);
+  shot.safety = true;
+  shot.cue_ball_at = place;
+  const auto trial = context.tryShot(shot);
+  if (!trial) return false;
+  if (const auto value = safetyValue(*trial, context.view)) {
+    shot.value = *value;
+    if (!best || shot.value > best->value) best = shot;
+  }
+  return true;
+}
+
 void trySafetiesFrom(PlanContext& context, const Vec2& from, const std::optional<Vec2>& place,
                      std::optional<PlannedShot>& best) {
   const double r = context.view.radius();
@@ -40,16 +58,31 @@ void trySafetiesFrom(PlanContext& context, const Vec2& from, const std::optional
     }
     for (double offset : kContact) {
       for (double speed : kSafetySpeeds) {
-        PlannedShot shot = context.blank(ShotKind::Safety);
-        shot.cue = stroke(aimWithOffset(from, *object, offset, r), speed);
-        shot.safety = true;
-        shot.cue_ball_at = place;
-        const auto trial = context.tryShot(shot);
-        if (!trial) return;
-        const auto value = safetyValue(*trial, context.view);
-        if (!value) continue;
-        shot.value = *value;
-        if (!best || shot.value > best->value) best = shot;
+        if (!trySafety(context, aimWithOffset(from, *object, offset, r), speed, place, best)) {
+          return;
+        }
+      }
+    }
+  }
+}
+
+// Kicks: off one cushion onto a legal ball, aimed at the ball's mirror image in the line the
+// cue ball's centre runs along that cushion (a ball radius off its nose): for when no legal ball
+// can be hit directly. Each is verified in the physics like any safety.
+void tryKicksFrom(PlanContext& context, const Vec2& from, const std::optional<Vec2>& place,
+                  std::optional<PlannedShot>& best) {
+  const double r = context.view.radius();
+  const double x_rail = context.view.halfLength() - r, y_rail = context.view.halfWidth() - r;
+  for (int id : context.legalBalls()) {
+    const auto object = ballAt(context.balls, id);
+    if (!object) continue;
+    const std::array<Vec2, 4> images{
+        Vec2(2 * x_rail - object->x(), object->y()), Vec2(-2 * x_rail - object->x(), object->y()),
+        Vec2(object->x(), 2 * y_rail - object->y()), Vec2(object->x(), -2 * y_rail - object->y())};
+    for (const Vec2& image : images) {
+      for (double speed : kKickSpeeds) {
+        const double yaw = std::atan2(image.y() - from.y(), image.x() - from.x());
+        if (!trySafety(context, yaw, speed, place, best)) return;
       }
     }
   }
@@ -61,7 +94,9 @@ std::optional<PlannedShot> searchSafety(PlanContext& context, const std::vector<
   std::optional<PlannedShot> best;
   if (spots.empty()) {
     const auto cue = ballAt(context.balls, physics::kCueBall);
-    if (cue) trySafetiesFrom(context, *cue, std::nullopt, best);
+    if (!cue) return best;
+    trySafetiesFrom(context, *cue, std::nullopt, best);
+    if (!best) tryKicksFrom(context, *cue, std::nullopt, best);
     return best;
   }
   for (const Vec2& spot : spots) trySafetiesFrom(context, spot, spot, best);

@@ -73,9 +73,16 @@ PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
                               const rules::GameState& state) {
   auto choice = chooseOption(state.options);
   if (auto rotation = rotationChoice(balls, state, view_)) choice = rotation;
-  PlanContext context{
-      view_,  verifier_,         balls,          state,           stateAfterChoice(state, choice),
-      choice, options_.max_runs, options_.noise, options_.samples};
+  PlanContext context{view_,
+                      verifier_,
+                      balls,
+                      state,
+                      stateAfterChoice(state, choice),
+                      choice,
+                      options_.max_runs,
+                      options_.noise,
+                      options_.samples,
+                      options_.leave_weight};
   if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand &&
       *choice != rules::Choice::PushOut) {
     // Re-racking answers carry no stroke (a re-spotted 8 is never chosen: re-breaking is simpler).
