@@ -1,6 +1,7 @@
-// Benchmark: the bot's break on seeded hand racks under the olympiad execution noise, in 8-, 9-
-// and 10-ball: how often it pots a ball, is legal and keeps the turn, against a centred 9 m/s
-// break (the bot's before racks had gaps) on the same racks; and the grid the breaks come from.
+// Benchmark: the bot under execution noise, in 8-, 9- and 10-ball: its break on seeded hand racks
+// (pots, legal, keeps the turn) against a centred 9 m/s break and the grid the breaks come from;
+// whole racks alone at the table, exact against sampled planning and at each level; and each
+// level against the one below it.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -281,7 +282,7 @@ void benchRacks(benchmark::State& state, rules::Game game, const bot::PlannerOpt
       t.fallbacks, percentileOf(t.plan_ms, 0.5), percentileOf(t.plan_ms, 0.9));
 }
 
-/// Under the olympiad noise: pots judged by one exact trial (the planner before sampling) against
+/// Under the olympiad noise: pots judged by one exact trial each (no sampling) against
 /// the same planner sampling each shortlisted pot 16 times under that noise.
 void BM_BotRacks(benchmark::State& state) {
   const auto game = static_cast<rules::Game>(state.range(0));

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "client/bot/ai/execution_noise.h"
 #include "rules/game_rules.h"
 
 namespace pool::bot {
@@ -47,9 +48,10 @@ double makeChance(const PotLine& line, double yaw_sigma, const TableView& view) 
   return std::erf(tolerance / (std::sqrt(2.0) * std::max(turn, 1e-9)));
 }
 
-// How much a leave offers its shooter: the chance that the easiest of up to three balls (each by
-// its most makeable clear line) goes in for a shooter with aim error `yaw_sigma`, as if each
-// were tried in turn; 1 with the cue ball in hand.
+// How much a leave offers its shooter with aim error `yaw_sigma`: the chance that at least one
+// of the three most makeable balls (each by its most makeable clear line) would go in were each
+// tried in turn, so a leave with options counts for more than one lone pot; 1 with the cue ball
+// in hand.
 double leaveChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
                     const TableView& view, double yaw_sigma) {
   if (state.phase == rules::Phase::Over) return 0.0;
@@ -84,8 +86,11 @@ std::optional<double> potValue(const Trial& trial, const PlanContext& context) {
   if (!trial.verdict.legal() || !trial.potted_call || !trial.verdict.turn_continues) {
     return std::nullopt;
   }
-  return 100.0 + context.leave_weight *
-                     leaveChances(trial.after, trial.verdict.next, context.view, context.noise.yaw);
+  // A planner that expects no error of itself still grades a leave as a strong player would.
+  const double sigma =
+      context.noise.yaw > 0.0 ? context.noise.yaw : olympiadNoise(context.view.radius()).yaw;
+  return 100.0 +
+         context.leave_weight * leaveChances(trial.after, trial.verdict.next, context.view, sigma);
 }
 
 PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
@@ -144,10 +149,8 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
   }
   std::stable_sort(working.begin(), working.end(),
                    [](const PlannedShot& a, const PlannedShot& b) { return a.value > b.value; });
-  if (!sampling || working.size() <= 1) {
-    if (working.empty()) return std::nullopt;
-    return working.front();
-  }
+  if (working.empty()) return std::nullopt;
+  if (!sampling) return working.front();
   // Each shortlisted pot played as the bot plays: the one worth most on average wins. The exact
   // order stands for any the budget leaves unsampled.
   working.resize(std::min(working.size(), kShortlist));
@@ -160,7 +163,7 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
       if (!trial) break;
       ++played;
       sum += playedValue(*trial, context);
-      made += trial->potted_call || trial->wins ? 1 : 0;
+      made += potValue(*trial, context) ? 1 : 0;  // made cleanly, keeping the turn (or won)
     }
     if (played < context.samples) break;
     shot.value = sum / played;

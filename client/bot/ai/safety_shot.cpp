@@ -67,8 +67,9 @@ void trySafetiesFrom(PlanContext& context, const Vec2& from, const std::optional
 }
 
 // Kicks: off one cushion onto a legal ball, aimed at the ball's mirror image in the line the
-// cue ball's centre runs along that cushion (a ball radius off its nose): for when no legal ball
-// can be hit directly. Each is verified in the physics like any safety.
+// cue ball's centre runs along that cushion (a ball radius off its nose): for when no direct hit
+// makes a legal safety (from where the cue ball lies; not yet from hand). Each is verified in the
+// physics like any safety.
 void tryKicksFrom(PlanContext& context, const Vec2& from, const std::optional<Vec2>& place,
                   std::optional<PlannedShot>& best) {
   const double r = context.view.radius();

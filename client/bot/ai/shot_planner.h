@@ -20,10 +20,11 @@ struct PlannerOptions {
   /// one exact trial, as a flawless player would).
   ExecutionNoise noise{};
   int samples = 0;
-  /// What a leave sure to offer a pot next (by the chance of making it under `noise`) adds to a
-  /// clean pot's worth of 100: position counts for more than the pot, as for a player running a
-  /// rack (bot_bench, 8-ball under the olympiad noise, 100 racks: break-and-runs 8 % at 200,
-  /// 12 % at 400, 9 % at 800).
+  /// What a leave sure to offer a pot next adds to a clean pot's worth of 100. A leave is graded
+  /// by the chance that at least one of its three most makeable balls would go in under `noise`
+  /// (a strong player's aim error when `noise` is none). Position counts for more than the pot,
+  /// as for a player running a rack (bot_bench, 8-ball under the olympiad noise, 100 racks:
+  /// break-and-runs 8 % at 200, 12 % at 400, 9 % at 800).
   double leave_weight = 400.0;
 };
 
