@@ -189,9 +189,9 @@ struct RunTally {
   std::vector<double> plan_ms;
 };
 
-/// Plays rack `seed` of `view`'s game from `breaker`'s break to its end (or 80 shots), each seat
-/// planning with its options and playing under their noise. The winner's seat, or -1 (a re-rack,
-/// or no end within 80 shots).
+/// Plays rack `seed` of `view`'s game from `breaker`'s break to its end (or 80 shots; 6 in the
+/// smoke run), each seat planning with its options and playing under their noise. The winner's
+/// seat, or -1 (a re-rack, or no end within the shots allowed).
 int runRack(const bot::TableView& view, const std::array<const bot::PlannerOptions*, 2>& seats,
             int breaker, std::uint64_t seed, bot::ShotVerifier& verifier, bot::Rng& rng,
             RunTally& tally) {
@@ -199,7 +199,9 @@ int runRack(const bot::TableView& view, const std::array<const bot::PlannerOptio
   rules::GameState state = rules::newRack(breaker);
   bool turn_changed = false;
   ++tally.racks;
-  for (int shot_no = 0; shot_no < 80; ++shot_no) {
+  // The smoke run plays the first shots of a rack only: the planner's path, not its figures.
+  const int max_shots = pool::bench::smokeOr(80, 6);
+  for (int shot_no = 0; shot_no < max_shots; ++shot_no) {
     const bot::PlannerOptions& options = *seats[static_cast<std::size_t>(state.shooter)];
     bot::ShotPlanner planner(view, options);
     const auto start = std::chrono::steady_clock::now();
@@ -282,6 +284,13 @@ void benchRacks(benchmark::State& state, rules::Game game, const bot::PlannerOpt
       t.fallbacks, percentileOf(t.plan_ms, 0.5), percentileOf(t.plan_ms, 0.9));
 }
 
+/// The games whole racks are played in: 8-, 9- and 10-ball; 8-ball alone in the smoke run (under
+/// the sanitizers a rack's planning is slow, and the other games' paths are the break's and the
+/// rules' tests').
+std::vector<std::int64_t> games() {
+  return pool::bench::smoke() ? std::vector<std::int64_t>{0} : std::vector<std::int64_t>{0, 1, 2};
+}
+
 /// Under the olympiad noise: pots judged by one exact trial each (no sampling) against
 /// the same planner sampling each shortlisted pot 16 times under that noise.
 void BM_BotRacks(benchmark::State& state) {
@@ -293,7 +302,7 @@ void BM_BotRacks(benchmark::State& state) {
              "olympiad noise, " + std::to_string(options.samples) + " samples a pot");
 }
 BENCHMARK(BM_BotRacks)
-    ->ArgsProduct({{0, 1, 2}, {0, 16}})
+    ->ArgsProduct({games(), {0, 16}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
@@ -305,7 +314,7 @@ void BM_BotLevels(benchmark::State& state) {
              std::string("level ") + bot::toString(level));
 }
 BENCHMARK(BM_BotLevels)
-    ->ArgsProduct({{0, 1, 2}, {0, 1, 2, 3}})
+    ->ArgsProduct({games(), {0, 1, 2, 3}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
@@ -342,7 +351,7 @@ void BM_BotHeadToHead(benchmark::State& state) {
               bot::toString(upper), share);
 }
 BENCHMARK(BM_BotHeadToHead)
-    ->ArgsProduct({{0, 1, 2}, {1, 2, 3}})
+    ->ArgsProduct({games(), {1, 2, 3}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
