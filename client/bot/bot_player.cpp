@@ -338,8 +338,7 @@ const PlannedShot& BotPlayer::planFor(const client::MatchView& view) {
 
 physics::CueShot BotPlayer::played(const physics::CueShot& cue) {
   if (config_.skill) return noise_.apply(cue);
-  const TableView* view = tables_[planner_table_].get();
-  return perturbed(cue, levelNoise(config_.level, view->radius()), level_rng_);
+  return perturbed(cue, planner_options_.noise, level_rng_);
 }
 
 void BotPlayer::showAim(const client::MatchView& view, const PlannedShot& shot, double progress,
@@ -365,8 +364,9 @@ const TableView* BotPlayer::tableFor(const std::string& match) {
     slot = std::make_unique<TableView>(std::move(*loaded));
   }
   if (planner_table_ != name) {
-    planner_ = std::make_unique<ShotPlanner>(
-        *slot, config_.skill ? PlannerOptions{} : plannerOptionsFor(config_.level, slot->radius()));
+    planner_options_ =
+        config_.skill ? PlannerOptions{} : plannerOptionsFor(config_.level, slot->radius());
+    planner_ = std::make_unique<ShotPlanner>(*slot, planner_options_);
     planner_table_ = name;
   }
   return slot.get();

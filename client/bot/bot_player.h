@@ -94,7 +94,8 @@ class BotPlayer {
   bool myTurn(const client::MatchView& view) const;
   /// The plan of this turn's state (made once per state: the think time shows it being aimed).
   const PlannedShot& planFor(const client::MatchView& view);
-  /// `cue` as the bot's hand plays it: moved by its level's noise or its skill's error.
+  /// `cue` as the bot's hand plays it: moved by its level's noise (the planner's) or its skill's
+  /// error.
   physics::CueShot played(const physics::CueShot& cue);
   /// Sends the cue as it is aimed `progress` (0–1) into the think time (paced).
   void showAim(const client::MatchView& view, const PlannedShot& shot, double progress, bool stroke,
@@ -139,8 +140,9 @@ class BotPlayer {
   std::map<std::string, std::unique_ptr<TableView>> tables_;
   std::unique_ptr<ShotPlanner> planner_;
   std::string planner_table_;
-  SkillNoise noise_;  ///< with a skill
-  Rng level_rng_;     ///< with a level: the draws of its noise
+  PlannerOptions planner_options_;  ///< the planner's, its level's noise among them
+  SkillNoise noise_;                ///< with a skill
+  Rng level_rng_;                   ///< with a level: the draws of its noise
   std::string result_line_;
   bool rematch_asked_ = false;  ///< the game over on the table has our rematch request
   std::string failure_;
