@@ -148,10 +148,15 @@ void ServerLoop::readJoins(double now) {
   // Joins, refused commands and dropped aims alike: a flood of any of them frees what it used
   // once it is over (DDS samples and instances, answers), which glibc keeps until trimmed.
   if (heap_trim_.due(joins_.total() + counters_.commands_refused + aims_.droppedInAll(), now)) {
+    // After kQuiet seconds without joins every flooding client's bucket is full again: swept
+    // here, what is still tracked is what the flood left behind.
+    rate_.sweep(now);
     const long released = releaseFreeHeap();
-    spdlog::info("a flood is over: {:.1f} MB of freed memory given back, {:.1f} MB of heap in use",
-                 static_cast<double>(released) / (1024.0 * 1024.0),
-                 static_cast<double>(heapInUse()) / (1024.0 * 1024.0));
+    spdlog::info(
+        "a flood is over: {:.1f} MB of freed memory given back, {:.1f} MB of heap in use, {} "
+        "clients tracked",
+        static_cast<double>(released) / (1024.0 * 1024.0),
+        static_cast<double>(heapInUse()) / (1024.0 * 1024.0), trackedClients());
   }
 }
 

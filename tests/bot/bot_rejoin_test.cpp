@@ -49,10 +49,14 @@ TEST_F(BotRejoinTest, AKilledBotRejoinsWithItsTokenWithinTheGracePeriod) {
   // A race to two racks: racks differ per match, and a first rack that ends before alice's turn
   // comes (her opponent runs it out, or pots the 8 early) leaves none to interrupt; the second
   // rack gives her one.
+  // Bots of skill 0.9 (about seven pots in ten) finish the match the test watches to its end in
+  // some 20 s; at the suite's usual 0.8 a race to two took up to a minute beside the sanitized
+  // suite, past the wait for its end.
   startServer({"--fast", "--grace", "30", "--race", "2"});
-  const std::vector<std::string> alice_args{"--think", "0.2", "--token-file", file("alice.json")};
+  const std::vector<std::string> alice_args{"--skill", "0.9",          "--think",
+                                            "0.2",     "--token-file", file("alice.json")};
   ChildProcess* alice = &startBot("alice", 5, alice_args);
-  ChildProcess& bob = startBot("bob", 6, {"--think", "0.2"});
+  ChildProcess& bob = startBot("bob", 6, {"--skill", "0.9", "--think", "0.2"});
   ASSERT_TRUE(untilTurnOf(recorder, "alice", 1))
       << (stalledOnLayout(recorder) ? "stalled: the physics refuses a layout it left"
                                     : "no turn of alice to interrupt\n" + logs());

@@ -235,6 +235,11 @@ TEST_F(LiveAimTest, ABotsAimMovesWhileItThinksAndItsStrokeIsItsShot) {
   eve_ = std::make_unique<GameClient>(ClientOptions{kBotAim, "", "watcher", {}, {}});
   ASSERT_TRUE(pumpUntil([&] { return eve_->lobby().find("srv-1") != nullptr; })) << logs();
   eve_->requestSpectate("srv-1");
+  // Eve is watching before the bots come: a state of the table reaching her says her readers of
+  // its partition have matched the server's writers. Aims sent before that never reach her (on a
+  // loaded machine the whole first turn's could be lost, and the count below would say nothing
+  // of the bot).
+  ASSERT_TRUE(pumpUntil([&] { return eve_->state("srv-1") != nullptr; }, 60s)) << logs();
   startBot("alice", 5, {"--think", "1.5"});
   startBot("bob", 6, {"--think", "1.5"});
   ASSERT_TRUE(recorder.waitForPlayers(2, 30s)) << logs();

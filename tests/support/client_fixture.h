@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -106,12 +107,16 @@ class ClientIntegrationTest : public ::testing::Test {
     return start("pool-server", args, "server");
   }
 
-  /// A bot named `name` with skill 0.8 and `extra` flags; it gives up after 90 s.
+  /// A bot named `name` with skill 0.8 (unless `extra` gives a --skill or --level) and `extra`
+  /// flags; it gives up after 90 s.
   ChildProcess& startBot(const std::string& name, std::uint64_t seed,
                          const std::vector<std::string>& extra = {}) {
-    std::vector<std::string> args{
-        "--domain", std::to_string(domain_), "--name",    name, "--skill", "0.8",
-        "--seed",   std::to_string(seed),    "--timeout", "90"};
+    std::vector<std::string> args{"--domain", std::to_string(domain_), "--name",    name,
+                                  "--seed",   std::to_string(seed),    "--timeout", "90"};
+    const bool strength_given = std::any_of(extra.begin(), extra.end(), [](const auto& arg) {
+      return arg == "--skill" || arg == "--level";
+    });
+    if (!strength_given) args.insert(args.end(), {"--skill", "0.8"});
     args.insert(args.end(), extra.begin(), extra.end());
     return start("pool-bot", args, name + "-" + std::to_string(++runs_));
   }

@@ -130,9 +130,11 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
   open(kWebPage, "web-page");
   MatchRecorder recorder(kWebPage);
   startServer({});
-  // Bots that think between shots leave the table at rest long enough to look at it.
-  startBot("alice", 3, {"--think", "2"});
-  startBot("bob", 4, {"--think", "2"});
+  // Bots that think between shots leave the table at rest long enough to look at it: 4 s, since
+  // one look (the page's status, a screenshot, its status again) took over 2 s beside the
+  // sanitized suite, and a state that changes meanwhile is looked at again.
+  startBot("alice", 3, {"--think", "4"});
+  startBot("bob", 4, {"--think", "4"});
   const std::string url = startWeb();
   ASSERT_FALSE(url.empty()) << logs();
 
@@ -156,7 +158,7 @@ TEST_F(WebPageTest, ThePageShowsTheFeltTheBallsWhereTheServerPutThemAndThePlayer
   // the state did not change meanwhile.
   Image shot;
   MatchView shown;
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  const auto deadline = std::chrono::steady_clock::now() + 90s;
   std::string last_status;
   while (shot.pixels.empty() && std::chrono::steady_clock::now() < deadline) {
     recorder.pump(100ms);
