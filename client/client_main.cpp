@@ -16,6 +16,7 @@
 #include "client/ui/window_app.h"
 #include "core/text.h"
 #include "net/dds_error.h"
+#include "physics/shot_limits.h"
 #include "protocol/server_signature.h"
 
 namespace {
@@ -134,7 +135,7 @@ int main(int argc, char** argv) {
   app.add_option("--tip-side", aim.tip_side, "--scene aim: tip right of centre, fraction of R");
   app.add_option("--tip-height", aim.tip_height, "--scene aim: tip above centre, fraction of R");
   app.add_option("--elevation", aim.elevation_deg, "--scene aim: cue elevation, degrees")
-      ->check(CLI::Range(0.0, 89.0));
+      ->check(CLI::Range(0.0, pool::physics::kMaxElevationDeg));
   app.add_option("--power", aim.power, "--scene aim: power bar, 0-1 (draws the cue back)")
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--camera-distance", aim.camera_distance,

@@ -50,10 +50,26 @@ while IFS= read -r hit; do
 done < <(git grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*"(server/(match|store|sim)/|server/[a-z_]+\.h|net/|dds/)' \
            -- 'server/admin/*' || true)
 
+# The shot's limits have one home, common/physics/shot_limits.h: a literal 12 m/s speed, 89°
+# elevation or its radians (1.553...) in the code anywhere else (comments aside; tests may state
+# them) breaks the fence.
+while IFS= read -r hit; do
+  echo "fence 'shot-limits': $hit (use physics/shot_limits.h)" >&2
+  status=1
+done < <(git grep -nE '12|89|1\.55' -- '*.c' '*.cpp' '*.h' ':!common/physics/shot_limits.h' ':!tests/' |
+           awk '{
+             split($0, at, ":")
+             code = substr($0, length(at[1]) + length(at[2]) + 3)
+             sub(/\/\/.*/, "", code)
+             if (code ~ /[Ss]peed[^;]*[^0-9.a-zA-Z_]12(\.0*)?([^0-9.]|$)/ ||
+                 code ~ /(^|[^0-9.])89(\.0*)?([^0-9.]|$)/ || code ~ /1\.553/)
+               print at[1] ":" at[2] ": " code
+           }')
+
 if ((status)); then
-  echo "check-fences: includes outside their allowed folders (docs/ARCHITECTURE.md)" >&2
+  echo "check-fences: a fence is broken (docs/ARCHITECTURE.md)" >&2
   exit 1
 fi
 echo "fences hold: DDS only in common/net, ODE only in common/physics, OpenGL only in" \
   "client/render and client/ui, assimp only in common/table and client/render, HTTP only in" \
-  "client/web, modules one way"
+  "client/web, modules one way, the shot's limits in physics/shot_limits.h"

@@ -3,26 +3,6 @@
 
 namespace pool::bot {
 
-protocol::ShotOption optionOf(rules::Choice choice) {
-  switch (choice) {
-    case rules::Choice::PlayOn:
-      return protocol::ShotOption::PlayOn;
-    case rules::Choice::BallInHand:
-      return protocol::ShotOption::BallInHand;
-    case rules::Choice::RespotEight:
-      return protocol::ShotOption::RespotEight;
-    case rules::Choice::ReBreak:
-      return protocol::ShotOption::ReBreak;
-    case rules::Choice::OpponentReBreaks:
-      return protocol::ShotOption::OpponentReBreaks;
-    case rules::Choice::PushOut:
-      return protocol::ShotOption::PushOut;
-    case rules::Choice::PassBack:
-      return protocol::ShotOption::PassBack;
-  }
-  return protocol::ShotOption::None;
-}
-
 protocol::ShotRequest requestOf(const PlannedShot& shot) {
   protocol::ShotRequest request;
   request.cue = shot.cue;
@@ -35,7 +15,7 @@ protocol::ShotRequest requestOf(const PlannedShot& shot) {
   request.called_pocket = shot.called_pocket;
   request.safety = shot.safety;
   request.cue_ball_at = shot.cue_ball_at;
-  request.option = shot.choice ? optionOf(*shot.choice) : protocol::ShotOption::None;
+  request.option = shot.choice ? protocol::optionOf(*shot.choice) : protocol::ShotOption::None;
   return request;
 }
 

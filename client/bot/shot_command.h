@@ -6,9 +6,6 @@
 
 namespace pool::bot {
 
-/// The rules' choice as the protocol's option.
-protocol::ShotOption optionOf(rules::Choice choice);
-
 /// The command for `shot` (match, seat, token and sequence are the client's to fill in). A
 /// re-racking choice carries a harmless stroke that the server does not play.
 protocol::ShotRequest requestOf(const PlannedShot& shot);

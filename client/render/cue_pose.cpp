@@ -7,15 +7,16 @@
 #include <vector>
 
 #include "client/render/cue_profile.h"
+#include "physics/shot_limits.h"
 
 namespace pool::render {
 
 namespace {
 
-constexpr float kClearance = 0.002f;            // m kept between the cue and what it passes over
-constexpr float kStepRad = 0.00872665f;         // 0.5°
-constexpr float kMaxElevationRad = 1.5533430f;  // 89°
-constexpr float kSampleStep = 0.005f;           // m between the cue's checked points
+constexpr float kClearance = 0.002f;     // m kept between the cue and what it passes over
+constexpr float kStepRad = 0.00872665f;  // 0.5°
+constexpr auto kMaxElevationRad = static_cast<float>(physics::kMaxElevation);
+constexpr float kSampleStep = 0.005f;  // m between the cue's checked points
 
 /// The cue's radius at each checked point s = i · kSampleStep from the tip, m (made once).
 const std::vector<float>& sampleRadii() {

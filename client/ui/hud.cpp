@@ -260,7 +260,7 @@ void choicePanel(Say& say, const HudInput& in) {
               ", the rules let you choose before you shoot:");
   const auto chosen = in.controls->aim().option;
   for (const rules::Choice c : in.view->options) {
-    const protocol::ShotOption option = bot::optionOf(c);
+    const protocol::ShotOption option = protocol::optionOf(c);
     if (say.radio(app::choiceSentence(c, other), chosen == option)) say.out().option = option;
   }
   say.wrapped(

@@ -215,8 +215,8 @@ class WindowApp {
       if (legal) controls_.moveCueBall(*legal);
     }
     for (const rules::Choice c : v->options) {
-      if (protocol::optionShoots(bot::optionOf(c))) {
-        controls_.setOption(bot::optionOf(c));
+      if (protocol::optionShoots(protocol::optionOf(c))) {
+        controls_.setOption(protocol::optionOf(c));
         break;
       }
     }

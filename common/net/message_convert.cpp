@@ -70,8 +70,9 @@ Wire wireOf(Domain value) {
   return static_cast<Wire>(static_cast<int>(value));
 }
 
+// The rules' choice on the wire: the protocol's option for it (protocol::optionOf), as the IDL's.
 pool_ShotOption wireChoice(rules::Choice c) {
-  return static_cast<pool_ShotOption>(pool_OPTION_PLAY_ON + static_cast<int>(c));
+  return net::toWire(protocol::optionOf(c));
 }
 
 pool_SeatState seatStateOf(const SeatView& seat) {
@@ -85,16 +86,13 @@ pool_SeatState seatStateOf(const SeatView& seat) {
   return out;
 }
 
-// ShotOption values other than OPTION_NONE, as the rules' choices.
+// ShotOption values other than OPTION_NONE, as the rules' choices (protocol::choiceOf).
 Result<std::vector<rules::Choice>> choicesOf(const dds_sequence_pool_ShotOption& seq) {
   std::vector<rules::Choice> out;
   for (const auto& option : elementsOf(seq)) {
-    const auto raw = rawValue(option);
-    if (raw == pool_OPTION_NONE) continue;
-    if (raw < pool_OPTION_PLAY_ON || raw > pool_OPTION_PASS_BACK) {
-      return Result<std::vector<rules::Choice>>::fail("unknown option " + std::to_string(raw));
-    }
-    out.push_back(static_cast<rules::Choice>(raw - pool_OPTION_PLAY_ON));
+    const auto domain = net::fromWire(option);
+    if (!domain) return Result<std::vector<rules::Choice>>::fail(domain.error());
+    if (const auto choice = protocol::choiceOf(*domain)) out.push_back(*choice);
   }
   return Result<std::vector<rules::Choice>>::ok(std::move(out));
 }

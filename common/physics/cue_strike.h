@@ -16,7 +16,7 @@ struct CueShot {
   double tip_side = 0.0;  ///< a: cue line offset right of centre, fraction of R, seen from behind
   double tip_height =
       0.0;  ///< b: cue line offset above centre, fraction of R, perpendicular to the cue
-  double elevation = 0.0;  ///< cue angle above horizontal, [0, 89°]
+  double elevation = 0.0;  ///< cue angle above horizontal, [0, kMaxElevation] (shot_limits.h)
   double speed = 0.0;      ///< m/s: the cue's speed, or the ball's if speed_is_ball
   bool speed_is_ball = false;
 };
@@ -28,8 +28,9 @@ struct StrikeOutcome {
   double squirt = 0.0;  ///< angle of the ball's heading off the cue line, rad (+ = to the left)
 };
 
-/// Checks a shot's values: finite, speed in (0, 12], elevation in [0, 89°], offset within the
-/// miscue limit. Returns "" or "<field>: <reason>" with the field names of SIM-CONTRACT.md.
+/// Checks a shot's values: finite, speed and elevation within physics/shot_limits.h, offset
+/// within the miscue limit. Returns "" or "<field>: <reason>" with the field names of
+/// SIM-CONTRACT.md.
 std::string validateShot(const CueShot& shot, const table::PhysicsParams& params);
 
 /// The strike model: point impulse along the cue (mass cue_mass) through the contact point of

@@ -30,4 +30,46 @@ bool optionShoots(ShotOption option) {
          option != ShotOption::PassBack;
 }
 
+ShotOption optionOf(rules::Choice choice) {
+  switch (choice) {
+    case rules::Choice::PlayOn:
+      return ShotOption::PlayOn;
+    case rules::Choice::BallInHand:
+      return ShotOption::BallInHand;
+    case rules::Choice::RespotEight:
+      return ShotOption::RespotEight;
+    case rules::Choice::ReBreak:
+      return ShotOption::ReBreak;
+    case rules::Choice::OpponentReBreaks:
+      return ShotOption::OpponentReBreaks;
+    case rules::Choice::PushOut:
+      return ShotOption::PushOut;
+    case rules::Choice::PassBack:
+      return ShotOption::PassBack;
+  }
+  return ShotOption::None;
+}
+
+std::optional<rules::Choice> choiceOf(ShotOption option) {
+  switch (option) {
+    case ShotOption::None:
+      return std::nullopt;
+    case ShotOption::PlayOn:
+      return rules::Choice::PlayOn;
+    case ShotOption::BallInHand:
+      return rules::Choice::BallInHand;
+    case ShotOption::RespotEight:
+      return rules::Choice::RespotEight;
+    case ShotOption::ReBreak:
+      return rules::Choice::ReBreak;
+    case ShotOption::OpponentReBreaks:
+      return rules::Choice::OpponentReBreaks;
+    case ShotOption::PushOut:
+      return rules::Choice::PushOut;
+    case ShotOption::PassBack:
+      return rules::Choice::PassBack;
+  }
+  return std::nullopt;
+}
+
 }  // namespace pool::protocol

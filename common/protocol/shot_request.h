@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "physics/cue_strike.h"
+#include "rules/game_state.h"
 
 namespace pool::protocol {
 
@@ -27,6 +28,12 @@ const char* toString(ShotOption option);
 
 /// True for the options that answer with a shot (None, PlayOn, BallInHand, RespotEight, PushOut).
 bool optionShoots(ShotOption option);
+
+/// The rules' choice as the option that answers it (the one mapping between the two enums).
+ShotOption optionOf(rules::Choice choice);
+
+/// The rules' choice an option names; none for ShotOption::None.
+std::optional<rules::Choice> choiceOf(ShotOption option);
 
 /// One shot command (the ShotCommand topic) in domain types. Angles in radians, SI units, table
 /// frame.

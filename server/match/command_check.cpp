@@ -56,7 +56,7 @@ Check checkTurn(const Match& match, const protocol::ShotRequest& c) {
 // Applies a pending choice to the plan's copies; refuses a missing or unoffered one.
 Check checkOption(const Match& match, const protocol::ShotRequest& c, ShotPlan& plan) {
   const auto& offered = match.game().options;
-  const auto choice = choiceOf(c.option);
+  const auto choice = protocol::choiceOf(c.option);
   if (!choice) {
     if (offered.empty()) return std::nullopt;
     return refuse(Reject::OptionRequired, "choose first: " + rules::describe(match.game()));
@@ -118,28 +118,6 @@ Check checkCall(const Match& match, const protocol::ShotRequest& c, ShotPlan& pl
 }
 
 }  // namespace
-
-std::optional<rules::Choice> choiceOf(protocol::ShotOption option) {
-  switch (option) {
-    case protocol::ShotOption::None:
-      return std::nullopt;
-    case protocol::ShotOption::PlayOn:
-      return rules::Choice::PlayOn;
-    case protocol::ShotOption::BallInHand:
-      return rules::Choice::BallInHand;
-    case protocol::ShotOption::RespotEight:
-      return rules::Choice::RespotEight;
-    case protocol::ShotOption::ReBreak:
-      return rules::Choice::ReBreak;
-    case protocol::ShotOption::OpponentReBreaks:
-      return rules::Choice::OpponentReBreaks;
-    case protocol::ShotOption::PushOut:
-      return rules::Choice::PushOut;
-    case protocol::ShotOption::PassBack:
-      return rules::Choice::PassBack;
-  }
-  return std::nullopt;
-}
 
 std::optional<Rejection> checkHolder(const Match& match, const HolderFields& c,
                                      const std::function<bool(const Seat&)>& signed_by) {

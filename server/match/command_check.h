@@ -49,9 +49,6 @@ struct HolderFields {
 std::optional<Rejection> checkHolder(const Match& match, const HolderFields& fields,
                                      const std::function<bool(const Seat&)>& signed_by);
 
-/// The rules' choice an option answers; empty for ShotOption::None.
-std::optional<rules::Choice> choiceOf(protocol::ShotOption option);
-
 /// Checks `command` against `match` and stops at the first failure, in this order:
 /// 1. malformed: shot values the table's physics refuses (net's validateShotCommand has already
 ///    checked the wire fields, and the registry the match id);

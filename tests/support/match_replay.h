@@ -65,20 +65,6 @@ inline rules::Intent intentOf(const protocol::ShotRequest& command) {
   return intent;
 }
 
-// The choice a command without a shot answers.
-inline std::optional<rules::Choice> choiceOf(protocol::ShotOption option) {
-  switch (option) {
-    case protocol::ShotOption::ReBreak:
-      return rules::Choice::ReBreak;
-    case protocol::ShotOption::OpponentReBreaks:
-      return rules::Choice::OpponentReBreaks;
-    case protocol::ShotOption::PassBack:
-      return rules::Choice::PassBack;
-    default:
-      return std::nullopt;
-  }
-}
-
 inline std::string compare(const rules::Verdict& v, const ShotReport& r) {
   std::ostringstream why;
   if (v.fouls != r.fouls) why << " fouls differ;";
@@ -140,7 +126,7 @@ inline Replay replayMatch(const MatchRecorder& recorder, const std::string& matc
       rules::Shot shot{before->balls, rules::Intent::safe(), {}, before->balls, true};
       verdict = rules::judgeShot(game_rules, game, shot, table.context);
     } else if (!shoots) {
-      const auto choice = detail::choiceOf(command->option);
+      const auto choice = protocol::choiceOf(command->option);
       if (!choice) {
         replay.error = at + "a command without a shot answers no choice";
         return replay;

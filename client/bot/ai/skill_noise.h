@@ -5,6 +5,7 @@
 
 #include "core/split_mix64.h"
 #include "physics/cue_strike.h"
+#include "physics/shot_limits.h"
 
 namespace pool::bot {
 
@@ -34,7 +35,7 @@ class SkillNoise {
 
   /// `shot` with its yaw moved by at most 3 yaw sigmas and its speed scaled by at most 1 ± 3
   /// speed sigmas (never above `max_speed`, m/s).
-  physics::CueShot apply(const physics::CueShot& shot, double max_speed = 12.0);
+  physics::CueShot apply(const physics::CueShot& shot, double max_speed = physics::kMaxShotSpeed);
 
   double yawSigma() const { return yaw_sigma_; }      ///< rad
   double speedSigma() const { return speed_sigma_; }  ///< relative

@@ -4,14 +4,15 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+
+#include "physics/shot_limits.h"
 
 namespace pool::physics {
 
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kMaxSpeed = 12.0;         // m/s, SIM-CONTRACT.md
-constexpr double kMaxElevationDeg = 89.0;  // degrees
 // Offsets are compared with the limit after a square root; allow for its rounding so that
 // exactly the limit (e.g. 0.3, 0.4 against 0.5) stays legal.
 constexpr double kOffsetTolerance = 1e-12;
@@ -45,10 +46,10 @@ std::string validateShot(const CueShot& shot, const table::PhysicsParams& params
   if (!std::isfinite(shot.tip_height)) return "tip_height: must be a finite number";
   if (!std::isfinite(shot.elevation) || shot.elevation < 0.0 ||
       shot.elevation / kDeg > kMaxElevationDeg + 1e-9) {
-    return "elevation_deg: must be a finite number in [0, 89]";
+    return "elevation_deg: must be a finite number in [0, " + fmt(kMaxElevationDeg) + "]";
   }
-  if (!std::isfinite(shot.speed) || shot.speed <= 0.0 || shot.speed > kMaxSpeed) {
-    return "speed: must be a finite number in (0, 12]";
+  if (!std::isfinite(shot.speed) || shot.speed <= 0.0 || shot.speed > kMaxShotSpeed) {
+    return "speed: must be a finite number in (0, " + fmt(kMaxShotSpeed) + "]";
   }
   const double offset = std::hypot(shot.tip_side, shot.tip_height);
   if (offset > params.miscue_limit + kOffsetTolerance) {
