@@ -42,6 +42,14 @@ fence http 'boost/(beast|asio)' '' client/web/ tests/
 fence shared-modules 'protocol/|net/|client/|server/' '' common/protocol/ common/net/ \
   server/ client/ tests/
 fence protocol 'net/|client/|server/' "$net_public" common/net/ server/ client/ tests/
+# The window's model (client/app) takes its table and aim prediction from the game kit, never from
+# the bot (client/bot, which the window's practice table uses from client/ui).
+fence app-not-bot 'client/bot/' '' common/ server/ client/bot/ client/ui/ client/web/ \
+  client/spectate/ client/render/ client/audio/ client/room/ client/net/ client/client_main.cpp \
+  tests/
+# The game kit (common/game) sits above the table, the physics and the rules, below the protocol.
+fence game-kit 'game/' '' common/game/ common/scenario/ common/protocol/ common/net/ server/ \
+  client/ tests/
 # The admin channel (server/admin) knows nothing of matches, the store, the server or DDS: the
 # server's desk uses it, never the other way.
 while IFS= read -r hit; do
@@ -72,4 +80,5 @@ if ((status)); then
 fi
 echo "fences hold: DDS only in common/net, ODE only in common/physics, OpenGL only in" \
   "client/render and client/ui, assimp only in common/table and client/render, HTTP only in" \
-  "client/web, modules one way, the shot's limits in physics/shot_limits.h"
+  "client/web, modules one way, client/app apart from client/bot, the game kit below its users," \
+  "the shot's limits in physics/shot_limits.h"

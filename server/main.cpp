@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "game/loaded_table.h"
 #include "net/dds_error.h"
 #include "net/server_id_probe.h"
 #include "net/server_transport.h"
@@ -19,7 +20,6 @@
 #include "server/admin_desk.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
-#include "server/match/table_kit.h"
 #include "server/match/token_source.h"
 #include "server/server_config.h"
 #include "server/server_loop.h"
@@ -98,7 +98,7 @@ int resume(pool::server::MatchRegistry& registry, pool::store::MatchStore& store
 /// Serves matches, resuming those of `store` and keeping every change in it, and the operator on
 /// the admin socket. Returns the exit code.
 int serve(const pool::server::ServerConfig& config,
-          std::shared_ptr<const pool::server::TableKit> kit, pool::store::MatchStore& store,
+          std::shared_ptr<const pool::game::LoadedTable> kit, pool::store::MatchStore& store,
           const std::string& db_path) {
   using namespace pool::server;
   const std::string socket_path =
@@ -187,7 +187,7 @@ int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStor
     spdlog::error("--replay {}: no such match in the database", config.replay);
     return 1;
   }
-  auto kit = loadTableKit(store.tableOf(config.replay));
+  auto kit = pool::game::loadSharedTable(store.tableOf(config.replay));
   if (!kit) {
     spdlog::error("--replay {}: {}", config.replay, kit.error());
     return 1;
@@ -226,7 +226,7 @@ int main(int argc, char** argv) {
   setUpLogging(config);
   installSignalHandlers();
 
-  auto kit = loadTableKit(config.table);
+  auto kit = pool::game::loadSharedTable(config.table);
   if (!kit) {
     spdlog::error("{}", kit.error());
     return 1;

@@ -32,7 +32,7 @@ double toCushion(const Eigen::Vector2d& from, const Eigen::Vector2d& dir, double
 }
 
 int closestPocket(const Eigen::Vector2d& at, const Eigen::Vector2d& heading,
-                  const bot::TableView& view) {
+                  const game::LoadedTable& view) {
   int best = -1;
   double best_cos = -2.0;
   for (std::size_t i = 0; i < view.pockets.size(); ++i) {
@@ -50,7 +50,7 @@ int closestPocket(const Eigen::Vector2d& at, const Eigen::Vector2d& heading,
 }  // namespace
 
 AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
-                         const std::vector<physics::Ball>& balls, const bot::TableView& view) {
+                         const std::vector<physics::Ball>& balls, const game::LoadedTable& view) {
   const double r = view.radius();
   const Eigen::Vector2d dir(std::cos(yaw), std::sin(yaw));
   AimPrediction out;
@@ -76,7 +76,7 @@ AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
 }
 
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
-                  const std::vector<physics::Ball>& balls, const bot::TableView& view,
+                  const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
                   rules::Game game) {
   ShotCall call;
   if (state.phase == rules::Phase::Break || state.phase == rules::Phase::Over) return call;

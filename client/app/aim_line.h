@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "client/app/aim.h"
-#include "client/bot/ai/table_view.h"
+#include "game/loaded_table.h"
 #include "physics/ball.h"
 #include "rules/game_rules.h"
 #include "rules/game_state.h"
@@ -21,19 +21,19 @@ struct AimPrediction {
   Eigen::Vector2d contact = Eigen::Vector2d::Zero();  ///< cue ball centre at its first contact
   std::optional<int> ball;                            ///< the first ball touched; empty: a cushion
   Eigen::Vector2d object_dir = Eigen::Vector2d::Zero();  ///< unit: that ball's heading
-  int pocket = -1;  ///< index into TableView::pockets the ball heads closest to; -1: none
+  int pocket = -1;  ///< index into LoadedTable::pockets the ball heads closest to; -1: none
 };
 
 /// Where the cue ball at `cue` (m) heading along `yaw` (rad) first touches another ball on the
 /// table in `balls` (centres 2R apart) or a cushion (its centre R inside the playing surface).
 AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
-                         const std::vector<physics::Ball>& balls, const bot::TableView& view);
+                         const std::vector<physics::Ball>& balls, const game::LoadedTable& view);
 
 /// The call for `aim` in `state` of `game`: none on the break, and none in 9-ball (it needs no
 /// call); else the first ball touched and the pocket it heads for when that ball is the
 /// shooter's to hit first (rules::firstBallsFor); otherwise a safety.
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
-                  const std::vector<physics::Ball>& balls, const bot::TableView& view,
+                  const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
                   rules::Game game);
 
 }  // namespace pool::app

@@ -11,10 +11,10 @@
 #include "client/app/camera_rig.h"
 #include "client/app/clear_area.h"
 #include "client/app/controls.h"
-#include "client/bot/ai/table_view.h"
 #include "client/render/screenshot_info.h"
 #include "client/ui/aim_hud.h"
 #include "client/ui/scene_convert.h"
+#include "game/loaded_table.h"
 
 namespace pool::ui {
 
@@ -48,7 +48,7 @@ namespace {
 
 /// The object balls of --balls (ID X Y triples) in place of the rack; false (said on stderr) when
 /// they are not triples of a ball number 1–15 on the slate.
-bool placeBalls(const std::vector<double>& triples, const bot::TableView& view,
+bool placeBalls(const std::vector<double>& triples, const game::LoadedTable& view,
                 render::Scene& scene) {
   if (triples.empty()) return true;
   if (triples.size() % 3 != 0) {
@@ -74,7 +74,7 @@ bool placeBalls(const std::vector<double>& triples, const bot::TableView& view,
 }  // namespace
 
 int runAimScreenshot(const render::ScreenshotOptions& options) {
-  auto view = bot::loadTableView("wpa-9ft");
+  auto view = game::loadTable("wpa-9ft");
   auto scene = render::rackScene("wpa-9ft");
   if (!view || !scene) {
     std::cerr << "scene: " << (view ? scene.error() : view.error()) << '\n';

@@ -12,7 +12,6 @@
 #include "client/app/key_help.h"
 #include "client/app/shot_story.h"
 #include "client/app/spoken.h"
-#include "client/bot/shot_command.h"
 #include "rules/rotation.h"
 
 namespace pool::ui {

@@ -27,8 +27,6 @@
 #include "client/app/settings.h"
 #include "client/app/shot_story.h"
 #include "client/app/turn_view.h"
-#include "client/bot/ai/table_view.h"
-#include "client/bot/shot_command.h"
 #include "client/render/camera.h"
 #include "client/render/eight_ball_room.h"
 #include "client/render/renderer.h"
@@ -47,6 +45,7 @@
 #include "client/ui/window_practice.h"
 #include "client/ui/window_script.h"
 #include "client/ui/window_sound.h"
+#include "game/loaded_table.h"
 #include "net/dds_error.h"
 
 namespace pool::ui {
@@ -56,7 +55,7 @@ constexpr double kScriptStep = 1.0 / 60.0;  // s of input time per frame under a
 constexpr std::size_t kNotesShown = 6;
 constexpr std::chrono::microseconds kMinFrame(1000000 / 144);  // at most 144 frames a second
 
-protocol::CommandLimits limitsOf(const bot::TableView& view) {
+protocol::CommandLimits limitsOf(const game::LoadedTable& view) {
   protocol::CommandLimits limits;
   limits.half_length = view.halfLength();
   limits.half_width = view.halfWidth();
@@ -76,7 +75,7 @@ CueStick cueStickOf(const render::CuePlacement& cue, const render::Camera& camer
   return s;
 }
 
-app::PlacementArea areaOf(const bot::TableView& view) {
+app::PlacementArea areaOf(const game::LoadedTable& view) {
   return {view.halfLength(), view.halfWidth(), view.headStringX(), view.radius()};
 }
 
@@ -103,7 +102,7 @@ LoadedSettings loadSettingsFor(const WindowOptions& options) {
 
 class WindowApp {
  public:
-  WindowApp(const WindowOptions& options, bot::TableView view, render::Scene scene)
+  WindowApp(const WindowOptions& options, game::LoadedTable view, render::Scene scene)
       : options_(options),
         settings_(loadSettingsFor(options)),
         view_(std::move(view)),
@@ -706,7 +705,7 @@ class WindowApp {
 
   WindowOptions options_;
   LoadedSettings settings_;
-  bot::TableView view_;
+  game::LoadedTable view_;
   GlfwWindow window_;
   render::Renderer renderer_;
   render::Quality quality_ = render::Quality::Full;
@@ -758,7 +757,7 @@ int runWindow(const WindowOptions& options, const std::atomic<bool>& stop) {
     }
     script = std::move(*loaded);
   }
-  auto view = bot::loadTableView(options.table);
+  auto view = game::loadTable(options.table);
   if (!view) {
     std::cerr << "table: " << view.error() << '\n';
     return 2;

@@ -12,7 +12,7 @@ void append(std::vector<app::OverlaySegment>& lines, const std::vector<app::Over
 
 /// The aim line and cue arrow while aiming, and the placement check of a cue ball in hand.
 void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchView& match,
-               const std::vector<physics::Ball>& balls, const bot::TableView& view) {
+               const std::vector<physics::Ball>& balls, const game::LoadedTable& view) {
   const app::Toggles& t = controls.toggles();
   const auto prediction =
       app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
@@ -80,7 +80,8 @@ std::optional<Eigen::Vector3d> heldCueBall(const app::Controls& controls) {
 }
 
 WindowOverlay windowOverlay(app::Controls& controls, const client::MatchView* match,
-                            const std::vector<physics::Ball>& balls, const bot::TableView& view) {
+                            const std::vector<physics::Ball>& balls,
+                            const game::LoadedTable& view) {
   WindowOverlay out;
   if (controls.mode() == app::ControlMode::Aiming && match) {
     addAiming(out, controls, *match, balls, view);

@@ -7,8 +7,8 @@
 
 #include "client/app/controls.h"
 #include "client/app/overlay.h"
-#include "client/bot/ai/table_view.h"
 #include "client/net/match_types.h"
+#include "game/loaded_table.h"
 
 namespace pool::ui {
 
@@ -31,6 +31,6 @@ std::optional<Eigen::Vector3d> heldCueBall(const app::Controls& controls);
 /// The overlay over `balls` by the toggles of `controls`. While aiming at `match` (the state
 /// followed, or null) it also suggests the controls a call for the predicted shot.
 WindowOverlay windowOverlay(app::Controls& controls, const client::MatchView* match,
-                            const std::vector<physics::Ball>& balls, const bot::TableView& view);
+                            const std::vector<physics::Ball>& balls, const game::LoadedTable& view);
 
 }  // namespace pool::ui

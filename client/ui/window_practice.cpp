@@ -48,7 +48,7 @@ constexpr std::array<Range, protocol::kPracticeCoefficients.size()> kRanges{{
 
 }  // namespace
 
-PracticeDesk::PracticeDesk(const bot::TableView& view, std::string scenario_file)
+PracticeDesk::PracticeDesk(const game::LoadedTable& view, std::string scenario_file)
     : view_(view), file_(std::move(scenario_file)) {}
 
 PracticeOutcome PracticeDesk::key(app::Key key, app::MatchSession& session,
@@ -173,7 +173,7 @@ app::SessionNote PracticeDesk::advise(const app::MatchSession& session,
   const client::MatchView* v = session.view();
   if (!v || controls.mode() != app::ControlMode::Aiming)
     return {"the bot advises while you aim", true};
-  bot::TableView table = view_;
+  bot::TableView table = bot::tableViewOf(view_);
   table.rules.game = v->settings.game;
   bot::ShotPlanner planner(table);
   // A fresh rack wants a break, whatever the practice table's own state says.

@@ -11,7 +11,7 @@
 #include "client/app/controls.h"
 #include "client/app/input.h"
 #include "client/app/match_session.h"
-#include "client/bot/ai/table_view.h"
+#include "game/loaded_table.h"
 #include "protocol/practice_request.h"
 #include "protocol/shot_request.h"
 
@@ -28,7 +28,7 @@ struct PracticeOutcome {
 class PracticeDesk {
  public:
   /// `scenario_file`: where F5 saves and F6 loads.
-  PracticeDesk(const bot::TableView& view, std::string scenario_file);
+  PracticeDesk(const game::LoadedTable& view, std::string scenario_file);
 
   /// Handles practice key `key` at the session's practice table (nothing elsewhere).
   PracticeOutcome key(app::Key key, app::MatchSession& session, app::Controls& controls);
@@ -53,7 +53,7 @@ class PracticeDesk {
   app::SessionNote advise(const app::MatchSession& session, app::Controls& controls) const;
   void queue(protocol::PracticeRequest request) { waiting_.push_back(std::move(request)); }
 
-  const bot::TableView& view_;
+  const game::LoadedTable& view_;
   std::string file_;
   std::deque<protocol::PracticeRequest> waiting_;
   bool pane_open_ = false;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "game/rack_layout.h"
 #include "rules/eight_ball.h"
 #include "rules/game_rules.h"
 #include "rules/practice.h"
@@ -500,7 +501,7 @@ void Match::startRack(int breaker) {
 }
 
 std::vector<physics::Ball> Match::layout(std::uint64_t number, rules::Game game) const {
-  return rackLayout(table(), rack_seed_ + number, rules::rackTypeOf(game), rack_generator_);
+  return game::rackLayout(table(), rack_seed_ + number, rules::rackTypeOf(game), rack_generator_);
 }
 
 void Match::commit(const rules::Verdict& verdict, std::vector<physics::Ball> after, int shooter) {

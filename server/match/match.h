@@ -145,7 +145,7 @@ class Match {
 
   const std::string& id() const { return id_; }
   const std::string& name() const { return name_; }
-  const TableKit& table() const { return runner_->kit(); }
+  const game::LoadedTable& table() const { return runner_->kit(); }
   MatchPhase phase() const;
   const std::array<Seat, 2>& seats() const { return seats_; }
   std::size_t spectators() const { return spectators_.size(); }

@@ -149,7 +149,7 @@ Rejection Match::practiceChange(const protocol::PracticeRequest& command) {
       auto params = protocol::withCoefficients(table().spec.params, command.coefficients);
       if (!params) return refuse(Reject::BadPractice, "physics: " + params.error());
       // This table's own kit and world; every other table keeps the server's.
-      auto kit = std::make_shared<TableKit>(table());
+      auto kit = std::make_shared<game::LoadedTable>(table());
       if (!standard_coefficients_)
         standard_coefficients_ = protocol::coefficientsOf(kit->spec.params);
       kit->spec.params = *params;

@@ -29,7 +29,7 @@ bool validPlayerName(std::string_view name) {
   return isCleanUtf8(name, 31);
 }
 
-MatchRegistry::MatchRegistry(RegistryOptions options, std::shared_ptr<const TableKit> kit)
+MatchRegistry::MatchRegistry(RegistryOptions options, std::shared_ptr<const game::LoadedTable> kit)
     : options_(std::move(options)),
       random_(seedOf(options_.seed)),
       server_id_(options_.server_id.empty() ? randomHex(random_) : options_.server_id),

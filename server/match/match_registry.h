@@ -36,13 +36,13 @@ struct RegistryOptions {
 /// reused. Pure logic: time comes in as `now` (s, monotonic).
 class MatchRegistry {
  public:
-  /// A registry playing on `kit` (loaded once with loadTableKit).
-  MatchRegistry(RegistryOptions options, std::shared_ptr<const TableKit> kit);
+  /// A registry playing on `kit` (loaded once with game::loadSharedTable).
+  MatchRegistry(RegistryOptions options, std::shared_ptr<const game::LoadedTable> kit);
 
   const std::string& serverId() const { return server_id_; }
   const RegistryOptions& options() const { return options_; }
   /// The table every match of this registry is played on.
-  const TableKit& table() const { return runner_->kit(); }
+  const game::LoadedTable& table() const { return runner_->kit(); }
 
   /// Opens an empty match named `name` (default "Table <n>") whose racks `generator` lays out
   /// from `rack_seed` (default: random); null when the server is full.

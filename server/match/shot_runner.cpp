@@ -14,7 +14,7 @@ void addBalls(std::vector<physics::Ball>& to, const std::vector<physics::Ball>& 
 
 }  // namespace
 
-ShotRunner::ShotRunner(std::shared_ptr<const TableKit> kit)
+ShotRunner::ShotRunner(std::shared_ptr<const game::LoadedTable> kit)
     : kit_(std::move(kit)), simulation_(kit_->spec, kit_->geometry) {}
 
 Result<physics::ShotOutcome> ShotRunner::run(const std::vector<physics::Ball>& balls,

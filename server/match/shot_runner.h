@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "core/result.h"
+#include "game/loaded_table.h"
 #include "physics/simulation.h"
-#include "server/match/table_kit.h"
 
 namespace pool::server {
 
@@ -14,7 +14,7 @@ namespace pool::server {
 /// of a server share it (their shots run one after another on the server's loop).
 class ShotRunner {
  public:
-  explicit ShotRunner(std::shared_ptr<const TableKit> kit);
+  explicit ShotRunner(std::shared_ptr<const game::LoadedTable> kit);
 
   /// Strikes the cue ball of `balls` with `cue` and runs to rest (at most `max_time` s of
   /// simulated time), sampling every ball at k / `sample_hz` s. Balls already off the table
@@ -24,10 +24,10 @@ class ShotRunner {
   Result<physics::ShotOutcome> run(const std::vector<physics::Ball>& balls,
                                    const physics::CueShot& cue, double sample_hz, double max_time);
 
-  const TableKit& kit() const { return *kit_; }
+  const game::LoadedTable& kit() const { return *kit_; }
 
  private:
-  std::shared_ptr<const TableKit> kit_;
+  std::shared_ptr<const game::LoadedTable> kit_;
   physics::Simulation simulation_;
 };
 

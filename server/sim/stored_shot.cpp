@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "server/match/table_kit.h"
+#include "game/loaded_table.h"
 #include "server/store/match_store.h"
 
 namespace pool::sim {
@@ -21,7 +21,7 @@ Result<scenario::Scenario> storedShotScenario(const std::string& db, const std::
     for (const auto& stored : (*store)->shots(match)) {
       const server::ShotRecord& r = stored.record;
       if (!r.shoots || r.shot_number != shot) continue;
-      auto kit = server::loadTableKit(table);
+      auto kit = game::loadSharedTable(table);
       if (!kit) return Out::fail(kit.error());
       scenario::Scenario out;
       out.spec = (*kit)->spec;

@@ -7,7 +7,7 @@ namespace pool::store {
 
 namespace {
 
-void judgeAgain(const StoredShot& stored, const server::TableKit& kit,
+void judgeAgain(const StoredShot& stored, const game::LoadedTable& kit,
                 const rules::GameRules& rules, Audit& audit) {
   const server::ShotRecord& r = stored.record;
   const std::string at = "shot " + std::to_string(r.shot_number) + ": ";
@@ -32,7 +32,7 @@ void judgeAgain(const StoredShot& stored, const server::TableKit& kit,
 
 }  // namespace
 
-Audit auditMatch(MatchStore& store, const std::string& id, const server::TableKit& kit,
+Audit auditMatch(MatchStore& store, const std::string& id, const game::LoadedTable& kit,
                  const rules::EightBallConfig& rules) {
   Audit audit;
   const auto match = store.match(id);

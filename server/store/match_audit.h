@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "game/loaded_table.h"
 #include "rules/game_rules.h"
-#include "server/match/table_kit.h"
 #include "server/store/match_store.h"
 
 namespace pool::store {
@@ -27,7 +27,7 @@ struct Audit {
 /// with the rules engine (`rules` as the server played them on `kit`), and checks: shot numbers run
 /// 1, 2, ... without gaps or repeats; each verdict (and the state it leads to) is the stored one;
 /// the match's stored shot count, and its winner once the game is over, agree with the shots.
-Audit auditMatch(MatchStore& store, const std::string& id, const server::TableKit& kit,
+Audit auditMatch(MatchStore& store, const std::string& id, const game::LoadedTable& kit,
                  const rules::EightBallConfig& rules = {});
 
 }  // namespace pool::store

@@ -7,8 +7,8 @@
 #include <glm/glm.hpp>
 
 #include "client/app/controls.h"
-#include "client/bot/ai/table_view.h"
 #include "client/render/renderer.h"
+#include "game/loaded_table.h"
 #include "net/convert.h"
 #include "net/shot_command_check.h"
 
@@ -17,9 +17,9 @@ namespace pool::app::test {
 inline constexpr double kRadius = 0.028575;
 
 /// The wpa-9ft table as the client loads it, once per test program.
-inline const bot::TableView& nineFoot() {
-  static const bot::TableView view = [] {
-    auto loaded = bot::loadTableView("wpa-9ft");
+inline const game::LoadedTable& nineFoot() {
+  static const game::LoadedTable view = [] {
+    auto loaded = game::loadTable("wpa-9ft");
     if (!loaded) throw std::runtime_error(loaded.error());
     return std::move(*loaded);
   }();

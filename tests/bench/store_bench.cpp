@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <string>
 
+#include "game/loaded_table.h"
 #include "protocol/command_signature.h"
 #include "protocol/key_pair.h"
 #include "ratio_reporter.h"
 #include "server/match/match.h"
-#include "server/match/table_kit.h"
 #include "server/store/match_store.h"
 #include "server/store/record_json.h"
 
@@ -26,7 +26,7 @@ struct BreakRecord {
 
 const BreakRecord& breakRecord() {
   static const BreakRecord made = [] {
-    auto kit = server::loadTableKit("wpa-9ft");
+    auto kit = game::loadSharedTable("wpa-9ft");
     if (!kit) {
       std::fprintf(stderr, "%s\n", kit.error().c_str());
       std::exit(1);

@@ -5,7 +5,7 @@
 #include <csignal>
 #include <cstdio>
 
-#include "server/match/table_kit.h"
+#include "game/loaded_table.h"
 #include "server/store/match_audit.h"
 #include "server/store/match_store.h"
 #include "support/client_fixture.h"
@@ -74,7 +74,7 @@ class RotationMatchTest : public ClientIntegrationTest {
     ASSERT_TRUE(server.waitExit(20s)) << "the server did not stop";
     auto store = store::MatchStore::open(scratch_->file("pool.db"));
     ASSERT_TRUE(store) << store.error();
-    auto kit = server::loadTableKit("wpa-9ft");
+    auto kit = game::loadSharedTable("wpa-9ft");
     ASSERT_TRUE(kit) << kit.error();
     const store::Audit audit = store::auditMatch(**store, match, **kit);
     for (const auto& problem : audit.problems) ADD_FAILURE() << match << ": " << problem;

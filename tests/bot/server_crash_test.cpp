@@ -10,7 +10,7 @@
 #include <set>
 #include <tuple>
 
-#include "server/match/table_kit.h"
+#include "game/loaded_table.h"
 #include "server/store/match_audit.h"
 #include "server/store/match_store.h"
 #include "support/client_fixture.h"
@@ -124,7 +124,7 @@ TEST_F(ServerCrashTest, KilledAtRandomMomentsTheMatchesLoseNoShotAndEndAsTheRule
   // Every shot anyone saw accepted is stored, under the number it was accepted with.
   auto store = store::MatchStore::open(file("pool.db"));
   ASSERT_TRUE(store) << store.error();
-  auto kit = server::loadTableKit("wpa-9ft");
+  auto kit = game::loadSharedTable("wpa-9ft");
   ASSERT_TRUE(kit) << kit.error();
   std::set<std::string> matches;
   std::set<std::tuple<std::string, int, std::uint32_t, std::uint32_t>> stored;

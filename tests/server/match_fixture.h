@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "game/loaded_table.h"
 #include "protocol/command_signature.h"
 #include "protocol/key_pair.h"
 #include "protocol/protocol_version.h"
@@ -16,14 +17,13 @@
 #include "protocol/shot_request.h"
 #include "server/match/match.h"
 #include "server/match/match_registry.h"
-#include "server/match/table_kit.h"
 
 namespace pool::server::test {
 
 /// The 9-ft table, loaded once for the whole test program.
-inline std::shared_ptr<const TableKit> nineFoot() {
+inline std::shared_ptr<const game::LoadedTable> nineFoot() {
   static const auto kit = [] {
-    auto loaded = loadTableKit("wpa-9ft");
+    auto loaded = game::loadSharedTable("wpa-9ft");
     EXPECT_TRUE(loaded) << loaded.error();
     return loaded ? *loaded : nullptr;
   }();

@@ -1,6 +1,7 @@
 // Shots through the physics: balls already down are carried through untouched, frames on the grid.
 #include <gtest/gtest.h>
 
+#include "game/rack_layout.h"
 #include "match_fixture.h"
 #include "physics/simulation.h"
 #include "server/match/shot_runner.h"
@@ -10,19 +11,8 @@ namespace {
 
 using namespace test;
 
-TEST(RackLayout, SixteenBallsAtRestAndTheCueBallJustBehindTheHeadString) {
-  const auto balls = rackLayout(*nineFoot(), 3);
-  ASSERT_EQ(balls.size(), 16u);
-  for (int id = 0; id < 16; ++id) EXPECT_EQ(balls[static_cast<std::size_t>(id)].id, id);
-  const auto& spots = nineFoot()->context.spots;
-  EXPECT_DOUBLE_EQ(balls[0].pos.x(), spots.head_spot.x() - kBreakCueSetback);
-  EXPECT_LT(balls[0].pos.x(), spots.head_string_x);
-  EXPECT_EQ(physics::checkPlacement(balls, nineFoot()->geometry, nineFoot()->spec.params), "");
-  EXPECT_NE(rackLayout(*nineFoot(), 4)[5].pos, balls[5].pos);  // another seed, another order
-}
-
 TEST(ShotRunner, BallsAlreadyDownStayOutAndComeBackUnchanged) {
-  auto balls = rackLayout(*nineFoot(), 3);
+  auto balls = game::rackLayout(*nineFoot(), 3);
   balls[9].state = physics::MotionState::Pocketed;
   balls[9].pocket = "foot_left_corner";
   balls[9].pos = physics::Vec3(1.4, 0.7, -0.1);
@@ -44,7 +34,7 @@ TEST(ShotRunner, BallsAlreadyDownStayOutAndComeBackUnchanged) {
 }
 
 TEST(ShotRunner, ALayoutThePhysicsRefusesFails) {
-  auto balls = rackLayout(*nineFoot(), 3);
+  auto balls = game::rackLayout(*nineFoot(), 3);
   balls[0].pos = balls[1].pos;
   physics::CueShot cue;
   cue.speed = 2.0;

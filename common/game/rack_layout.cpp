@@ -1,0 +1,21 @@
+// Laying out a fresh rack on a loaded table.
+#include "game/rack_layout.h"
+
+#include <algorithm>
+
+namespace pool::game {
+
+std::vector<physics::Ball> rackLayout(const LoadedTable& table, std::uint64_t seed,
+                                      table::RackType type, table::RackGenerator generator) {
+  const double r = table.context.ball_radius;
+  const Eigen::Vector2d cue_at =
+      table.context.spots.head_spot - Eigen::Vector2d(kBreakCueSetback, 0);
+  std::vector<physics::Ball> balls{physics::restingBall(physics::kCueBall, cue_at, r)};
+  for (const auto& p : table::rackFor(type, table.spec, r, seed, generator)) {
+    balls.push_back(physics::restingBall(p.id, p.pos, r));
+  }
+  std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  return balls;
+}
+
+}  // namespace pool::game
