@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
   app.add_flag("--follow", flags.follow, "keep watching after the match is over");
   app.add_option("--timeout", flags.timeout, "exit (code 3) after this many seconds; 0: never");
   app.add_option("--name", flags.window.name, "the player's name (window)");
-  app.add_flag("--hotseat", flags.window.hotseat, "two players on this screen (window)");
+  auto* hotseat =
+      app.add_flag("--hotseat", flags.window.hotseat, "two players on this screen (window)");
   std::string forget_server;
   app.add_option("--forget-server-key", forget_server,
                  "forget the key pinned for SERVER-ID (in $XDG_CONFIG_HOME/pool/servers) and exit: "
@@ -109,6 +110,11 @@ int main(int argc, char** argv) {
   app.add_flag("--play", flags.window.play, "take a seat at once, skipping the lobby (window)");
   app.add_flag("--practice", flags.window.practice,
                "open a practice table of your own at once, skipping the lobby (window)");
+  app.add_option("--bot", flags.window.bot,
+                 "play a bot of this level at a fresh table at once, skipping the lobby: beginner, "
+                 "club, league or pro (the window starts pool-bot and stops it when it closes)")
+      ->check(CLI::IsMember({"beginner", "club", "league", "pro"}))
+      ->excludes(hotseat);
   app.add_option("--practice-file", flags.window.practice_file,
                  "where a practice table saves (F5) and loads (F6) its scenario file")
       ->capture_default_str();

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include "client/app/spoken.h"
+#include "client/bot/ai/bot_level.h"
 
 namespace pool::ui {
 namespace {
@@ -72,6 +73,17 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
     ImGui::SameLine();
     if (ImGui::Button("Watch a match in play"))
       choice = LobbyChoice{LobbyChoice::Kind::Spectate, ""};
+    if (!hotseat) {
+      if (ImGui::Button("Play the bot")) {
+        options.practice = false;
+        choice = LobbyChoice{LobbyChoice::Kind::PlayBot, ""};
+      }
+      for (const int level : {0, 1, 2, 3}) {
+        ImGui::SameLine();
+        ImGui::RadioButton(bot::toString(static_cast<bot::Level>(level)), &options.bot_level,
+                           level);
+      }
+    }
     tableOptions(options);
   }
   ImGui::Separator();

@@ -11,9 +11,11 @@ namespace pool::ui {
 
 /// What the player picked in the lobby.
 struct LobbyChoice {
-  enum class Kind : std::uint8_t { Play, Spectate, Cancel } kind = Kind::Play;
+  /// Play: a seat; PlayBot: a seat at the first free table and a bot of the options' level in
+  /// the other; Spectate: watch; Cancel: stop waiting for a match to join.
+  enum class Kind : std::uint8_t { Play, PlayBot, Spectate, Cancel } kind = Kind::Play;
   std::string match;  ///< empty: the first free table (Play) or the first match in play
-                      ///< (Spectate); Cancel: stop waiting for a match to join
+                      ///< (Spectate)
 };
 
 /// How a fresh table is to be played, as the lobby's options set it: game, race, breaks, shot
@@ -24,6 +26,7 @@ struct TableOptions {
   bool winner_breaks = false;
   int shot_clock = 0;  ///< s; 0: off
   bool practice = false;
+  int bot_level = 1;  ///< "Play the bot": 0 beginner, 1 club (pool-bot's default), 2 league, 3 pro
 
   /// As the match settings a seat request carries (checked by protocol::checkSettings).
   protocol::MatchSettings settings() const;

@@ -32,6 +32,7 @@
 #include "client/render/renderer.h"
 #include "client/render/scene.h"
 #include "client/ui/aim_screenshot.h"
+#include "client/ui/bot_opponent.h"
 #include "client/ui/eight_ball_room_ui.h"
 #include "client/ui/hud.h"
 #include "client/ui/lobby_screen.h"
@@ -133,6 +134,8 @@ class WindowApp {
       table_options_.practice = true;
       session_.setTableSettings(table_options_.settings());
       session_.play("new");
+    } else if (const auto level = bot::levelFromString(options.bot); level) {
+      playBot(*level);
     } else if (options.play) {
       session_.play(options.match);
     }
@@ -466,6 +469,9 @@ class WindowApp {
           session_.setTableSettings(table_options_.settings());
           session_.play(choice->match);
         }
+        if (choice->kind == LobbyChoice::Kind::PlayBot) {
+          playBot(static_cast<bot::Level>(table_options_.bot_level));
+        }
         if (choice->kind == LobbyChoice::Kind::Spectate) session_.spectate(choice->match);
         if (choice->kind == LobbyChoice::Kind::Cancel) session_.leave();
       }
@@ -647,6 +653,27 @@ class WindowApp {
     addNote({"concession sent", false});
   }
 
+  /// Asks for a fresh table of the lobby's options; a bot of `level` takes its other seat once
+  /// this window holds its own (startBotOpponent).
+  void playBot(bot::Level level) {
+    table_options_.practice = false;
+    session_.setTableSettings(table_options_.settings());
+    session_.play("new");
+    bot_wanted_ = level;
+    addNote({"a table for you and the " + botOpponentName(level) + "...", false});
+  }
+
+  /// Starts the bot wanted, at the match this window was seated in.
+  void startBotOpponent() {
+    if (!bot_wanted_) return;
+    if (session_.stage() == app::SessionStage::Lobby) bot_wanted_.reset();  // the player cancelled
+    if (!bot_wanted_ || session_.stage() != app::SessionStage::Playing) return;
+    const std::string why = bot_opponent_.start(options_.domain, session_.match(), *bot_wanted_);
+    addNote({why.empty() ? "the " + botOpponentName(*bot_wanted_) + " is coming to the table" : why,
+             !why.empty()});
+    bot_wanted_.reset();
+  }
+
   /// R, N, F11; Q, then Y or Esc.
   void requests() {
     const client::MatchView* v = session_.view();
@@ -686,6 +713,7 @@ class WindowApp {
     followTurn();
     applyScript();
     requests();
+    startBotOpponent();
     controls_.setBallDragging(session_.practiceTable());
     if (const auto move = controls_.takeBallMove(); move && session_.view()) {
       practice_.moveBall(*session_.view(), move->first, move->second);
@@ -730,8 +758,10 @@ class WindowApp {
   std::optional<app::ScriptPlayer> script_;
   ScriptMouse script_mouse_;
   int aiming_seat_ = -1;
-  std::uint32_t aimed_revision_ = 0;  ///< the state the aim started from (practice tables)
-  TableOptions table_options_;        ///< the lobby's options for a fresh table
+  std::uint32_t aimed_revision_ = 0;      ///< the state the aim started from (practice tables)
+  TableOptions table_options_;            ///< the lobby's options for a fresh table
+  std::optional<bot::Level> bot_wanted_;  ///< a bot to start once this window holds its seat
+  BotOpponent bot_opponent_;
   PracticeDesk practice_;
   std::deque<app::SessionNote> notes_;
   std::vector<std::string> hud_texts_;  ///< the HUD's texts of the last frame (--json)

@@ -35,6 +35,9 @@ struct WindowOptions {
   std::string quality;
   /// Open a practice table of this window's own at once (`pool-client --practice`).
   bool practice = false;
+  /// Play a bot of this level ("beginner", "club", "league", "pro") at the first free table at
+  /// once (`pool-client --bot LEVEL`): the window starts pool-bot and stops it when it closes.
+  std::string bot;
   /// Where a practice table's F5 saves and F6 loads a scenario file.
   std::string practice_file = "practice.json";
 };

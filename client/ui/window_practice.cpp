@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "client/app/practice_layout.h"
+#include "client/bot/ai/bot_level.h"
 #include "client/bot/ai/break_shot.h"
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/shot_command.h"
@@ -175,7 +176,10 @@ app::SessionNote PracticeDesk::advise(const app::MatchSession& session,
     return {"the bot advises while you aim", true};
   bot::TableView table = bot::tableViewOf(view_);
   table.rules.game = v->settings.game;
-  bot::ShotPlanner planner(table);
+  // The advice of the strongest level: it weighs each pot by how often a professional's stroke
+  // would make it, and the leave by the next pot's chances (the flawless planner would call any
+  // pot that exists, however thin).
+  bot::ShotPlanner planner(table, bot::plannerOptionsFor(bot::Level::Pro, table.radius()));
   // A fresh rack wants a break, whatever the practice table's own state says.
   const rules::GameState state = bot::looksRacked(table, v->balls)
                                      ? rules::newRack(std::max(0, v->shooter))
@@ -183,7 +187,7 @@ app::SessionNote PracticeDesk::advise(const app::MatchSession& session,
   const bot::PlannedShot plan = planner.plan(v->balls, state);
   if (plan.cue_ball_at) controls.moveCueBall(*plan.cue_ball_at);
   controls.setYaw(plan.cue.yaw);
-  return {"the bot would play: " + bot::describe(plan), false};
+  return {"the pro bot would play: " + bot::describe(plan), false};
 }
 
 void PracticeDesk::drawPhysicsPane(const client::MatchView& view, std::vector<std::string>& texts) {

@@ -40,6 +40,7 @@ constexpr Domain kWindowNineBall = static_cast<Domain>(87);
 constexpr Domain kWindowTenBall = static_cast<Domain>(88);
 constexpr Domain kWindowRematch = static_cast<Domain>(89);
 constexpr Domain kWindowTab = static_cast<Domain>(62);  // 63: the server's concession attacks
+constexpr Domain kWindowBot = static_cast<Domain>(66);
 
 class WindowClientTest : public ClientIntegrationTest {
  protected:
@@ -366,6 +367,57 @@ TEST_F(WindowClientTest, ARematchAgainstTheStayingBotStartsASecondGame) {
     conceded = conceded || (st.phase == MatchPhase::Over && st.winner == 0);
   }
   EXPECT_TRUE(conceded) << "the first game did not end with the bot winning it";
+}
+
+// "Play the bot" (pool-client --bot LEVEL, the lobby's button): the window opens a fresh table, and
+// once it sits there starts a pool-bot of that level for the other seat, which plays; closing the
+// window stops the bot (its seat goes away from the table, and no such process is left).
+TEST_F(WindowClientTest, ABotOfTheChosenLevelTakesTheOtherSeatPlaysAndGoesWithTheWindow) {
+  open(kWindowBot, "window-bot");
+  MatchRecorder recorder(kWindowBot);
+  startServer({"--fast"});
+  // If the window breaks, it plays Enter's touch shot (0.3 m/s: the cue ball stops short of the
+  // rack, a foul), so the turn passes to the bot, which answers with a command whatever the rules
+  // offer it; if the bot breaks, it has shot already. The window stays until it is closed below.
+  startWindow({"--bot", "pro", "--name", "Ada"},
+              "wait table\nwait aiming\ndown ENTER\nup ENTER\nframes 1000000\n");
+  std::string match;
+  int bot_seat = -1;
+  const bool seated = recorder.pump(90s, [&] {
+    for (const client::LobbyEntry* e : recorder.client().lobby().entries()) {
+      const std::string& m = e->match;
+      const MatchView* v = recorder.latest(m);
+      if (!v || v->seats[0].name.empty() || v->seats[1].name.empty()) continue;
+      for (int s = 0; s < 2; ++s) {
+        if (v->seats[static_cast<std::size_t>(s)].name == "Pro bot" &&
+            v->seats[static_cast<std::size_t>(1 - s)].name == "Ada") {
+          match = m;
+          bot_seat = s;
+        }
+      }
+    }
+    return bot_seat >= 0;
+  });
+  ASSERT_TRUE(seated) << "no table of Ada and the Pro bot\n" << windowErr() << logs();
+  const bool bot_shot =
+      recorder.pump(90s, [&] { return recorder.nthCommand(match, bot_seat, 1) != nullptr; });
+  // The window is closed as a desktop closes it: SIGTERM to pool-client itself (the process whose
+  // command starts with it, not the shell, timeout or xvfb-run around it).
+  std::system(
+      ("pkill -TERM -f -- '^[^ ]*/pool-client --domain " + std::to_string(kWindowBot) + " '")
+          .c_str());
+  const int status = windowExit(recorder);
+  ASSERT_TRUE(bot_shot) << "the bot never shot\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  // The window stopped its bot: the seat shows it gone, and no pool-bot of this domain is left.
+  EXPECT_TRUE(recorder.pump(30s, [&] {
+    const MatchView* v = recorder.latest(match);
+    return v && !v->seats[static_cast<std::size_t>(bot_seat)].connected;
+  })) << "the bot stayed at the table after the window closed";
+  // "[p]ool-bot": the pattern does not match the shell that runs pgrep with it.
+  const std::string pattern = "[p]ool-bot --domain " + std::to_string(kWindowBot) + " ";
+  EXPECT_NE(std::system(("pgrep -f -- '" + pattern + "' >/dev/null").c_str()), 0)
+      << "a pool-bot outlived its window";
 }
 
 // Tab in a game: the HUD drawn is one line saying how to bring the panes back, then, Tab again,
