@@ -16,33 +16,37 @@ Eigen::Quaterniond numberTowardViewer() {
   return Eigen::Quaterniond(r);
 }
 
-Result<Scene> tableScene(const std::string& table) {
-  auto spec = pool::table::loadTableSpec(table);
-  if (!spec) return Result<Scene>::fail(spec.error());
-  auto geometry = pool::table::loadTableGeometry(*spec);
-  if (!geometry) return Result<Scene>::fail(geometry.error());
+Scene tableScene(const game::LoadedTable& table) {
   Scene scene;
-  scene.geometry = std::move(*geometry);
-  scene.ball_radius = spec->params.ball_radius;
-  scene.cushion_width = spec->cushion_width;
-  return Result<Scene>::ok(std::move(scene));
+  scene.geometry = table.geometry;
+  scene.ball_radius = table.spec.params.ball_radius;
+  scene.cushion_width = table.spec.cushion_width;
+  return scene;
+}
+
+Result<Scene> tableScene(const std::string& table) {
+  auto loaded = game::loadTable(table);
+  if (!loaded) return Result<Scene>::fail(loaded.error());
+  return Result<Scene>::ok(tableScene(*loaded));
+}
+
+Scene rackScene(const game::LoadedTable& table) {
+  Scene scene = tableScene(table);
+  const double r = scene.ball_radius;
+  const Eigen::Vector2d head = table.context.spots.head_spot;
+  const Eigen::Quaterniond facing = numberTowardViewer();
+  scene.balls.push_back({0, Eigen::Vector3d(head.x(), head.y(), r), facing});
+  for (const table::BallPlacement& b :
+       table::rackBalls(table::RackType::EightBall, table.spec, r, 0)) {
+    scene.balls.push_back({b.id, Eigen::Vector3d(b.pos.x(), b.pos.y(), r), facing});
+  }
+  return scene;
 }
 
 Result<Scene> rackScene(const std::string& table) {
-  using namespace pool::table;
-  auto spec = loadTableSpec(table);
-  if (!spec) return Result<Scene>::fail(spec.error());
-  auto empty = tableScene(table);
-  if (!empty) return empty;
-  Scene scene = std::move(*empty);
-  const double r = scene.ball_radius;
-  const Eigen::Vector2d head = spotsFor(*spec).head_spot;
-  const Eigen::Quaterniond facing = numberTowardViewer();
-  scene.balls.push_back({0, Eigen::Vector3d(head.x(), head.y(), r), facing});
-  for (const BallPlacement& b : rackBalls(RackType::EightBall, *spec, r, 0)) {
-    scene.balls.push_back({b.id, Eigen::Vector3d(b.pos.x(), b.pos.y(), r), facing});
-  }
-  return Result<Scene>::ok(std::move(scene));
+  auto loaded = game::loadTable(table);
+  if (!loaded) return Result<Scene>::fail(loaded.error());
+  return Result<Scene>::ok(rackScene(*loaded));
 }
 
 }  // namespace pool::render

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "game/loaded_table.h"
 #include "table/table_geometry.h"
 
 namespace pool::render {
@@ -32,11 +33,16 @@ struct Scene {
 /// -y), its band axis (body z) along the table.
 Eigen::Quaterniond numberTowardViewer();
 
-/// The table `table` (a spec name, e.g. "wpa-9ft") with no balls.
+/// The loaded table `table` with no balls.
+Scene tableScene(const game::LoadedTable& table);
+/// The table named `table` (a spec name, e.g. "wpa-9ft"), loaded through the game kit, with no
+/// balls.
 Result<Scene> tableScene(const std::string& table);
 
 /// A freshly racked 8-ball table (rack seed 0) with the cue ball on the head spot, every ball
 /// turned to show its number to the overview camera.
+Scene rackScene(const game::LoadedTable& table);
+/// As above, of the table named `table`.
 Result<Scene> rackScene(const std::string& table = "wpa-9ft");
 
 }  // namespace pool::render

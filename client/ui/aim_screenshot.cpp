@@ -75,17 +75,17 @@ bool placeBalls(const std::vector<double>& triples, const game::LoadedTable& vie
 
 int runAimScreenshot(const render::ScreenshotOptions& options) {
   auto view = game::loadTable("wpa-9ft");
-  auto scene = render::rackScene("wpa-9ft");
-  if (!view || !scene) {
-    std::cerr << "scene: " << (view ? scene.error() : view.error()) << '\n';
+  if (!view) {
+    std::cerr << "scene: " << view.error() << '\n';
     return 1;
   }
+  render::Scene scene = render::rackScene(*view);
   if (options.aim.cue_at.size() == 2) {
-    scene->balls.front().pos.head<2>() =
+    scene.balls.front().pos.head<2>() =
         Eigen::Vector2d(options.aim.cue_at[0], options.aim.cue_at[1]);
   }
-  if (!placeBalls(options.aim.balls, *view, *scene)) return 2;
-  const Eigen::Vector3d cue = scene->balls.front().pos;
+  if (!placeBalls(options.aim.balls, *view, scene)) return 2;
+  const Eigen::Vector3d cue = scene.balls.front().pos;
   const Eigen::Vector2d apex = view->context.spots.foot_spot - cue.head<2>();
   app::AimState aim;
   aim.yaw = options.aim.yaw_deg ? *options.aim.yaw_deg * kDeg : std::atan2(apex.y(), apex.x());
@@ -93,12 +93,12 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
   aim.tip_height = options.aim.tip_height;
   aim.elevation = options.aim.elevation_deg * kDeg;
   aim.power = options.aim.power;
-  const auto balls = physicsBalls(*scene);
+  const auto balls = physicsBalls(scene);
   const auto prediction = app::predictAim(cue.head<2>(), aim.yaw, balls, *view);
   const Eigen::Vector3d ghost(prediction.contact.x(), prediction.contact.y(), view->radius());
   // The eye stays above the cue's drawn line, as a player's over the cue.
   const render::CuePlacement placed =
-      render::placeCue(cueAimOf(aim, cue), render::cueObstaclesOf(*scene, vec(cue)));
+      render::placeCue(cueAimOf(aim, cue), render::cueObstaclesOf(scene, vec(cue)));
   // What lies ahead of the ghost ball: the object ball, and the pocket it heads for.
   std::optional<Eigen::Vector3d> object, pocket;
   if (prediction.ball) {
@@ -141,7 +141,7 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
   const render::Camera camera = cameraOf(rig.view());
   const int frames = options.frames;
   return render::renderScreenshot(
-      options, *scene, camera,
+      options, scene, camera,
       [&](render::Renderer& renderer) {
         renderer.setCue(cueAimOf(aim, cue));
         renderer.setGhost(vec(ghost));

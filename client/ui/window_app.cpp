@@ -792,13 +792,9 @@ int runWindow(const WindowOptions& options, const std::atomic<bool>& stop) {
     std::cerr << "table: " << view.error() << '\n';
     return 2;
   }
-  auto scene = render::rackScene(options.table);
-  if (!scene) {
-    std::cerr << "scene: " << scene.error() << '\n';
-    return 2;
-  }
+  const render::Scene scene = render::rackScene(*view);
   try {
-    WindowApp app(options, std::move(*view), *scene);
+    WindowApp app(options, std::move(*view), scene);
     if (script) app.setScript(std::move(*script));
     return app.run(stop);
   } catch (const net::DdsError& e) {

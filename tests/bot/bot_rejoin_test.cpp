@@ -113,9 +113,11 @@ TEST_F(BotRejoinTest, ABotStalledPastItsLeaseTakesItsSeatBackAndPlaysOn) {
   // A race to two racks: racks differ per match, and a first rack that ends before alice's turn
   // comes (her opponent runs it out, or pots the 8 early) leaves none to interrupt; the second
   // rack gives her one.
+  // Bots of skill 0.9, as above: the match must end within the wait below (at 0.8 it once ran
+  // past the bots' own 90 s beside the sanitized suite).
   startServer({"--fast", "--grace", "30", "--race", "2"});
-  ChildProcess* alice = &startBot("alice", 9, {"--think", "0.2"});
-  ChildProcess& bob = startBot("bob", 10, {"--think", "0.2"});
+  ChildProcess* alice = &startBot("alice", 9, {"--skill", "0.9", "--think", "0.2"});
+  ChildProcess& bob = startBot("bob", 10, {"--skill", "0.9", "--think", "0.2"});
   ASSERT_TRUE(untilTurnOf(recorder, "alice", 1))
       << (stalledOnLayout(recorder) ? "stalled: the physics refuses a layout it left"
                                     : "no turn of alice to interrupt\n" + logs());
