@@ -63,7 +63,7 @@ class ServerTest : public ::testing::Test {
   void start(std::uint32_t domain, std::vector<std::string> args,
              const std::string& log_level = "debug") {
     pool::test::claimDomain(claim_, domain);
-    ASSERT_TRUE(claim_->claimed()) << claim_->refusal();
+    pool::test::requireClaim(*claim_);
     args.insert(args.end(), {"--server-id", "t", "--log-level", log_level});
     server_ = std::make_unique<ServerProcess>(domain, args);
     ASSERT_GT(server_->pid(), 0);

@@ -93,7 +93,7 @@ class ClientIntegrationTest : public ::testing::Test {
   void open(Domain domain, const std::string& tag) {
     domain_ = domain;
     pool::test::claimDomain(claim_, domain);
-    ASSERT_TRUE(claim_->claimed()) << claim_->refusal();
+    pool::test::requireClaim(*claim_);
     scratch_ = std::make_unique<ScratchDir>(tag);
     // The servers' default database goes to the scratch folder, never the real home.
     ::setenv("XDG_DATA_HOME", scratch_->file("data").c_str(), 1);

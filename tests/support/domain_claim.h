@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace pool::test {
@@ -50,8 +51,15 @@ class DomainClaim {
   bool claimed_ = false;
 };
 
+/// Ends the test when `claim` did not get its domain: throws, which GoogleTest reports as the
+/// test's failure with the refusal and stops the test there (an assertion inside a fixture's
+/// helper would return from the helper only, and the test would run on without its fixture).
+inline void requireClaim(const DomainClaim& claim) {
+  if (!claim.claimed()) throw std::runtime_error(claim.refusal());
+}
+
 /// Makes `held` claim `domain`: kept when it already does (a restart within one test), else
-/// released and claimed afresh. The fixtures assert `held->claimed()`.
+/// released and claimed afresh. The fixtures then requireClaim.
 inline void claimDomain(std::unique_ptr<DomainClaim>& held, std::uint32_t domain) {
   if (held && held->domain() == domain) return;
   held.reset();
