@@ -16,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/program_dir.h"
+
 namespace pool::ui {
 namespace {
 
@@ -23,9 +25,8 @@ namespace {
 // empty when there is none.
 std::string botProgram() {
   std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const auto beside = self.parent_path() / "pool-bot";
+  if (const auto bin = programDir()) {
+    const auto beside = *bin / "pool-bot";
     if (std::filesystem::is_regular_file(beside, ec)) return beside.string();
   }
   const char* path = std::getenv("PATH");
@@ -103,11 +104,7 @@ void BotOpponent::stop() {
   kill(pid_, SIGTERM);
   // A bot leaves its seat and exits within a few frames of SIGTERM; one that does not is killed.
   for (int i = 0; i < 40; ++i) {
-    int status = 0;
-    if (waitpid(pid_, &status, WNOHANG) == pid_) {
-      pid_ = -1;
-      return;
-    }
+    if (!running()) return;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   kill(pid_, SIGKILL);

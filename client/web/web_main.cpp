@@ -11,6 +11,7 @@
 #include "client/net/game_client.h"
 #include "client/web/gateway.h"
 #include "client/web/web_server.h"
+#include "core/program_dir.h"
 
 namespace {
 
@@ -18,7 +19,7 @@ namespace {
 /// installed.
 std::filesystem::path defaultRoot() {
   std::error_code ec;
-  const auto bin = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
+  const auto bin = pool::programDir().value_or(std::filesystem::path());
   for (const auto& candidate : {bin / ".." / "web", bin / ".." / "share" / "pool" / "web"}) {
     if (std::filesystem::exists(candidate / "index.html", ec)) return candidate.lexically_normal();
   }

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <system_error>
 
+#include "core/program_dir.h"
+
 namespace pool::table {
 namespace {
 
@@ -16,10 +18,8 @@ bool looksLikeAssets(const fs::path& dir) {
 }
 
 std::optional<fs::path> besideExecutable() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec || exe.empty()) return std::nullopt;
-  return assetsBesideProgram(exe.parent_path());
+  const auto bin = programDir();
+  return bin ? assetsBesideProgram(*bin) : std::nullopt;
 }
 
 }  // namespace
