@@ -1,15 +1,20 @@
-// Flags over file over defaults, with CLI11 and nlohmann-json.
+// pool-server's settings in one table: each a flag, a --config file key and a config field;
+// flags over file over defaults, with CLI11 and nlohmann-json.
 #include "server/server_config.h"
 
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <type_traits>
+#include <vector>
 
 namespace pool::server {
 
@@ -46,114 +51,150 @@ std::string readFile(const std::string& path, bool& ok) {
   return text.str();
 }
 
+/// One thing pool-server can be told: its name ("--<key>" on the command line, "<key>" or its
+/// underscore spelling in a --config file), its help line, and the config field it sets.
+struct Setting {
+  std::function<void(CLI::App&, ServerConfig&)> add_flag;        ///< the flag, into a config
+  std::function<void(const Json&, ServerConfig&)> take;          ///< from a file; null: flag only
+  std::function<void(const ServerConfig&, ServerConfig&)> copy;  ///< one config's value to another
+  std::string key;
+};
+
+enum class Where : std::uint8_t { FlagAndFile, FlagOnly };
+
+template <class T>
+Setting setting(const char* key, T ServerConfig::*field, const char* help,
+                Where where = Where::FlagAndFile) {
+  Setting s;
+  s.key = key;
+  s.add_flag = [=](CLI::App& app, ServerConfig& c) {
+    const std::string name = std::string("--") + key;
+    if constexpr (std::is_same_v<T, bool>) {
+      app.add_flag(name, c.*field, help);
+    } else {
+      app.add_option(name, c.*field, help);
+    }
+  };
+  if (where == Where::FlagAndFile) {
+    s.take = [=](const Json& doc, ServerConfig& c) { take(doc, key, c.*field); };
+  }
+  s.copy = [=](const ServerConfig& from, ServerConfig& to) { to.*field = from.*field; };
+  return s;
+}
+
+/// Every setting, in the order of --help.
+const std::vector<Setting>& settings() {
+  using C = ServerConfig;
+  static const std::vector<Setting> table = {
+      setting("domain", &C::domain, "DDS domain id (0-232)"),
+      setting("tables", &C::tables, "free tables kept open at all times"),
+      setting("max-matches", &C::max_matches,
+              "matches open at once, at most, free tables included (default 256)"),
+      setting("snapshot-hz", &C::snapshot_hz, "frames per simulated second"),
+      setting("fast", &C::fast, "publish frames unpaced (tests)"),
+      setting("server-id", &C::server_id,
+              "prefix of match ids, 1-24 of [A-Za-z0-9._-] (default: random hex)"),
+      setting("grace", &C::grace, "seconds a vanished player's seat is kept"),
+      setting("name", &C::name, "this server's name in logs"),
+      setting("table", &C::table, "table spec name or path"),
+      setting("log-level", &C::log_level, "trace, debug, info, warn, error, critical, off"),
+      setting("db", &C::db,
+              "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)"),
+      setting("game", &C::game, "game of the tables this server opens: 8, 9 or 10"),
+      setting("race", &C::race, "racks to win a match (1-15)"),
+      setting("breaks", &C::breaks, "who breaks the next rack: alternate or winner"),
+      setting("shot-clock", &C::shot_clock, "off, or seconds per shot (5-600)"),
+      setting("replay", &C::replay,
+              "play stored match MATCH again as a new match for spectators (stores nothing)",
+              Where::FlagOnly),
+      setting("admin-socket", &C::admin_socket,
+              "the operator's Unix socket, owner-only (default <db>.sock); see pool-server "
+              "admin --help"),
+  };
+  return table;
+}
+
+Check<> refuse(const char* code, std::string sentence) {
+  return Check<>::refuse(code, std::move(sentence));
+}
+
 }  // namespace
 
-std::string applyConfigJson(const std::string& text, ServerConfig& c) {
+Check<> applyConfigJson(const std::string& text, ServerConfig& c) {
   const Json doc = Json::parse(text, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object()) return "not a JSON object";
+  if (doc.is_discarded() || !doc.is_object()) return refuse("not_an_object", "not a JSON object");
   try {
-    take(doc, "domain", c.domain);
-    take(doc, "tables", c.tables);
-    take(doc, "max-matches", c.max_matches);
-    take(doc, "snapshot-hz", c.snapshot_hz);
-    take(doc, "fast", c.fast);
-    take(doc, "server-id", c.server_id);
-    take(doc, "grace", c.grace);
-    take(doc, "name", c.name);
-    take(doc, "table", c.table);
-    take(doc, "log-level", c.log_level);
-    take(doc, "db", c.db);
-    take(doc, "admin-socket", c.admin_socket);
-    take(doc, "game", c.game);
-    take(doc, "race", c.race);
-    take(doc, "breaks", c.breaks);
-    take(doc, "shot-clock", c.shot_clock);
+    for (const Setting& s : settings()) {
+      if (s.take) s.take(doc, c);
+    }
   } catch (const std::runtime_error& e) {
-    return e.what();
+    return refuse("wrong_type", e.what());
   }
-  return {};
+  return Check<>::pass();
 }
 
-std::string checkConfig(const ServerConfig& c) {
-  if (c.domain > 232) return "domain: must be 0-232";
-  if (c.max_matches < 1 || c.max_matches > 10000) return "max-matches: must be 1-10000";
+Check<> checkConfig(const ServerConfig& c) {
+  if (c.domain > 232) return refuse("bad_domain", "domain: must be 0-232");
+  if (c.max_matches < 1 || c.max_matches > 10000)
+    return refuse("bad_max_matches", "max-matches: must be 1-10000");
   if (c.tables < 0 || c.tables > c.max_matches) {
-    return "tables: must be 0-" + std::to_string(c.max_matches) + " (at most max-matches)";
+    return refuse("bad_tables",
+                  "tables: must be 0-" + std::to_string(c.max_matches) + " (at most max-matches)");
   }
-  if (!(c.snapshot_hz > 0.0 && c.snapshot_hz <= 1000.0)) return "snapshot-hz: must be in (0, 1000]";
-  if (!(c.grace >= 0.0)) return "grace: must be >= 0";
+  if (!(c.snapshot_hz > 0.0 && c.snapshot_hz <= 1000.0))
+    return refuse("bad_snapshot_hz", "snapshot-hz: must be in (0, 1000]");
+  if (!(c.grace >= 0.0)) return refuse("bad_grace", "grace: must be >= 0");
   // Empty: drawn at random.
   if (!c.server_id.empty() && !protocol::validServerId(c.server_id)) {
-    return "server-id: 1-" + std::to_string(kMaxServerIdLength) +
-           " letters, digits, '.', '_' or '-' (match ids are \"<server id>-<n>\" in 39 bytes)";
+    return refuse("bad_server_id",
+                  "server-id: 1-" + std::to_string(kMaxServerIdLength) +
+                      " letters, digits, '.', '_' or '-' (match ids are \"<server id>-<n>\" in "
+                      "39 bytes)");
   }
-  if (std::string why; !matchSettingsOf(c, &why)) return why;
+  if (auto settings = matchSettingsOf(c); !settings)
+    return refuse(settings.code().c_str(), settings.error());
   if (spdlog::level::from_str(c.log_level) == spdlog::level::off && c.log_level != "off") {
-    return "log-level: '" + c.log_level +
-           "' is not one of trace, debug, info, warn, error, "
-           "critical, off";
+    return refuse("bad_log_level", "log-level: '" + c.log_level +
+                                       "' is not one of trace, debug, info, warn, error, "
+                                       "critical, off");
   }
-  return {};
+  return Check<>::pass();
 }
 
-std::optional<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c, std::string* why) {
-  auto refuse = [why](std::string reason) {
-    if (why) *why = std::move(reason);
-    return std::optional<protocol::MatchSettings>{};
-  };
+Result<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c) {
+  using R = Result<protocol::MatchSettings>;
   protocol::MatchSettings s;
   const auto game = rules::gameOfNumber(c.game);
-  if (!game) return refuse("game: must be 8, 9 or 10");
+  if (!game) return R::fail("bad_game", "game: must be 8, 9 or 10");
   s.game = *game;
   s.race_to = c.race;
   const auto breaks = protocol::breakOrderOf(c.breaks);
-  if (!breaks) return refuse("breaks: must be alternate or winner");
+  if (!breaks) return R::fail("bad_breaks", "breaks: must be alternate or winner");
   s.breaks = *breaks;
+  const std::string clock_reason = "shot-clock: must be off or seconds per shot (5-600)";
   if (c.shot_clock != "off") {
     char* end = nullptr;
     s.shot_clock = std::strtod(c.shot_clock.c_str(), &end);
     if (c.shot_clock.empty() || end != c.shot_clock.c_str() + c.shot_clock.size() ||
         s.shot_clock == 0.0) {
-      return refuse("shot-clock: must be off or seconds per shot (5-600)");
+      return R::fail("bad_shot_clock", clock_reason);
     }
   }
-  if (std::string reason = protocol::checkSettings(s); !reason.empty()) {
-    return refuse(reason.rfind("race", 0) == 0
-                      ? "race: must be 1-" + std::to_string(protocol::kMaxRace)
-                      : "shot-clock: must be off or seconds per shot "
-                        "(5-600)");
+  if (auto ok = protocol::checkSettings(s); !ok) {
+    if (ok.code() == "bad_race") {
+      return R::fail("bad_race", "race: must be 1-" + std::to_string(protocol::kMaxRace));
+    }
+    return R::fail("bad_shot_clock", clock_reason);
   }
-  return s;
+  return R::ok(s);
 }
 
 ConfigOutcome parseConfig(int argc, const char* const* argv) {
   CLI::App app{"pool-server: the authoritative 8-, 9- and 10-ball match server over Cyclone DDS"};
   ServerConfig flags;
+  for (const Setting& s : settings()) s.add_flag(app, flags);
   std::string config_file;
-  app.add_option("--domain", flags.domain, "DDS domain id (0-232)");
-  app.add_option("--tables", flags.tables, "free tables kept open at all times");
-  app.add_option("--max-matches", flags.max_matches,
-                 "matches open at once, at most, free tables included (default 256)");
-  app.add_option("--snapshot-hz", flags.snapshot_hz, "frames per simulated second");
-  app.add_flag("--fast", flags.fast, "publish frames unpaced (tests)");
   app.add_option("--config", config_file, "JSON file with the same keys; flags win");
-  app.add_option("--server-id", flags.server_id,
-                 "prefix of match ids, 1-24 of [A-Za-z0-9._-] (default: random hex)");
-  app.add_option("--grace", flags.grace, "seconds a vanished player's seat is kept");
-  app.add_option("--name", flags.name, "this server's name in logs");
-  app.add_option("--table", flags.table, "table spec name or path");
-  app.add_option("--log-level", flags.log_level, "trace, debug, info, warn, error, critical, off");
-  app.add_option("--db", flags.db,
-                 "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)");
-  app.add_option("--game", flags.game, "game of the tables this server opens: 8, 9 or 10");
-  app.add_option("--race", flags.race, "racks to win a match (1-15)");
-  app.add_option("--breaks", flags.breaks, "who breaks the next rack: alternate or winner");
-  app.add_option("--shot-clock", flags.shot_clock, "off, or seconds per shot (5-600)");
-  app.add_option("--replay", flags.replay,
-                 "play stored match MATCH again as a new match for spectators (stores nothing)");
-  app.add_option("--admin-socket", flags.admin_socket,
-                 "the operator's Unix socket, owner-only (default <db>.sock); see pool-server "
-                 "admin --help");
   app.footer(
       "Operating a running server: pool-server status | pool-server admin VERB ... "
       "[--db PATH | --socket PATH] (pool-server admin --help)\n");
@@ -167,34 +208,20 @@ ConfigOutcome parseConfig(int argc, const char* const* argv) {
   if (!config_file.empty()) {
     bool ok = false;
     const std::string text = readFile(config_file, ok);
-    std::string error = ok ? applyConfigJson(text, out.config) : "cannot read the file";
-    if (!error.empty()) {
-      std::cerr << "--config " << config_file << ": " << error << "\n";
+    auto applied = ok ? applyConfigJson(text, out.config)
+                      : Check<>::refuse("unreadable", "cannot read the file");
+    if (!applied) {
+      std::cerr << "--config " << config_file << ": " << applied.error() << "\n";
       out.exit_code = 2;
       return out;
     }
   }
   // Flags given on the command line override the file.
-  ServerConfig& c = out.config;
-  if (app.count("--domain")) c.domain = flags.domain;
-  if (app.count("--tables")) c.tables = flags.tables;
-  if (app.count("--max-matches")) c.max_matches = flags.max_matches;
-  if (app.count("--snapshot-hz")) c.snapshot_hz = flags.snapshot_hz;
-  if (app.count("--fast")) c.fast = flags.fast;
-  if (app.count("--server-id")) c.server_id = flags.server_id;
-  if (app.count("--grace")) c.grace = flags.grace;
-  if (app.count("--name")) c.name = flags.name;
-  if (app.count("--table")) c.table = flags.table;
-  if (app.count("--log-level")) c.log_level = flags.log_level;
-  if (app.count("--db")) c.db = flags.db;
-  if (app.count("--replay")) c.replay = flags.replay;
-  if (app.count("--admin-socket")) c.admin_socket = flags.admin_socket;
-  if (app.count("--game")) c.game = flags.game;
-  if (app.count("--race")) c.race = flags.race;
-  if (app.count("--breaks")) c.breaks = flags.breaks;
-  if (app.count("--shot-clock")) c.shot_clock = flags.shot_clock;
-  if (auto error = checkConfig(c); !error.empty()) {
-    std::cerr << error << "\n";
+  for (const Setting& s : settings()) {
+    if (app.count("--" + s.key)) s.copy(flags, out.config);
+  }
+  if (auto ok = checkConfig(out.config); !ok) {
+    std::cerr << ok.error() << "\n";
     out.exit_code = 2;
   }
   return out;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/check.h"
+#include "core/result.h"
 #include "protocol/match_settings.h"
 #include "protocol/server_signature.h"
 
@@ -38,8 +40,7 @@ struct ServerConfig {
 };
 
 /// The table defaults of `config` (game, race, breaks, shot clock), or why they are not valid.
-std::optional<protocol::MatchSettings> matchSettingsOf(const ServerConfig& config,
-                                                       std::string* why = nullptr);
+Result<protocol::MatchSettings> matchSettingsOf(const ServerConfig& config);
 
 /// The outcome of reading the command line: run with `config`, or exit with `exit_code` (help,
 /// or an error already printed).
@@ -48,21 +49,18 @@ struct ConfigOutcome {
   std::optional<int> exit_code;
 };
 
-/// Reads flags (--domain, --tables, --max-matches, --snapshot-hz, --fast, --config FILE,
-/// --server-id, --grace,
-/// --name, --table, --log-level, --db,
-/// --replay, --admin-socket). A --config JSON file gives values under the flags' names
-/// (without dashes; "snapshot-hz" or "snapshot_hz"); flags given on the command line win.
-/// Reads flags (--domain, --tables, --snapshot-hz, --fast, --config FILE, --server-id, --grace,
-/// --name, --table, --log-level, --db, --replay, --game, --race, --breaks, --shot-clock). A
-/// --config JSON file gives values under the flags' names (without dashes; "snapshot-hz" or
-/// "snapshot_hz"); flags given on the command line win.
+/// Reads the flags of every setting (server_config.cpp's table: --domain, --tables, --max-matches,
+/// --snapshot-hz, --fast, --server-id, --grace, --name, --table, --log-level, --db, --game,
+/// --race, --breaks, --shot-clock, --replay, --admin-socket) and --config FILE. The JSON file
+/// gives values under the flags' names (without dashes; "snapshot-hz" or "snapshot_hz"; not
+/// --replay); flags given on the command line win.
 ConfigOutcome parseConfig(int argc, const char* const* argv);
 
-/// Applies JSON `text` onto `config`, naming the key in the error; empty on success.
-std::string applyConfigJson(const std::string& text, ServerConfig& config);
+/// Applies JSON `text` onto `config`, or refuses it naming the key ("not_an_object",
+/// "wrong_type").
+Check<> applyConfigJson(const std::string& text, ServerConfig& config);
 
-/// Range checks; empty when fine, else "<key>: <reason>".
-std::string checkConfig(const ServerConfig& config);
+/// Range checks: refuses with "<key>: <reason>".
+Check<> checkConfig(const ServerConfig& config);
 
 }  // namespace pool::server

@@ -48,7 +48,7 @@ std::optional<pool::protocol::MatchSettings> tableSettings(const Flags& flags, s
   s.race_to = flags.race;
   s.breaks = *breaks;
   s.shot_clock = flags.shot_clock;
-  if (std::string reason = pool::protocol::checkSettings(s); !reason.empty()) why = reason;
+  if (auto reason = pool::protocol::checkSettings(s); !reason) why = reason.error();
   return s;
 }
 

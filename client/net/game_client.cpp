@@ -48,49 +48,54 @@ void GameClient::note(const std::string& line, bool is_problem) {
   }
 }
 
-std::string GameClient::checkServer(const protocol::SealedSample& sample) {
-  if (auto why = protocol::sealProblem(sample); !why.empty()) return why;
+Check<> GameClient::checkServer(const protocol::SealedSample& sample) {
+  if (auto ok = protocol::checkSeal(sample); !ok) return ok;
   const std::string server = escapedForLog(sample.server);
   switch (pins_.check(sample.server, sample.server_key)) {
     case PinCheck::Same:
-      return {};
+      return Check<>::pass();
     case PinCheck::FirstSight:
       note("server '" + server + "': key " + protocol::fingerprint(sample.server_key) +
                " pinned at first sight" +
                (options_.server_pins.empty() ? "" : " (" + options_.server_pins.string() + ")"),
            false);
       if (!pins_.fileProblem().empty()) note("server keys: " + pins_.fileProblem());
-      return {};
+      return Check<>::pass();
     case PinCheck::Changed:
       break;
     case PinCheck::Refused:
-      return std::string(protocol::toString(sample.kind)) + " from server '" + server +
-             "' dropped: not a valid server id";
+      return Check<>::refuse("bad_server_id", std::string(protocol::toString(sample.kind)) +
+                                                  " from server '" + server +
+                                                  "' dropped: not a valid server id");
   }
   const auto* pinned = pins_.pinned(sample.server);
-  return std::string(protocol::toString(sample.kind)) + " from server '" + server +
-         "' dropped: signed by key " + protocol::fingerprint(sample.server_key) +
-         ", but the key pinned for that server is " +
-         protocol::fingerprint(std::span<const std::uint8_t>(pinned->data(), pinned->size())) +
-         " (the server's key changed: if its database was replaced on purpose, "
-         "forget the old key with --forget-server-key " +
-         server + ")";
+  return Check<>::refuse(
+      "key_changed",
+      std::string(protocol::toString(sample.kind)) + " from server '" + server +
+          "' dropped: signed by key " + protocol::fingerprint(sample.server_key) +
+          ", but the key pinned for that server is " +
+          protocol::fingerprint(std::span<const std::uint8_t>(pinned->data(), pinned->size())) +
+          " (the server's key changed: if its database was replaced on purpose, "
+          "forget the old key with --forget-server-key " +
+          server + ")");
 }
 
-std::string GameClient::impossibleJump(const std::string& match, const char* what,
-                                       std::uint32_t revision, std::uint32_t shot_number) const {
+Check<> GameClient::checkJump(const std::string& match, const char* what, std::uint32_t revision,
+                              std::uint32_t shot_number) const {
   const MatchView* last = state(match);
-  if (!last) return {};
+  if (!last) return Check<>::pass();
   const std::string where = std::string(what) + " of " + escapedForLog(match) + " dropped: ";
   if (revision > last->revision && revision - last->revision > kMaxRevisionJump) {
-    return where + "revision " + std::to_string(revision) + " after " +
-           std::to_string(last->revision) + " is an impossible jump";
+    return Check<>::refuse("revision_jump", where + "revision " + std::to_string(revision) +
+                                                " after " + std::to_string(last->revision) +
+                                                " is an impossible jump");
   }
   if (shot_number > last->shot_number && shot_number - last->shot_number > kMaxShotJump) {
-    return where + "shot " + std::to_string(shot_number) + " after " +
-           std::to_string(last->shot_number) + " is an impossible jump";
+    return Check<>::refuse("shot_jump", where + "shot " + std::to_string(shot_number) + " after " +
+                                            std::to_string(last->shot_number) +
+                                            " is an impossible jump");
   }
-  return {};
+  return Check<>::pass();
 }
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
@@ -322,9 +327,8 @@ void GameClient::pollStates(std::vector<ClientEvent>& out) {
     }
     auto& [count, dropped_older] = taken[view->match];
     ++count;
-    if (auto why = impossibleJump(view->match, "MatchState", view->revision, view->shot_number);
-        !why.empty()) {
-      problem(why);
+    if (auto ok = checkJump(view->match, "MatchState", view->revision, view->shot_number); !ok) {
+      problem(ok.error());
       continue;
     }
     // Only forward: an older state, genuine and signed (a replay), would turn the match back.
@@ -362,9 +366,8 @@ void GameClient::pollResults(std::vector<ClientEvent>& out) {
       problem(report.error());
       continue;
     }
-    if (auto why = impossibleJump(report->match, "ShotResult", 0, report->shot_number);
-        !why.empty()) {
-      problem(why);
+    if (auto ok = checkJump(report->match, "ShotResult", 0, report->shot_number); !ok) {
+      problem(ok.error());
       continue;
     }
     if (goesBack(floorOf(result_floor_, std::pair(report->match, int{report->seat}), kMaxFloors),
@@ -406,9 +409,8 @@ void GameClient::pollFrames(std::vector<ClientEvent>& out) {
       problem(frame.error());
       continue;
     }
-    if (auto why = impossibleJump(frame->match, "TableSnapshot", 0, frame->shot_number);
-        !why.empty()) {
-      problem(why);
+    if (auto ok = checkJump(frame->match, "TableSnapshot", 0, frame->shot_number); !ok) {
+      problem(ok.error());
       continue;
     }
     if (goesBack(floorOf(frame_floor_, frame->match, kMaxFloors), frame->shot_number,

@@ -18,6 +18,7 @@
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
 #include "client/net/server_pins.h"
+#include "core/check.h"
 #include "core/result.h"
 #include "net/client_transport.h"
 #include "protocol/aim_sample.h"
@@ -173,13 +174,14 @@ class GameClient {
   /// Applies an answer to one of our requests; false when it was consumed by a retry.
   bool accept(const JoinAnswer& answer);
   void problem(const std::string& what);
-  /// Why a sample the server signed is dropped (sealProblem, then the pins), or empty.
-  std::string checkServer(const protocol::SealedSample& sample);
+  /// Passes a sample the server signed, or refuses it with why it is dropped (checkSeal, then
+  /// the pins: "key_changed", "bad_server_id").
+  Check<> checkServer(const protocol::SealedSample& sample);
   /// Logs `line` once (the same line again is only counted).
   void note(const std::string& line, bool problem = true);
-  /// Why a state, result or frame of `match` with these numbers is impossible, or empty.
-  std::string impossibleJump(const std::string& match, const char* what, std::uint32_t revision,
-                             std::uint32_t shot_number) const;
+  /// Refuses a state, result or frame of `match` whose numbers jump impossibly far, with why.
+  Check<> checkJump(const std::string& match, const char* what, std::uint32_t revision,
+                    std::uint32_t shot_number) const;
   /// Whether a sample numbered `number` is older than `floor`, the newest taken of its kind (and
   /// then notes it as stale); otherwise raises `floor` to it.
   bool goesBack(std::uint32_t& floor, std::uint32_t number, const std::string& why);

@@ -53,7 +53,7 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   if (controls.aim().cue_ball_at) {
     const auto check = rules::checkCueBallPlacement(
         controls.ballInHand(), *controls.aim().cue_ball_at, balls, view.context);
-    out.placement_problem = check.reason();
+    out.placement_problem = check.error();
   }
 }
 

@@ -1,6 +1,8 @@
 // Loading a table once: spec, geometry, the rules' view and the pocket targets.
 #include "game/loaded_table.h"
 
+#include <filesystem>
+#include <system_error>
 #include <utility>
 
 namespace pool::game {
@@ -20,6 +22,17 @@ Result<LoadedTable> loadTable(const std::string& name) {
   auto geometry = table::loadTableGeometry(*spec);
   if (!geometry) return Result<LoadedTable>::fail("table " + name + ": " + geometry.error());
   return Result<LoadedTable>::ok(makeLoadedTable(std::move(*spec), std::move(*geometry)));
+}
+
+Result<LoadedTable> loadTable(table::TableSpec spec) {
+  std::error_code ec;
+  if (spec.collision_mesh.empty() || !std::filesystem::exists(spec.collision_mesh, ec)) {
+    auto geometry = table::buildTableGeometry(spec);
+    return Result<LoadedTable>::ok(makeLoadedTable(std::move(spec), std::move(geometry)));
+  }
+  auto geometry = table::loadTableGeometry(spec);
+  if (!geometry) return Result<LoadedTable>::fail("table " + spec.name + ": " + geometry.error());
+  return Result<LoadedTable>::ok(makeLoadedTable(std::move(spec), std::move(*geometry)));
 }
 
 Result<std::shared_ptr<const LoadedTable>> loadSharedTable(const std::string& name) {

@@ -75,8 +75,8 @@ Result<protocol::AimSample> fromWire(const pool_AimCommand& command) {
 Result<protocol::AimSample> fromWire(const pool_CueAim& wire) {
   auto aim = getValues(wire, "cue aim");
   if (!aim) return aim;
-  if (auto why = protocol::aimProblem(*aim, protocol::CommandLimits{}); !why.empty()) {
-    return Result<protocol::AimSample>::fail("cue aim of " + aim->match + ": " + why);
+  if (auto ok = protocol::checkAim(*aim, protocol::CommandLimits{}); !ok) {
+    return Result<protocol::AimSample>::fail("cue aim of " + aim->match + ": " + ok.error());
   }
   return aim;
 }

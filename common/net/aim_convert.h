@@ -15,9 +15,9 @@ Sample<pool_AimCommand> toAimCommand(const protocol::AimSample& aim);
 Sample<pool_CueAim> toCueAim(const protocol::AimSample& aim);
 
 /// An AimCommand read back; fails on an unterminated match id or a signature longer than 64
-/// bytes. The values are not range-checked here (protocol::aimProblem does).
+/// bytes. The values are not range-checked here (protocol::checkAim does).
 Result<protocol::AimSample> fromWire(const pool_AimCommand& command);
-/// A CueAim read back; fails on an unterminated match id or values aimProblem refuses.
+/// A CueAim read back; fails on an unterminated match id or values checkAim refuses.
 Result<protocol::AimSample> fromWire(const pool_CueAim& aim);
 
 }  // namespace pool::net

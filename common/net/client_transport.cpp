@@ -55,7 +55,7 @@ constexpr std::size_t kMaxLobbyWriters = 4096;
 struct ClientTransport::Endpoints : ProtocolTopics {
   Endpoints(std::uint32_t domain, ServerCheck server_check)
       : ProtocolTopics(domain),
-        check(server_check ? std::move(server_check) : ServerCheck(protocol::sealProblem)),
+        check(server_check ? std::move(server_check) : ServerCheck(protocol::checkSeal)),
         match_info(participant, match_info_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         stray_results(participant, result_topic, deeper(qos::strayResult())),
@@ -104,9 +104,9 @@ struct ClientTransport::Endpoints : ProtocolTopics {
     return all;
   }
 
-  /// Why the server's `sample` is dropped, or empty when it may be read.
+  /// Passes the server's `sample` where it may be read; refuses it with why it is dropped.
   template <class T>
-  std::string refusal(const T& sample) const {
+  Check<> refusal(const T& sample) const {
     return check(sealedOf(sample));
   }
 
@@ -116,8 +116,8 @@ struct ClientTransport::Endpoints : ProtocolTopics {
     std::vector<Result<Domain>> out;
     for (auto& sample : samples) {
       if (!sample.meta().valid) continue;  // skips disposal notices
-      if (auto why = refusal(*sample); !why.empty()) {
-        out.push_back(Result<Domain>::fail(why));
+      if (auto ok = refusal(*sample); !ok) {
+        out.push_back(Result<Domain>::fail(ok.error()));
         continue;
       }
       out.push_back(fromWire(*sample));
@@ -191,8 +191,8 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
       out.push_back(Result<LobbyEvent>::ok(protocol::MatchGone{std::move(match), disposed}));
       continue;
     }
-    if (auto why = e_->refusal(*sample); !why.empty()) {
-      out.push_back(Result<LobbyEvent>::fail(why));
+    if (auto ok = e_->refusal(*sample); !ok) {
+      out.push_back(Result<LobbyEvent>::fail(ok.error()));
       continue;
     }
     auto entry = fromWire(*sample);

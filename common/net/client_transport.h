@@ -36,7 +36,7 @@ using LobbyEvent = std::variant<protocol::LobbyEntry, protocol::MatchGone>;
 
 /// Decides whether a sample the server signed may be read: empty to take it, else why it is
 /// dropped (the sample then comes out of the take as a failure with that reason).
-using ServerCheck = std::function<std::string(const protocol::SealedSample&)>;
+using ServerCheck = std::function<Check<>(const protocol::SealedSample&)>;
 
 /// One participant with every reader and writer a client needs, and a waitset over the readers.
 /// The lobby and join replies are read in the default partition; the states, results and frames
@@ -45,7 +45,7 @@ using ServerCheck = std::function<std::string(const protocol::SealedSample&)>;
 /// Throws DdsError from the constructor only. Each take returns what arrived since the last one,
 /// a sample that could not be read or that `check` refused as a failure naming why. Without a
 /// check, a sample is read when its signature verifies with the key it carries
-/// (protocol::sealProblem); a client that pins server keys passes its own.
+/// (protocol::checkSeal); a client that pins server keys passes its own.
 class ClientTransport {
  public:
   explicit ClientTransport(std::uint32_t domain, ServerCheck check = {});

@@ -139,7 +139,7 @@ Result<MatchSettings> settingsOf(std::uint8_t game, std::uint16_t race_to,
   s.breaks = *order;
   s.shot_clock = shot_clock;
   s.practice = practice;
-  if (std::string why = checkSettings(s); !why.empty()) return Result<MatchSettings>::fail(why);
+  if (auto why = checkSettings(s); !why) return Result<MatchSettings>::fail(why.error());
   return Result<MatchSettings>::ok(s);
 }
 

@@ -51,7 +51,7 @@ IncomingPractice readPractice(const pool_PracticeCommand& c,
     in.problem = std::move(problem);
     return in;
   };
-  if (CommandCheck check = checkMatchAndSeat(c); !check.ok()) return fail(std::move(check.text));
+  if (CommandCheck check = checkMatchAndSeat(c); !check.ok()) return fail(check.error());
   const std::int32_t action = rawValue(c.action);
   if (action < pool_PRACTICE_LAYOUT || action > pool_PRACTICE_PHYSICS) {
     return fail("action: not a known practice action");
@@ -67,9 +67,8 @@ IncomingPractice readPractice(const pool_PracticeCommand& c,
   for (const auto& b : balls) r.balls.push_back({b.id, b.x, b.y});
   r.rack = c.rack;
   std::copy(std::begin(c.coefficients), std::end(c.coefficients), r.coefficients.begin());
-  if (std::string why = protocol::checkPracticeFields(r, limits.half_length, limits.half_width);
-      !why.empty()) {
-    return fail(why);
+  if (auto why = protocol::checkPracticeFields(r, limits.half_length, limits.half_width); !why) {
+    return fail(why.error());
   }
   if (c.signature._length > 64 || (c.signature._length > 0 && !c.signature._buffer)) {
     in.bad_signature = true;

@@ -64,8 +64,8 @@ ServerSighting ServerIdProbe::look(const std::string& server_id, const protocol:
       if (textOf(sample->server) != server_id) continue;
       const auto sealed = sealedOf(*sample);
       out.seen = true;
-      const auto problem = protocol::sealProblem(sealed);
-      if (problem.empty() && sameKey(sealed, key)) {
+      const auto seal = protocol::checkSeal(sealed);
+      if (seal && sameKey(sealed, key)) {
         if (!out.strange) out.match = sealed.match;
         out.ours = true;
         continue;
@@ -74,7 +74,7 @@ ServerSighting ServerIdProbe::look(const std::string& server_id, const protocol:
         out.match = sealed.match;
         out.key_fingerprint =
             sealed.server_key.empty() ? "(none)" : protocol::fingerprint(sealed.server_key);
-        out.problem = problem;
+        out.problem = seal.error();
       }
       out.strange = true;
     }
@@ -103,7 +103,7 @@ bool ServerIdProbe::answered(const std::string& server_id, const protocol::KeyPa
   for (auto& sample : e_->replies.take()) {
     if (textOf(sample->client) != nonce_ || textOf(sample->server) != server_id) continue;
     const auto sealed = sealedOf(*sample);
-    if (!protocol::sealProblem(sealed).empty() || !sameKey(sealed, key)) continue;
+    if (!protocol::checkSeal(sealed) || !sameKey(sealed, key)) continue;
     const std::string writer = e_->replies.participantOf(sample.meta().publication_handle);
     if (!writer.empty() && writer != own_participant) live = true;
   }

@@ -69,7 +69,7 @@ void seal(T& sample, const protocol::KeyPair& key) {
   setBytes(sample.signature, signature, protocol::kSignatureBytes);
 }
 
-/// `sample` as its signature sees it, ready for protocol::sealProblem and the clients' pins.
+/// `sample` as its signature sees it, ready for protocol::checkSeal and the clients' pins.
 protocol::SealedSample sealedOf(const pool_MatchInfo& sample);
 protocol::SealedSample sealedOf(const pool_JoinReply& sample);
 protocol::SealedSample sealedOf(const pool_MatchState& sample);

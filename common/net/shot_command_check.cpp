@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string_view>
 
@@ -18,14 +17,7 @@ namespace {
 using Check = std::optional<CommandCheck>;
 
 CommandCheck fail(CommandProblem problem, std::string text) {
-  return {problem, std::move(text)};
-}
-
-/// A limit as text, e.g. "12" or "1.5533".
-std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
+  return CommandCheck::refuse(problem, std::move(text));
 }
 
 bool shoots(const pool_ShotOption& option) {
@@ -40,7 +32,7 @@ bool printable(std::string_view text) {
 }
 
 Check checkIdentity(const pool_ShotCommand& c) {
-  if (CommandCheck check = checkMatchAndSeat(c); !check.ok()) return check;
+  if (CommandCheck check = checkMatchAndSeat(c); !check) return check;
   return std::nullopt;
 }
 
@@ -69,24 +61,28 @@ Check checkOption(const pool_ShotCommand& c) {
   return std::nullopt;
 }
 
+CommandProblem problemOf(physics::ShotProblem problem) {
+  switch (problem) {
+    case physics::ShotProblem::None:
+      return CommandProblem::None;
+    case physics::ShotProblem::NonFinite:
+      return CommandProblem::NonFinite;
+    case physics::ShotProblem::SpeedOutOfRange:
+      return CommandProblem::SpeedOutOfRange;
+    case physics::ShotProblem::ElevationOutOfRange:
+      return CommandProblem::ElevationOutOfRange;
+    case physics::ShotProblem::TipOutOfRange:
+      return CommandProblem::TipOutOfRange;
+    case physics::ShotProblem::YawOutOfRange:
+      return CommandProblem::YawOutOfRange;
+  }
+  return CommandProblem::NonFinite;
+}
+
 Check checkCue(const pool_ShotCommand& c, const protocol::CommandLimits& limits) {
-  if (!(c.speed > 0.0 && c.speed <= limits.max_speed)) {
-    return fail(CommandProblem::SpeedOutOfRange,
-                "speed: must be in (0, " + number(limits.max_speed) + "] m/s");
-  }
-  if (!(c.elevation >= 0.0 && c.elevation <= limits.max_elevation)) {
-    return fail(CommandProblem::ElevationOutOfRange,
-                "elevation: must be in [0, " + number(limits.max_elevation) + "] rad");
-  }
-  if (std::hypot(c.tip_side, c.tip_height) > limits.miscue_limit) {
-    return fail(
-        CommandProblem::TipOutOfRange,
-        "tip_side, tip_height: offset beyond the miscue limit " + number(limits.miscue_limit));
-  }
-  if (std::abs(c.yaw) > limits.max_abs_yaw) {
-    return fail(CommandProblem::YawOutOfRange,
-                "yaw: magnitude must be at most " + number(limits.max_abs_yaw) + " rad");
-  }
+  auto ok =
+      physics::checkShotRange({c.speed, c.elevation, c.tip_side, c.tip_height, c.yaw}, limits);
+  if (!ok) return fail(problemOf(ok.code()), ok.error());
   return std::nullopt;
 }
 
@@ -162,7 +158,7 @@ CommandCheck validateShotCommand(const pool_ShotCommand& command,
   if (!found) found = checkCall(command);
   if (!found) found = checkPlacement(command, limits);
   if (!found) found = checkSignature(command);
-  return found.value_or(CommandCheck{});
+  return found.value_or(CommandCheck::pass());
 }
 
 IncomingCommand readCommand(const pool_ShotCommand& command,
@@ -172,11 +168,11 @@ IncomingCommand readCommand(const pool_ShotCommand& command,
   in.seat = command.seat;
   in.seq = command.seq;
   const CommandCheck check = validateShotCommand(command, limits);
-  auto request = check.ok() ? fromWire(command) : Result<protocol::ShotRequest>::fail(check.text);
+  auto request = check ? fromWire(command) : Result<protocol::ShotRequest>::fail(check.error());
   if (request) {
     in.request = std::move(*request);
   } else {
-    in.bad_signature = check.problem == CommandProblem::BadSignature;
+    in.bad_signature = check.code() == CommandProblem::BadSignature;
     in.problem = request.error();
   }
   return in;

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/check.h"
 #include "net/incoming_command.h"
 #include "net/messages.h"
 #include "net/wire_fields.h"
@@ -32,13 +33,8 @@ enum class CommandProblem : std::uint8_t {
 
 const char* toString(CommandProblem problem);  ///< snake_case, e.g. "speed_out_of_range"
 
-/// The verdict on a command's fields.
-struct CommandCheck {
-  CommandProblem problem = CommandProblem::None;
-  std::string text;  ///< "<field>: <reason>", empty when fine
-
-  bool ok() const { return problem == CommandProblem::None; }
-};
+/// The verdict on a command's fields: its problem and "<field>: <reason>".
+using CommandCheck = Check<CommandProblem>;
 
 /// True when `text` is a non-empty id of printable ASCII without spaces.
 bool printableId(std::string_view text);
@@ -48,12 +44,13 @@ bool printableId(std::string_view text);
 template <class Command>
 CommandCheck checkMatchAndSeat(const Command& command) {
   if (!terminated(command.match) || !printableId(textOf(command.match))) {
-    return {CommandProblem::BadMatchId, "match: must be a non-empty printable id"};
+    return CommandCheck::refuse(CommandProblem::BadMatchId,
+                                "match: must be a non-empty printable id");
   }
   if (command.seat != 0 && command.seat != 1) {
-    return {CommandProblem::BadSeat, "seat: must be 0 or 1"};
+    return CommandCheck::refuse(CommandProblem::BadSeat, "seat: must be 0 or 1");
   }
-  return {};
+  return CommandCheck::pass();
 }
 
 /// Checks every field of `command` against `limits`. Shot values (speed, elevation, tip, yaw) are

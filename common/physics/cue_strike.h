@@ -6,6 +6,7 @@
 
 #include "core/result.h"
 #include "physics/ball.h"
+#include "physics/shot_limits.h"
 #include "table/physics_params.h"
 
 namespace pool::physics {
@@ -28,10 +29,9 @@ struct StrikeOutcome {
   double squirt = 0.0;  ///< angle of the ball's heading off the cue line, rad (+ = to the left)
 };
 
-/// Checks a shot's values: finite, speed and elevation within physics/shot_limits.h, offset
-/// within the miscue limit. Returns "" or "<field>: <reason>" with the field names of
-/// SIM-CONTRACT.md.
-std::string validateShot(const CueShot& shot, const table::PhysicsParams& params);
+/// Checks a shot's values with checkShotRange (physics/shot_limits.h): finite, speed and
+/// elevation in range, offset within the table's miscue limit; any heading.
+Check<ShotProblem> validateShot(const CueShot& shot, const table::PhysicsParams& params);
 
 /// The strike model: point impulse along the cue (mass cue_mass) through the contact point of
 /// the offset line; the heading then turns by the squirt angle (cue_end_mass) in cue mode.

@@ -537,24 +537,27 @@ struct Simulation::Impl {
   }
 };
 
-std::string checkPlacement(const std::vector<Ball>& balls, const table::TableGeometry& geometry,
-                           const table::PhysicsParams& params) {
+Check<> checkPlacement(const std::vector<Ball>& balls, const table::TableGeometry& geometry,
+                       const table::PhysicsParams& params) {
   std::vector<bool> seen(kMaxBallId + 1, false);
   for (const Ball& b : balls) {
     if (b.id < 0 || b.id > kMaxBallId) {
-      return "ball id " + std::to_string(b.id) + " is out of range 0..15";
+      return Check<>::refuse("bad_ball_id",
+                             "ball id " + std::to_string(b.id) + " is out of range 0..15");
     }
-    if (seen[static_cast<size_t>(b.id)]) return "ball " + std::to_string(b.id) + " is given twice";
+    if (seen[static_cast<size_t>(b.id)])
+      return Check<>::refuse("ball_twice", "ball " + std::to_string(b.id) + " is given twice");
     seen[static_cast<size_t>(b.id)] = true;
     if (!b.pos.allFinite() || !b.vel.allFinite() || !b.ang_vel.allFinite()) {
-      return "ball " + std::to_string(b.id) + " has a non-finite position or velocity";
+      return Check<>::refuse(
+          "non_finite", "ball " + std::to_string(b.id) + " has a non-finite position or velocity");
     }
   }
   const TableFeatures features = TableFeatures::from(geometry);
   for (const Ball& b : balls) {
     if (!onTable(b.state)) continue;
     if (!onSlate(b.pos.head<2>(), features, params)) {
-      return "ball " + std::to_string(b.id) + " is off the slate";
+      return Check<>::refuse("off_slate", "ball " + std::to_string(b.id) + " is off the slate");
     }
   }
   // Contacts are resolved to well under a micrometre; touching balls may sit that close.
@@ -563,12 +566,12 @@ std::string checkPlacement(const std::vector<Ball>& balls, const table::TableGeo
     for (size_t k = i + 1; k < balls.size(); ++k) {
       if (!onTable(balls[i].state) || !onTable(balls[k].state)) continue;
       if ((balls[i].pos - balls[k].pos).norm() < min_dist) {
-        return "ball " + std::to_string(balls[i].id) + " overlaps ball " +
-               std::to_string(balls[k].id);
+        return Check<>::refuse("overlap", "ball " + std::to_string(balls[i].id) +
+                                              " overlaps ball " + std::to_string(balls[k].id));
       }
     }
   }
-  return {};
+  return Check<>::pass();
 }
 
 Simulation::Simulation(const table::TableSpec& spec, const table::TableGeometry& geometry)
@@ -578,11 +581,9 @@ Simulation::~Simulation() = default;
 
 Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
   if (!impl_->models_error.empty()) return Result<bool>::fail(impl_->models_error);
-  if (auto reason = table::validate(impl_->p); !reason.empty()) {
-    return Result<bool>::fail("params: " + reason);
-  }
-  if (auto reason = checkPlacement(balls, impl_->geometry, impl_->p); !reason.empty()) {
-    return Result<bool>::fail(reason);
+  if (auto ok = table::validate(impl_->p); !ok) return Result<bool>::fail("params: " + ok.error());
+  if (auto ok = checkPlacement(balls, impl_->geometry, impl_->p); !ok) {
+    return Result<bool>::fail(ok.error());
   }
   Impl& s = *impl_;
   s.balls = balls;

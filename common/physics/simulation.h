@@ -49,10 +49,11 @@ struct ShotOutcome {
 };
 
 /// Checks balls for placement on a table: ids in 0..15 and each once, no two overlapping, each
-/// centre on the slate (not inside a cushion, not over a pocket hole). Returns "" or a one-line
-/// reason naming the ball, e.g. "ball 3 overlaps ball 5", "ball 2 is off the slate".
-std::string checkPlacement(const std::vector<Ball>& balls, const table::TableGeometry& geometry,
-                           const table::PhysicsParams& params);
+/// centre on the slate (not inside a cushion, not over a pocket hole). Refuses with a one-line
+/// reason naming the ball, e.g. "ball 3 overlaps ball 5" ("overlap"), "ball 2 is off the slate"
+/// ("off_slate").
+Check<> checkPlacement(const std::vector<Ball>& balls, const table::TableGeometry& geometry,
+                       const table::PhysicsParams& params);
 
 /// A table with its balls, stepping ODE with our cloth, ball and cushion models. Deterministic:
 /// the same inputs give bit-identical outputs on the same build.

@@ -30,22 +30,25 @@ SignatureCheck verifyAim(const AimSample& aim, std::span<const std::uint8_t> pub
   return verifyMessage(signedBytes(aim), aim.signature, public_key);
 }
 
-std::string aimProblem(const AimSample& a, const CommandLimits& limits) {
-  if (a.match.empty()) return "match: empty";
-  if (a.seat != 0 && a.seat != 1) return "seat: not 0 or 1";
+Check<> checkAim(const AimSample& a, const CommandLimits& limits) {
+  auto refuse = [](const char* code, std::string sentence) {
+    return Check<>::refuse(code, std::move(sentence));
+  };
+  if (a.match.empty()) return refuse("bad_match_id", "match: empty");
+  if (a.seat != 0 && a.seat != 1) return refuse("bad_seat", "seat: not 0 or 1");
   for (const double v :
        {a.yaw, a.tip_side, a.tip_height, a.elevation, a.power, a.cue_ball_x, a.cue_ball_y}) {
-    if (!std::isfinite(v)) return "values: not finite";
+    if (!std::isfinite(v)) return refuse("non_finite", "values: not finite");
   }
-  if (std::abs(a.yaw) > limits.max_abs_yaw) return "yaw: out of range";
-  if (std::hypot(a.tip_side, a.tip_height) > limits.miscue_limit)
-    return "tip: past the miscue limit";
-  if (a.elevation < 0.0 || a.elevation > limits.max_elevation) return "elevation: out of range";
-  if (a.power < 0.0 || a.power > 1.0) return "power: not in [0, 1]";
+  // An aim has no speed yet: its power is checked on its own.
+  auto cue =
+      physics::checkShotRange({0.0, a.elevation, a.tip_side, a.tip_height, a.yaw}, limits, false);
+  if (!cue) return refuse(physics::toString(cue.code()), cue.error());
+  if (a.power < 0.0 || a.power > 1.0) return refuse("power_out_of_range", "power: not in [0, 1]");
   if (std::abs(a.cue_ball_x) > limits.half_length || std::abs(a.cue_ball_y) > limits.half_width) {
-    return "cue ball: off the playing surface";
+    return refuse("placement_out_of_range", "cue ball: off the playing surface");
   }
-  return {};
+  return Check<>::pass();
 }
 
 }  // namespace pool::protocol

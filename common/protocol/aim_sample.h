@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/check.h"
 #include "protocol/command_limits.h"
 #include "protocol/envelope.h"
 #include "protocol/key_pair.h"
@@ -46,9 +47,9 @@ void signAim(AimSample& aim, const KeyPair& key);
 /// Checks `aim`'s signature against `public_key`.
 SignatureCheck verifyAim(const AimSample& aim, std::span<const std::uint8_t> public_key);
 
-/// Why `aim`'s values cannot be a cue on this table ("<field>: <reason>"), or empty: every number
-/// finite, |yaw| ≤ max_abs_yaw, the tip inside the miscue circle, elevation in [0, max], power in
-/// [0, 1], the cue ball on the playing surface, the seat 0 or 1, the match id non-empty.
-std::string aimProblem(const AimSample& aim, const CommandLimits& limits);
+/// Refuses `aim`'s values where they cannot be a cue on this table ("<field>: <reason>"): the
+/// match id non-empty, the seat 0 or 1, every number finite, the cue's angles and tip within
+/// physics::checkShotRange's ranges, power in [0, 1], the cue ball on the playing surface.
+Check<> checkAim(const AimSample& aim, const CommandLimits& limits);
 
 }  // namespace pool::protocol

@@ -26,26 +26,29 @@ double MatchSettings::warningAt() const {
   return std::min(kShotClockWarning, shot_clock / 3.0);
 }
 
-std::string checkSettings(const MatchSettings& s) {
-  if (s.game != rules::Game::EightBall && s.game != rules::Game::NineBall &&
-      s.game != rules::Game::TenBall) {
-    return "game: must be 8-, 9- or 10-ball";
+Check<> checkSettings(const MatchSettings& s) {
+  const auto games = rules::allGames();
+  if (std::none_of(games.begin(), games.end(), [&](const auto& g) { return g.game == s.game; })) {
+    return Check<>::refuse("bad_game", "game: must be 8-, 9- or 10-ball");
   }
   if (s.race_to < 1 || s.race_to > kMaxRace) {
-    return "race: must be 1 to " + std::to_string(kMaxRace) + " racks";
+    return Check<>::refuse("bad_race", "race: must be 1 to " + std::to_string(kMaxRace) + " racks");
   }
   if (s.breaks != BreakOrder::Alternate && s.breaks != BreakOrder::Winner) {
-    return "breaks: must be alternate or winner";
+    return Check<>::refuse("bad_breaks", "breaks: must be alternate or winner");
   }
   if (!std::isfinite(s.shot_clock) ||
       (s.shot_clock != 0.0 && (s.shot_clock < kMinShotClock || s.shot_clock > kMaxShotClock))) {
-    return "shot clock: must be off (0) or " + std::to_string(static_cast<int>(kMinShotClock)) +
-           " to " + std::to_string(static_cast<int>(kMaxShotClock)) + " s";
+    return Check<>::refuse("bad_shot_clock",
+                           "shot clock: must be off (0) or " +
+                               std::to_string(static_cast<int>(kMinShotClock)) + " to " +
+                               std::to_string(static_cast<int>(kMaxShotClock)) + " s");
   }
   if (s.practice && (s.race_to != 1 || s.shot_clock != 0.0)) {
-    return "practice: a practice table has no race and no shot clock";
+    return Check<>::refuse("bad_practice",
+                           "practice: a practice table has no race and no shot clock");
   }
-  return "";
+  return Check<>::pass();
 }
 
 std::string describe(const MatchSettings& s) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/check.h"
 #include "rules/game_rules.h"
 
 namespace pool::protocol {
@@ -41,8 +42,8 @@ struct MatchSettings {
   bool operator==(const MatchSettings&) const = default;
 };
 
-/// Empty when the settings are valid; otherwise why not (one line).
-std::string checkSettings(const MatchSettings& settings);
+/// Passes valid settings; refuses others with the setting and why ("race: must be 1 to 15 racks").
+Check<> checkSettings(const MatchSettings& settings);
 
 /// One line, e.g. "9-ball, race to 3, winner breaks, shot clock 35 s".
 std::string describe(const MatchSettings& settings);

@@ -33,13 +33,11 @@ Result<table::PhysicsParams> withCoefficients(const table::PhysicsParams& base,
   table::PhysicsParams out = base;
   for (std::size_t i = 0; i < values.size(); ++i) {
     const std::string_view name = kPracticeCoefficients[i];
-    if (std::string why = table::setParam(out, name, values[i]); !why.empty()) {
-      return Result<table::PhysicsParams>::fail(std::string(name) + ": " + why);
+    if (auto ok = table::setParam(out, name, values[i]); !ok) {
+      return Result<table::PhysicsParams>::fail(std::string(name) + ": " + ok.error());
     }
   }
-  if (std::string why = table::validate(out); !why.empty()) {
-    return Result<table::PhysicsParams>::fail(why);
-  }
+  if (auto ok = table::validate(out); !ok) return Result<table::PhysicsParams>::fail(ok.error());
   return Result<table::PhysicsParams>::ok(out);
 }
 
@@ -70,26 +68,30 @@ SignatureCheck verifyPractice(const PracticeRequest& request,
   return verifyMessage(signedBytes(request), request.signature, public_key);
 }
 
-std::string checkPracticeFields(const PracticeRequest& r, double half_length, double half_width) {
-  if (r.balls.size() > 16) return "balls: at most 16";
+Check<> checkPracticeFields(const PracticeRequest& r, double half_length, double half_width) {
+  if (r.balls.size() > 16) return Check<>::refuse("too_many_balls", "balls: at most 16");
   std::set<int> ids;
   for (const BallSpot& b : r.balls) {
-    if (b.id < 0 || b.id > 15) return "balls: an id must be 0-15";
-    if (!ids.insert(b.id).second) return "balls: ball " + std::to_string(b.id) + " twice";
-    if (!std::isfinite(b.x) || !std::isfinite(b.y)) return "balls: must be finite numbers";
+    if (b.id < 0 || b.id > 15) return Check<>::refuse("bad_ball_id", "balls: an id must be 0-15");
+    if (!ids.insert(b.id).second)
+      return Check<>::refuse("ball_twice", "balls: ball " + std::to_string(b.id) + " twice");
+    if (!std::isfinite(b.x) || !std::isfinite(b.y))
+      return Check<>::refuse("non_finite", "balls: must be finite numbers");
     if (std::abs(b.x) > half_length || std::abs(b.y) > half_width) {
-      return "balls: ball " + std::to_string(b.id) + " is off the table";
+      return Check<>::refuse("ball_off_table",
+                             "balls: ball " + std::to_string(b.id) + " is off the table");
     }
   }
   if (r.rack != 0 && r.rack != 8 && r.rack != 9 && r.rack != 10) {
-    return "rack: must be 8, 9, 10 or 0 (clear)";
+    return Check<>::refuse("bad_rack", "rack: must be 8, 9, 10 or 0 (clear)");
   }
   for (std::size_t i = 0; i < r.coefficients.size(); ++i) {
     if (!std::isfinite(r.coefficients[i])) {
-      return std::string(kPracticeCoefficients[i]) + ": must be a finite number";
+      return Check<>::refuse("non_finite",
+                             std::string(kPracticeCoefficients[i]) + ": must be a finite number");
     }
   }
-  return "";
+  return Check<>::pass();
 }
 
 }  // namespace pool::protocol

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/check.h"
 #include "core/result.h"
 #include "protocol/envelope.h"
 #include "protocol/key_pair.h"
@@ -75,10 +76,9 @@ void signPractice(PracticeRequest& request, const KeyPair& key);
 SignatureCheck verifyPractice(const PracticeRequest& request,
                               std::span<const std::uint8_t> public_key);
 
-/// Empty when `request`'s fields are well formed on their own (ids 0–15 once each, finite spots
-/// within ±half_length × ±half_width, a rack of 0/8/9/10, finite coefficients); else
-/// "<field>: <reason>". Whether a spot is legal on the table is the server's.
-std::string checkPracticeFields(const PracticeRequest& request, double half_length,
-                                double half_width);
+/// Passes `request`'s fields when they are well formed on their own (ids 0–15 once each, finite
+/// spots within ±half_length × ±half_width, a rack of 0/8/9/10, finite coefficients); refuses
+/// them with "<field>: <reason>". Whether a spot is legal on the table is the server's.
+Check<> checkPracticeFields(const PracticeRequest& request, double half_length, double half_width);
 
 }  // namespace pool::protocol

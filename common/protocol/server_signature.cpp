@@ -90,24 +90,28 @@ std::string serverOfMatch(std::string_view match) {
   return dash == std::string_view::npos ? std::string() : std::string(match.substr(0, dash));
 }
 
-std::string sealProblem(const SealedSample& sample) {
+Check<> checkSeal(const SealedSample& sample) {
   const std::string what = std::string(toString(sample.kind)) +
                            (sample.match.empty() ? "" : " of " + escapedForLog(sample.match)) +
                            " from server '" + escapedForLog(sample.server) + "'";
   if (sample.kind == PublishedKind::MatchInfo && sample.protocol_version != kProtocolVersion) {
-    return what + " dropped: it speaks protocol " + std::to_string(sample.protocol_version) +
-           ", this program " + std::to_string(kProtocolVersion);
+    return Check<>::refuse("protocol_mismatch", what + " dropped: it speaks protocol " +
+                                                    std::to_string(sample.protocol_version) +
+                                                    ", this program " +
+                                                    std::to_string(kProtocolVersion));
   }
   switch (verifyPublished(sample)) {
     case SignatureCheck::Valid:
-      return {};
+      return Check<>::pass();
     case SignatureCheck::Unsigned:
-      return what + " dropped: unsigned (a forgery, or a server older than protocol 4)";
+      return Check<>::refuse(
+          "unsigned", what + " dropped: unsigned (a forgery, or a server older than protocol 4)");
     case SignatureCheck::BadSignature:
       break;
   }
-  return what + " dropped: its signature does not verify with the key it carries (" +
-         fingerprint(sample.server_key) + ")";
+  return Check<>::refuse(
+      "bad_signature", what + " dropped: its signature does not verify with the key it carries (" +
+                           fingerprint(sample.server_key) + ")");
 }
 
 }  // namespace pool::protocol

@@ -2,6 +2,8 @@
 // of a received one against the key it carries, key fingerprints, and whose a match id is.
 #pragma once
 
+#include "core/check.h"
+
 #include <cstdint>
 #include <span>
 #include <string>
@@ -66,9 +68,9 @@ bool validServerId(std::string_view id);
 /// there is none).
 std::string serverOfMatch(std::string_view match);
 
-/// Why a received sample cannot be taken at face value, or empty when its signature verifies
-/// against the key it carries: another protocol version (MatchInfo tells), no signature, or a
-/// signature that does not verify.
-std::string sealProblem(const SealedSample& sample);
+/// Passes a received sample whose signature verifies against the key it carries; refuses one
+/// of another protocol version (MatchInfo tells: "protocol_mismatch"), with no signature
+/// ("unsigned"), or with a signature that does not verify ("bad_signature").
+Check<> checkSeal(const SealedSample& sample);
 
 }  // namespace pool::protocol

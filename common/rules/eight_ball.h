@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/check.h"
 #include "core/result.h"
 #include "physics/ball.h"
 #include "rules/game_state.h"
@@ -40,9 +41,8 @@ bool onTheEight(const GameState& state, const std::vector<physics::Ball>& balls)
 /// a choice when none is pending; a call and a safety at once; a called ball not on the table,
 /// not 1–15, or not the shooter's to call; an unknown pocket; no call and no safety (Standard,
 /// after the break); the 8 uncalled when it is the shooter's ball (Casual).
-Result<bool> checkIntent(const GameState& state, const Intent& intent,
-                         const std::vector<physics::Ball>& balls,
-                         const EightBallConfig& config = {});
+Check<> checkIntent(const GameState& state, const Intent& intent,
+                    const std::vector<physics::Ball>& balls, const EightBallConfig& config = {});
 
 /// Judges one shot. Refused (never judged) when the intent fails checkIntent, the cue ball in
 /// hand was placed illegally, or the shot fails checkShot. A shot clock that ran out with no

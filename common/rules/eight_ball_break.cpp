@@ -1,5 +1,5 @@
 // The opening break of 8-ball: legal or not, scratches, jumped balls and the 8 on the break.
-#include "rules/eight_ball_detail.h"
+#include "rules/eight_ball_steps.h"
 
 namespace pool::rules::detail {
 namespace {

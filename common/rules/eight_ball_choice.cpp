@@ -2,33 +2,10 @@
 // forfeits.
 #include <algorithm>
 
-#include "rules/eight_ball_detail.h"
 #include "rules/respot.h"
+#include "rules/verdict_steps.h"
 
 namespace pool::rules {
-namespace detail {
-
-Verdict rerackVerdict(int breaker) {
-  Verdict v;
-  v.rerack = true;
-  v.next_shooter = breaker;
-  v.ball_in_hand = BallInHand::BehindHeadString;
-  v.next = newRack(breaker);
-  return v;
-}
-
-Verdict playOnVerdict(const GameState& state, BallInHand in_hand) {
-  Verdict v;
-  v.turn_continues = true;
-  v.next_shooter = state.shooter;
-  v.ball_in_hand = in_hand;
-  v.next = state;
-  v.next.options.clear();
-  v.next.ball_in_hand = in_hand;
-  return v;
-}
-
-}  // namespace detail
 
 using detail::playOnVerdict;
 using detail::rerackVerdict;

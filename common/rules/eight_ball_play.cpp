@@ -1,7 +1,7 @@
 // Shots after the break: fouls, the 8, called balls, safeties and group assignment.
 #include <algorithm>
 
-#include "rules/eight_ball_detail.h"
+#include "rules/eight_ball_steps.h"
 
 namespace pool::rules::detail {
 namespace {

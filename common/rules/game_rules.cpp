@@ -3,47 +3,48 @@
 
 namespace pool::rules {
 
-const char* toString(Game game) {
-  switch (game) {
-    case Game::EightBall:
-      return "8-ball";
-    case Game::NineBall:
-      return "9-ball";
-    case Game::TenBall:
-      return "10-ball";
+namespace {
+
+// One row a game: adding a game starts here (docs/ARCHITECTURE.md, "Adding a game").
+constexpr GameInfo kGames[] = {
+    {Game::EightBall, "8-ball", 8, table::RackType::EightBall},
+    {Game::NineBall, "9-ball", 9, table::RackType::NineBall},
+    {Game::TenBall, "10-ball", 10, table::RackType::TenBall},
+};
+
+const GameInfo* find(Game game) {
+  for (const GameInfo& g : kGames) {
+    if (g.game == game) return &g;
   }
-  return "unknown";
+  return nullptr;
+}
+
+}  // namespace
+
+std::span<const GameInfo> allGames() {
+  return kGames;
+}
+
+const char* toString(Game game) {
+  const GameInfo* g = find(game);
+  return g ? g->name : "unknown";
 }
 
 int gameNumber(Game game) {
-  switch (game) {
-    case Game::EightBall:
-      return 8;
-    case Game::NineBall:
-      return 9;
-    case Game::TenBall:
-      return 10;
-  }
-  return 0;
+  const GameInfo* g = find(game);
+  return g ? g->number : 0;
 }
 
 std::optional<Game> gameOfNumber(long number) {
-  if (number == 8) return Game::EightBall;
-  if (number == 9) return Game::NineBall;
-  if (number == 10) return Game::TenBall;
+  for (const GameInfo& g : kGames) {
+    if (g.number == number) return g.game;
+  }
   return std::nullopt;
 }
 
 table::RackType rackTypeOf(Game game) {
-  switch (game) {
-    case Game::EightBall:
-      return table::RackType::EightBall;
-    case Game::NineBall:
-      return table::RackType::NineBall;
-    case Game::TenBall:
-      return table::RackType::TenBall;
-  }
-  return table::RackType::EightBall;
+  const GameInfo* g = find(game);
+  return g ? g->rack : table::RackType::EightBall;
 }
 
 RotationConfig GameRules::rotation() const {
@@ -53,8 +54,8 @@ RotationConfig GameRules::rotation() const {
   return config;
 }
 
-Result<bool> checkIntentFor(const GameRules& rules, const GameState& state, const Intent& intent,
-                            const std::vector<physics::Ball>& balls) {
+Check<> checkIntentFor(const GameRules& rules, const GameState& state, const Intent& intent,
+                       const std::vector<physics::Ball>& balls) {
   if (rules.game == Game::EightBall) return checkIntent(state, intent, balls, rules.eight_ball);
   return checkRotationIntent(state, intent, balls, rules.rotation());
 }

@@ -3,9 +3,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
+#include "core/check.h"
 #include "core/result.h"
 #include "physics/ball.h"
 #include "rules/eight_ball.h"
@@ -19,6 +21,17 @@
 namespace pool::rules {
 
 enum class Game : std::uint8_t { EightBall, NineBall, TenBall };
+
+/// What names a game and what it is played from.
+struct GameInfo {
+  Game game;
+  const char* name;  ///< "8-ball"
+  int number;        ///< 8: the number that names the game (`--game 8`)
+  table::RackType rack;
+};
+
+/// Every game, in the order players are offered them.
+std::span<const GameInfo> allGames();
 
 const char* toString(Game game);  ///< "8-ball", "9-ball", "10-ball"
 /// 8, 9 or 10: the number that names the game (`--game 9`).
@@ -37,8 +50,8 @@ struct GameRules {
 };
 
 /// checkIntent or checkRotationIntent, by game.
-Result<bool> checkIntentFor(const GameRules& rules, const GameState& state, const Intent& intent,
-                            const std::vector<physics::Ball>& balls);
+Check<> checkIntentFor(const GameRules& rules, const GameState& state, const Intent& intent,
+                       const std::vector<physics::Ball>& balls);
 
 /// judgeEightBall or judgeRotation, by game.
 Result<Verdict> judgeShot(const GameRules& rules, const GameState& state, const Shot& shot,

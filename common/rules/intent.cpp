@@ -4,8 +4,8 @@
 #include <string>
 
 #include "rules/eight_ball.h"
-#include "rules/eight_ball_detail.h"
 #include "rules/table_context.h"
+#include "rules/verdict_steps.h"
 
 namespace pool::rules {
 namespace {
@@ -15,8 +15,8 @@ bool contains(const std::vector<T>& items, const T& item) {
   return std::find(items.begin(), items.end(), item) != items.end();
 }
 
-Result<bool> refuse(std::string reason) {
-  return Result<bool>::fail(std::move(reason));
+Check<> refuse(const char* code, std::string reason) {
+  return Check<>::refuse(code, std::move(reason));
 }
 
 std::string optionList(const std::vector<Choice>& options) {
@@ -26,34 +26,36 @@ std::string optionList(const std::vector<Choice>& options) {
 }
 
 // A choice given with a shot may only be one that leaves the balls as they are.
-Result<bool> checkChoice(const GameState& state, const Intent& intent) {
+Check<> checkChoice(const GameState& state, const Intent& intent) {
   if (state.options.empty()) {
-    if (intent.choice) return refuse("no choice is pending");
-    return Result<bool>::ok(true);
+    if (intent.choice) return refuse("no_choice_pending", "no choice is pending");
+    return Check<>::pass();
   }
-  if (!intent.choice) return refuse("choose first: " + optionList(state.options));
+  if (!intent.choice) return refuse("choose_first", "choose first: " + optionList(state.options));
   if (!contains(state.options, *intent.choice)) {
-    return refuse(std::string("choice ") + toString(*intent.choice) + " is not offered (" +
-                  optionList(state.options) + ")");
+    return refuse("choice_not_offered", std::string("choice ") + toString(*intent.choice) +
+                                            " is not offered (" + optionList(state.options) + ")");
   }
   if (*intent.choice != Choice::PlayOn && *intent.choice != Choice::BallInHand) {
-    return refuse(std::string("choice ") + toString(*intent.choice) +
-                  " changes the table: apply it before the shot");
+    return refuse("choice_needs_no_shot", std::string("choice ") + toString(*intent.choice) +
+                                              " changes the table: apply it before the shot");
   }
-  return Result<bool>::ok(true);
+  return Check<>::pass();
 }
 
-Result<bool> checkCall(const GameState& state, const Intent& intent,
-                       const std::vector<physics::Ball>& balls) {
+Check<> checkCall(const GameState& state, const Intent& intent,
+                  const std::vector<physics::Ball>& balls) {
   int id = *intent.ball;
   std::string name = "called ball " + std::to_string(id);
-  if (!isObjectBall(id)) return refuse(name + " is not an object ball");
-  if (!detail::ballOnTable(id, balls)) return refuse(name + " is not on the table");
-  if (!isPocketName(intent.pocket)) return refuse("unknown called pocket '" + intent.pocket + "'");
+  if (!isObjectBall(id)) return refuse("not_object_ball", name + " is not an object ball");
+  if (!detail::ballOnTable(id, balls))
+    return refuse("ball_not_on_table", name + " is not on the table");
+  if (!isPocketName(intent.pocket))
+    return refuse("unknown_pocket", "unknown called pocket '" + intent.pocket + "'");
   bool callable =
       id == kEightBall ? onTheEight(state, balls) : contains(legalFirstBalls(state, balls), id);
-  if (!callable) return refuse(name + " is not the shooter's to call");
-  return Result<bool>::ok(true);
+  if (!callable) return refuse("not_shooters_ball", name + " is not the shooter's to call");
+  return Check<>::pass();
 }
 
 }  // namespace
@@ -91,19 +93,19 @@ std::vector<int> legalFirstBalls(const GameState& state, const std::vector<physi
   return ids;
 }
 
-Result<bool> checkIntent(const GameState& state, const Intent& intent,
-                         const std::vector<physics::Ball>& balls, const EightBallConfig& config) {
-  if (state.phase == Phase::Over) return refuse("the game is over");
+Check<> checkIntent(const GameState& state, const Intent& intent,
+                    const std::vector<physics::Ball>& balls, const EightBallConfig& config) {
+  if (state.phase == Phase::Over) return refuse("game_over", "the game is over");
   if (auto ok = checkChoice(state, intent); !ok) return ok;
   // The break needs no call; whatever was declared is ignored.
-  if (state.phase == Phase::Break) return Result<bool>::ok(true);
-  if (intent.ball && intent.safety) return refuse("a call and a safety at once");
-  if (intent.safety) return Result<bool>::ok(true);
+  if (state.phase == Phase::Break) return Check<>::pass();
+  if (intent.ball && intent.safety) return refuse("call_and_safety", "a call and a safety at once");
+  if (intent.safety) return Check<>::pass();
   if (intent.ball) return checkCall(state, intent, balls);
   if (config.calls == CallMode::Standard)
-    return refuse("call a ball and a pocket, or declare a safety");
-  if (onTheEight(state, balls)) return refuse("the 8 needs a called pocket");
-  return Result<bool>::ok(true);
+    return refuse("no_call", "call a ball and a pocket, or declare a safety");
+  if (onTheEight(state, balls)) return refuse("eight_needs_call", "the 8 needs a called pocket");
+  return Check<>::pass();
 }
 
 }  // namespace pool::rules

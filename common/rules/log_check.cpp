@@ -69,61 +69,70 @@ class LogChecker {
  public:
   explicit LogChecker(const Tracks& tracks) : tracks_(tracks) {}
 
-  // Returns "" or the reason the event contradicts what came before.
-  std::string apply(std::size_t index, const Event& event) {
-    if (std::string why = checkFrame(index, event); !why.empty()) return why;
-    if (std::string why = checkIds(event); !why.empty()) return why;
-    if (std::string why = checkAfterRest(event); !why.empty()) return why;
-    std::string why = applyMotion(event);
-    if (why.empty()) updateRest(event);
-    return why;
+  // Refuses an event that contradicts what came before, with the reason.
+  Check<> apply(std::size_t index, const Event& event) {
+    if (auto ok = checkFrame(index, event); !ok) return ok;
+    if (auto ok = checkIds(event); !ok) return ok;
+    if (auto ok = checkAfterRest(event); !ok) return ok;
+    auto ok = applyMotion(event);
+    if (ok) updateRest(event);
+    return ok;
   }
 
   const Tracks& tracks() const { return tracks_; }
 
  private:
-  std::string checkFrame(std::size_t index, const Event& event) {
+  Check<> checkFrame(std::size_t index, const Event& event) {
     if (!std::isfinite(event.t) || event.t < 0.0)
-      return "event " + std::to_string(index) + ": time is not a finite t >= 0";
+      return Check<>::refuse("bad_event_order",
+                             "event " + std::to_string(index) + ": time is not a finite t >= 0");
     if (index == 0 && (event.type != EventType::Strike || event.ball_a != physics::kCueBall)) {
-      return "the log does not start with the strike of the cue ball";
+      return Check<>::refuse("bad_event_order",
+                             "the log does not start with the strike of the cue ball");
     }
-    if (index > 0 && event.type == EventType::Strike) return "a second strike" + at(event);
+    if (index > 0 && event.type == EventType::Strike)
+      return Check<>::refuse("bad_event_order", "a second strike" + at(event));
     if (event.t < last_t_)
-      return "event " + std::to_string(index) + at(event) + " is out of time order";
+      return Check<>::refuse("bad_event_order", "event " + std::to_string(index) + at(event) +
+                                                    " is out of time order");
     last_t_ = event.t;
-    return "";
+    return Check<>::pass();
   }
 
-  std::string checkIds(const Event& event) const {
+  Check<> checkIds(const Event& event) const {
     if (!validId(event.ball_a) || !tracks_[event.ball_a].on_table) {
-      return "unknown " + ball(event.ball_a) + at(event) + " (not on the table before the shot)";
+      return Check<>::refuse("unknown_ball", "unknown " + ball(event.ball_a) + at(event) +
+                                                 " (not on the table before the shot)");
     }
     if (event.type == EventType::BallBall) {
       if (!validId(event.ball_b) || !tracks_[event.ball_b].on_table) {
-        return "unknown " + ball(event.ball_b) + at(event) + " (not on the table before the shot)";
+        return Check<>::refuse("unknown_ball", "unknown " + ball(event.ball_b) + at(event) +
+                                                   " (not on the table before the shot)");
       }
-      if (event.ball_a == event.ball_b) return ball(event.ball_a) + " hits itself" + at(event);
+      if (event.ball_a == event.ball_b)
+        return Check<>::refuse("unknown_ball", ball(event.ball_a) + " hits itself" + at(event));
     }
     if (event.type == EventType::Pocket && !isPocketName(event.where)) {
-      return ball(event.ball_a) + " falls into unknown pocket '" + event.where + "'" + at(event);
+      return Check<>::refuse("unknown_ball", ball(event.ball_a) + " falls into unknown pocket '" +
+                                                 event.where + "'" + at(event));
     }
-    return "";
+    return Check<>::pass();
   }
 
-  std::string checkAfterRest(const Event& event) const {
+  Check<> checkAfterRest(const Event& event) const {
     if (!all_rest_ || event.type == EventType::SpinToRest || event.type == EventType::Respot)
-      return "";
-    return ball(event.ball_a) + " has an event" + at(event) +
-           " after every ball came to rest at t=" + std::to_string(rest_t_);
+      return Check<>::pass();
+    return Check<>::refuse("event_after_rest",
+                           ball(event.ball_a) + " has an event" + at(event) +
+                               " after every ball came to rest at t=" + std::to_string(rest_t_));
   }
 
-  std::string applyMotion(const Event& event) {
+  Check<> applyMotion(const Event& event) {
     BallTrack& a = tracks_[event.ball_a];
     switch (event.type) {
       case EventType::Strike:
         a.moving = true;
-        return "";
+        return Check<>::pass();
       case EventType::BallBall:
         return applyCollision(event);
       case EventType::BallCushion:
@@ -136,48 +145,53 @@ class LogChecker {
       case EventType::RollToRest:
       case EventType::SpinToRest:
         a.moving = false;
-        return "";
+        return Check<>::pass();
       case EventType::Respot:
         a = BallTrack{true, false, false, true, a.gone_by};
-        return "";
+        return Check<>::pass();
       case EventType::SlideToRoll:
       case EventType::Land:
-        return "";
+        return Check<>::pass();
     }
-    return "";
+    return Check<>::pass();
   }
 
-  std::string applyCollision(const Event& event) {
+  Check<> applyCollision(const Event& event) {
     BallTrack& a = tracks_[event.ball_a];
     BallTrack& b = tracks_[event.ball_b];
     for (int id : {event.ball_a, event.ball_b}) {
-      if (tracks_[id].gone) return ball(id) + " hits a ball" + at(event) + " after " + goneText(id);
+      if (tracks_[id].gone)
+        return Check<>::refuse("bad_collision",
+                               ball(id) + " hits a ball" + at(event) + " after " + goneText(id));
     }
     if (!a.moving && !b.moving) {
-      return ball(event.ball_a) + " and " + ball(event.ball_b) + " collide" + at(event) +
-             " while both are at rest";
+      return Check<>::refuse("bad_collision", ball(event.ball_a) + " and " + ball(event.ball_b) +
+                                                  " collide" + at(event) +
+                                                  " while both are at rest");
     }
     a.moving = b.moving = true;
-    return "";
+    return Check<>::pass();
   }
 
-  std::string needsMotion(const Event& event, const std::string& what) const {
+  Check<> needsMotion(const Event& event, const std::string& what) const {
     const BallTrack& a = tracks_[event.ball_a];
     if (a.gone)
-      return ball(event.ball_a) + " " + what + at(event) + " after " + goneText(event.ball_a);
+      return Check<>::refuse("no_motion", ball(event.ball_a) + " " + what + at(event) + " after " +
+                                              goneText(event.ball_a));
     if (!a.moving)
-      return ball(event.ball_a) + " " + what + at(event) + " without being set in motion";
-    return "";
+      return Check<>::refuse("no_motion", ball(event.ball_a) + " " + what + at(event) +
+                                              " without being set in motion");
+    return Check<>::pass();
   }
 
-  std::string applyGone(const Event& event) {
+  Check<> applyGone(const Event& event) {
     const char* what = event.type == EventType::Pocket ? "is pocketed" : "leaves the table";
-    if (std::string why = needsMotion(event, what); !why.empty()) return why;
+    if (auto ok = needsMotion(event, what); !ok) return ok;
     BallTrack& a = tracks_[event.ball_a];
     a.gone = true;
     a.moving = false;
     a.gone_by = event.type;
-    return "";
+    return Check<>::pass();
   }
 
   std::string goneText(int id) const {
@@ -199,51 +213,59 @@ class LogChecker {
 };
 
 // The final state of one ball against what the log said of it.
-std::string checkFinal(int id, const BallTrack& track, MotionState state) {
-  if (track.respotted) return "";
+Check<> checkFinal(int id, const BallTrack& track, MotionState state) {
+  if (track.respotted) return Check<>::pass();
   bool on = physics::onTable(state);
   if (!track.gone && !on)
-    return ball(id) + " ends " + stateName(state) + " but the log never removes it";
-  if (track.gone && on) return ball(id) + " leaves play in the log but ends on the table";
+    return Check<>::refuse("bad_final_state", ball(id) + " ends " + stateName(state) +
+                                                  " but the log never removes it");
+  if (track.gone && on)
+    return Check<>::refuse("bad_final_state",
+                           ball(id) + " leaves play in the log but ends on the table");
   if (track.gone && track.gone_by == EventType::Pocket && state != MotionState::Pocketed) {
-    return ball(id) + " is pocketed in the log but ends " + stateName(state);
+    return Check<>::refuse("bad_final_state",
+                           ball(id) + " is pocketed in the log but ends " + stateName(state));
   }
-  return "";
+  return Check<>::pass();
 }
 
-std::string checkAfter(const std::vector<physics::Ball>& after, const Tracks& tracks) {
+Check<> checkAfter(const std::vector<physics::Ball>& after, const Tracks& tracks) {
   std::array<bool, kBalls> seen{};
   for (const auto& b : after) {
-    if (!validId(b.id)) return "balls after: id " + std::to_string(b.id) + " is not 0-15";
-    if (seen[b.id]) return "balls after: " + ball(b.id) + " is listed twice";
+    if (!validId(b.id))
+      return Check<>::refuse("bad_balls_after",
+                             "balls after: id " + std::to_string(b.id) + " is not 0-15");
+    if (seen[b.id])
+      return Check<>::refuse("bad_balls_after", "balls after: " + ball(b.id) + " is listed twice");
     seen[b.id] = true;
     if (!tracks[b.id].on_table) {
-      if (physics::onTable(b.state)) return "balls after: " + ball(b.id) + " appears on the table";
+      if (physics::onTable(b.state))
+        return Check<>::refuse("bad_balls_after",
+                               "balls after: " + ball(b.id) + " appears on the table");
       continue;
     }
-    if (std::string why = checkFinal(b.id, tracks[b.id], b.state); !why.empty())
-      return "balls after: " + why;
+    if (auto ok = checkFinal(b.id, tracks[b.id], b.state); !ok)
+      return Check<>::refuse(ok.code(), "balls after: " + ok.error());
   }
   for (int id = 0; id < kBalls; ++id) {
-    if (tracks[id].on_table && !seen[id]) return "balls after: " + ball(id) + " is missing";
+    if (tracks[id].on_table && !seen[id])
+      return Check<>::refuse("bad_balls_after", "balls after: " + ball(id) + " is missing");
   }
-  return "";
+  return Check<>::pass();
 }
 
 }  // namespace
 
-Result<bool> checkShot(const Shot& shot) {
+Check<> checkShot(const Shot& shot) {
   auto tracks = tracksBefore(shot.before);
-  if (!tracks) return Result<bool>::fail(tracks.error());
-  if (shot.events.empty()) return Result<bool>::fail("the event log is empty");
+  if (!tracks) return Check<>::refuse("bad_balls_before", tracks.error());
+  if (shot.events.empty()) return Check<>::refuse("empty_log", "the event log is empty");
   LogChecker checker(*tracks);
   for (std::size_t i = 0; i < shot.events.size(); ++i) {
-    if (std::string why = checker.apply(i, shot.events[i]); !why.empty())
-      return Result<bool>::fail(why);
+    if (auto ok = checker.apply(i, shot.events[i]); !ok) return ok;
   }
-  if (std::string why = checkAfter(shot.after, checker.tracks()); !why.empty())
-    return Result<bool>::fail(why);
-  return Result<bool>::ok(true);
+  if (auto ok = checkAfter(shot.after, checker.tracks()); !ok) return ok;
+  return Check<>::pass();
 }
 
 }  // namespace pool::rules

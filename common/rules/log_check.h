@@ -1,6 +1,7 @@
 // Refuses a shot whose event log or final balls contradict themselves or the table before the shot.
 #pragma once
 
+#include "core/check.h"
 #include "core/result.h"
 #include "rules/shot.h"
 
@@ -14,6 +15,6 @@ namespace pool::rules {
 /// a cushion, a pocket or the air without having been set in motion; two resting balls colliding;
 /// any event once every ball came to rest (except the end of a spin or a watchdog re-spot); final
 /// balls that disagree with the log. A watchdog re-spot (Respot) excuses a ball's final state.
-Result<bool> checkShot(const Shot& shot);
+Check<> checkShot(const Shot& shot);
 
 }  // namespace pool::rules

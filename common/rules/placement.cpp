@@ -2,6 +2,7 @@
 #include "rules/placement.h"
 
 #include <cmath>
+#include <string>
 
 namespace pool::rules {
 namespace {
@@ -31,6 +32,10 @@ int overlappedBall(int id, const Eigen::Vector2d& pos, const std::vector<physics
   return -1;
 }
 
+PlacementCheck refuse(PlacementProblem problem, std::string sentence) {
+  return PlacementCheck::refuse(problem, std::move(sentence));
+}
+
 }  // namespace
 
 const char* toString(PlacementProblem problem) {
@@ -53,55 +58,41 @@ const char* toString(PlacementProblem problem) {
   return "unknown";
 }
 
-std::string PlacementCheck::reason() const {
-  switch (problem) {
-    case PlacementProblem::None:
-      return "";
-    case PlacementProblem::NoBallInHand:
-      return "the shooter does not have the cue ball in hand";
-    case PlacementProblem::NotFinite:
-      return "the position is not finite";
-    case PlacementProblem::OffSlate:
-      return "the ball would not lie on the slate";
-    case PlacementProblem::OverPocket:
-      return "the ball would be over a pocket";
-    case PlacementProblem::Overlaps:
-      return "the ball would overlap ball " + std::to_string(other);
-    case PlacementProblem::NotBehindHeadString:
-      return "the cue ball must be behind the head string";
-  }
-  return "unknown problem";
-}
-
 PlacementCheck checkBallPlacement(int id, const Eigen::Vector2d& pos,
                                   const std::vector<physics::Ball>& balls,
                                   const TableContext& table) {
-  if (!pos.allFinite()) return {PlacementProblem::NotFinite};
-  if (!onSlate(pos, table)) return {PlacementProblem::OffSlate};
-  if (overPocket(pos, table)) return {PlacementProblem::OverPocket};
+  if (!pos.allFinite()) return refuse(PlacementProblem::NotFinite, "the position is not finite");
+  if (!onSlate(pos, table))
+    return refuse(PlacementProblem::OffSlate, "the ball would not lie on the slate");
+  if (overPocket(pos, table))
+    return refuse(PlacementProblem::OverPocket, "the ball would be over a pocket");
   if (int other = overlappedBall(id, pos, balls, table.ball_radius); other >= 0) {
-    return {PlacementProblem::Overlaps, other};
+    return refuse(PlacementProblem::Overlaps,
+                  "the ball would overlap ball " + std::to_string(other));
   }
-  return {};
+  return PlacementCheck::pass();
 }
 
 PlacementCheck checkCueBallPlacement(BallInHand in_hand, const Eigen::Vector2d& pos,
                                      const std::vector<physics::Ball>& balls,
                                      const TableContext& table) {
-  if (in_hand == BallInHand::None) return {PlacementProblem::NoBallInHand};
+  if (in_hand == BallInHand::None) {
+    return refuse(PlacementProblem::NoBallInHand, "the shooter does not have the cue ball in hand");
+  }
   PlacementCheck check = checkBallPlacement(physics::kCueBall, pos, balls, table);
   if (!check.ok()) return check;
   if (in_hand == BallInHand::BehindHeadString && !(pos.x() < table.spots.head_string_x)) {
-    return {PlacementProblem::NotBehindHeadString};
+    return refuse(PlacementProblem::NotBehindHeadString,
+                  "the cue ball must be behind the head string");
   }
-  return {};
+  return PlacementCheck::pass();
 }
 
 Result<Eigen::Vector2d> placeCueBall(BallInHand in_hand, const Eigen::Vector2d& pos,
                                      const std::vector<physics::Ball>& balls,
                                      const TableContext& table) {
   PlacementCheck check = checkCueBallPlacement(in_hand, pos, balls, table);
-  if (!check.ok()) return Result<Eigen::Vector2d>::fail(check.reason());
+  if (!check) return Result<Eigen::Vector2d>::fail(toString(check.code()), check.error());
   return Result<Eigen::Vector2d>::ok(pos);
 }
 

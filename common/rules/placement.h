@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/check.h"
 #include "core/result.h"
 #include "physics/ball.h"
 #include "rules/game_state.h"
@@ -27,15 +28,9 @@ enum class PlacementProblem : std::uint8_t {
 
 const char* toString(PlacementProblem problem);
 
-/// The outcome of a placement check.
-struct PlacementCheck {
-  PlacementProblem problem = PlacementProblem::None;
-  int other = -1;  ///< the ball overlapped, for Overlaps
-
-  bool ok() const { return problem == PlacementProblem::None; }
-  /// One line, e.g. "overlaps ball 5"; "" when ok.
-  std::string reason() const;
-};
+/// The outcome of a placement check: its problem and one line, e.g. "the ball would overlap ball
+/// 5".
+using PlacementCheck = Check<PlacementProblem>;
 
 /// Ball `id` placed at `pos` (table plane, m): on the slate (its centre at least one radius inside
 /// the cushion noses), not over a pocket hole (when the context has holes), and not overlapping

@@ -68,7 +68,7 @@ Result<std::vector<physics::Ball>> placeBalls(const std::vector<physics::Ball>& 
       return Result<std::vector<physics::Ball>>::fail(name + ": not a ball id (0-15)");
     }
     PlacementCheck check = checkBallPlacement(move.id, move.pos, placed, table);
-    if (!check.ok()) return Result<std::vector<physics::Ball>>::fail(name + ": " + check.reason());
+    if (!check.ok()) return Result<std::vector<physics::Ball>>::fail(name + ": " + check.error());
     putBall(placed, physics::restingBall(move.id, move.pos, table.ball_radius));
   }
   return Result<std::vector<physics::Ball>>::ok(std::move(placed));

@@ -5,16 +5,14 @@
 #include <algorithm>
 #include <string>
 
-#include "rules/respot.h"
-#include "rules/rotation_detail.h"
+#include "rules/referee.h"
+#include "rules/rotation_steps.h"
 
 namespace pool::rules {
 namespace {
 
-using detail::Judged;
-
-Result<bool> refuse(std::string reason) {
-  return Result<bool>::fail(std::move(reason));
+Check<> refuse(const char* code, std::string reason) {
+  return Check<>::refuse(code, std::move(reason));
 }
 
 bool offered(const GameState& state, Choice choice) {
@@ -22,33 +20,37 @@ bool offered(const GameState& state, Choice choice) {
 }
 
 // A choice given with a shot may only be one the shot starts with (play on, push out).
-Result<bool> checkChoice(const GameState& state, const Intent& intent) {
+Check<> checkChoice(const GameState& state, const Intent& intent) {
   if (state.options.empty()) {
-    if (intent.choice) return refuse("no choice is pending");
-    return Result<bool>::ok(true);
+    if (intent.choice) return refuse("no_choice_pending", "no choice is pending");
+    return Check<>::pass();
   }
-  if (!intent.choice) return refuse("choose first: " + describe(state));
+  if (!intent.choice) return refuse("choose_first", "choose first: " + describe(state));
   if (!offered(state, *intent.choice))
-    return refuse(std::string("choice ") + toString(*intent.choice) + " is not offered");
+    return refuse("choice_not_offered",
+                  std::string("choice ") + toString(*intent.choice) + " is not offered");
   if (*intent.choice != Choice::PlayOn && *intent.choice != Choice::PushOut) {
-    return refuse(std::string("choice ") + toString(*intent.choice) +
-                  " is made without a shot: apply it first");
+    return refuse("choice_needs_no_shot", std::string("choice ") + toString(*intent.choice) +
+                                              " is made without a shot: apply it first");
   }
-  return Result<bool>::ok(true);
+  return Check<>::pass();
 }
 
-Result<bool> checkCall(const Intent& intent, const std::vector<physics::Ball>& balls,
-                       const RotationConfig& config) {
+Check<> checkCall(const Intent& intent, const std::vector<physics::Ball>& balls,
+                  const RotationConfig& config) {
   int id = *intent.ball;
   std::string name = "called ball " + std::to_string(id);
-  if (id < 1 || id > rackBall(config.game)) return refuse(name + " is not in this game");
-  if (!detail::ballOnTable(id, balls)) return refuse(name + " is not on the table");
-  if (!isPocketName(intent.pocket)) return refuse("unknown called pocket '" + intent.pocket + "'");
-  return Result<bool>::ok(true);
+  if (id < 1 || id > rackBall(config.game))
+    return refuse("ball_not_in_game", name + " is not in this game");
+  if (!detail::ballOnTable(id, balls))
+    return refuse("ball_not_on_table", name + " is not on the table");
+  if (!isPocketName(intent.pocket))
+    return refuse("unknown_pocket", "unknown called pocket '" + intent.pocket + "'");
+  return Check<>::pass();
 }
 
 // The state the shot is played from once a choice made with it applies.
-GameState stateForShot(const GameState& state, const Intent& intent) {
+GameState stateAfterChoice(const GameState& state, const Intent& intent) {
   GameState st = state;
   if (!intent.choice) return st;
   st.options.clear();
@@ -56,26 +58,35 @@ GameState stateForShot(const GameState& state, const Intent& intent) {
   return st;
 }
 
-// The third foul in a row loses the rack; a legal shot clears the shooter's count.
-void countFouls(const GameState& state, Verdict& v, std::array<int, kSeats>& fouls_in_row) {
-  fouls_in_row = state.fouls_in_row;
-  int& mine = fouls_in_row[state.shooter];
-  mine = v.legal() ? 0 : mine + 1;
-  if (mine >= 3 && !v.game_over) detail::endGame(state, GameEnd::ThreeFouls, v);
-}
+class RotationReferee final : public detail::Referee {
+ public:
+  explicit RotationReferee(const RotationConfig& config) : config_(config) {}
 
-Verdict finish(const GameState& state, const Shot& shot, Judged judged, const TableContext& table,
-               const RotationConfig& config) {
-  Verdict& v = judged.verdict;
-  std::array<int, kSeats> fouls_in_row{};
-  countFouls(state, v, fouls_in_row);
-  if (!v.game_over) v.respots = respotBalls(judged.respot_ids, shot.after, table);
-  int dry_turns = v.pocketed.empty() ? state.dry_turns + 1 : 0;
-  detail::checkStalemate(state, dry_turns, config.stalemate_turns, v);
-  v.next = detail::nextState(state, v, dry_turns);
-  if (!v.rerack) v.next.fouls_in_row = fouls_in_row;
-  return v;
-}
+  Check<> checkIntent(const GameState& state, const Intent& intent,
+                      const std::vector<physics::Ball>& balls) const override {
+    return checkRotationIntent(state, intent, balls, config_);
+  }
+
+  GameState stateForShot(const GameState& state, const Intent& intent) const override {
+    return stateAfterChoice(state, intent);
+  }
+
+  detail::Judged judgeBreak(const GameState& state, const Shot& shot, const ShotFacts& facts,
+                            const TableContext&) const override {
+    return detail::judgeRotationBreak(state, shot, facts, config_);
+  }
+
+  detail::Judged judgePlay(const GameState& state, const Shot& shot, const ShotFacts& facts,
+                           const TableContext&) const override {
+    return detail::judgeRotationPlay(state, shot, facts, config_);
+  }
+
+  bool threeFoulsLose() const override { return true; }
+  int stalemateTurns() const override { return config_.stalemate_turns; }
+
+ private:
+  RotationConfig config_;
+};
 
 }  // namespace
 
@@ -108,37 +119,24 @@ std::vector<int> rotationFirstBalls(const std::vector<physics::Ball>& balls) {
   return {lowest};
 }
 
-Result<bool> checkRotationIntent(const GameState& state, const Intent& intent,
-                                 const std::vector<physics::Ball>& balls,
-                                 const RotationConfig& config) {
-  if (state.phase == Phase::Over) return refuse("the game is over");
+Check<> checkRotationIntent(const GameState& state, const Intent& intent,
+                            const std::vector<physics::Ball>& balls, const RotationConfig& config) {
+  if (state.phase == Phase::Over) return refuse("game_over", "the game is over");
   if (auto ok = checkChoice(state, intent); !ok) return ok;
-  const GameState st = stateForShot(state, intent);
+  const GameState st = stateAfterChoice(state, intent);
   // The break and a push-out need no call; whatever was declared is ignored.
-  if (st.phase == Phase::Break || st.push_out) return Result<bool>::ok(true);
-  if (intent.ball && intent.safety) return refuse("a call and a safety at once");
-  if (intent.safety) return Result<bool>::ok(true);
+  if (st.phase == Phase::Break || st.push_out) return Check<>::pass();
+  if (intent.ball && intent.safety) return refuse("call_and_safety", "a call and a safety at once");
+  if (intent.safety) return Check<>::pass();
   if (intent.ball) return checkCall(intent, balls, config);
   if (config.game == Rotation::TenBall)
-    return refuse("call a ball and a pocket, or declare a safety");
-  return Result<bool>::ok(true);
+    return refuse("no_call", "call a ball and a pocket, or declare a safety");
+  return Check<>::pass();
 }
 
 Result<Verdict> judgeRotation(const GameState& state, const Shot& shot, const TableContext& table,
                               const RotationConfig& config) {
-  if (auto ok = checkRotationIntent(state, shot.intent, shot.before, config); !ok)
-    return Result<Verdict>::fail(ok.error());
-  GameState st = stateForShot(state, shot.intent);
-  if (auto ok = detail::checkCueInHand(st, shot, table); !ok)
-    return Result<Verdict>::fail(ok.error());
-  if (shot.clock_expired && shot.events.empty())
-    return Result<Verdict>::ok(finish(st, shot, detail::timeOut(st), table, config));
-  auto facts = distilShot(shot, table.spots.head_string_x);
-  if (!facts) return Result<Verdict>::fail(facts.error());
-  Judged judged = st.phase == Phase::Break ? detail::judgeRotationBreak(st, shot, *facts, config)
-                                           : detail::judgeRotationPlay(st, shot, *facts, config);
-  detail::addWatchdogRemovals(*facts, judged);
-  return Result<Verdict>::ok(finish(st, shot, std::move(judged), table, config));
+  return detail::judgeWith(RotationReferee(config), state, shot, table);
 }
 
 Result<Verdict> applyRotationChoice(const GameState& state, Choice choice) {

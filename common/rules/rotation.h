@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/check.h"
 #include "core/result.h"
 #include "physics/ball.h"
 #include "rules/game_state.h"
@@ -43,9 +44,8 @@ std::vector<int> rotationFirstBalls(const std::vector<physics::Ball>& balls);
 /// when none is pending; a call and a safety at once; a called ball not on the table or not in
 /// the game, or an unknown pocket; in 10-ball after the break (a push-out aside), no call and no
 /// safety. 9-ball needs no call: a call given is checked, and then ignored.
-Result<bool> checkRotationIntent(const GameState& state, const Intent& intent,
-                                 const std::vector<physics::Ball>& balls,
-                                 const RotationConfig& config);
+Check<> checkRotationIntent(const GameState& state, const Intent& intent,
+                            const std::vector<physics::Ball>& balls, const RotationConfig& config);
 
 /// Judges one shot. Refused (never judged) when the intent fails checkRotationIntent, the cue
 /// ball in hand was placed illegally, or the shot fails checkShot. A shot clock that ran out with

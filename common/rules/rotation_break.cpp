@@ -1,6 +1,6 @@
 // The opening break of 9-ball and 10-ball: legal or not, the lowest ball first, the rack ball on
 // the break.
-#include "rules/rotation_detail.h"
+#include "rules/rotation_steps.h"
 
 namespace pool::rules::detail {
 

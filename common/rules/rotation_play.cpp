@@ -1,6 +1,6 @@
 // Shots of 9-ball and 10-ball after the break: the lowest ball first, push-outs, calls, the rack
 // ball.
-#include "rules/rotation_detail.h"
+#include "rules/rotation_steps.h"
 
 namespace pool::rules::detail {
 namespace {

@@ -1,6 +1,8 @@
 // Typed reading of a JSON object's members, keeping the first one-line error ("<path>: <why>").
 #pragma once
 
+#include "core/check.h"
+
 #include <cstdint>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -54,6 +56,8 @@ class ObjectReader {
   bool ok() const { return error_.empty(); }
   /// The first failure, "" if none.
   const std::string& error() const { return error_; }
+  /// The reading as a check: passed, or refused with the first error ("bad_field").
+  Check<> check() const { return ok() ? Check<>::pass() : Check<>::refuse("bad_field", error_); }
 
  private:
   const nlohmann::json* find(std::string_view key, Presence presence);

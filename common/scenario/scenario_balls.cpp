@@ -13,7 +13,7 @@ namespace {
 using Positions = std::map<int, Eigen::Vector2d>;  // by id: sorted, one entry per id
 
 // One entry of `balls`: {"id": 3, "x": 0.1, "y": -0.2}.
-std::string readBallEntry(const nlohmann::json& entry, const std::string& path, Positions& placed) {
+Check<> readBallEntry(const nlohmann::json& entry, const std::string& path, Positions& placed) {
   ObjectReader reader(entry, path);
   reader.onlyKnown({"id", "x", "y"});
   int id = 0;
@@ -23,30 +23,32 @@ std::string readBallEntry(const nlohmann::json& entry, const std::string& path, 
   reader.number("y", pos.y(), Presence::Required);
   if (reader.ok() && placed.count(id) != 0)
     reader.fail("id", "ball " + std::to_string(id) + " is listed twice");
-  if (!reader.ok()) return reader.error();
+  if (!reader.ok()) return reader.check();
   placed[id] = pos;
-  return "";
+  return Check<>::pass();
 }
 
-std::string readBallList(const nlohmann::json& balls, Positions& placed) {
-  if (!balls.is_array()) return "balls: must be an array, got " + shortDump(balls);
+Check<> readBallList(const nlohmann::json& balls, Positions& placed) {
+  if (!balls.is_array())
+    return Check<>::refuse("not_an_array", "balls: must be an array, got " + shortDump(balls));
   for (std::size_t i = 0; i < balls.size(); ++i) {
-    if (std::string why = readBallEntry(balls[i], indexPath("balls", i), placed); !why.empty())
-      return why;
+    if (auto ok = readBallEntry(balls[i], indexPath("balls", i), placed); !ok) return ok;
   }
-  return "";
+  return Check<>::pass();
 }
 
 // The rack's object balls, and the cue ball on the head spot.
-std::string readRack(const nlohmann::json& rack, Scenario& s, Positions& racked) {
+Check<> readRack(const nlohmann::json& rack, Scenario& s, Positions& racked) {
   const auto type =
       rack.is_string() ? table::rackTypeFromString(rack.get<std::string>()) : std::nullopt;
-  if (!type) return "rack: must be \"8ball\", \"9ball\" or \"10ball\", got " + shortDump(rack);
+  if (!type)
+    return Check<>::refuse(
+        "bad_rack", "rack: must be \"8ball\", \"9ball\" or \"10ball\", got " + shortDump(rack));
   const double r = s.spec.params.ball_radius;
   for (const auto& b : table::rackFor(*type, s.spec, r, s.seed, s.rack_generator))
     racked[b.id] = b.pos;
   racked[physics::kCueBall] = table::spotsFor(s.spec).head_spot;
-  return "";
+  return Check<>::pass();
 }
 
 std::vector<physics::Ball> ballsAtRest(const Positions& positions, double radius) {
@@ -62,22 +64,24 @@ std::vector<physics::Ball> ballsAtRest(const Positions& positions, double radius
 
 }  // namespace
 
-std::string readBalls(const nlohmann::json* balls, const nlohmann::json* rack, Scenario& s) {
+Check<> readBalls(const nlohmann::json* balls, const nlohmann::json* rack, Scenario& s) {
   if (balls == nullptr && rack == nullptr)
-    return "balls: missing (a scenario needs `balls`, `rack` or both)";
+    return Check<>::refuse("no_balls", "balls: missing (a scenario needs `balls`, `rack` or both)");
   Positions positions;
   if (rack != nullptr) {
-    if (std::string why = readRack(*rack, s, positions); !why.empty()) return why;
+    if (auto ok = readRack(*rack, s, positions); !ok) return ok;
   }
   if (balls != nullptr) {
     Positions placed;
-    if (std::string why = readBallList(*balls, placed); !why.empty()) return why;
+    if (auto ok = readBallList(*balls, placed); !ok) return ok;
     for (const auto& [id, xy] : placed) positions[id] = xy;  // explicit positions win over the rack
   }
-  if (positions.count(physics::kCueBall) == 0) return "balls: no cue ball (id 0)";
+  if (positions.count(physics::kCueBall) == 0)
+    return Check<>::refuse("no_cue_ball", "balls: no cue ball (id 0)");
   s.balls = ballsAtRest(positions, s.spec.params.ball_radius);
-  const std::string why = physics::checkPlacement(s.balls, s.geometry, s.spec.params);
-  return why.empty() ? "" : "balls: " + why;
+  const auto ok = physics::checkPlacement(s.balls, s.geometry, s.spec.params);
+  if (!ok) return Check<>::refuse(ok.code(), "balls: " + ok.error());
+  return Check<>::pass();
 }
 
 }  // namespace pool::scenario

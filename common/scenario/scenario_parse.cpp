@@ -19,7 +19,7 @@ struct TopLevel {
   const nlohmann::json* shot = nullptr;
 };
 
-std::string readTopLevel(const nlohmann::json& doc, TopLevel& top, Scenario& s) {
+Check<> readTopLevel(const nlohmann::json& doc, TopLevel& top, Scenario& s) {
   ObjectReader reader(doc, "");
   reader.onlyKnown({"description", "table", "params", "models", "balls", "rack", "rack_gaps",
                     "shot", "seed", "max_time", "trajectory_hz"});
@@ -41,7 +41,7 @@ std::string readTopLevel(const nlohmann::json& doc, TopLevel& top, Scenario& s) 
   reader.unsignedInteger("seed", s.seed);
   reader.numberIn("max_time", kMaxTime, s.options.max_time);
   reader.numberIn("trajectory_hz", kTrajectoryHz, s.options.sample_hz);
-  return reader.error();
+  return reader.check();
 }
 
 }  // namespace
@@ -52,15 +52,15 @@ Result<Scenario> parseScenarioIn(const std::string& json_text,
   if (!doc) return Result<Scenario>::fail(doc.error());
   Scenario s;
   TopLevel top;
-  std::string why = readTopLevel(*doc, top, s);
+  Check<> ok = readTopLevel(*doc, top, s);
   // Each step needs the ones before it: params change the spec, the geometry needs the params...
-  if (why.empty()) why = readTable(top.table, base_dir, s);
-  if (why.empty()) why = readParams(top.params, s);
-  if (why.empty()) why = readModels(top.models, s);
-  if (why.empty()) why = buildGeometry(s);
-  if (why.empty()) why = readBalls(top.balls, top.rack, s);
-  if (why.empty()) why = readShot(*top.shot, s);
-  if (!why.empty()) return Result<Scenario>::fail(oneLine(why));
+  if (ok) ok = readTable(top.table, base_dir, s);
+  if (ok) ok = readParams(top.params, s);
+  if (ok) ok = readModels(top.models, s);
+  if (ok) ok = buildGeometry(s);
+  if (ok) ok = readBalls(top.balls, top.rack, s);
+  if (ok) ok = readShot(*top.shot, s);
+  if (!ok) return Result<Scenario>::fail(ok.code(), oneLine(ok.error()));
   return Result<Scenario>::ok(std::move(s));
 }
 

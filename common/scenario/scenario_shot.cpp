@@ -13,7 +13,7 @@ constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 }  // namespace
 
-std::string readShot(const nlohmann::json& shot, Scenario& s) {
+Check<> readShot(const nlohmann::json& shot, Scenario& s) {
   ObjectReader reader(shot, "shot");
   reader.onlyKnown({"yaw_deg", "tip_side", "tip_height", "elevation_deg", "speed", "speed_is"});
   double yaw_deg = 0.0;
@@ -34,14 +34,14 @@ std::string readShot(const nlohmann::json& shot, Scenario& s) {
   if (reader.ok() && speed_is != "cue" && speed_is != "ball") {
     reader.fail("speed_is", "must be \"cue\" or \"ball\", got " + shortDump(speed_is));
   }
-  if (!reader.ok()) return reader.error();
+  if (!reader.ok()) return reader.check();
   cue.yaw = yaw_deg * kRadPerDeg;
   cue.elevation = elevation_deg * kRadPerDeg;
   cue.speed_is_ball = speed_is == "ball";
-  if (const std::string why = physics::validateShot(cue, s.spec.params); !why.empty())
-    return "shot." + why;
+  if (auto ok = physics::validateShot(cue, s.spec.params); !ok)
+    return Check<>::refuse("bad_shot", "shot." + ok.error());
   s.shot = cue;
-  return "";
+  return Check<>::pass();
 }
 
 }  // namespace pool::scenario

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "game/loaded_table.h"
 #include "scenario/object_reader.h"
 #include "scenario/scenario_sections.h"
 #include "table/contact_models.h"
@@ -25,20 +26,21 @@ std::string resolveTable(const std::string& name_or_path, const std::filesystem:
 
 }  // namespace
 
-std::string readTable(const std::string& name_or_path, const std::filesystem::path& base_dir,
-                      Scenario& s) {
+Check<> readTable(const std::string& name_or_path, const std::filesystem::path& base_dir,
+                  Scenario& s) {
   if (name_or_path.empty())
-    return "table: must be a table name (wpa-9ft, wpa-8ft, wpa-7ft) or a spec file path";
+    return Check<>::refuse(
+        "bad_table", "table: must be a table name (wpa-9ft, wpa-8ft, wpa-7ft) or a spec file path");
   auto spec = table::loadTableSpec(resolveTable(name_or_path, base_dir));
-  if (!spec) return "table: " + spec.error();
+  if (!spec) return Check<>::refuse("bad_table", "table: " + spec.error());
   s.spec = std::move(*spec);
-  return "";
+  return Check<>::pass();
 }
 
-std::string readParams(const nlohmann::json* params, Scenario& s) {
+Check<> readParams(const nlohmann::json* params, Scenario& s) {
   if (params != nullptr) {
     ObjectReader reader(*params, "params");
-    if (!reader.ok()) return reader.error();
+    if (!reader.ok()) return reader.check();
     for (const auto& item : params->items()) {
       const auto& names = table::paramNames();
       if (std::find(names.begin(), names.end(), item.key()) == names.end()) {
@@ -48,45 +50,41 @@ std::string readParams(const nlohmann::json* params, Scenario& s) {
       double value = 0.0;
       reader.number(item.key(), value, Presence::Required);
       if (!reader.ok()) break;
-      if (const std::string why = table::setParam(s.spec.params, item.key(), value); !why.empty()) {
-        reader.fail(item.key(), why);
+      if (auto ok = table::setParam(s.spec.params, item.key(), value); !ok) {
+        reader.fail(item.key(), ok.error());
       }
     }
-    if (!reader.ok()) return reader.error();
+    if (!reader.ok()) return reader.check();
   }
-  const std::string why = table::validate(s.spec.params);
-  return why.empty() ? "" : "params." + why;
+  const auto ok = table::validate(s.spec.params);
+  if (!ok) return Check<>::refuse(ok.code(), "params." + ok.error());
+  return Check<>::pass();
 }
 
-std::string readModels(const nlohmann::json* models, Scenario& s) {
-  if (models == nullptr) return "";
+Check<> readModels(const nlohmann::json* models, Scenario& s) {
+  if (models == nullptr) return Check<>::pass();
   ObjectReader reader(*models, "models");
-  if (!reader.ok()) return reader.error();
+  if (!reader.ok()) return reader.check();
   for (const auto& item : models->items()) {
     std::string name;
     reader.string(item.key(), name, Presence::Required);
     if (!reader.ok()) break;
-    if (const std::string why = table::setModel(s.spec.models, item.key(), name); !why.empty()) {
-      reader.fail(item.key(), why);
+    if (auto ok = table::setModel(s.spec.models, item.key(), name); !ok) {
+      reader.fail(item.key(), ok.error());
     }
   }
-  return reader.error();
+  return reader.check();
 }
 
-std::string buildGeometry(Scenario& s) {
-  // The collision mesh through assimp, as the server reads it; a spec without one (or whose mesh
-  // file is not beside it) gets the same geometry generated from the spec, as pool-tablegen
-  // would write it. Coefficient overrides (cushion_height, ball_radius) need no new mesh: the
-  // physics reads the nose height and the radius from the params.
-  std::error_code ec;
-  if (s.spec.collision_mesh.empty() || !std::filesystem::exists(s.spec.collision_mesh, ec)) {
-    s.geometry = table::buildTableGeometry(s.spec);
-    return "";
-  }
-  auto loaded = table::loadTableGeometry(s.spec);
-  if (!loaded) return "table: " + loaded.error();
-  s.geometry = std::move(*loaded);
-  return "";
+Check<> buildGeometry(Scenario& s) {
+  // The game kit assembles the table as for a match: the collision mesh through assimp, as the
+  // server reads it, or for a spec without one (or whose mesh file is not beside it) the same
+  // geometry generated from the spec. Coefficient overrides (cushion_height, ball_radius) need no
+  // new mesh: the physics reads the nose height and the radius from the params.
+  auto loaded = game::loadTable(s.spec);
+  if (!loaded) return Check<>::refuse("bad_table", "table: " + loaded.error());
+  s.geometry = std::move(loaded->geometry);
+  return Check<>::pass();
 }
 
 }  // namespace pool::scenario

@@ -60,14 +60,17 @@ const std::vector<std::string_view>& knownModels(std::string_view pair) {
   return p ? p->models : none;
 }
 
-std::string setModel(ContactModels& models, std::string_view pair, std::string_view name) {
+Check<> setModel(ContactModels& models, std::string_view pair, std::string_view name) {
   const PairModels* p = find(pair);
-  if (!p) return "unknown contact pair (known: " + joined(contactPairs()) + ")";
+  if (!p)
+    return Check<>::refuse("unknown_pair",
+                           "unknown contact pair (known: " + joined(contactPairs()) + ")");
   if (std::find(p->models.begin(), p->models.end(), name) == p->models.end()) {
-    return "unknown model '" + escapedForLog(name) + "' (known: " + joined(p->models) + ")";
+    return Check<>::refuse("unknown_model", "unknown model '" + escapedForLog(name) +
+                                                "' (known: " + joined(p->models) + ")");
   }
   models.*(p->field) = std::string(name);
-  return "";
+  return Check<>::pass();
 }
 
 }  // namespace pool::table

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/check.h"
+
 namespace pool::table {
 
 /// The model chosen for each contact pair (names as in SIM-CONTRACT.md's `models`).
@@ -22,9 +24,8 @@ const std::vector<std::string_view>& contactPairs();
 /// The model names known for `pair` (empty for an unknown pair).
 const std::vector<std::string_view>& knownModels(std::string_view pair);
 
-/// Sets the model of `pair` to `name`. Returns "" on success, otherwise a one-line reason without
-/// the field name ("unknown contact pair", "unknown model 'x' (known: a, b)"); nothing changes on
-/// failure.
-std::string setModel(ContactModels& models, std::string_view pair, std::string_view name);
+/// Sets the model of `pair` to `name`, or refuses with a one-line reason without the field name
+/// ("unknown contact pair", "unknown model 'x' (known: a, b)"); nothing changes on a refusal.
+Check<> setModel(ContactModels& models, std::string_view pair, std::string_view name);
 
 }  // namespace pool::table

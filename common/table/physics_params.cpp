@@ -87,32 +87,36 @@ const std::vector<std::string_view>& paramNames() {
   return names;
 }
 
-std::string setParam(PhysicsParams& params, std::string_view name, double value) {
+Check<> setParam(PhysicsParams& params, std::string_view name, double value) {
   const ParamInfo* info = findParam(name);
-  if (info == nullptr) return "unknown parameter";
-  if (!info->range.contains(value)) return rangeReason(info->range);
+  if (info == nullptr) return Check<>::refuse("unknown_parameter", "unknown parameter");
+  if (!info->range.contains(value))
+    return Check<>::refuse("out_of_range", rangeReason(info->range));
   if (info->member == nullptr) {
     params.u_b = value;
   } else {
     params.*(info->member) = value;
   }
-  return "";
+  return Check<>::pass();
 }
 
-std::string validate(const PhysicsParams& params) {
+Check<> validate(const PhysicsParams& params) {
   for (const ParamInfo& info : paramTable()) {
     std::optional<double> value =
         info.member ? std::optional<double>(params.*(info.member)) : params.u_b;
     if (value && !info.range.contains(*value)) {
-      return std::string(info.name) + ": " + rangeReason(info.range);
+      return Check<>::refuse("out_of_range",
+                             std::string(info.name) + ": " + rangeReason(info.range));
     }
   }
   if (!(params.cushion_height > params.ball_radius &&
         params.cushion_height < 2.0 * params.ball_radius)) {
-    return "cushion_height: must be above ball_radius and below 2 * ball_radius";
+    return Check<>::refuse("bad_cushion_height",
+                           "cushion_height: must be above ball_radius and below 2 * ball_radius");
   }
-  if (params.cue_end_mass > params.cue_mass) return "cue_end_mass: must not exceed cue_mass";
-  return "";
+  if (params.cue_end_mass > params.cue_mass)
+    return Check<>::refuse("bad_cue_end_mass", "cue_end_mass: must not exceed cue_mass");
+  return Check<>::pass();
 }
 
 }  // namespace pool::table

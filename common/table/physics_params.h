@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/check.h"
+
 namespace pool::table {
 
 /// The coefficients the physics reads. Units SI; defaults are docs/PHYSICS.md's typical values.
@@ -30,13 +32,13 @@ struct PhysicsParams {
 /// The names setParam accepts, in SIM-CONTRACT.md's order.
 const std::vector<std::string_view>& paramNames();
 
-/// Sets the coefficient called `name` to `value`. Returns an empty string on success, otherwise a
-/// one-line reason without the field name, e.g. "must be a finite number in (0, 2]" or
-/// "unknown parameter". Nothing changes on failure.
-std::string setParam(PhysicsParams& params, std::string_view name, double value);
+/// Sets the coefficient called `name` to `value`, or refuses with a one-line reason without the
+/// field name, e.g. "must be a finite number in (0, 2]" ("out_of_range") or "unknown parameter"
+/// ("unknown_parameter"). Nothing changes on a refusal.
+Check<> setParam(PhysicsParams& params, std::string_view name, double value);
 
 /// Checks the whole set for consistency (each value in range, cushion nose above the ball's
-/// centre and below its top). Returns "" or "<name>: <reason>".
-std::string validate(const PhysicsParams& params);
+/// centre and below its top), or refuses it with "<name>: <reason>".
+Check<> validate(const PhysicsParams& params);
 
 }  // namespace pool::table

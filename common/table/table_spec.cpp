@@ -42,33 +42,38 @@ struct NumberField {
 };
 
 /// Reads the listed numbers from `obj`, then rejects keys that are neither listed nor in
-/// `other_known`. Returns "" or a reason.
-std::string readFields(const json& obj, const std::string& prefix,
-                       std::initializer_list<NumberField> fields,
-                       std::initializer_list<const char*> other_known) {
+/// `other_known`, or refuses with a reason.
+Check<> readFields(const json& obj, const std::string& prefix,
+                   std::initializer_list<NumberField> fields,
+                   std::initializer_list<const char*> other_known) {
   for (const NumberField& f : fields) {
     const auto it = obj.find(f.key);
     const std::string where = prefix + f.key + ": ";
-    if (it == obj.end()) return where + "missing (" + f.rule->reason + ")";
-    if (!it->is_number()) return where + f.rule->reason;
+    if (it == obj.end())
+      return Check<>::refuse("missing_field", where + "missing (" + f.rule->reason + ")");
+    if (!it->is_number()) return Check<>::refuse("bad_number", where + f.rule->reason);
     const double v = it->get<double>();
-    if (!std::isfinite(v) || !f.rule->ok(v)) return where + f.rule->reason;
+    if (!std::isfinite(v) || !f.rule->ok(v))
+      return Check<>::refuse("bad_number", where + f.rule->reason);
     *f.target = v;
   }
   for (const auto& [key, value] : obj.items()) {
     bool known = false;
     for (const NumberField& f : fields) known = known || key == f.key;
     for (const char* k : other_known) known = known || key == k;
-    if (!known) return prefix + escapedForLog(key) + ": unknown field";
+    if (!known)
+      return Check<>::refuse("unknown_field", prefix + escapedForLog(key) + ": unknown field");
   }
-  return "";
+  return Check<>::pass();
 }
 
-std::string readPocket(const json& root, const char* key, PocketSpec& out) {
+Check<> readPocket(const json& root, const char* key, PocketSpec& out) {
   const auto it = root.find(key);
   const std::string prefix = std::string(key) + ".";
-  if (it == root.end()) return std::string(key) + ": missing (must be an object)";
-  if (!it->is_object()) return std::string(key) + ": must be an object";
+  if (it == root.end())
+    return Check<>::refuse("missing_field", std::string(key) + ": missing (must be an object)");
+  if (!it->is_object())
+    return Check<>::refuse("not_an_object", std::string(key) + ": must be an object");
   return readFields(*it, prefix,
                     {{"mouth", &out.mouth, &kPositive},
                      {"jaw_angle_deg", &out.jaw_angle_deg, &kJawAngle},
@@ -77,10 +82,10 @@ std::string readPocket(const json& root, const char* key, PocketSpec& out) {
                     {});
 }
 
-std::string readParams(const json& root, PhysicsParams& params) {
+Check<> readParams(const json& root, PhysicsParams& params) {
   const auto it = root.find("params");
-  if (it == root.end()) return "";
-  if (!it->is_object()) return "params: must be an object";
+  if (it == root.end()) return Check<>::pass();
+  if (!it->is_object()) return Check<>::refuse("not_an_object", "params: must be an object");
   for (const auto& [key, value] : it->items()) {
     const std::string where = "params." + escapedForLog(key) + ": ";
     if (key == "u_b" && value.is_null()) {
@@ -88,32 +93,34 @@ std::string readParams(const json& root, PhysicsParams& params) {
       continue;
     }
     const double v = value.is_number() ? value.get<double>() : std::nan("");
-    const std::string reason = setParam(params, key, v);
-    if (!reason.empty()) return where + reason;
+    if (auto ok = setParam(params, key, v); !ok)
+      return Check<>::refuse(ok.code(), where + ok.error());
   }
-  const std::string reason = validate(params);
-  return reason.empty() ? "" : "params." + reason;
+  if (auto ok = validate(params); !ok) return Check<>::refuse(ok.code(), "params." + ok.error());
+  return Check<>::pass();
 }
 
-std::string readModels(const json& root, ContactModels& models) {
+Check<> readModels(const json& root, ContactModels& models) {
   const auto it = root.find("models");
-  if (it == root.end()) return "";
-  if (!it->is_object()) return "models: must be an object";
+  if (it == root.end()) return Check<>::pass();
+  if (!it->is_object()) return Check<>::refuse("not_an_object", "models: must be an object");
   for (const auto& [key, value] : it->items()) {
-    if (!value.is_string()) return "models." + escapedForLog(key) + ": must be a string";
-    const std::string reason = setModel(models, key, value.get<std::string>());
-    if (!reason.empty()) return "models." + escapedForLog(key) + ": " + reason;
+    if (!value.is_string())
+      return Check<>::refuse("not_a_string", "models." + escapedForLog(key) + ": must be a string");
+    if (auto ok = setModel(models, key, value.get<std::string>()); !ok)
+      return Check<>::refuse(ok.code(), "models." + escapedForLog(key) + ": " + ok.error());
   }
-  return "";
+  return Check<>::pass();
 }
 
 /// Reads an optional string field; "" or a reason.
-std::string readString(const json& root, const char* key, std::string& out) {
+Check<> readString(const json& root, const char* key, std::string& out) {
   const auto it = root.find(key);
-  if (it == root.end()) return "";
-  if (!it->is_string()) return std::string(key) + ": must be a string";
+  if (it == root.end()) return Check<>::pass();
+  if (!it->is_string())
+    return Check<>::refuse("not_a_string", std::string(key) + ": must be a string");
   out = it->get<std::string>();
-  return "";
+  return Check<>::pass();
 }
 
 fs::path resolveMesh(const std::string& text, const fs::path& spec_dir) {
@@ -124,37 +131,43 @@ fs::path resolveMesh(const std::string& text, const fs::path& spec_dir) {
 
 /// Checks that one pocket kind fits a ball and its hole neither reaches the jaws nor leaves the
 /// slate.
-std::string checkPocket(const TableSpec& spec, const char* key, const PocketSpec& pocket,
-                        bool corner) {
+Check<> checkPocket(const TableSpec& spec, const char* key, const PocketSpec& pocket, bool corner) {
   const double r = spec.params.ball_radius;
   const std::string where = std::string(key) + ".";
-  if (pocket.mouth <= 2.0 * r) return where + "mouth: must be wider than a ball (2 * ball_radius)";
-  if (pocket.hole_radius <= r) return where + "hole_radius: must be larger than ball_radius";
+  if (pocket.mouth <= 2.0 * r)
+    return Check<>::refuse("pocket_too_narrow",
+                           where + "mouth: must be wider than a ball (2 * ball_radius)");
+  if (pocket.hole_radius <= r)
+    return Check<>::refuse("hole_too_small",
+                           where + "hole_radius: must be larger than ball_radius");
   const Eigen::Vector2d outer = detail::slateHalfExtent(spec);
   const std::vector<detail::PocketLayout> pockets = detail::pocketLayouts(spec);
   for (const detail::PocketLayout& p : pockets) {
     if (p.corner != corner) continue;
     for (int k = 0; k < 2; ++k) {
       if (std::abs(p.hole_centre[k]) + p.hole_radius + detail::kEdgeMargin >= outer[k]) {
-        return where + "hole_radius: the hole reaches beyond the rail";
+        return Check<>::refuse("hole_beyond_rail",
+                               where + "hole_radius: the hole reaches beyond the rail");
       }
     }
   }
   for (const detail::JawLayout& j : detail::jawLayouts(spec)) {
     const detail::PocketLayout& p = pockets[static_cast<std::size_t>(j.pocket)];
     if (p.corner == corner && (p.hole_centre - j.point).norm() <= p.hole_radius) {
-      return where + "hole_radius: the hole reaches the jaw points";
+      return Check<>::refuse("hole_reaches_jaws",
+                             where + "hole_radius: the hole reaches the jaw points");
     }
   }
-  return "";
+  return Check<>::pass();
 }
 
 /// Checks that rails have positive length and the pockets' slate tiles do not overlap.
-std::string checkLayout(const TableSpec& spec) {
+Check<> checkLayout(const TableSpec& spec) {
   const double s = spec.corner.mouth / std::sqrt(2.0);
   if (spec.length / 2.0 - s - spec.side.mouth / 2.0 <= 0.0)
-    return "length: too short for its pockets";
-  if (spec.width / 2.0 - s <= 0.0) return "width: too narrow for its pockets";
+    return Check<>::refuse("too_short", "length: too short for its pockets");
+  if (spec.width / 2.0 - s <= 0.0)
+    return Check<>::refuse("too_narrow", "width: too narrow for its pockets");
   const auto pockets = detail::pocketLayouts(spec);
   for (std::size_t i = 0; i < pockets.size(); ++i) {
     for (std::size_t k = i + 1; k < pockets.size(); ++k) {
@@ -164,40 +177,41 @@ std::string checkLayout(const TableSpec& spec) {
       const bool apart_y = a.max.y() <= b.min.y() || b.max.y() <= a.min.y();
       if (!apart_x && !apart_y) {
         const bool same_end = pockets[i].reference.x() == pockets[k].reference.x();
-        return same_end ? "width: too narrow for its pockets" : "length: too short for its pockets";
+        return same_end ? Check<>::refuse("too_narrow", "width: too narrow for its pockets")
+                        : Check<>::refuse("too_short", "length: too short for its pockets");
       }
     }
   }
-  return "";
+  return Check<>::pass();
 }
 
-std::string checkSpec(const TableSpec& spec) {
-  if (std::string r = checkLayout(spec); !r.empty()) return r;
-  if (std::string r = checkPocket(spec, "corner", spec.corner, true); !r.empty()) return r;
+Check<> checkSpec(const TableSpec& spec) {
+  if (auto r = checkLayout(spec); !r) return r;
+  if (auto r = checkPocket(spec, "corner", spec.corner, true); !r) return r;
   return checkPocket(spec, "side", spec.side, false);
 }
 
-/// Fills `spec` from the parsed root object; "" or a reason.
-std::string readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
-  std::string r = readFields(root, "",
-                             {{"length", &spec.length, &kPositive},
-                              {"width", &spec.width, &kPositive},
-                              {"cushion_width", &spec.cushion_width, &kPositive},
-                              {"rail_width", &spec.rail_width, &kPositive},
-                              {"slate_thickness", &spec.slate_thickness, &kSlate}},
-                             {"name", "description", "corner", "side", "params", "models",
-                              "collision_mesh", "render_mesh"});
-  if (!r.empty()) return r;
+/// Fills `spec` from the parsed root object, or refuses it with a reason.
+Check<> readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
+  Check<> r = readFields(root, "",
+                         {{"length", &spec.length, &kPositive},
+                          {"width", &spec.width, &kPositive},
+                          {"cushion_width", &spec.cushion_width, &kPositive},
+                          {"rail_width", &spec.rail_width, &kPositive},
+                          {"slate_thickness", &spec.slate_thickness, &kSlate}},
+                         {"name", "description", "corner", "side", "params", "models",
+                          "collision_mesh", "render_mesh"});
+  if (!r) return r;
   std::string description, collision, render;
   for (const auto& [key, target] :
        {std::pair{"name", &spec.name}, std::pair{"description", &description},
         std::pair{"collision_mesh", &collision}, std::pair{"render_mesh", &render}}) {
-    if (r = readString(root, key, *target); !r.empty()) return r;
+    if (r = readString(root, key, *target); !r) return r;
   }
-  if (r = readPocket(root, "corner", spec.corner); !r.empty()) return r;
-  if (r = readPocket(root, "side", spec.side); !r.empty()) return r;
-  if (r = readParams(root, spec.params); !r.empty()) return r;
-  if (r = readModels(root, spec.models); !r.empty()) return r;
+  if (r = readPocket(root, "corner", spec.corner); !r) return r;
+  if (r = readPocket(root, "side", spec.side); !r) return r;
+  if (r = readParams(root, spec.params); !r) return r;
+  if (r = readModels(root, spec.models); !r) return r;
   spec.collision_mesh = resolveMesh(collision, spec_dir);
   spec.render_mesh = render.empty() ? spec.collision_mesh : resolveMesh(render, spec_dir);
   return checkSpec(spec);
@@ -235,8 +249,7 @@ Result<TableSpec> parseTableSpec(const std::string& json_text, const std::string
     const json root = json::parse(json_text);
     if (!root.is_object())
       return Result<TableSpec>::fail(source + ": the spec must be a JSON object");
-    const std::string reason = readSpec(root, spec_dir, spec);
-    if (!reason.empty()) return Result<TableSpec>::fail(reason);
+    if (auto ok = readSpec(root, spec_dir, spec); !ok) return Result<TableSpec>::fail(ok.error());
   } catch (const std::exception& e) {
     return Result<TableSpec>::fail(source + ": invalid JSON: " + shortWhat(e));
   }

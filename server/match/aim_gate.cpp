@@ -32,7 +32,7 @@ const char* toString(AimDrop drop) {
 }
 
 AimDrop AimGate::check(const protocol::AimSample& aim, const AimTurn* turn, double now) {
-  if (!protocol::aimProblem(aim, protocol::CommandLimits{}).empty()) {
+  if (!protocol::checkAim(aim, protocol::CommandLimits{})) {
     return count(AimDrop::Malformed);
   }
   if (!turn) return count(AimDrop::NoSuchMatch);

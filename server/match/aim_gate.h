@@ -27,7 +27,7 @@ struct AimTurn {
 /// last).
 enum class AimDrop : std::uint8_t {
   None,          ///< relayed
-  Malformed,     ///< unreadable, or values no cue can have (protocol::aimProblem)
+  Malformed,     ///< unreadable, or values no cue can have (protocol::checkAim)
   NoSuchMatch,   ///< no open match of that id
   NotAiming,     ///< no rack in play, or a shot in motion
   NotShooter,    ///< not the seat whose turn it is (the other seat, or banned)

@@ -13,10 +13,10 @@ namespace pool::server {
 
 namespace {
 
-using Check = std::optional<Rejection>;
+using Check = RejectCheck;
 
-Rejection refuse(Reject reason, std::string text) {
-  return {reason, std::move(text)};
+Check refuse(Reject reason, std::string text) {
+  return Check::refuse(reason, std::move(text));
 }
 
 std::string seatName(int seat) {
@@ -24,14 +24,14 @@ std::string seatName(int seat) {
 }
 
 Check checkValues(const Match& match, const protocol::ShotRequest& c) {
-  if (!protocol::optionShoots(c.option)) return std::nullopt;
-  if (auto why = physics::validateShot(c.cue, match.table().spec.params); !why.empty()) {
-    return refuse(Reject::Malformed, why);
+  if (!protocol::optionShoots(c.option)) return Check::pass();
+  if (auto ok = physics::validateShot(c.cue, match.table().spec.params); !ok) {
+    return refuse(Reject::Malformed, ok.error());
   }
   if (c.called_ball && (*c.called_ball < 1 || *c.called_ball > physics::kMaxBallId)) {
     return refuse(Reject::Malformed, "called_ball: must be 1-15");
   }
-  return std::nullopt;
+  return Check::pass();
 }
 
 Check checkTurn(const Match& match, const protocol::ShotRequest& c) {
@@ -50,7 +50,7 @@ Check checkTurn(const Match& match, const protocol::ShotRequest& c) {
     return refuse(Reject::BallsMoving,
                   "shot " + std::to_string(match.shotInMotion()) + " is still moving");
   }
-  return std::nullopt;
+  return Check::pass();
 }
 
 // Applies a pending choice to the plan's copies; refuses a missing or unoffered one.
@@ -58,7 +58,7 @@ Check checkOption(const Match& match, const protocol::ShotRequest& c, ShotPlan& 
   const auto& offered = match.game().options;
   const auto choice = protocol::choiceOf(c.option);
   if (!choice) {
-    if (offered.empty()) return std::nullopt;
+    if (offered.empty()) return Check::pass();
     return refuse(Reject::OptionRequired, "choose first: " + rules::describe(match.game()));
   }
   if (std::find(offered.begin(), offered.end(), *choice) == offered.end()) {
@@ -79,7 +79,7 @@ Check checkOption(const Match& match, const protocol::ShotRequest& c, ShotPlan& 
   }
   plan.shoots = protocol::optionShoots(c.option);
   plan.choice = std::move(*verdict);
-  return std::nullopt;
+  return Check::pass();
 }
 
 physics::Ball* cueBallOf(std::vector<physics::Ball>& balls) {
@@ -95,17 +95,17 @@ Check checkPlacement(const Match& match, const protocol::ShotRequest& c, ShotPla
   const rules::BallInHand in_hand = plan.state.ball_in_hand;
   const auto& table = match.table().context;
   if (!c.cue_ball_at) {
-    if (in_hand == rules::BallInHand::None) return std::nullopt;
+    if (in_hand == rules::BallInHand::None) return Check::pass();
     if (!physics::onTable(cue->state)) {
       return refuse(Reject::IllegalPlacement, "the cue ball is in hand: place it");
     }
   }
   const Eigen::Vector2d at = c.cue_ball_at.value_or(Eigen::Vector2d(cue->pos.head<2>()));
   const auto check = rules::checkCueBallPlacement(in_hand, at, plan.before, table);
-  if (!check.ok()) return refuse(Reject::IllegalPlacement, "cue ball: " + check.reason());
+  if (!check.ok()) return refuse(Reject::IllegalPlacement, "cue ball: " + check.error());
   *cue = physics::Ball{};
   cue->pos = physics::Vec3(at.x(), at.y(), table.ball_radius);
-  return std::nullopt;
+  return Check::pass();
 }
 
 Check checkCall(const Match& match, const protocol::ShotRequest& c, ShotPlan& plan) {
@@ -114,13 +114,13 @@ Check checkCall(const Match& match, const protocol::ShotRequest& c, ShotPlan& pl
   plan.intent.safety = c.safety;
   auto ok = rules::checkIntentFor(match.rules(), plan.state, plan.intent, plan.before);
   if (!ok) return refuse(Reject::BadCall, ok.error());
-  return std::nullopt;
+  return Check::pass();
 }
 
 }  // namespace
 
-std::optional<Rejection> checkHolder(const Match& match, const HolderFields& c,
-                                     const std::function<bool(const Seat&)>& signed_by) {
+RejectCheck checkHolder(const Match& match, const HolderFields& c,
+                        const std::function<bool(const Seat&)>& signed_by) {
   if (c.seat != 0 && c.seat != 1) return refuse(Reject::WrongSeat, "seat: must be 0 or 1");
   const Seat& seat = match.seats()[static_cast<std::size_t>(c.seat)];
   if (!seat.taken()) return refuse(Reject::WrongSeat, seatName(c.seat) + " is free");
@@ -138,7 +138,7 @@ std::optional<Rejection> checkHolder(const Match& match, const HolderFields& c,
   if (!signed_by(seat)) {
     return refuse(Reject::BadSignature, "signature: not " + seatName(c.seat) + "'s key");
   }
-  return std::nullopt;
+  return Check::pass();
 }
 
 CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& command) {
@@ -146,7 +146,7 @@ CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& com
   out.plan.state = match.game();
   out.plan.before = match.balls();
   Check found = checkValues(match, command);
-  if (!found) {
+  if (found) {
     found = checkHolder(match,
                         {command.seat, command.seat_token, command.seq, !command.signature.empty()},
                         [&](const Seat& seat) {
@@ -154,13 +154,13 @@ CheckedCommand checkCommand(const Match& match, const protocol::ShotRequest& com
                                  protocol::SignatureCheck::Valid;
                         });
   }
-  out.signature_valid = !found;
-  if (!found) found = checkTurn(match, command);
-  if (!found) found = checkOption(match, command, out.plan);
-  if (!found && out.plan.shoots) found = checkPlacement(match, command, out.plan);
+  out.signature_valid = found.ok();
+  if (found) found = checkTurn(match, command);
+  if (found) found = checkOption(match, command, out.plan);
+  if (found && out.plan.shoots) found = checkPlacement(match, command, out.plan);
   // Practice rules ignore calls and safeties.
-  if (!found && out.plan.shoots && !match.practice()) found = checkCall(match, command, out.plan);
-  if (found) out.rejection = std::move(*found);
+  if (found && out.plan.shoots && !match.practice()) found = checkCall(match, command, out.plan);
+  if (!found) out.rejection = {found.code(), found.error()};
   return out;
 }
 

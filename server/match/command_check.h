@@ -45,9 +45,9 @@ struct HolderFields {
 
 /// Checks 2–5 below for any signed command of a seat (shot or practice): wrong seat, bad token,
 /// unsigned, stale sequence, then `signed_by(seat)`, the command's signature checked against the
-/// seat's key. Empty when they all pass.
-std::optional<Rejection> checkHolder(const Match& match, const HolderFields& fields,
-                                     const std::function<bool(const Seat&)>& signed_by);
+/// seat's key.
+RejectCheck checkHolder(const Match& match, const HolderFields& fields,
+                        const std::function<bool(const Seat&)>& signed_by);
 
 /// Checks `command` against `match` and stops at the first failure, in this order:
 /// 1. malformed: shot values the table's physics refuses (net's validateShotCommand has already

@@ -47,8 +47,8 @@ CommandAnswer Match::handlePractice(const protocol::PracticeRequest& command, do
         return protocol::verifyPractice(command, seat.public_key) ==
                protocol::SignatureCheck::Valid;
       });
-  if (found) {
-    answer.rejection = std::move(*found);
+  if (!found) {
+    answer.rejection = {found.code(), found.error()};
     return answer;
   }
   // The seat's own command: its number is used up from here on, whatever follows.

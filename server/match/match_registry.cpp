@@ -131,8 +131,8 @@ JoinAnswer MatchRegistry::seat(const JoinCommand& c) {
     return JoinAnswer::refuse(JoinOutcome::BadSignature, "signature: not by the key it carries");
   }
   if (c.settings) {
-    if (std::string why = protocol::checkSettings(*c.settings); !why.empty()) {
-      return JoinAnswer::refuse(JoinOutcome::NotAllowed, "settings: " + why);
+    if (auto why = protocol::checkSettings(*c.settings); !why) {
+      return JoinAnswer::refuse(JoinOutcome::NotAllowed, "settings: " + why.error());
     }
   }
   useKeySeq(c.public_key, c.seq);

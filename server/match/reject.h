@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/check.h"
 #include "protocol/protocol_enums.h"
 
 namespace pool::server {
@@ -11,7 +12,10 @@ namespace pool::server {
 /// Why a command was refused, in the order the server checks (shared with the clients).
 using Reject = protocol::RejectReason;
 
-/// A refusal: the reason and one human-readable line.
+/// A check of a command: it passes, or refuses with the reason and one human-readable line.
+using RejectCheck = Check<Reject>;
+
+/// A refusal as an answer carries it: the reason and one human-readable line.
 struct Rejection {
   Reject reason = Reject::None;
   std::string text;  ///< empty when accepted

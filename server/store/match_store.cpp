@@ -68,7 +68,7 @@ Result<std::unique_ptr<MatchStore>> MatchStore::open(const std::string& path) {
   using Out = Result<std::unique_ptr<MatchStore>>;
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
-    if (auto error = checkFile(path); !error.empty()) return Out::fail(path + ": " + error);
+    if (auto ok = checkFile(path); !ok) return Out::fail(ok.code(), path + ": " + ok.error());
   } else {
     const auto folder = std::filesystem::path(path).parent_path();
     if (!folder.empty()) std::filesystem::create_directories(folder, ec);

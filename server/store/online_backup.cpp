@@ -5,32 +5,37 @@
 
 #include <filesystem>
 
+#include "core/check.h"
+
 namespace pool::store {
 
 namespace {
 
 namespace fs = std::filesystem;
 
-/// Why `path` cannot receive a backup, or empty.
-std::string checkTarget(const fs::path& path) {
-  if (!path.is_absolute()) return "must be an absolute path";
-  if (!path.has_filename()) return "names a folder, not a file";
+/// Refuses a `path` that cannot receive a backup, with why.
+Check<> checkTarget(const fs::path& path) {
+  if (!path.is_absolute()) return Check<>::refuse("not_absolute", "must be an absolute path");
+  if (!path.has_filename()) return Check<>::refuse("not_a_file", "names a folder, not a file");
   std::error_code ec;
   const fs::path folder = path.parent_path();
-  if (!fs::is_directory(folder, ec)) return "folder " + folder.string() + " does not exist";
-  if (fs::exists(fs::symlink_status(path, ec))) return "a file is there already (not overwritten)";
+  if (!fs::is_directory(folder, ec))
+    return Check<>::refuse("no_folder", "folder " + folder.string() + " does not exist");
+  if (fs::exists(fs::symlink_status(path, ec)))
+    return Check<>::refuse("file_exists", "a file is there already (not overwritten)");
   if (fs::exists(fs::symlink_status(path.string() + ".partial", ec))) {
-    return path.string() + ".partial is there already (another backup running?)";
+    return Check<>::refuse("backup_running",
+                           path.string() + ".partial is there already (another backup running?)");
   }
-  return {};
+  return Check<>::pass();
 }
 
 }  // namespace
 
 Result<BackupDone> backupTo(Database& db, const std::string& path) {
   const fs::path target(path);
-  if (auto why = checkTarget(target); !why.empty())
-    return Result<BackupDone>::fail(path + ": " + why);
+  if (auto ok = checkTarget(target); !ok)
+    return Result<BackupDone>::fail(ok.code(), path + ": " + ok.error());
   const std::string partial = path + ".partial";
   sqlite3* out = nullptr;
   const int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOFOLLOW;

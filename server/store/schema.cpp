@@ -68,17 +68,17 @@ std::uint64_t bigEndian(const unsigned char* p, int n) {
 }
 
 /// The header's promise: the file holds page_count pages of page_size bytes.
-std::string checkHeader(const std::string& path) {
+Check<> checkHeader(const std::string& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
-  if (ec) return "cannot read it: " + ec.message();
-  if (size == 0) return {};
+  if (ec) return Check<>::refuse("unreadable", "cannot read it: " + ec.message());
+  if (size == 0) return Check<>::pass();
   std::array<unsigned char, 100> header{};
   std::ifstream in(path, std::ios::binary);
   in.read(reinterpret_cast<char*>(header.data()), header.size());
   static const char kMagic[] = "SQLite format 3";
   if (in.gcount() < 100 || std::equal(kMagic, kMagic + 16, header.begin()) == false) {
-    return "not an SQLite database";
+    return Check<>::refuse("not_sqlite", "not an SQLite database");
   }
   const std::uint64_t raw_page = bigEndian(&header[16], 2);
   const std::uint64_t page_size = raw_page == 1 ? 65536 : raw_page;
@@ -87,10 +87,10 @@ std::string checkHeader(const std::string& path) {
   // With a write-ahead log beside it the main file may lag its header until a checkpoint.
   const bool has_wal = std::filesystem::exists(wal, ec) && std::filesystem::file_size(wal, ec) > 0;
   if (!has_wal && pages * page_size > size) {
-    return "truncated (" + std::to_string(size) + " of " + std::to_string(pages * page_size) +
-           " bytes)";
+    return Check<>::refuse("truncated", "truncated (" + std::to_string(size) + " of " +
+                                            std::to_string(pages * page_size) + " bytes)");
   }
-  return {};
+  return Check<>::pass();
 }
 
 /// SQLite's multi-line report as one line.
@@ -107,27 +107,30 @@ std::span<const char* const> migrationSteps() {
   return kSteps;
 }
 
-std::string checkFile(const std::string& path) {
-  if (auto error = checkHeader(path); !error.empty()) return error;
+Check<> checkFile(const std::string& path) {
+  if (auto ok = checkHeader(path); !ok) return ok;
   auto db = Database::open(path, /*read_only=*/true, /*create=*/false);
-  if (!db) return db.error();
+  if (!db) return Check<>::refuse("unreadable", db.error());
   try {
     auto check = db->prepare("PRAGMA quick_check");
     if (check.step() && check.text(0) != "ok") {
-      return "fails its integrity check: " + oneLine(check.text(0));
+      return Check<>::refuse("failed_integrity_check",
+                             "fails its integrity check: " + oneLine(check.text(0)));
     }
     const std::int64_t app = db->integer("PRAGMA application_id");
     const std::int64_t version = db->integer("PRAGMA user_version");
     const std::int64_t tables = db->integer("SELECT count(*) FROM sqlite_master");
-    if (app != kApplicationId && (app != 0 || tables > 0)) return "not a pool database";
+    if (app != kApplicationId && (app != 0 || tables > 0))
+      return Check<>::refuse("not_pool_database", "not a pool database");
     if (version > kSchemaVersion) {
-      return "schema version " + std::to_string(version) + " is newer than this program's " +
-             std::to_string(kSchemaVersion);
+      return Check<>::refuse("newer_schema", "schema version " + std::to_string(version) +
+                                                 " is newer than this program's " +
+                                                 std::to_string(kSchemaVersion));
     }
   } catch (const StoreError& e) {
-    return e.what();
+    return Check<>::refuse("store_error", e.what());
   }
-  return {};
+  return Check<>::pass();
 }
 
 void migrate(Database& db) {

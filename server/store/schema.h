@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 
+#include "core/check.h"
 #include "server/store/sqlite_db.h"
 
 namespace pool::store {
@@ -19,8 +20,8 @@ std::span<const char* const> migrationSteps();
 
 /// Checks an existing file without writing to it: an SQLite file, not truncated, passing
 /// PRAGMA quick_check, a pool database (or an empty one), of a version this code knows.
-/// Empty when fine, else the reason (one line).
-std::string checkFile(const std::string& path);
+/// Refuses it with the reason (one line).
+Check<> checkFile(const std::string& path);
 
 /// Runs the steps from the file's version up to kSchemaVersion, one transaction each.
 void migrate(Database& db);

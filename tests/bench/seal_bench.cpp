@@ -75,8 +75,8 @@ void BM_CheckReceived(benchmark::State& state) {
   auto sample = net::toWire(frame);
   net::seal(*sample, key);
   for (auto _ : state) {
-    const auto problem = protocol::sealProblem(net::sealedOf(*sample));
-    if (!problem.empty()) state.SkipWithError(problem.c_str());
+    const auto seal = protocol::checkSeal(net::sealedOf(*sample));
+    if (!seal) state.SkipWithError(seal.error().c_str());
   }
 }
 BENCHMARK(BM_CheckReceived)

@@ -19,7 +19,7 @@ void expectLegal(const PlannedShot& shot, rules::BallInHand in_hand,
   ASSERT_TRUE(shot.cue_ball_at) << describe(shot);
   const auto check = rules::checkCueBallPlacement(in_hand, *shot.cue_ball_at, withoutCueBall(balls),
                                                   nineFoot().context);
-  EXPECT_TRUE(check.ok()) << check.reason() << " for " << describe(shot);
+  EXPECT_TRUE(check.ok()) << check.error() << " for " << describe(shot);
 }
 
 TEST(CuePlacementTest, InHandAnywhereGivesALegalSpotAndAPot) {

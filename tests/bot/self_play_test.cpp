@@ -26,7 +26,7 @@ std::vector<physics::Ball> freshRack(std::uint64_t seed) {
 
 /// Where the layout a shot left would be refused as the next shot's input: the physics re-spots a
 /// ball that comes to rest where its own placement check refuses it, so this must stay empty.
-std::string refusedLayout(const std::vector<physics::Ball>& balls) {
+Check<> refusedLayout(const std::vector<physics::Ball>& balls) {
   const auto& view = nineFoot();
   return physics::checkPlacement(balls, view.geometry, view.spec.params);
 }
@@ -63,10 +63,10 @@ RackOutcome playRack(double skill, std::uint64_t seed) {
     balls = trial.verdict.rerack
                 ? freshRack(seed + 2000 + static_cast<std::uint64_t>(outcome.shots))
                 : trial.after;
-    const std::string refused = refusedLayout(balls);
-    EXPECT_EQ(refused, "") << "seed " << seed << ", shot " << outcome.shots << " ("
-                           << describe(shot) << ") left a layout the physics refuses";
-    if (!refused.empty()) break;
+    const auto refused = refusedLayout(balls);
+    EXPECT_TRUE(refused.ok()) << refused.error() << ": seed " << seed << ", shot " << outcome.shots
+                              << " (" << describe(shot) << ") left a layout the physics refuses";
+    if (!refused) break;
     state = trial.verdict.next;
   }
   outcome.winner = state.winner;

@@ -13,15 +13,15 @@
 namespace pool::fuzz {
 
 [[noreturn]] inline void violated(const char* what, const net::CommandCheck& check) {
-  brokenPromise(std::string(what) + " (problem " + net::toString(check.problem) + ", text '" +
-                check.text + "')");
+  brokenPromise(std::string(what) + " (problem " + net::toString(check.code()) + ", text '" +
+                check.error() + "')");
 }
 
 /// Checks the verdict against the header's promises: a reason iff a problem, a known problem, and
 /// an accepted command whose every field is representable and within the default limits.
 inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& check) {
-  if (check.ok() != check.text.empty()) violated("a reason without a problem or back", check);
-  if (std::strcmp(net::toString(check.problem), "unknown") == 0) violated("unknown problem", check);
+  if (check.ok() != check.error().empty()) violated("a reason without a problem or back", check);
+  if (std::strcmp(net::toString(check.code()), "unknown") == 0) violated("unknown problem", check);
   if (!check.ok()) return;
   const protocol::CommandLimits limits;
   const auto match = net::textOf(c.match);
@@ -41,9 +41,11 @@ inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& che
   // Re-racks and passing the table back are choices without a shot: no cue to check.
   const bool shoots = option != pool_OPTION_REBREAK && option != pool_OPTION_OPPONENT_REBREAKS &&
                       option != pool_OPTION_PASS_BACK;
-  if (shoots && (c.speed <= 0.0 || c.speed > limits.max_speed || c.elevation < 0.0 ||
-                 c.elevation > limits.max_elevation || std::abs(c.yaw) > limits.max_abs_yaw ||
-                 std::hypot(c.tip_side, c.tip_height) > limits.miscue_limit)) {
+  constexpr double tol = physics::kRangeTolerance;  // exactly a limit is legal, give or take this
+  if (shoots &&
+      (c.speed <= 0.0 || c.speed > limits.max_speed || c.elevation < 0.0 ||
+       c.elevation > limits.max_elevation + tol || std::abs(c.yaw) > limits.max_abs_yaw + tol ||
+       std::hypot(c.tip_side, c.tip_height) > limits.miscue_limit + tol)) {
     violated("accepted a shot out of range", check);
   }
   const bool has_ball = c.called_ball != -1;

@@ -89,7 +89,7 @@ TEST(RackLayout, SixteenBallsAtRestAndTheCueBallJustBehindTheHeadString) {
   const auto& spots = t.context.spots;
   EXPECT_DOUBLE_EQ(balls[0].pos.x(), spots.head_spot.x() - kBreakCueSetback);
   EXPECT_LT(balls[0].pos.x(), spots.head_string_x);
-  EXPECT_EQ(physics::checkPlacement(balls, t.geometry, t.spec.params), "");
+  EXPECT_TRUE(physics::checkPlacement(balls, t.geometry, t.spec.params).ok());
   EXPECT_NE(rackLayout(t, 4)[5].pos, balls[5].pos);  // another seed, another order
 }
 

@@ -89,7 +89,7 @@ TEST(AimSample, AnAimSignatureIsWorthlessAsAShotCommand) {
 
 TEST(AimSample, ValuesNoCueCanHaveAreRefused) {
   const CommandLimits limits;
-  EXPECT_EQ(aimProblem(sample(), limits), "");
+  EXPECT_TRUE(checkAim(sample(), limits).ok());
   const std::vector<std::pair<std::function<void(AimSample&)>, std::string>> bad{
       {[](AimSample& a) { a.match.clear(); }, "match"},
       {[](AimSample& a) { a.seat = 2; }, "seat"},
@@ -105,7 +105,9 @@ TEST(AimSample, ValuesNoCueCanHaveAreRefused) {
   for (const auto& [change, field] : bad) {
     AimSample a = sample();
     change(a);
-    EXPECT_EQ(aimProblem(a, limits).rfind(field, 0), 0u) << field << ": " << aimProblem(a, limits);
+    const auto check = checkAim(a, limits);
+    EXPECT_FALSE(check.ok()) << field;
+    EXPECT_EQ(check.error().rfind(field, 0), 0u) << field << ": " << check.error();
   }
 }
 

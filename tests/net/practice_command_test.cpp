@@ -146,12 +146,12 @@ TEST(PracticeCommand, ThePracticeSettingIsSignedAndChecked) {
   EXPECT_EQ(protocol::verifySeatRequest(practice, key.publicKey()),
             protocol::SignatureCheck::BadSignature);
   // A practice table has no race and no shot clock.
-  EXPECT_EQ(protocol::checkSettings(*practice.settings), "");
+  EXPECT_TRUE(protocol::checkSettings(*practice.settings).ok());
   practice.settings->race_to = 3;
-  EXPECT_NE(protocol::checkSettings(*practice.settings), "");
+  EXPECT_FALSE(protocol::checkSettings(*practice.settings).ok());
   practice.settings->race_to = 1;
   practice.settings->shot_clock = 30;
-  EXPECT_NE(protocol::checkSettings(*practice.settings), "");
+  EXPECT_FALSE(protocol::checkSettings(*practice.settings).ok());
 }
 
 }  // namespace

@@ -295,7 +295,7 @@ TEST_F(Qos, MalformedCommandCrossesTheWireAndIsDetected) {
   const auto got = takeAtLeast(server, reader, 3);
   ASSERT_EQ(got.size(), 3u);
   std::map<std::uint32_t, CommandProblem> problems;
-  for (const auto& s : got) problems[s->seq] = validateShotCommand(*s).problem;
+  for (const auto& s : got) problems[s->seq] = validateShotCommand(*s).code();
   EXPECT_EQ(problems[1], CommandProblem::NonFinite);
   EXPECT_EQ(problems[2], CommandProblem::SpeedOutOfRange);
   EXPECT_EQ(problems[3], CommandProblem::BadSeat);

@@ -37,7 +37,7 @@ TEST(ServerSealTest, ASealedSampleVerifiesAndNamesItsServer) {
   EXPECT_EQ(sealed.kind, protocol::PublishedKind::MatchState);
   EXPECT_TRUE(std::equal(sealed.server_key.begin(), sealed.server_key.end(), key.public_key.begin(),
                          key.public_key.end()));
-  EXPECT_EQ(protocol::sealProblem(sealed), "");
+  EXPECT_TRUE(protocol::checkSeal(sealed).ok());
 }
 
 TEST(ServerSealTest, EveryFieldIsCoveredTheLastOnesToo) {
@@ -55,7 +55,7 @@ TEST(ServerSealTest, EveryFieldIsCoveredTheLastOnesToo) {
     auto s = state();
     seal(*s, key);
     change(*s);
-    EXPECT_NE(protocol::sealProblem(sealedOf(*s)), "") << what << " is not covered";
+    EXPECT_FALSE(protocol::checkSeal(sealedOf(*s)).ok()) << what << " is not covered";
   }
 }
 
@@ -64,19 +64,19 @@ TEST(ServerSealTest, UnsignedAnotherKeysAndAnotherKindsSignaturesFail) {
   const auto other = protocol::generateKeyPair();
   auto s = state();
   setBytes(s->server_key, key.public_key, protocol::kPublicKeyBytes);
-  EXPECT_NE(protocol::sealProblem(sealedOf(*s)).find("unsigned"), std::string::npos);
+  EXPECT_NE(protocol::checkSeal(sealedOf(*s)).error().find("unsigned"), std::string::npos);
 
   // Signed by another key while carrying ours.
   seal(*s, other);
   setBytes(s->server_key, key.public_key, protocol::kPublicKeyBytes);
-  EXPECT_NE(protocol::sealProblem(sealedOf(*s)).find("does not verify"), std::string::npos);
+  EXPECT_NE(protocol::checkSeal(sealedOf(*s)).error().find("does not verify"), std::string::npos);
 
   // A state's signature read as a frame's.
   seal(*s, key);
   auto sealed = sealedOf(*s);
-  EXPECT_EQ(protocol::sealProblem(sealed), "");
+  EXPECT_TRUE(protocol::checkSeal(sealed).ok());
   sealed.kind = protocol::PublishedKind::TableSnapshot;
-  EXPECT_NE(protocol::sealProblem(sealed), "");
+  EXPECT_FALSE(protocol::checkSeal(sealed).ok());
 }
 
 TEST(ServerSealTest, EachPublishedTypeIsSealedAndAnotherVersionIsNamed) {
@@ -87,10 +87,11 @@ TEST(ServerSealTest, EachPublishedTypeIsSealedAndAnotherVersionIsNamed) {
   entry.protocol_version = protocol::kProtocolVersion;
   auto info = toWire(entry);
   seal(*info, key);
-  EXPECT_EQ(protocol::sealProblem(sealedOf(*info)), "");
+  EXPECT_TRUE(protocol::checkSeal(sealedOf(*info)).ok());
   info->protocol_version = 3;
   seal(*info, key);
-  EXPECT_NE(protocol::sealProblem(sealedOf(*info)).find("speaks protocol 3"), std::string::npos);
+  EXPECT_NE(protocol::checkSeal(sealedOf(*info)).error().find("speaks protocol 3"),
+            std::string::npos);
 
   protocol::JoinAnswer answer;
   answer.client = "c";
@@ -99,25 +100,25 @@ TEST(ServerSealTest, EachPublishedTypeIsSealedAndAnotherVersionIsNamed) {
   auto reply = toWire(answer);
   seal(*reply, key);
   EXPECT_EQ(sealedOf(*reply).server, "lab");
-  EXPECT_EQ(protocol::sealProblem(sealedOf(*reply)), "");
+  EXPECT_TRUE(protocol::checkSeal(sealedOf(*reply)).ok());
 
   protocol::ShotReport report;
   report.match = "lab-1";
   report.verdict_text = "ok";
   auto result = toWire(report);
   seal(*result, key);
-  EXPECT_EQ(protocol::sealProblem(sealedOf(*result)), "");
+  EXPECT_TRUE(protocol::checkSeal(sealedOf(*result)).ok());
   result->game_over = true;
-  EXPECT_NE(protocol::sealProblem(sealedOf(*result)), "");
+  EXPECT_FALSE(protocol::checkSeal(sealedOf(*result)).ok());
 
   protocol::TableFrame frame;
   frame.match = "lab-1";
   frame.shot_number = 2;
   auto snapshot = toWire(frame);
   seal(*snapshot, key);
-  EXPECT_EQ(protocol::sealProblem(sealedOf(*snapshot)), "");
+  EXPECT_TRUE(protocol::checkSeal(sealedOf(*snapshot)).ok());
   snapshot->shot_number = 0xffffffffu;
-  EXPECT_NE(protocol::sealProblem(sealedOf(*snapshot)), "");
+  EXPECT_FALSE(protocol::checkSeal(sealedOf(*snapshot)).ok());
 }
 
 TEST(ServerSealTest, FingerprintsAndServerIds) {

@@ -34,8 +34,8 @@ struct Case {
 TEST(ShotCommandCheck, GoodCommandPasses) {
   const auto c = goodCommand();
   const CommandCheck check = validateShotCommand(*c);
-  EXPECT_TRUE(check.ok()) << check.text;
-  EXPECT_TRUE(check.text.empty());
+  EXPECT_TRUE(check.ok()) << check.error();
+  EXPECT_TRUE(check.error().empty());
 }
 
 TEST(ShotCommandCheck, EachSpoiledFieldIsCaughtWithItsReason) {
@@ -81,9 +81,9 @@ TEST(ShotCommandCheck, EachSpoiledFieldIsCaughtWithItsReason) {
     auto c = goodCommand();
     k.spoil(*c);
     const CommandCheck check = validateShotCommand(*c);
-    EXPECT_EQ(check.problem, k.expected)
-        << k.name << ": got " << toString(check.problem) << " (" << check.text << ")";
-    EXPECT_FALSE(check.text.empty()) << k.name;
+    EXPECT_EQ(check.code(), k.expected)
+        << k.name << ": got " << toString(check.code()) << " (" << check.error() << ")";
+    EXPECT_FALSE(check.error().empty()) << k.name;
   }
 }
 
@@ -97,7 +97,7 @@ TEST(ShotCommandCheck, EdgesOfRangesAreLegal) {
   c->called_ball = 15, setText(c->called_pocket, "foot_right_corner");
   resizeSequence(c->signature, 64);
   const CommandCheck check = validateShotCommand(*c);
-  EXPECT_TRUE(check.ok()) << check.text;
+  EXPECT_TRUE(check.ok()) << check.error();
 }
 
 TEST(ShotCommandCheck, ChoicesWithoutAShotSkipTheCueRanges) {
@@ -106,7 +106,7 @@ TEST(ShotCommandCheck, ChoicesWithoutAShotSkipTheCueRanges) {
   c->speed = 0.0;  // no shot: the cue values are unused
   EXPECT_TRUE(validateShotCommand(*c).ok());
   c->speed = std::numeric_limits<double>::quiet_NaN();  // but still must be finite
-  EXPECT_EQ(validateShotCommand(*c).problem, CommandProblem::NonFinite);
+  EXPECT_EQ(validateShotCommand(*c).code(), CommandProblem::NonFinite);
 }
 
 TEST(ShotCommandCheck, LimitsComeFromTheCaller) {
@@ -115,8 +115,8 @@ TEST(ShotCommandCheck, LimitsComeFromTheCaller) {
   protocol::CommandLimits slow;
   slow.max_speed = 4.0;
   const CommandCheck check = validateShotCommand(*c, slow);
-  EXPECT_EQ(check.problem, CommandProblem::SpeedOutOfRange);
-  EXPECT_EQ(check.text, "speed: must be in (0, 4] m/s");
+  EXPECT_EQ(check.code(), CommandProblem::SpeedOutOfRange);
+  EXPECT_EQ(check.error(), "speed: must be in (0, 4] m/s");
 }
 
 }  // namespace

@@ -89,15 +89,21 @@ TEST(Strike, MiscueLimitIsLegalAndBeyondIsRejected) {
 TEST(Strike, NonFiniteAndOutOfRangeValuesAreRejected) {
   CueShot shot;
   shot.speed = std::nan("");
-  EXPECT_EQ(validateShot(shot, kParams), "speed: must be a finite number in (0, 12]");
-  shot.speed = 12.5;
-  EXPECT_FALSE(validateShot(shot, kParams).empty());
+  EXPECT_EQ(validateShot(shot, kParams).error(), "speed: must be a finite number");
+  EXPECT_EQ(validateShot(shot, kParams).code(), ShotProblem::NonFinite);
+  shot.speed = 12.5;  // kMaxShotSpeed is 12
+  EXPECT_EQ(validateShot(shot, kParams).error(), "speed: must be in (0, 12] m/s");
   shot.speed = 2.0;
-  shot.elevation = 90 * kDeg;
-  EXPECT_EQ(validateShot(shot, kParams), "elevation_deg: must be a finite number in [0, 89]");
+  EXPECT_TRUE(validateShot(shot, kParams).ok());
+  shot.elevation = 90 * kDeg;  // kMaxElevationDeg is 89
+  EXPECT_EQ(validateShot(shot, kParams).error(), "elevation: must be in [0, 89] degrees");
+  shot.elevation = 89 * kDeg;  // exactly the limit, converted from degrees
+  EXPECT_TRUE(validateShot(shot, kParams).ok());
   shot.elevation = 0;
   shot.yaw = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(validateShot(shot, kParams), "yaw_deg: must be a finite number");
+  EXPECT_EQ(validateShot(shot, kParams).error(), "yaw: must be a finite number");
+  shot.yaw = 100.0;  // any heading: a turn more or less strikes the same way
+  EXPECT_TRUE(validateShot(shot, kParams).ok());
 }
 
 }  // namespace

@@ -71,8 +71,7 @@ TEST(Placement, BallRestingInAPocketMouthIsOnTheSlate) {
   const auto& t = realTable();
   const auto& p = t.spec.params;
   EXPECT_TRUE(onSlate(Vec2(0.035, 0.638), features(), p));
-  EXPECT_TRUE(
-      checkPlacement({ballAt(0, 0.0, 0.0), ballAt(2, 0.035, 0.638)}, t.geometry, p).empty());
+  EXPECT_TRUE(checkPlacement({ballAt(0, 0.0, 0.0), ballAt(2, 0.035, 0.638)}, t.geometry, p).ok());
   // Inside the rail beside the mouth, over the hole, or beyond the table: not on the slate.
   EXPECT_FALSE(onSlate(Vec2(0.3, 0.62), features(), p));
   EXPECT_FALSE(onSlate(Vec2(0.0, 0.70), features(), p));

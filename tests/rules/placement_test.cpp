@@ -23,19 +23,18 @@ TEST(Placement, AnywhereOnTheSlate) {
   EXPECT_TRUE(
       checkCueBallPlacement(BallInHand::Anywhere, {0.5 - 2 * test::kR, 0.0}, table(), ctx).ok());
   auto overlap = checkCueBallPlacement(BallInHand::Anywhere, {0.5 - test::kR, 0.0}, table(), ctx);
-  EXPECT_EQ(overlap.problem, PlacementProblem::Overlaps);
-  EXPECT_EQ(overlap.other, 5);
-  EXPECT_EQ(overlap.reason(), "the ball would overlap ball 5");
+  EXPECT_EQ(overlap.code(), PlacementProblem::Overlaps);
+  EXPECT_EQ(overlap.error(), "the ball would overlap ball 5");
 }
 
 TEST(Placement, OffTheSlateIsRefused) {
   auto ctx = test::nineFoot();
-  EXPECT_EQ(checkCueBallPlacement(BallInHand::Anywhere, {1.27, 0.0}, table(), ctx).problem,
+  EXPECT_EQ(checkCueBallPlacement(BallInHand::Anywhere, {1.27, 0.0}, table(), ctx).code(),
             PlacementProblem::OffSlate);
-  EXPECT_EQ(checkCueBallPlacement(BallInHand::Anywhere, {0.0, 0.635 - test::kR / 2}, table(), ctx)
-                .problem,
-            PlacementProblem::OffSlate);
-  EXPECT_EQ(checkCueBallPlacement(BallInHand::Anywhere, {std::nan(""), 0.0}, table(), ctx).problem,
+  EXPECT_EQ(
+      checkCueBallPlacement(BallInHand::Anywhere, {0.0, 0.635 - test::kR / 2}, table(), ctx).code(),
+      PlacementProblem::OffSlate);
+  EXPECT_EQ(checkCueBallPlacement(BallInHand::Anywhere, {std::nan(""), 0.0}, table(), ctx).code(),
             PlacementProblem::NotFinite);
 }
 
@@ -44,7 +43,7 @@ TEST(Placement, OverAPocketHoleIsRefused) {
   ctx.holes.push_back({"foot_left_corner", {1.27, 0.635}, 0.07});
   EXPECT_EQ(
       checkCueBallPlacement(BallInHand::Anywhere, {1.27 - test::kR, 0.635 - test::kR}, table(), ctx)
-          .problem,
+          .code(),
       PlacementProblem::OverPocket);
 }
 
@@ -53,12 +52,12 @@ TEST(Placement, BehindTheHeadString) {
   double hs = ctx.spots.head_string_x;
   EXPECT_TRUE(
       checkCueBallPlacement(BallInHand::BehindHeadString, {hs - 0.01, 0.0}, table(), ctx).ok());
-  EXPECT_EQ(checkCueBallPlacement(BallInHand::BehindHeadString, {hs, 0.0}, table(), ctx).problem,
+  EXPECT_EQ(checkCueBallPlacement(BallInHand::BehindHeadString, {hs, 0.0}, table(), ctx).code(),
             PlacementProblem::NotBehindHeadString);
-  EXPECT_EQ(checkCueBallPlacement(BallInHand::BehindHeadString, {0.2, 0.0}, table(), ctx).problem,
+  EXPECT_EQ(checkCueBallPlacement(BallInHand::BehindHeadString, {0.2, 0.0}, table(), ctx).code(),
             PlacementProblem::NotBehindHeadString);
   // A ball behind the string is still an obstacle.
-  EXPECT_EQ(checkCueBallPlacement(BallInHand::BehindHeadString, {-0.9, 0.2}, table(), ctx).problem,
+  EXPECT_EQ(checkCueBallPlacement(BallInHand::BehindHeadString, {-0.9, 0.2}, table(), ctx).code(),
             PlacementProblem::Overlaps);
 }
 

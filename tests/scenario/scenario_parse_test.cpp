@@ -238,7 +238,7 @@ TEST(ScenarioParse, UnknownFieldReasonListsTheKnownOnes) {
 
 TEST(ScenarioParse, ExactReasonsForCommonMistakes) {
   EXPECT_EQ(parseScenario(withRaw("/shot/speed", "13")).error(),
-            "shot.speed: must be a finite number in (0, 12]");
+            "shot.speed: must be in (0, 12] m/s");
   EXPECT_EQ(parseScenario(withRaw("/shot/speed", "1e999")).error(),
             "shot.speed: must be a finite number, got 1e999");
   EXPECT_EQ(parseScenario(withRaw("/shot/speed", "\"2\"")).error(),

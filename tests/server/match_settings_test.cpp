@@ -41,11 +41,11 @@ TEST(MatchSettings, TheFirstPlayerAtTheTableChoosesTheGame) {
 }
 
 TEST(MatchSettings, SettingsAreCheckedAndSigned) {
-  EXPECT_EQ(protocol::checkSettings(nineBallRace(3, 35.0)), "");
-  EXPECT_NE(protocol::checkSettings(nineBallRace(0)), "");
-  EXPECT_NE(protocol::checkSettings(nineBallRace(16)), "");
-  EXPECT_NE(protocol::checkSettings(nineBallRace(3, 4.0)), "");
-  EXPECT_NE(protocol::checkSettings(nineBallRace(3, std::nan(""))), "");
+  EXPECT_TRUE(protocol::checkSettings(nineBallRace(3, 35.0)).ok());
+  EXPECT_FALSE(protocol::checkSettings(nineBallRace(0)).ok());
+  EXPECT_FALSE(protocol::checkSettings(nineBallRace(16)).ok());
+  EXPECT_FALSE(protocol::checkSettings(nineBallRace(3, 4.0)).ok());
+  EXPECT_FALSE(protocol::checkSettings(nineBallRace(3, std::nan(""))).ok());
   // A seat request's signature covers its settings: changed in flight, it no longer verifies.
   protocol::SeatRequest r = seatRequest(protocol::JoinAction::Seat, "a", 0, 0, 1);
   r.settings = nineBallRace(3);

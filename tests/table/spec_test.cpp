@@ -257,32 +257,33 @@ TEST(PhysicsParams, NamesFollowTheContract) {
 
 TEST(PhysicsParams, SetParamAcceptsInRangeValues) {
   PhysicsParams p;
-  EXPECT_EQ(setParam(p, "u_s", 0.25), "");
+  EXPECT_TRUE(setParam(p, "u_s", 0.25).ok());
   EXPECT_DOUBLE_EQ(p.u_s, 0.25);
-  EXPECT_EQ(setParam(p, "u_s", 2.0), "");                                   // closed upper end
-  EXPECT_EQ(setParam(p, "u_r", 1.0), "");                                   // closed upper end
-  EXPECT_EQ(setParam(p, "u_r", 0.0), "must be a finite number in (0, 1]");  // would roll for ever
-  EXPECT_EQ(setParam(p, "u_b", 0.06), "");
+  EXPECT_TRUE(setParam(p, "u_s", 2.0).ok());  // closed upper end
+  EXPECT_TRUE(setParam(p, "u_r", 1.0).ok());  // closed upper end
+  EXPECT_EQ(setParam(p, "u_r", 0.0).error(),
+            "must be a finite number in (0, 1]");  // would roll for ever
+  EXPECT_TRUE(setParam(p, "u_b", 0.06).ok());
   ASSERT_TRUE(p.u_b.has_value());
   EXPECT_DOUBLE_EQ(*p.u_b, 0.06);
-  EXPECT_EQ(setParam(p, "cushion_height", 0.04), "");
+  EXPECT_TRUE(setParam(p, "cushion_height", 0.04).ok());
   EXPECT_DOUBLE_EQ(p.cushion_height, 0.04);
-  EXPECT_EQ(setParam(p, "miscue_limit", 1.0), "");
+  EXPECT_TRUE(setParam(p, "miscue_limit", 1.0).ok());
 }
 
 TEST(PhysicsParams, SetParamRejectsAndLeavesValuesAlone) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   PhysicsParams p;
-  EXPECT_EQ(setParam(p, "u_s", 0.0), "must be a finite number in (0, 2]");
-  EXPECT_EQ(setParam(p, "u_s", 2.5), "must be a finite number in (0, 2]");
-  EXPECT_EQ(setParam(p, "u_s", nan), "must be a finite number in (0, 2]");
-  EXPECT_EQ(setParam(p, "e_b", 1.01), "must be a finite number in [0, 1]");
-  EXPECT_EQ(setParam(p, "u_b", -0.1), "must be a finite number in [0, 1]");
-  EXPECT_EQ(setParam(p, "ball_mass", inf), "must be a finite number in (0, 10]");
-  EXPECT_EQ(setParam(p, "spin_decel", -1.0), "must be a finite number in (0, 1000]");
-  EXPECT_EQ(setParam(p, "miscue_limit", 0.0), "must be a finite number in (0, 1]");
-  EXPECT_EQ(setParam(p, "friction", 0.2), "unknown parameter");
+  EXPECT_EQ(setParam(p, "u_s", 0.0).error(), "must be a finite number in (0, 2]");
+  EXPECT_EQ(setParam(p, "u_s", 2.5).error(), "must be a finite number in (0, 2]");
+  EXPECT_EQ(setParam(p, "u_s", nan).error(), "must be a finite number in (0, 2]");
+  EXPECT_EQ(setParam(p, "e_b", 1.01).error(), "must be a finite number in [0, 1]");
+  EXPECT_EQ(setParam(p, "u_b", -0.1).error(), "must be a finite number in [0, 1]");
+  EXPECT_EQ(setParam(p, "ball_mass", inf).error(), "must be a finite number in (0, 10]");
+  EXPECT_EQ(setParam(p, "spin_decel", -1.0).error(), "must be a finite number in (0, 1000]");
+  EXPECT_EQ(setParam(p, "miscue_limit", 0.0).error(), "must be a finite number in (0, 1]");
+  EXPECT_EQ(setParam(p, "friction", 0.2).error(), "unknown parameter");
   const PhysicsParams defaults;
   EXPECT_DOUBLE_EQ(p.u_s, defaults.u_s);
   EXPECT_DOUBLE_EQ(p.e_b, defaults.e_b);
@@ -309,32 +310,34 @@ TEST(PhysicsParams, EveryNameAcceptsItsTypicalValue) {
       {"miscue_limit", d.miscue_limit}};
   ASSERT_EQ(typical.size(), paramNames().size());
   PhysicsParams p;
-  for (const auto& [name, value] : typical) EXPECT_EQ(setParam(p, name, value), "") << name;
-  EXPECT_EQ(validate(p), "");
-  EXPECT_EQ(validate(PhysicsParams{}), "");
+  for (const auto& [name, value] : typical) EXPECT_TRUE(setParam(p, name, value).ok()) << name;
+  EXPECT_TRUE(validate(p).ok());
+  EXPECT_TRUE(validate(PhysicsParams{}).ok());
 }
 
 TEST(PhysicsParams, ValidateChecksRangesAndConsistency) {
   PhysicsParams p;
   p.cushion_height = p.ball_radius;
-  EXPECT_EQ(validate(p), "cushion_height: must be above ball_radius and below 2 * ball_radius");
+  EXPECT_EQ(validate(p).error(),
+            "cushion_height: must be above ball_radius and below 2 * ball_radius");
   p.cushion_height = 2.0 * p.ball_radius;
-  EXPECT_EQ(validate(p), "cushion_height: must be above ball_radius and below 2 * ball_radius");
+  EXPECT_EQ(validate(p).error(),
+            "cushion_height: must be above ball_radius and below 2 * ball_radius");
   p.cushion_height = 1.5 * p.ball_radius;
-  EXPECT_EQ(validate(p), "");
+  EXPECT_TRUE(validate(p).ok());
 
   PhysicsParams q;
   q.e_c = 1.5;
-  EXPECT_EQ(validate(q), "e_c: must be a finite number in [0, 1]");
+  EXPECT_EQ(validate(q).error(), "e_c: must be a finite number in [0, 1]");
   q = PhysicsParams{};
   q.u_b = 2.0;
-  EXPECT_EQ(validate(q), "u_b: must be a finite number in [0, 1]");
+  EXPECT_EQ(validate(q).error(), "u_b: must be a finite number in [0, 1]");
   q = PhysicsParams{};
   q.u_r = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(validate(q), "u_r: must be a finite number in (0, 1]");
+  EXPECT_EQ(validate(q).error(), "u_r: must be a finite number in (0, 1]");
   q = PhysicsParams{};
   q.cue_end_mass = 1.0;
-  EXPECT_EQ(validate(q), "cue_end_mass: must not exceed cue_mass");
+  EXPECT_EQ(validate(q).error(), "cue_end_mass: must not exceed cue_mass");
 }
 
 // Found by fuzz_table_spec: a key holding a newline (or any control character) is named in the

@@ -90,8 +90,7 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
   for (const auto& b : trial.after) {
     if (physics::onTable(b.state)) left_on_table.push_back(b);
   }
-  trial.dead_layout =
-      !physics::checkPlacement(left_on_table, view_.geometry, view_.spec.params).empty();
+  trial.dead_layout = !physics::checkPlacement(left_on_table, view_.geometry, view_.spec.params);
   for (const auto& b : trial.after) {
     if (b.id == physics::kCueBall && physics::onTable(b.state)) trial.cue_end = b.pos.head<2>();
   }

@@ -2,26 +2,13 @@
 #include "physics/cue_strike.h"
 
 #include <cmath>
-#include <cstdio>
-#include <numbers>
-#include <string>
+#include <limits>
 
 #include "physics/shot_limits.h"
 
 namespace pool::physics {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-// Offsets are compared with the limit after a square root; allow for its rounding so that
-// exactly the limit (e.g. 0.3, 0.4 against 0.5) stays legal.
-constexpr double kOffsetTolerance = 1e-12;
-
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 /// Unit vectors of the cue: d along the cue (toward the ball, tilted down by the elevation),
 /// right (horizontal, right of the cue seen from behind) and up (perpendicular to both).
@@ -40,29 +27,17 @@ CueFrame cueFrame(double yaw, double elevation) {
 
 }  // namespace
 
-std::string validateShot(const CueShot& shot, const table::PhysicsParams& params) {
-  if (!std::isfinite(shot.yaw)) return "yaw_deg: must be a finite number";
-  if (!std::isfinite(shot.tip_side)) return "tip_side: must be a finite number";
-  if (!std::isfinite(shot.tip_height)) return "tip_height: must be a finite number";
-  if (!std::isfinite(shot.elevation) || shot.elevation < 0.0 ||
-      shot.elevation / kDeg > kMaxElevationDeg + 1e-9) {
-    return "elevation_deg: must be a finite number in [0, " + fmt(kMaxElevationDeg) + "]";
-  }
-  if (!std::isfinite(shot.speed) || shot.speed <= 0.0 || shot.speed > kMaxShotSpeed) {
-    return "speed: must be a finite number in (0, " + fmt(kMaxShotSpeed) + "]";
-  }
-  const double offset = std::hypot(shot.tip_side, shot.tip_height);
-  if (offset > params.miscue_limit + kOffsetTolerance) {
-    return "tip_side: tip offset " + fmt(offset) + " R is beyond the miscue limit " +
-           fmt(params.miscue_limit) + " R (a miscue)";
-  }
-  return {};
+Check<ShotProblem> validateShot(const CueShot& shot, const table::PhysicsParams& params) {
+  ShotRanges ranges;
+  ranges.miscue_limit = params.miscue_limit;
+  // The heading is an angle like any other here: a turn more or less strikes the same way.
+  ranges.max_abs_yaw = std::numeric_limits<double>::infinity();
+  return checkShotRange({shot.speed, shot.elevation, shot.tip_side, shot.tip_height, shot.yaw},
+                        ranges);
 }
 
 Result<StrikeOutcome> strikeCueBall(const CueShot& shot, const table::PhysicsParams& params) {
-  if (auto reason = validateShot(shot, params); !reason.empty()) {
-    return Result<StrikeOutcome>::fail(reason);
-  }
+  if (auto ok = validateShot(shot, params); !ok) return Result<StrikeOutcome>::fail(ok.error());
   const double m = params.ball_mass;
   const double R = params.ball_radius;
   const double a = shot.tip_side;

@@ -1,11 +1,10 @@
-// Pieces shared by the files of the 9-ball and 10-ball rule set (not part of the public API).
+// The 9-ball and 10-ball rule set's own steps of judging a shot: the break, the shots after it and
+// the foul (not part of the public API).
 #pragma once
 
-#include <vector>
-
-#include "rules/eight_ball_detail.h"
 #include "rules/rotation.h"
 #include "rules/shot_facts.h"
+#include "rules/verdict_steps.h"
 
 namespace pool::rules::detail {
 

@@ -1,11 +1,18 @@
-// Pieces shared by the files of the rule sets (not part of the public API).
+// The steps every rule set builds its verdicts from: passing the turn, ending the game, re-racking,
+// the cue ball in hand, the balls a shot drove off, the stalemate, the clock and the next state
+// (not part of the public API).
 #pragma once
 
 #include <vector>
 
+#include "core/check.h"
+#include "core/result.h"
 #include "physics/ball.h"
-#include "rules/eight_ball.h"
+#include "rules/game_state.h"
+#include "rules/shot.h"
 #include "rules/shot_facts.h"
+#include "rules/table_context.h"
+#include "rules/verdict.h"
 
 namespace pool::rules::detail {
 
@@ -31,7 +38,7 @@ Verdict rerackVerdict(int breaker);
 Verdict playOnVerdict(const GameState& state, BallInHand in_hand);
 
 /// Refuses a cue ball in hand (per `state`) placed where the rules do not allow it.
-Result<bool> checkCueInHand(const GameState& state, const Shot& shot, const TableContext& table);
+Check<> checkCueInHand(const GameState& state, const Shot& shot, const TableContext& table);
 
 /// Balls the watchdog removed: object balls go back on the table, the cue ball comes in hand.
 void addWatchdogRemovals(const ShotFacts& facts, Judged& judged);
@@ -48,13 +55,6 @@ void checkStalemate(const GameState& state, int dry_turns, int stalemate_turns, 
 /// opponent. On the break the other player breaks (the rack stands: "re-racking" it only hands the
 /// break over).
 Judged timeOut(const GameState& state);
-
-/// The opening break (phase Break).
-Judged judgeBreak(const GameState& state, const Shot& shot, const ShotFacts& facts);
-
-/// Any shot after the break.
-Judged judgePlay(const GameState& state, const Shot& shot, const ShotFacts& facts,
-                 const TableContext& table, const EightBallConfig& config);
 
 /// The state after a verdict; `dry_turns` is the updated count of shots without a ball down.
 GameState nextState(const GameState& state, const Verdict& verdict, int dry_turns);
