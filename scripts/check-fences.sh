@@ -2,7 +2,8 @@
 # Fails when a file includes what its folder may not (docs/ARCHITECTURE.md): DDS and the generated
 # wire types outside common/net, ODE outside common/physics, OpenGL outside client/render and
 # client/ui, assimp outside common/table and client/render, HTTP (Boost.Beast, Asio) outside
-# client/web, or a lower module reaching up.
+# client/web, or a lower module reaching up; and when docs/ARCHITECTURE.md's module table and layers
+# differ from the CMake graph (scripts/check-architecture.py).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -74,6 +75,10 @@ done < <(git grep -nE '12|89|1\.55' -- '*.c' '*.cpp' '*.h' ':!common/physics/sho
                print at[1] ":" at[2] ": " code
            }')
 
+# docs/ARCHITECTURE.md's module table and layers follow the CMake graph: every target in both, and
+# every link down the layers.
+python3 scripts/check-architecture.py || status=1
+
 if ((status)); then
   echo "check-fences: a fence is broken (docs/ARCHITECTURE.md)" >&2
   exit 1
@@ -81,4 +86,4 @@ fi
 echo "fences hold: DDS only in common/net, ODE only in common/physics, OpenGL only in" \
   "client/render and client/ui, assimp only in common/table and client/render, HTTP only in" \
   "client/web, modules one way, client/app apart from client/bot, the game kit below its users," \
-  "the shot's limits in physics/shot_limits.h"
+  "the shot's limits in physics/shot_limits.h, the architecture's layers as CMake links them"
