@@ -1,0 +1,116 @@
+// The match's requests at the window, each carried out on the session with a note for the player.
+#include "client/ui/window_match_desk.h"
+
+#include <algorithm>
+
+namespace pool::ui {
+
+MatchDesk::MatchDesk(app::MatchSession& session, app::Controls& controls, TurnDesk& turn,
+                     WindowNotes& notes, std::uint32_t domain)
+    : session_(session), controls_(controls), turn_(turn), notes_(notes), domain_(domain) {}
+
+void MatchDesk::newGame() {
+  controls_.stopAiming();
+  turn_.reset();
+  in_room_ = false;
+  session_.leave();
+  session_.play();
+  notes_.add({"looking for a free table for a new game", false});
+}
+
+void MatchDesk::rematch() {
+  const client::MatchView* v = session_.view();
+  if (!v) return;
+  const auto local = session_.localSeats();
+  for (int s = 0; s < 2; ++s) {
+    const auto& seat = v->seats[static_cast<std::size_t>(s)];
+    const bool ours = std::find(local.begin(), local.end(), s) != local.end();
+    if (!ours && (seat.name.empty() || !seat.connected)) {
+      notes_.add({session_.names()[static_cast<std::size_t>(s)] +
+                      " has left the table: no rematch. N starts a new game at a free table.",
+                  true});
+      return;
+    }
+  }
+  session_.rematch();
+  notes_.add({"rematch asked", false});
+}
+
+void MatchDesk::startReplay(double speed, double now) {
+  if (session_.inMotion()) {
+    notes_.add({"the balls are moving: the replay waits for them to stop", false});
+    return;
+  }
+  if (!session_.replay().start(now, speed)) {
+    notes_.add({"no shot to replay yet", false});
+    return;
+  }
+  notes_.add({"replaying shot " + std::to_string(*session_.replay().shot()), false});
+}
+
+bool MatchDesk::canConcede() const {
+  const client::MatchView* v = session_.view();
+  return v && client::inPlay(v->phase) && session_.stage() == app::SessionStage::Playing &&
+         !session_.practiceTable() && !session_.localSeats().empty() && !session_.inMotion();
+}
+
+void MatchDesk::dropStaleQuestion() {
+  if (concede_asked_ && !canConcede()) concede_asked_ = false;
+}
+
+void MatchDesk::answerConcede(bool yes) {
+  concede_asked_ = false;
+  if (!yes) return;
+  if (!canConcede() || !session_.concede()) {
+    notes_.add({"no rack to concede now", true});
+    return;
+  }
+  controls_.stopAiming();
+  turn_.end();
+  notes_.add({"concession sent", false});
+}
+
+void MatchDesk::playPractice() {
+  table_options_.practice = true;
+  session_.setTableSettings(table_options_.settings());
+  session_.play("new");
+}
+
+void MatchDesk::playBot(bot::Level level) {
+  table_options_.practice = false;
+  session_.setTableSettings(table_options_.settings());
+  session_.play("new");
+  bot_wanted_ = level;
+  notes_.add({"a table for you and the " + botOpponentName(level) + "...", false});
+}
+
+void MatchDesk::startBotOpponent() {
+  if (!bot_wanted_) return;
+  if (session_.stage() == app::SessionStage::Lobby) bot_wanted_.reset();  // the player cancelled
+  if (!bot_wanted_ || session_.stage() != app::SessionStage::Playing) return;
+  const std::string why = bot_opponent_.start(domain_, session_.match(), *bot_wanted_);
+  notes_.add(
+      {why.empty() ? "the " + botOpponentName(*bot_wanted_) + " is coming to the table" : why,
+       !why.empty()});
+  bot_wanted_.reset();
+}
+
+void MatchDesk::takeLobbyChoice(const LobbyChoice& choice) {
+  switch (choice.kind) {
+    case LobbyChoice::Kind::Play:
+      session_.setTableSettings(table_options_.settings());
+      session_.play(choice.match);
+      break;
+    case LobbyChoice::Kind::PlayBot:
+      playBot(static_cast<bot::Level>(table_options_.bot_level));
+      break;
+    case LobbyChoice::Kind::Spectate:
+      session_.spectate(choice.match);
+      break;
+    case LobbyChoice::Kind::Cancel:
+      session_.leave();
+      break;
+  }
+}
+
+}  // namespace pool::ui
