@@ -16,6 +16,7 @@ constexpr Level kLevels[] = {Level::Beginner, Level::Club, Level::League, Level:
 
 TEST(BotLevel, EveryLevelIsNamedAndNothingElseIsOne) {
   for (Level level : kLevels) EXPECT_EQ(levelFromString(toString(level)), level);
+  EXPECT_EQ(levelNames(), (std::vector<std::string>{"beginner", "club", "league", "pro"}));
   EXPECT_EQ(levelFromString("expert"), std::nullopt);
   EXPECT_EQ(levelFromString("Pro"), std::nullopt);
   EXPECT_EQ(levelFromString(""), std::nullopt);

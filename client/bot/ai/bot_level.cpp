@@ -30,6 +30,12 @@ const char* toString(Level level) {
   return rowOf(level).name;
 }
 
+std::vector<std::string> levelNames() {
+  std::vector<std::string> names;
+  for (const auto& row : kLevels) names.emplace_back(row.name);
+  return names;
+}
+
 std::optional<Level> levelFromString(std::string_view name) {
   for (const auto& row : kLevels) {
     if (name == row.name) return row.level;

@@ -3,7 +3,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/shot_planner.h"
@@ -16,6 +18,8 @@ inline constexpr Level kDefaultLevel = Level::Club;
 
 /// "beginner", "club", "league", "pro".
 const char* toString(Level level);
+/// Every level's name, weakest first: the choices a command line offers.
+std::vector<std::string> levelNames();
 /// The level named `name`; none for any other text.
 std::optional<Level> levelFromString(std::string_view name);
 
