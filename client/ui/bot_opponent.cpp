@@ -48,11 +48,12 @@ std::string botOpponentName(bot::Level level) {
   return name + " bot";
 }
 
-std::string BotOpponent::start(std::uint32_t domain, const std::string& match, bot::Level level) {
+Check<> BotOpponent::start(std::uint32_t domain, const std::string& match, bot::Level level) {
   stop();
   const std::string program = botProgram();
   if (program.empty())
-    return "could not start the bot: no pool-bot beside pool-client or on the PATH";
+    return Check<>::refuse(
+        "no_program", "could not start the bot: no pool-bot beside pool-client or on the PATH");
   // --stay: it plays the rematches the player asks for; its log is the player's only when it
   // warns (a window's terminal is not the bot's log).
   std::vector<std::string> args{program,
@@ -74,7 +75,10 @@ std::string BotOpponent::start(std::uint32_t domain, const std::string& match, b
   argv.push_back(nullptr);
   const pid_t parent = getpid();
   const pid_t pid = fork();
-  if (pid < 0) return std::string("could not start pool-bot: ") + std::strerror(errno);
+  if (pid < 0) {
+    return Check<>::refuse("fork_failed",
+                           std::string("could not start pool-bot: ") + std::strerror(errno));
+  }
   if (pid == 0) {
     // The child: only async-signal-safe calls until exec. It is sent SIGTERM when the window dies,
     // however it dies (the bot leaves its seat on SIGTERM), so no bot outlives its window.
@@ -86,7 +90,7 @@ std::string BotOpponent::start(std::uint32_t domain, const std::string& match, b
     _exit(127);
   }
   pid_ = pid;
-  return "";
+  return Check<>::pass();
 }
 
 bool BotOpponent::running() {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "client/bot/ai/bot_level.h"
+#include "core/check.h"
 
 namespace pool::ui {
 
@@ -24,9 +25,9 @@ class BotOpponent {
   BotOpponent(const BotOpponent&) = delete;
   BotOpponent& operator=(const BotOpponent&) = delete;
 
-  /// Starts a bot of `level` to take the free seat of `match` on DDS `domain`. Returns "" or why
+  /// Starts a bot of `level` to take the free seat of `match` on DDS `domain`, or refuses with why
   /// it could not start, in one line.
-  std::string start(std::uint32_t domain, const std::string& match, bot::Level level);
+  Check<> start(std::uint32_t domain, const std::string& match, bot::Level level);
   /// Stops the bot, if one runs.
   void stop();
   /// Whether the bot started last is still running.

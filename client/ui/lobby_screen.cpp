@@ -18,11 +18,10 @@ std::string playersOf(const client::LobbyEntry& e) {
 void tableOptions(TableOptions& options) {
   ImGui::TextUnformatted("A fresh table:");
   ImGui::SameLine();
-  ImGui::RadioButton("8-ball", &options.game, 8);
-  ImGui::SameLine();
-  ImGui::RadioButton("9-ball", &options.game, 9);
-  ImGui::SameLine();
-  ImGui::RadioButton("10-ball", &options.game, 10);
+  for (const rules::GameInfo& game : rules::allGames()) {
+    ImGui::SameLine();
+    ImGui::RadioButton(game.name, &options.game, game.number);
+  }
   ImGui::SetNextItemWidth(160);
   ImGui::SliderInt("race to", &options.race_to, 1, protocol::kMaxRace);
   ImGui::SameLine();

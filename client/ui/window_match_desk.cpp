@@ -88,10 +88,10 @@ void MatchDesk::startBotOpponent() {
   if (!bot_wanted_) return;
   if (session_.stage() == app::SessionStage::Lobby) bot_wanted_.reset();  // the player cancelled
   if (!bot_wanted_ || session_.stage() != app::SessionStage::Playing) return;
-  const std::string why = bot_opponent_.start(domain_, session_.match(), *bot_wanted_);
-  notes_.add(
-      {why.empty() ? "the " + botOpponentName(*bot_wanted_) + " is coming to the table" : why,
-       !why.empty()});
+  const auto started = bot_opponent_.start(domain_, session_.match(), *bot_wanted_);
+  notes_.add({started ? "the " + botOpponentName(*bot_wanted_) + " is coming to the table"
+                      : started.error(),
+              !started});
   bot_wanted_.reset();
 }
 

@@ -401,15 +401,17 @@ WebServer::~WebServer() {
   state_->acceptor.close(ignored);
 }
 
-std::string WebServer::start() {
+Check<> WebServer::start() {
   beast::error_code ec;
   const auto address = asio::ip::make_address(state_->options.bind, ec);
-  if (ec) return "not an IP address: '" + state_->options.bind + "'";
+  if (ec)
+    return Check<>::refuse("bad_address", "not an IP address: '" + state_->options.bind + "'");
   const tcp::endpoint endpoint(address, state_->options.port);
   auto& acceptor = state_->acceptor;
   const auto fail = [&](const char* what) {
-    return std::string(what) + " " + state_->options.bind + ":" +
-           std::to_string(state_->options.port) + ": " + ec.message();
+    return Check<>::refuse("socket_error", std::string(what) + " " + state_->options.bind + ":" +
+                                               std::to_string(state_->options.port) + ": " +
+                                               ec.message());
   };
   if (acceptor.open(endpoint.protocol(), ec)) return fail("cannot open a socket for");
   if (acceptor.set_option(asio::socket_base::reuse_address(true), ec)) return fail("cannot reuse");
@@ -417,7 +419,7 @@ std::string WebServer::start() {
   if (acceptor.listen(asio::socket_base::max_listen_connections, ec))
     return fail("cannot listen on");
   acceptNext(state_);
-  return {};
+  return Check<>::pass();
 }
 
 std::uint16_t WebServer::port() const {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "client/web/gateway.h"
+#include "core/check.h"
 
 #include <boost/asio/ip/address.hpp>
 
@@ -59,8 +60,8 @@ class WebServer {
   WebServer(const WebServer&) = delete;
   WebServer& operator=(const WebServer&) = delete;
 
-  /// Binds and listens; empty when listening, else why not.
-  std::string start();
+  /// Binds and listens, or refuses with why it cannot.
+  Check<> start();
   /// The port listened on (after start).
   std::uint16_t port() const;
   /// Browsers dropped for being too slow, and connections refused for being too many.
