@@ -1,5 +1,4 @@
-// pool-server's settings in one table: each a flag, a --config file key and a config field;
-// flags over file over defaults, with CLI11 and nlohmann-json.
+// pool-server's settings in one table (flag, file key, field): flags over file over defaults.
 #include "server/server_config.h"
 
 #include <spdlog/spdlog.h>
@@ -192,9 +191,13 @@ Result<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c) {
 ConfigOutcome parseConfig(int argc, const char* const* argv) {
   CLI::App app{"pool-server: the authoritative 8-, 9- and 10-ball match server over Cyclone DDS"};
   ServerConfig flags;
-  for (const Setting& s : settings()) s.add_flag(app, flags);
   std::string config_file;
-  app.add_option("--config", config_file, "JSON file with the same keys; flags win");
+  for (const Setting& s : settings()) {
+    s.add_flag(app, flags);
+    // --help lists the file right after the flags that shape the server's loop.
+    if (s.key == "fast")
+      app.add_option("--config", config_file, "JSON file with the same keys; flags win");
+  }
   app.footer(
       "Operating a running server: pool-server status | pool-server admin VERB ... "
       "[--db PATH | --socket PATH] (pool-server admin --help)\n");

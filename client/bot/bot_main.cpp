@@ -12,6 +12,8 @@
 #include "client/bot/ai/bot_level.h"
 #include "client/bot/bot_player.h"
 #include "client/net/game_client.h"
+#include "core/check.h"
+#include "core/result.h"
 #include "core/text.h"
 #include "net/dds_error.h"
 
@@ -72,22 +74,22 @@ void addBotFlags(CLI::App& app, BotProgramConfig& c) {
   app.add_option("--log-level", c.log_level, "trace, debug, info, warn, error, off");
 }
 
-// The table settings the flags ask for, or why they are refused; empty without --game.
-std::optional<pool::protocol::MatchSettings> tableSettings(const BotProgramConfig& c,
-                                                           std::string& why) {
-  if (c.game == 0) return std::nullopt;
+// The table settings the flags ask for (none without --game), or why they are refused.
+pool::Result<std::optional<pool::protocol::MatchSettings>> tableSettings(
+    const BotProgramConfig& c) {
+  using R = pool::Result<std::optional<pool::protocol::MatchSettings>>;
+  if (c.game == 0) return R::ok(std::nullopt);
   pool::protocol::MatchSettings s;
   const auto game = pool::rules::gameOfNumber(c.game);
   const auto breaks = pool::protocol::breakOrderOf(c.breaks);
-  if (!game) why = "--game: must be 8, 9 or 10";
-  if (!breaks) why = "--breaks: must be alternate or winner";
-  if (!game || !breaks) return std::nullopt;
+  if (!breaks) return R::fail("bad_breaks", "--breaks: must be alternate or winner");
+  if (!game) return R::fail("bad_game", "--game: must be 8, 9 or 10");
   s.game = *game;
   s.race_to = c.race;
   s.breaks = *breaks;
   s.shot_clock = c.shot_clock;
-  if (auto reason = pool::protocol::checkSettings(s); !reason) why = reason.error();
-  return s;
+  if (auto ok = pool::protocol::checkSettings(s); !ok) return R::fail(ok.code(), ok.error());
+  return R::ok(s);
 }
 
 int run(const BotProgramConfig& c) {
@@ -109,12 +111,12 @@ int run(const BotProgramConfig& c) {
     }
     key = *loaded;
   }
-  std::string why;
-  const auto settings = tableSettings(c, why);
-  if (!why.empty()) {
-    spdlog::error("{}", why);
+  const auto table = tableSettings(c);
+  if (!table) {
+    spdlog::error("{}", table.error());
     return 2;
   }
+  const auto& settings = *table;
   // Server keys are pinned in memory for the bot's run (a restarted bot pins again).
   client::ClientOptions options{
       c.domain, "", c.name, {}, [](const std::string& line, bool problem) {
@@ -151,22 +153,24 @@ int run(const BotProgramConfig& c) {
 }
 
 /// Logs go to stderr (stdout carries only the result line) at `c.log_level`; the lines name the
-/// bot. Returns why the name or the level is refused, or "".
-std::string startLogging(const BotProgramConfig& c) {
+/// bot. Refuses a name or a level it cannot take, with why.
+pool::Check<> startLogging(const BotProgramConfig& c) {
   spdlog::set_default_logger(spdlog::stderr_color_mt("pool-bot"));
   spdlog::set_level(spdlog::level::from_str(c.log_level));
   if (!pool::isCleanUtf8(c.name, 31)) {
-    return "--name: 1-31 bytes of UTF-8 without control characters";
+    return pool::Check<>::refuse("bad_name",
+                                 "--name: 1-31 bytes of UTF-8 without control characters");
   }
   if (spdlog::level::from_str(c.log_level) == spdlog::level::off && c.log_level != "off") {
-    return "--log-level: '" + c.log_level +
-           "' is not one of trace, debug, info, warn, error, critical, off";
+    return pool::Check<>::refuse(
+        "bad_log_level", "--log-level: '" + c.log_level +
+                             "' is not one of trace, debug, info, warn, error, critical, off");
   }
   // The name goes into the log pattern: a '%' in it must not be read as a pattern flag.
   std::string name;
   for (char ch : c.name) name += ch == '%' ? std::string("%%") : std::string(1, ch);
   spdlog::set_pattern("[%H:%M:%S.%e] [" + name + "] [%l] %v");
-  return {};
+  return pool::Check<>::pass();
 }
 
 }  // namespace
@@ -177,8 +181,8 @@ int main(int argc, char** argv) {
   addBotFlags(app, config);
   CLI11_PARSE(app, argc, argv);
   config.bot.level = *pool::bot::levelFromString(config.level);
-  if (const std::string why = startLogging(config); !why.empty()) {
-    std::cerr << why << '\n';
+  if (auto ok = startLogging(config); !ok) {
+    std::cerr << ok.error() << '\n';
     return 2;
   }
   std::signal(SIGINT, onSignal);

@@ -422,18 +422,20 @@ void GameClient::pollFrames(std::vector<ClientEvent>& out) {
   }
 }
 
-std::string GameClient::aimRefusal(const protocol::AimSample& aim) {
+Check<> GameClient::checkAim(const protocol::AimSample& aim) {
   const MatchView* view = state(aim.match);
   const std::string where = "aim of " + escapedForLog(aim.match) + " dropped: ";
-  if (!view) return where + "no state of that match";
-  if (!inPlay(view->phase) || aim.seat != view->shooter) return where + "not the shooter's";
-  if (aim.shot_number != view->shot_number) return where + "of another turn";
+  if (!view) return Check<>::refuse("no_state", where + "no state of that match");
+  if (!inPlay(view->phase) || aim.seat != view->shooter)
+    return Check<>::refuse("not_shooter", where + "not the shooter's");
+  if (aim.shot_number != view->shot_number)
+    return Check<>::refuse("other_turn", where + "of another turn");
   const auto seen = aims_seen_.find(aim.match);
   if (seen != aims_seen_.end() && seen->second.first == aim.shot_number &&
       aim.seq <= seen->second.second) {
-    return where + "not newer than the last one (a replay)";
+    return Check<>::refuse("replayed", where + "not newer than the last one (a replay)");
   }
-  return {};
+  return Check<>::pass();
 }
 
 void GameClient::pollAims(std::vector<ClientEvent>& out) {
@@ -443,8 +445,8 @@ void GameClient::pollAims(std::vector<ClientEvent>& out) {
       problem(aim.error());
       continue;
     }
-    if (auto why = aimRefusal(*aim); !why.empty()) {
-      note(why);
+    if (auto ok = checkAim(*aim); !ok) {
+      note(ok.error());
       continue;
     }
     --aim_dropped_;

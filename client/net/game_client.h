@@ -160,8 +160,8 @@ class GameClient {
   void pollResults(std::vector<ClientEvent>& out);
   void pollFrames(std::vector<ClientEvent>& out);
   void pollAims(std::vector<ClientEvent>& out);
-  /// Why a relayed aim (its seal checked) is not taken, or empty.
-  std::string aimRefusal(const protocol::AimSample& aim);
+  /// Refuses a relayed aim (its seal checked) that is not taken, with why.
+  Check<> checkAim(const protocol::AimSample& aim);
   struct PendingJoin {
     protocol::SeatRequest request;
     bool retried = false;  ///< sent again once after a stale-sequence answer

@@ -1,5 +1,4 @@
-// The keys and the HUD's buttons at the window: the match's requests, the practice keys, the
-// settings.
+// The keys and the HUD's buttons at the window: match requests, practice keys, settings.
 #include "client/ui/window_commands.h"
 
 namespace pool::ui {

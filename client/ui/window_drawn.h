@@ -1,5 +1,4 @@
-// A frame as drawn: where the cue ball and the cue landed on the screen, and the camera, for the
-// scripted mouse and the --log-frames line.
+// A frame as drawn: the cue ball, the cue and the camera on screen (scripts, --log-frames).
 #pragma once
 
 #include "client/render/camera.h"

@@ -1,5 +1,4 @@
-// One frame's view model: what the window draws this frame and reports of it, read once from the
-// session, the controls and the turn.
+// One frame's view model: what the window draws and reports this frame, read once.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,4 @@
-// The window's interface: an ImGui frame with the room, the lobby or the HUD, and the choices
-// made in them.
+// The window's interface: an ImGui frame with the room, the lobby or the HUD, and its choices.
 #include "client/ui/window_interface.h"
 
 #include <GLFW/glfw3.h>

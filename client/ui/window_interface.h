@@ -1,5 +1,4 @@
-// The window's interface over the scene (Dear ImGui): the lobby, the HUD or the Magic Eight Ball
-// room, and what the player did in them.
+// The window's interface over the scene (Dear ImGui): the lobby, the HUD or the room.
 #pragma once
 
 #include <string>

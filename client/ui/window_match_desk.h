@@ -1,5 +1,4 @@
-// What the player asks of the match at the window: a new game, a rematch, a concession, the
-// instant replay, a practice table, a bot opponent, a lobby choice, the Magic Eight Ball room.
+// What the player asks of the match at the window: a game, a rematch, a bot, the replay...
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,4 @@
-// The window's 3-D scene: a frame's view handed to the renderer and drawn at the drawing quality,
-// or the Magic Eight Ball room.
+// The window's 3-D scene: a frame's view handed to the renderer, or the Magic Eight Ball room.
 #pragma once
 
 #include <memory>

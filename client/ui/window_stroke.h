@@ -1,5 +1,4 @@
-// The cue stroking through after a shot, this screen's or a remote shooter's, and the cues drawn
-// from aims.
+// The cue stroking through after a shot, this screen's or a remote shooter's.
 #pragma once
 
 #include <Eigen/Core>

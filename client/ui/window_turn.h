@@ -1,5 +1,4 @@
-// The turn at the window: which seat of this screen aims, how its turn opens, and the shots it
-// sends.
+// The turn at the window: which seat aims, how its turn opens, and the shots it sends.
 #pragma once
 
 #include <Eigen/Core>

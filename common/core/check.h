@@ -1,5 +1,4 @@
-// Check<Code>: a check's answer, a pass or a refusal with its reason code and one sentence for a
-// person; the one way a check in this project says no.
+// Check<Code>: a pass, or a refusal with its reason code and one sentence for a person.
 #pragma once
 
 #include <string>

@@ -34,7 +34,7 @@ inline constexpr std::size_t kMaxFollowed = 16;
 /// A lobby entry, or the news that one went away.
 using LobbyEvent = std::variant<protocol::LobbyEntry, protocol::MatchGone>;
 
-/// Decides whether a sample the server signed may be read: empty to take it, else why it is
+/// Decides whether a sample the server signed may be read: passes it, or refuses it with why it is
 /// dropped (the sample then comes out of the take as a failure with that reason).
 using ServerCheck = std::function<Check<>(const protocol::SealedSample&)>;
 

@@ -1,5 +1,4 @@
-// The ranges a cue shot's values may take, and the one check of them: used by the physics'
-// strike, the protocol's command and aim checks, the controls, the bot and the cue's drawing.
+// The ranges a cue shot's values may take, and the one check of them (checkShotRange).
 #pragma once
 
 #include <cstdint>

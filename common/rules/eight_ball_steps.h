@@ -1,5 +1,4 @@
-// The 8-ball rule set's own steps of judging a shot: the break and the shots after it (not part
-// of the public API).
+// The 8-ball rule set's own steps of judging a shot: the break and the play (internal).
 #pragma once
 
 #include "rules/eight_ball.h"

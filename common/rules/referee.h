@@ -1,6 +1,4 @@
-// One judging pipeline for every rule set: the shared steps in order, with a game's own steps (its
-// intent check, the state a shot starts from, its break and its play) as the parts it plugs in
-// (not part of the public API).
+// One judging pipeline for every game, with each game's own steps plugged in (internal).
 #pragma once
 
 #include <vector>

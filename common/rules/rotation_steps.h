@@ -1,5 +1,4 @@
-// The 9-ball and 10-ball rule set's own steps of judging a shot: the break, the shots after it and
-// the foul (not part of the public API).
+// The 9- and 10-ball rule set's own steps of judging a shot: break, play, foul (internal).
 #pragma once
 
 #include "rules/rotation.h"

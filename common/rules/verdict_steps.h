@@ -1,6 +1,4 @@
-// The steps every rule set builds its verdicts from: passing the turn, ending the game, re-racking,
-// the cue ball in hand, the balls a shot drove off, the stalemate, the clock and the next state
-// (not part of the public API).
+// The steps every rule set builds its verdicts from: turn, end, re-rack, clock (internal).
 #pragma once
 
 #include <vector>

@@ -29,7 +29,7 @@ struct Scenario {
 };
 
 /// Parses and validates scenario JSON text. A failure's reason is one line naming the field,
-/// e.g. "shot.speed: must be a finite number in (0, 12]".
+/// e.g. "shot.speed: must be in (0, 12] m/s".
 Result<Scenario> parseScenario(const std::string& json_text);
 
 /// Loads a scenario file (assets/scenes/<name>.json when given a bare scene name such as "break").

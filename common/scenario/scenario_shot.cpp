@@ -1,6 +1,9 @@
 // The scenario's shot: degrees and tip offsets at the edge, a validated CueShot (radians) inside.
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include "physics/cue_strike.h"
 #include "scenario/object_reader.h"
@@ -10,6 +13,22 @@ namespace pool::scenario {
 namespace {
 
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+
+// The physics' check names a shot's values as the physics does ("elevation: ..."); a scenario's
+// error names the file's own field ("shot.elevation_deg: ...").
+std::string inScenarioTerms(const std::string& sentence) {
+  static const std::pair<std::string_view, std::string_view> kFields[] = {
+      {"tip_side, tip_height", "tip_side"},
+      {"elevation", "elevation_deg"},
+      {"yaw", "yaw_deg"},
+  };
+  const auto colon = sentence.find(": ");
+  const std::string_view field = std::string_view(sentence).substr(0, colon);
+  for (const auto& [physics, scenario] : kFields) {
+    if (field == physics) return "shot." + std::string(scenario) + sentence.substr(colon);
+  }
+  return "shot." + sentence;
+}
 
 }  // namespace
 
@@ -38,8 +57,9 @@ Check<> readShot(const nlohmann::json& shot, Scenario& s) {
   cue.yaw = yaw_deg * kRadPerDeg;
   cue.elevation = elevation_deg * kRadPerDeg;
   cue.speed_is_ball = speed_is == "ball";
-  if (auto ok = physics::validateShot(cue, s.spec.params); !ok)
-    return Check<>::refuse("bad_shot", "shot." + ok.error());
+  if (auto ok = physics::validateShot(cue, s.spec.params); !ok) {
+    return Check<>::refuse(physics::toString(ok.code()), inScenarioTerms(ok.error()));
+  }
   s.shot = cue;
   return Check<>::pass();
 }

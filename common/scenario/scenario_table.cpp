@@ -82,7 +82,7 @@ Check<> buildGeometry(Scenario& s) {
   // geometry generated from the spec. Coefficient overrides (cushion_height, ball_radius) need no
   // new mesh: the physics reads the nose height and the radius from the params.
   auto loaded = game::loadTable(s.spec);
-  if (!loaded) return Check<>::refuse("bad_table", "table: " + loaded.error());
+  if (!loaded) return Check<>::refuse("bad_table", loaded.error());  // "table NAME: why"
   s.geometry = std::move(loaded->geometry);
   return Check<>::pass();
 }

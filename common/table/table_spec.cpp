@@ -113,7 +113,7 @@ Check<> readModels(const json& root, ContactModels& models) {
   return Check<>::pass();
 }
 
-/// Reads an optional string field; "" or a reason.
+/// Reads an optional string field, or refuses it with a reason.
 Check<> readString(const json& root, const char* key, std::string& out) {
   const auto it = root.find(key);
   if (it == root.end()) return Check<>::pass();

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <string>
 
+#include "core/check.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
 
@@ -16,22 +17,24 @@ struct Args {
   std::string out;  ///< empty: stdout
 };
 
-/// Parses the command line; returns an error line or "".
-std::string parseArgs(int argc, char** argv, Args& args) {
+/// Parses the command line, or refuses it with an error line.
+pool::Check<> parseArgs(int argc, char** argv, Args& args) {
+  using pool::Check;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-o") {
-      if (i + 1 >= argc) return "-o needs a file name";
+      if (i + 1 >= argc) return Check<>::refuse("missing_value", "-o needs a file name");
       args.out = argv[++i];
     } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
-      return "unknown option " + arg;
+      return Check<>::refuse("unknown_option", "unknown option " + arg);
     } else if (args.spec.empty()) {
       args.spec = arg;
     } else {
-      return "more than one spec given";
+      return Check<>::refuse("two_specs", "more than one spec given");
     }
   }
-  return args.spec.empty() ? "no spec given" : "";
+  if (args.spec.empty()) return Check<>::refuse("no_spec", "no spec given");
+  return Check<>::pass();
 }
 
 int fail(const std::string& reason) {
@@ -47,8 +50,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   Args args;
-  if (const std::string error = parseArgs(argc, argv, args); !error.empty())
-    return fail(error + " (" + kUsage + ")");
+  if (auto ok = parseArgs(argc, argv, args); !ok) return fail(ok.error() + " (" + kUsage + ")");
   const auto spec = pool::table::loadTableSpec(args.spec);
   if (!spec) return fail(spec.error());
   const std::string obj = pool::table::toObj(pool::table::buildTableGeometry(*spec));

@@ -16,21 +16,24 @@ FileWatch::FileWatch(std::string path) : path_(std::move(path)) {
   }
 }
 
-std::string FileWatch::problem() const {
-  if (!known_) return {};
+Check<> FileWatch::check() const {
+  if (!known_) return Check<>::pass();
   struct stat st {};
   if (::stat(path_.c_str(), &st) != 0) {
     std::error_code ec;
     const auto folder = std::filesystem::path(path_).parent_path();
     if (!folder.empty() && !std::filesystem::exists(folder, ec)) {
-      return "the database's folder " + folder.string() + " was deleted under the server";
+      return Check<>::refuse("folder_deleted", "the database's folder " + folder.string() +
+                                                   " was deleted under the server");
     }
-    return "the database file " + path_ + " was deleted under the server";
+    return Check<>::refuse("file_deleted",
+                           "the database file " + path_ + " was deleted under the server");
   }
   if (st.st_dev != device_ || st.st_ino != inode_) {
-    return "the database file " + path_ + " was replaced by another file under the server";
+    return Check<>::refuse("file_replaced", "the database file " + path_ +
+                                                " was replaced by another file under the server");
   }
-  return {};
+  return Check<>::pass();
 }
 
 }  // namespace pool::store

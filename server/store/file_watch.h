@@ -5,9 +5,11 @@
 
 #include <string>
 
+#include "core/check.h"
+
 namespace pool::store {
 
-/// Remembers which file `path` names when made (device and inode); problem() says when the path
+/// Remembers which file `path` names when made (device and inode); check() refuses when the path
 /// no longer names it. An open SQLite connection goes on writing to a deleted file without an
 /// error, so the store asks after every write.
 class FileWatch {
@@ -15,8 +17,8 @@ class FileWatch {
   FileWatch() = default;
   explicit FileWatch(std::string path);
 
-  /// Empty while the path still names the file it named at the start; else why not, in words.
-  std::string problem() const;
+  /// Passes while the path still names the file it named at the start; else refuses with why not.
+  Check<> check() const;
   const std::string& path() const { return path_; }
 
  private:

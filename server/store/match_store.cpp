@@ -196,9 +196,9 @@ void MatchStore::closeMatch(const std::string& id) {
 }
 
 void MatchStore::checkStillThere() {
-  const std::string problem = watch_.problem();
-  if (problem.empty()) return;
-  throw StoreError(problem + ": stopping; " + rescue());
+  const auto still = watch_.check();
+  if (still) return;
+  throw StoreError(still.error() + ": stopping; " + rescue());
 }
 
 std::string MatchStore::rescue() {

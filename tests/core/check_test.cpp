@@ -1,5 +1,4 @@
-// Check<Code> and Result<T>: a pass or a value carries no reason; a refusal or a failure carries
-// its code and its sentence.
+// Check<Code> and Result<T>: a pass carries no reason; a refusal carries its code and sentence.
 #include "core/check.h"
 #include "core/result.h"
 

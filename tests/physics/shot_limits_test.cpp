@@ -1,6 +1,4 @@
-// checkShotRange: the one check of a shot's values, at and just past each limit (the limits are
-// docs/SIM-CONTRACT.md's: speed in (0, 12] m/s, elevation in [0°, 89°], tip offset within the
-// miscue limit; exactly a limit is legal, past it by 1e-9 is not).
+// checkShotRange at and just past each limit (docs/SIM-CONTRACT.md: 12 m/s, 89°, the miscue).
 #include "physics/shot_limits.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +16,8 @@ ShotValues good() {
   return {2.0, 5 * kDeg, 0.1, -0.2, 1.0};
 }
 
+// Speed in (0, 12] m/s, elevation in [0°, 89°], tip offset within the miscue limit (0.5 R), |yaw|
+// at most a turn: exactly a limit is legal (within kRangeTolerance, 1e-12), past it by 1e-9 is not.
 TEST(ShotRange, EachLimitHoldsExactlyAndRefusesJustPastIt) {
   EXPECT_TRUE(checkShotRange(good()));
   struct Case {

@@ -94,15 +94,17 @@ TEST(FileWatch, ADeletedOrReplacedFileIsNoticedAndAStillOneIsNot) {
   const std::string path = scratch.file("f.db");
   std::ofstream(path) << "x";
   const store::FileWatch watch(path);
-  EXPECT_EQ(watch.problem(), "");
+  EXPECT_TRUE(watch.check());
   std::ofstream(path, std::ios::app) << "more";  // written to, still the same file
-  EXPECT_EQ(watch.problem(), "");
+  EXPECT_TRUE(watch.check());
   std::filesystem::rename(path, path + ".old");
   std::ofstream(path) << "y";  // another file under the same name
-  EXPECT_NE(watch.problem().find("replaced"), std::string::npos) << watch.problem();
+  EXPECT_EQ(watch.check().code(), "file_replaced") << watch.check().error();
+  EXPECT_NE(watch.check().error().find("replaced"), std::string::npos) << watch.check().error();
   std::filesystem::remove(path);
-  EXPECT_NE(watch.problem().find("deleted"), std::string::npos) << watch.problem();
-  EXPECT_EQ(store::FileWatch(scratch.file("none")).problem(), "") << "nothing to watch";
+  EXPECT_EQ(watch.check().code(), "file_deleted") << watch.check().error();
+  EXPECT_NE(watch.check().error().find("deleted"), std::string::npos) << watch.check().error();
+  EXPECT_TRUE(store::FileWatch(scratch.file("none")).check()) << "nothing to watch";
 }
 
 }  // namespace
