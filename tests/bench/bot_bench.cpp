@@ -146,10 +146,10 @@ void BM_BreakGrid(benchmark::State& state) {
   for (auto _ : state) {
     rows.clear();
     bot::Rng rng(7);
-    for (double y : {0.0, 0.2, 0.4, 0.55}) {
-      for (double offset : {-0.3, 0.0, 0.3, 0.6}) {
-        for (double speed : {9.0, 11.0}) {
-          for (double tip : {-0.1, 0.2}) {
+    for (double y : {0.0, 0.1, 0.2, 0.3, 0.4, 0.55}) {
+      for (double offset : {-0.6, -0.45, -0.3, -0.15, 0.0, 0.15, 0.3, 0.45, 0.6}) {
+        for (double speed : {9.0, 10.0, 11.0, 12.0}) {
+          for (double tip : {-0.3, -0.1, 0.2, 0.4}) {
             Row row{{y, offset, speed, tip}, {}};
             for (int k = 0; k < n; ++k) {
               const auto balls = rackOf(view, 1000 + static_cast<std::uint64_t>(k));
@@ -171,7 +171,7 @@ void BM_BreakGrid(benchmark::State& state) {
               n);
   for (std::size_t i = 0; i < std::min<std::size_t>(rows.size(), 8); ++i) {
     const Row& r = rows[i];
-    std::printf("  y %.2f offset %+.1f R speed %4.1f tip %+.1f: %5.1f / %5.1f / %5.1f %%\n",
+    std::printf("  y %.2f offset %+.2f R speed %4.1f tip %+.1f: %5.1f / %5.1f / %5.1f %%\n",
                 r.stroke.y, r.stroke.offset, r.stroke.speed, r.stroke.tip,
                 r.tally.share(r.tally.pots), r.tally.share(r.tally.legal),
                 r.tally.share(r.tally.keeps));
