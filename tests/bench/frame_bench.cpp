@@ -1,12 +1,11 @@
-// Frame time of the client's 3-D scene at 1280×720 on the offscreen context (Mesa llvmpipe under
-// Xvfb or EGL): a clear-only frame (the baseline), the bare table, and the full scene (the pool
-// hall round the table, sixteen balls rolling and turning with their shadows, two pocketed, the
-// lamps, the 3-D cue and the ghost ball, overlay lines, the window's Dear ImGui HUD), from the
-// overview and from the aiming view behind the cue ball, in the full and the light preset, and
-// without the hall. Prints
-// median and p99 per frame and the ratio to the baseline; wall time, since llvmpipe renders on its
-// own threads, and the CPU time of the whole process (all threads) per frame, which a busy machine
-// does not inflate.
+// Frame time of the client's 3-D scene on the offscreen context (Mesa llvmpipe under Xvfb or EGL,
+// or a GPU's driver): a clear-only frame (the baseline), the bare table, and the full scene (the
+// pool hall, sixteen balls rolling with their shadows, two pocketed, the lamps, the 3-D cue and
+// the ghost ball, overlay lines, the window's Dear ImGui HUD), from the overview and from the
+// aiming view, in the full and the light preset, and without the hall. Prints median and p99 per
+// frame and the ratio to the baseline; wall time, since llvmpipe renders on its own threads, and
+// the CPU time of the whole process (all threads) per frame, which a busy machine does not
+// inflate. --size WxH (default 1280x720) and --preset full|light (only that preset's scenes).
 #include <backends/imgui_impl_opengl3.h>
 #include <benchmark/benchmark.h>
 #include <glad/gl.h>
@@ -35,8 +34,9 @@
 
 namespace {
 
-constexpr int kWidth = 1280;
-constexpr int kHeight = 720;
+// The frame's size: 1280×720 unless --size WxH says otherwise.
+int kWidth = 1280;
+int kHeight = 720;
 
 /// The context and scene, made once for all benchmarks.
 struct Bench {
@@ -280,11 +280,69 @@ double percentile(std::vector<double> v, double p) {
 
 }  // namespace
 
+/// The benchmarks of one preset (--preset): the baseline and the bare table with its full scenes
+/// (a name ends in "/manual_time").
+const char* presetFilter(const std::string& preset) {
+  if (preset == "full")
+    return "BM_BaselineClearOnly|BM_TableOnly|BM_FullScene/|BM_FullSceneAimingView/";
+  if (preset == "light") {
+    return "BM_BaselineClearOnly|BM_TableOnly|BM_FullSceneLight|BM_FullSceneAimingViewLight";
+  }
+  return nullptr;
+}
+
+/// Takes this program's own flags out of `args`: --size WxH and --preset NAME (each also as
+/// --flag=value). Returns an error line, or nothing.
+std::optional<std::string> takeOwnFlags(std::vector<char*>& args, std::string& filter) {
+  for (std::size_t i = 1; i < args.size();) {
+    const std::string arg = args[i];
+    std::string name = arg, value;
+    const auto eq = arg.find('=');
+    if (eq != std::string::npos) {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+    }
+    if (name != "--size" && name != "--preset") {
+      ++i;
+      continue;
+    }
+    std::size_t used = 1;
+    if (eq == std::string::npos) {
+      if (i + 1 >= args.size()) return name + ": needs a value";
+      value = args[i + 1];
+      used = 2;
+    }
+    if (name == "--size") {
+      int w = 0, h = 0;
+      char tail = 0;
+      if (std::sscanf(value.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
+          w > 8192 || h > 8192) {
+        return "--size: WIDTHxHEIGHT, each 16-8192, e.g. 2560x1440";
+      }
+      kWidth = w;
+      kHeight = h;
+    } else {
+      const char* f = presetFilter(value);
+      if (!f) return "--preset: full or light";
+      filter = std::string("--benchmark_filter=") + f;
+    }
+    args.erase(args.begin() + static_cast<std::ptrdiff_t>(i),
+               args.begin() + static_cast<std::ptrdiff_t>(i + used));
+  }
+  return std::nullopt;
+}
+
 int main(int argc, char** argv) {
   // A frame budget's p99 needs hundreds of frames, not the library's half second (about 40
   // frames, where each run's first frame, which compiles the shaders and uploads the meshes, is
   // the p99): 3 s per run unless the command line says otherwise (the smoke test does).
   std::vector<char*> args(argv, argv + argc);
+  std::string preset_filter;
+  if (auto error = takeOwnFlags(args, preset_filter)) {
+    std::fprintf(stderr, "frame_bench: %s\n", error->c_str());
+    return 2;
+  }
+  if (!preset_filter.empty()) args.insert(args.begin() + 1, preset_filter.data());
   char default_min_time[] = "--benchmark_min_time=3";
   const bool min_time_given = std::any_of(args.begin(), args.end(), [](const char* a) {
     return std::string(a).rfind("--benchmark_min_time", 0) == 0;
@@ -303,9 +361,10 @@ int main(int argc, char** argv) {
                  pool::test::runningInCi() ? " (CI=true: a failure)" : "");
     return pool::test::runningInCi() ? 1 : 0;
   }
-  std::printf("frame_bench: %dx%d through %s, renderer: %s\n", kWidth, kHeight,
+  std::printf("frame_bench: %dx%d through %s, renderer: %s, OpenGL %s\n", kWidth, kHeight,
               bench()->context.backend().c_str(),
-              reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+              reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+              reinterpret_cast<const char*>(glGetString(GL_VERSION)));
   pool::bench::CheckedReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   const auto& all = samples();
