@@ -24,15 +24,12 @@ Result<LoadedTable> loadTable(const std::string& name) {
   return Result<LoadedTable>::ok(makeLoadedTable(std::move(*spec), std::move(*geometry)));
 }
 
-Result<LoadedTable> loadTable(table::TableSpec spec) {
+Result<table::TableGeometry> tableGeometry(const table::TableSpec& spec) {
   std::error_code ec;
   if (spec.collision_mesh.empty() || !std::filesystem::exists(spec.collision_mesh, ec)) {
-    auto geometry = table::buildTableGeometry(spec);
-    return Result<LoadedTable>::ok(makeLoadedTable(std::move(spec), std::move(geometry)));
+    return Result<table::TableGeometry>::ok(table::buildTableGeometry(spec));
   }
-  auto geometry = table::loadTableGeometry(spec);
-  if (!geometry) return Result<LoadedTable>::fail("table " + spec.name + ": " + geometry.error());
-  return Result<LoadedTable>::ok(makeLoadedTable(std::move(spec), std::move(*geometry)));
+  return table::loadTableGeometry(spec);
 }
 
 Result<std::shared_ptr<const LoadedTable>> loadSharedTable(const std::string& name) {

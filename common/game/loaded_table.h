@@ -34,10 +34,10 @@ LoadedTable makeLoadedTable(table::TableSpec spec, table::TableGeometry geometry
 /// table ("table NAME: why").
 Result<LoadedTable> loadTable(const std::string& name);
 
-/// The loaded table of a spec already read (its coefficients perhaps changed since, as a
-/// scenario's are): its collision mesh where the spec names one that exists, else the geometry
-/// generated from the spec, as pool-tablegen writes it. The error names the table.
-Result<LoadedTable> loadTable(table::TableSpec spec);
+/// The geometry of a spec already read (its coefficients perhaps changed since, as a scenario's
+/// are): its collision mesh where the spec names one that exists, else the geometry generated
+/// from the spec, as pool-tablegen writes it.
+Result<table::TableGeometry> tableGeometry(const table::TableSpec& spec);
 
 /// loadTable's table, shared read-only (by every match a server plays on it).
 Result<std::shared_ptr<const LoadedTable>> loadSharedTable(const std::string& name);

@@ -77,13 +77,13 @@ Check<> readModels(const nlohmann::json* models, Scenario& s) {
 }
 
 Check<> buildGeometry(Scenario& s) {
-  // The game kit assembles the table as for a match: the collision mesh through assimp, as the
-  // server reads it, or for a spec without one (or whose mesh file is not beside it) the same
-  // geometry generated from the spec. Coefficient overrides (cushion_height, ball_radius) need no
+  // The game kit's geometry of a spec: the collision mesh through assimp, as the server reads it,
+  // or for a spec without one (or whose mesh file is not beside it) the same geometry generated
+  // from the spec. Coefficient overrides (cushion_height, ball_radius) need no
   // new mesh: the physics reads the nose height and the radius from the params.
-  auto loaded = game::loadTable(s.spec);
-  if (!loaded) return Check<>::refuse("bad_table", loaded.error());  // "table NAME: why"
-  s.geometry = std::move(loaded->geometry);
+  auto geometry = game::tableGeometry(s.spec);
+  if (!geometry) return Check<>::refuse("bad_table", "table: " + geometry.error());
+  s.geometry = std::move(*geometry);
   return Check<>::pass();
 }
 
