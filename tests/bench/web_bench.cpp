@@ -109,6 +109,29 @@ FrameRates watchFrames(client::GameClient& spectator, const std::string& match,
   return rates;
 }
 
+/// Polls `ready` every 20 ms for up to `limit`; whether it came true.
+template <class Ready>
+bool waitUntil(Clock::duration limit, Ready ready) {
+  for (const auto until = Clock::now() + limit; Clock::now() < until;) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(20ms);
+  }
+  return ready();
+}
+
+/// Waits up to `limit` for a frame of `match` (a shot in flight); whether one came.
+bool nextFrame(client::GameClient& spectator, const std::string& match, Clock::duration limit) {
+  for (const auto until = Clock::now() + limit; Clock::now() < until;) {
+    spectator.wait(5ms);
+    for (const auto& event : spectator.poll()) {
+      if (const auto* f = std::get_if<client::TableFrame>(&event); f && f->match == match) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 /// `count` WebSocket browsers watching `match` on one Asio thread, counting the bytes they get.
 class Browsers {
  public:
@@ -129,6 +152,12 @@ class Browsers {
     std::vector<std::uint64_t> out;
     for (const auto& b : browsers_) out.push_back(b->bytes.load());
     return out;
+  }
+  /// Browsers that got at least one message (the gateway's answer to their watch).
+  int joined() const {
+    int n = 0;
+    for (const auto& b : browsers_) n += b->bytes.load() > 0 ? 1 : 0;
+    return n;
   }
   int closed() const {
     int n = 0;
@@ -256,7 +285,18 @@ int main(int argc, char** argv) {
     return 1;
   }
   Browsers clients(port, "bench-1", browsers);
-  std::this_thread::sleep_for(1s);  // connected and joined
+  // Every browser joined (the gateway answers a watch at once), then the window opens on a shot
+  // of bench-1 in flight, so that it holds frames to fan out however long the bots think (under
+  // the sanitizers a bot's turn can outlast a smoke run's window).
+  if (!waitUntil(60s, [&] { return clients.joined() == browsers; })) {
+    std::fprintf(stderr, "web_bench: %d of %d browsers joined in 60 s\n%s\n", clients.joined(),
+                 browsers, web.err().c_str());
+    return 1;
+  }
+  if (!nextFrame(spectator, "bench-1", 60s)) {
+    std::fprintf(stderr, "web_bench: bench-1 played no shot in 60 s\n%s\n", server.err().c_str());
+    return 1;
+  }
   const auto bytes0 = clients.bytes();
   const double web_cpu0 = cpuSeconds(web.pid());
   server_cpu0 = cpuSeconds(server.pid());
@@ -291,6 +331,10 @@ int main(int argc, char** argv) {
       "bench-2 frames (the other match), with the gateway:    %.1f fps median over %zu "
       "shots, p99 gap %.1f ms\n",
       loaded_fps, loaded.shots(), loaded_gap);
-  // Figures only; the run fails when it measured nothing (no browser got anything).
-  return rates.back() > 0 ? 0 : 1;
+  // Figures only; the run fails when it measured nothing: no browser got a frame of a shot that
+  // was in flight when the window opened.
+  if (rates.back() > 0) return 0;
+  std::fprintf(stderr, "web_bench: no browser got a frame of bench-1 in the window\n%s\n",
+               web.err().c_str());
+  return 1;
 }
