@@ -69,6 +69,7 @@ JawLayout jawAt(const TableSpec& spec, const RailLayout& r, int rail_index, bool
 }  // namespace
 
 std::vector<PocketLayout> pocketLayouts(const TableSpec& spec) {
+  if (!spec.pockets) return {};
   return {cornerPocket(spec, "head_left_corner", -1.0, 1.0),
           sidePocket(spec, "left_side", 1.0),
           cornerPocket(spec, "foot_left_corner", 1.0, 1.0),
@@ -80,6 +81,12 @@ std::vector<PocketLayout> pocketLayouts(const TableSpec& spec) {
 std::vector<RailLayout> railLayouts(const TableSpec& spec) {
   const double hl = spec.length / 2.0;
   const double hw = spec.width / 2.0;
+  if (!spec.pockets) {
+    return {rail("head", {-hl, hw}, {-hl, -hw}, kNoPocket, kNoPocket),
+            rail("foot", {hl, -hw}, {hl, hw}, kNoPocket, kNoPocket),
+            rail("left", {hl, hw}, {-hl, hw}, kNoPocket, kNoPocket),
+            rail("right", {-hl, -hw}, {hl, -hw}, kNoPocket, kNoPocket)};
+  }
   const double s = cornerSetback(spec);
   const double ms = spec.side.mouth / 2.0;
   return {rail("head", {-hl, hw - s}, {-hl, -(hw - s)}, 0, 3),

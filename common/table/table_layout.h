@@ -31,12 +31,16 @@ struct PocketLayout {
   double jaw_angle_deg = 0.0;
 };
 
-/// One rail's nose line from jaw point to jaw point; normal = left perpendicular of (b − a).
+/// A rail end at a corner of a table without pockets, where two cushions meet.
+inline constexpr int kNoPocket = -1;
+
+/// One rail's nose line from jaw point to jaw point (a table without pockets: corner to corner);
+/// normal = left perpendicular of (b − a).
 struct RailLayout {
   std::string name;
   Eigen::Vector2d a, b;
   Eigen::Vector2d normal;  ///< unit, into the table
-  int pocket_a = 0;        ///< pocket at end a (index into pocketLayouts)
+  int pocket_a = 0;        ///< pocket at end a (index into pocketLayouts), or kNoPocket
   int pocket_b = 0;        ///< pocket at end b
 };
 

@@ -132,15 +132,30 @@ const JawLayout& jawOf(const std::vector<JawLayout>& jaws, int rail, const Vec2&
   for (const JawLayout& j : jaws) {
     if (j.rail == rail && j.point == point) return j;
   }
-  return jaws.front();  // unreachable: every rail end has a jaw
+  return jaws.front();  // unreachable: every rail end at a pocket has a jaw
+}
+
+/// The section where a rail's sweep ends: mitred into its jaw facing at a pocket, or at a corner
+/// of a table without pockets mitred at 45° into the next cushion (both offset lines meet on the
+/// corner's diagonal, `corner + back · (±1, ±1)`).
+std::vector<Vec3> endSection(const RailLayout& rail, int index, bool at_a,
+                             const std::vector<JawLayout>& jaws,
+                             const std::vector<ProfilePoint>& profile) {
+  const Vec2& point = at_a ? rail.a : rail.b;
+  if ((at_a ? rail.pocket_a : rail.pocket_b) != kNoPocket)
+    return mitreSection(jawOf(jaws, index, point), profile);
+  const Vec2 diagonal(point.x() > 0.0 ? 1.0 : -1.0, point.y() > 0.0 ? 1.0 : -1.0);
+  std::vector<Vec3> out;
+  for (const ProfilePoint& p : profile) out.push_back(lift(point + p.back * diagonal, p.z));
+  return out;
 }
 
 MeshPart cushionPart(const TableSpec& spec, const RailLayout& rail, int index,
                      const std::vector<JawLayout>& jaws) {
   const auto profile = cushionProfile(spec);
   PartBuilder part("cushion_" + rail.name);
-  sweepFaces(part, mitreSection(jawOf(jaws, index, rail.a), profile),
-             mitreSection(jawOf(jaws, index, rail.b), profile), profile, -rail.normal);
+  sweepFaces(part, endSection(rail, index, true, jaws, profile),
+             endSection(rail, index, false, jaws, profile), profile, -rail.normal);
   return part.take();
 }
 
@@ -287,9 +302,15 @@ MeshPart railPart(const TableSpec& spec, const RailLayout& rail, int index,
   const auto profile = cushionProfile(spec);
   const double top = spec.params.cushion_height + kCushionTopAboveNose;
   const Vec2 out = -rail.normal * spec.rail_width;
-  const Vec3 a3 = mitreSection(jawOf(jaws, index, rail.a), profile)[3];
-  const Vec3 b3 = mitreSection(jawOf(jaws, index, rail.b), profile)[3];
-  const Vec2 a(a3.x(), a3.y()), b(b3.x(), b3.y());
+  const Vec3 a3 = endSection(rail, index, true, jaws, profile)[3];
+  const Vec3 b3 = endSection(rail, index, false, jaws, profile)[3];
+  Vec2 a(a3.x(), a3.y()), b(b3.x(), b3.y());
+  if (rail.pocket_a == kNoPocket && std::abs(rail.normal.x()) > 0.5) {
+    // Without pockets the end rails reach over the corners, so the wood closes round the table.
+    const Vec2 along = (b - a).normalized() * spec.rail_width;
+    a -= along;
+    b += along;
+  }
   PartBuilder part("rail_" + rail.name);
   convexBox(part, {lift(a, 0.0), lift(b, 0.0), lift(b + out, 0.0), lift(a + out, 0.0), lift(a, top),
                    lift(b, top), lift(b + out, top), lift(a + out, top)});

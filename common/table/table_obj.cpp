@@ -199,10 +199,12 @@ Result<TableGeometry> importMesh(const TableSpec& spec) {
   readNode(loaded, *scene, *scene->mRootNode);
   if (!loaded.error.empty())
     return Result<TableGeometry>::fail("collision_mesh: " + path + ": " + loaded.error);
-  if (loaded.geometry.noses.empty() || loaded.geometry.holes.empty() ||
+  if (loaded.geometry.noses.empty() || loaded.geometry.holes.empty() != !spec.pockets ||
       loaded.geometry.parts.empty()) {
-    return Result<TableGeometry>::fail("collision_mesh: " + path +
-                                       ": needs nose_*, hole_* and mesh objects");
+    return Result<TableGeometry>::fail(
+        "collision_mesh: " + path +
+        (spec.pockets ? ": needs nose_*, hole_* and mesh objects"
+                      : ": needs nose_* and mesh objects, and no hole_* (a table without pockets)"));
   }
   TableGeometry& g = loaded.geometry;
   g.name = spec.name;

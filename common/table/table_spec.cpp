@@ -82,6 +82,42 @@ Check<> readPocket(const json& root, const char* key, PocketSpec& out) {
                     {});
 }
 
+/// `pockets` (true unless false), then the corner and side pockets where there are pockets; a
+/// table without them must not describe any.
+Check<> readPockets(const json& root, TableSpec& spec) {
+  if (const auto it = root.find("pockets"); it != root.end()) {
+    if (!it->is_boolean()) return Check<>::refuse("not_a_bool", "pockets: must be true or false");
+    spec.pockets = it->get<bool>();
+  }
+  if (!spec.pockets) {
+    for (const char* key : {"corner", "side"}) {
+      if (root.contains(key))
+        return Check<>::refuse("pocket_without_pockets",
+                               std::string(key) + ": a table without pockets has no pocket spec");
+    }
+    return Check<>::pass();
+  }
+  if (auto r = readPocket(root, "corner", spec.corner); !r) return r;
+  return readPocket(root, "side", spec.side);
+}
+
+Check<> readSnookerMarks(const json& root, std::optional<SnookerMarks>& out) {
+  const auto it = root.find("snooker_marks");
+  if (it == root.end()) return Check<>::pass();
+  if (!it->is_object())
+    return Check<>::refuse("not_an_object", "snooker_marks: must be an object");
+  SnookerMarks m;
+  if (auto r = readFields(*it, "snooker_marks.",
+                          {{"baulk_line", &m.baulk_line, &kPositive},
+                           {"d_radius", &m.d_radius, &kPositive},
+                           {"black_spot", &m.black_spot, &kPositive}},
+                          {});
+      !r)
+    return r;
+  out = m;
+  return Check<>::pass();
+}
+
 Check<> readParams(const json& root, PhysicsParams& params) {
   const auto it = root.find("params");
   if (it == root.end()) return Check<>::pass();
@@ -186,6 +222,16 @@ Check<> checkLayout(const TableSpec& spec) {
 }
 
 Check<> checkSpec(const TableSpec& spec) {
+  if (spec.snooker_marks) {
+    const SnookerMarks& m = *spec.snooker_marks;
+    if (m.baulk_line + m.black_spot >= spec.length)
+      return Check<>::refuse("marks_overlap",
+                             "snooker_marks: the baulk line and the black spot must leave room "
+                             "between them");
+    if (m.d_radius >= spec.width / 2.0)
+      return Check<>::refuse("d_too_wide", "snooker_marks.d_radius: must be less than width / 2");
+  }
+  if (!spec.pockets) return Check<>::pass();
   if (auto r = checkLayout(spec); !r) return r;
   if (auto r = checkPocket(spec, "corner", spec.corner, true); !r) return r;
   return checkPocket(spec, "side", spec.side, false);
@@ -199,8 +245,8 @@ Check<> readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
                           {"cushion_width", &spec.cushion_width, &kPositive},
                           {"rail_width", &spec.rail_width, &kPositive},
                           {"slate_thickness", &spec.slate_thickness, &kSlate}},
-                         {"name", "description", "corner", "side", "params", "models",
-                          "collision_mesh", "render_mesh"});
+                         {"name", "description", "pockets", "corner", "side", "snooker_marks",
+                          "params", "models", "collision_mesh", "render_mesh"});
   if (!r) return r;
   std::string description, collision, render;
   for (const auto& [key, target] :
@@ -208,8 +254,8 @@ Check<> readSpec(const json& root, const fs::path& spec_dir, TableSpec& spec) {
         std::pair{"collision_mesh", &collision}, std::pair{"render_mesh", &render}}) {
     if (r = readString(root, key, *target); !r) return r;
   }
-  if (r = readPocket(root, "corner", spec.corner); !r) return r;
-  if (r = readPocket(root, "side", spec.side); !r) return r;
+  if (r = readPockets(root, spec); !r) return r;
+  if (r = readSnookerMarks(root, spec.snooker_marks); !r) return r;
   if (r = readParams(root, spec.params); !r) return r;
   if (r = readModels(root, spec.models); !r) return r;
   spec.collision_mesh = resolveMesh(collision, spec_dir);
@@ -264,7 +310,8 @@ Result<TableSpec> loadTableSpec(const std::string& nameOrPath) {
   if (!found) {
     return Result<TableSpec>::fail(
         "unknown table '" + nameOrPath +
-        "' (expected wpa-9ft, wpa-8ft, wpa-7ft or a path to a spec file)");
+        "' (expected wpa-9ft, wpa-8ft, wpa-7ft, snooker-12ft, carom-match or a path to a "
+        "spec file)");
   }
   return loadFile(*found, nameOrPath);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/result.h"
@@ -20,6 +21,16 @@ struct PocketSpec {
       0.0;  ///< hole centre behind the pocket's reference point, m (see table_geometry.h)
 };
 
+/// The marks of a snooker table (Rules of Snooker, Section 1, 1(d)-(f)), m: the baulk line from
+/// the face of the bottom (head) cushion, the D's radius about the middle of the baulk line, and
+/// the black spot from the face of the top (foot) cushion. The other spots follow from these and
+/// the playing surface (table/snooker_spots.h).
+struct SnookerMarks {
+  double baulk_line = 0.0;
+  double d_radius = 0.0;
+  double black_spot = 0.0;
+};
+
 /// A whole table. The playing surface is the rectangle between the cushion noses.
 struct TableSpec {
   std::string name;                ///< e.g. "wpa-9ft"
@@ -28,8 +39,10 @@ struct TableSpec {
   double cushion_width = 0.05;     ///< nose to the back of the cushion rubber, m
   double rail_width = 0.10;        ///< wooden rail beyond the cushion, m
   double slate_thickness = 0.025;  ///< m
-  PocketSpec corner;
-  PocketSpec side;
+  bool pockets = true;  ///< false: a carom table, four whole cushions and no pocket
+  PocketSpec corner;    ///< unused without pockets
+  PocketSpec side;      ///< unused without pockets
+  std::optional<SnookerMarks> snooker_marks;  ///< a snooker table's baulk line, D and spots
   PhysicsParams params;
   ContactModels models;                  ///< the contact model of each pair (`models` in the spec)
   std::filesystem::path collision_mesh;  ///< absolute path of the collision mesh (OBJ)
@@ -37,7 +50,8 @@ struct TableSpec {
       render_mesh;  ///< absolute path of the render mesh; may equal collision_mesh
 };
 
-/// Loads a spec by name ("wpa-9ft", "wpa-8ft", "wpa-7ft": assets/tables/<name>.json) or by path
+/// Loads a spec by name ("wpa-9ft", "wpa-8ft", "wpa-7ft", "snooker-12ft", "carom-match":
+/// assets/tables/<name>.json) or by path
 /// to a JSON file. Failure gives a one-line reason naming the field.
 Result<TableSpec> loadTableSpec(const std::string& nameOrPath);
 

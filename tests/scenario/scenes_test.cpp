@@ -55,7 +55,8 @@ TEST_P(EveryScene, LoadsAndComesToRest) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
                          ::testing::Values("break", "stun", "follow", "draw", "bank", "cut30",
-                                           "jump", "masse", "rattle", "straight_pocket"));
+                                           "jump", "masse", "rattle", "straight_pocket",
+                                           "three_cushion", "snooker_black"));
 
 TEST(Scenes, BreakHitsTheApexBallFirst) {
   const Ran r = runScene("break");
@@ -146,6 +147,48 @@ TEST(Scenes, StraightPocketPotsTheOne) {
   ASSERT_EQ(pockets.size(), 1u);
   EXPECT_EQ(pockets.front().where, "foot_right_corner");
   EXPECT_EQ(finalBall(r, 1).state, physics::MotionState::Pocketed);
+}
+
+// UMB, World Rules of Carom Billiard, three cushions: a point when the cue ball touches both
+// object balls and at least three cushions before it touches the second. Counted here from the
+// event log, independently of any rules code.
+TEST(Scenes, ThreeCushionScoresAPoint) {
+  const Ran r = runScene("three_cushion");
+  EXPECT_EQ(r.scenario.spec.name, "carom-match");
+  int first = -1, cushions_before_second = -1, cushions = 0;
+  for (const auto& e : r.outcome.events) {
+    if (e.type == EventType::BallCushion && e.ball_a == 0) ++cushions;
+    if (e.type != EventType::BallBall || (e.ball_a != 0 && e.ball_b != 0)) continue;
+    const int other = e.ball_a == 0 ? e.ball_b : e.ball_a;
+    if (first < 0) {
+      first = other;
+    } else if (other != first && cushions_before_second < 0) {
+      cushions_before_second = cushions;
+    }
+  }
+  EXPECT_EQ(first, 2);  // the red first, as the opening requires
+  ASSERT_GE(cushions_before_second, 0) << "the cue ball never reached the second object ball";
+  EXPECT_GE(cushions_before_second, 3);
+  // No ball can leave a table without pockets other than over a rail, and none did.
+  for (const auto& b : r.outcome.balls) {
+    EXPECT_EQ(b.state, physics::MotionState::Stationary) << b.id;
+    // At rest on the slate: the centre one radius up, the carom ball's 30.75 mm.
+    EXPECT_NEAR(b.pos.z(), 0.03075, 1e-9) << b.id;
+  }
+}
+
+TEST(Scenes, SnookerBlackDropsInTheTopCorner) {
+  const Ran r = runScene("snooker_black");
+  const auto pockets = eventsOf(r, EventType::Pocket, 7);
+  ASSERT_EQ(pockets.size(), 1u);
+  EXPECT_EQ(pockets.front().where, "foot_left_corner");
+  // The first contact is at two snooker radii (52.5 mm between centres), the cue ball's centre
+  // one snooker radius above the slate.
+  const auto hits = eventsOf(r, EventType::BallBall, 0);
+  ASSERT_FALSE(hits.empty());
+  EXPECT_NEAR(hits.front().pos.z(), 0.02625, 1e-9);
+  const Eigen::Vector2d black(1.4605, 0.0);
+  EXPECT_NEAR((hits.front().pos.head<2>() - black).norm(), 0.0525, 1e-6);
 }
 
 TEST(Scenes, SamplingChangesNoResult) {
