@@ -98,7 +98,7 @@ inline std::vector<BadScenario> badScenarios() {
       {"speed_is_number", withRaw("/shot/speed_is", "1"), "shot.speed_is: must be a string"},
       {"shot_unknown_field", withRaw("/shot/power", "5"), "shot.power: unknown field"},
       // Table and params.
-      {"unknown_table", withRaw("/table", "\"snooker-12ft\""), "table:"},
+      {"unknown_table", withRaw("/table", "\"snooker-14ft\""), "table:"},
       {"table_number", withRaw("/table", "9"), "table: must be a string"},
       {"missing_table_file", withRaw("/table", "\"/nonexistent/spec.json\""), "table:"},
       {"params_not_object", withRaw("/params", "[0.2]"), "params: must be a JSON object"},
