@@ -81,7 +81,7 @@ ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
   ShotCall call;
   if (state.phase == rules::Phase::Break || state.phase == rules::Phase::Over) return call;
   if (game == rules::Game::NineBall) return call;
-  const auto legal = rules::firstBallsFor(rules::GameRules{game, {}}, state, balls);
+  const auto legal = rules::firstBallsFor(rules::GameRules{game, {}, {}}, state, balls);
   const bool callable = aim.ball && aim.pocket >= 0 &&
                         std::find(legal.begin(), legal.end(), *aim.ball) != legal.end();
   if (!callable) {

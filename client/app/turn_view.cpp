@@ -34,7 +34,7 @@ std::optional<double> nearest(const Eigen::Vector2d& cue, const std::vector<phys
 std::optional<double> turnStartYaw(const Eigen::Vector2d& cue,
                                    const std::vector<physics::Ball>& balls,
                                    const rules::GameState& state, rules::Game game) {
-  const auto legal = rules::firstBallsFor(rules::GameRules{game, {}}, state, balls);
+  const auto legal = rules::firstBallsFor(rules::GameRules{game, {}, {}}, state, balls);
   if (!legal.empty()) {
     if (auto yaw = nearest(cue, balls, legal)) return yaw;
   }

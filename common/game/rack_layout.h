@@ -17,8 +17,8 @@ namespace pool::game {
 inline constexpr double kBreakCueSetback = 0.01;
 
 /// A fresh rack of `type` at rest: the object balls from the foot spot, laid out by `generator`
-/// from `seed` (table::rackFor), and the cue ball kBreakCueSetback behind the head spot. In id
-/// order.
+/// from `seed` (table::rackFor), and the cue ball kBreakCueSetback behind the head spot (a carom
+/// opening's cue balls where the opening puts them). In id order.
 std::vector<physics::Ball> rackLayout(
     const LoadedTable& table, std::uint64_t seed, table::RackType type = table::RackType::EightBall,
     table::RackGenerator generator = table::RackGenerator::Frozen);

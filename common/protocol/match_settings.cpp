@@ -29,10 +29,17 @@ double MatchSettings::warningAt() const {
 Check<> checkSettings(const MatchSettings& s) {
   const auto games = rules::allGames();
   if (std::none_of(games.begin(), games.end(), [&](const auto& g) { return g.game == s.game; })) {
-    return Check<>::refuse("bad_game", "game: must be 8-, 9- or 10-ball");
+    return Check<>::refuse("bad_game", "game: must be 8-ball, 9-ball, 10-ball or three-cushion");
   }
   if (s.race_to < 1 || s.race_to > kMaxRace) {
     return Check<>::refuse("bad_race", "race: must be 1 to " + std::to_string(kMaxRace) + " racks");
+  }
+  if (s.points < 1 || s.points > kMaxPoints) {
+    return Check<>::refuse("bad_points",
+                           "points: must be 1 to " + std::to_string(kMaxPoints) + " points");
+  }
+  if (s.practice && s.game == rules::Game::ThreeCushion) {
+    return Check<>::refuse("bad_practice", "practice: practice tables rack pool games");
   }
   if (s.breaks != BreakOrder::Alternate && s.breaks != BreakOrder::Winner) {
     return Check<>::refuse("bad_breaks", "breaks: must be alternate or winner");
@@ -53,8 +60,9 @@ Check<> checkSettings(const MatchSettings& s) {
 
 std::string describe(const MatchSettings& s) {
   if (s.practice) return std::string("practice, ") + rules::toString(s.game) + " rack";
-  std::string text = std::string(rules::toString(s.game)) + ", race to " +
-                     std::to_string(s.race_to) + ", " + toString(s.breaks) + " breaks";
+  std::string text = std::string(rules::toString(s.game));
+  if (s.game == rules::Game::ThreeCushion) text += ", " + std::to_string(s.points) + " points";
+  text += ", race to " + std::to_string(s.race_to) + ", " + toString(s.breaks) + " breaks";
   if (!s.clockOn()) return text + ", no shot clock";
   const long seconds = std::lround(s.shot_clock);
   return text + ", shot clock " + std::to_string(seconds) + " s";

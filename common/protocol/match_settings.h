@@ -1,5 +1,5 @@
 // How a table is played, as whoever opens it chooses: the game, the race, who breaks, the shot
-// clock.
+// clock, the points of a game of three-cushion.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +19,8 @@ const char* toString(BreakOrder order);  ///< "alternate", "winner"
 std::optional<BreakOrder> breakOrderOf(std::string_view name);
 
 inline constexpr int kMaxRace = 15;                ///< racks to win, at most
+inline constexpr int kMaxPoints = 100;             ///< three-cushion: points to win, at most
+inline constexpr int kDefaultPoints = 5;           ///< three-cushion: two bots finish in minutes
 inline constexpr double kMinShotClock = 5.0;       ///< s per shot, at least (when on)
 inline constexpr double kMaxShotClock = 600.0;     ///< s per shot, at most
 inline constexpr double kShotClockWarning = 10.0;  ///< s left when the warning starts (at most)
@@ -28,7 +30,8 @@ inline constexpr double kShotClockWarning = 10.0;  ///< s left when the warning 
 /// instead of a foul.
 struct MatchSettings {
   rules::Game game = rules::Game::EightBall;
-  int race_to = 1;  ///< racks to win the match, 1..kMaxRace
+  int race_to = 1;  ///< racks to win the match, 1..kMaxRace (three-cushion: games)
+  int points = kDefaultPoints;  ///< three-cushion: points that win a game, 1..kMaxPoints
   BreakOrder breaks = BreakOrder::Alternate;
   double shot_clock = 0.0;  ///< s per shot; 0: no clock; else kMinShotClock..kMaxShotClock
   /// A practice table: its players shoot as they like, ball in hand anywhere, and may lay out,

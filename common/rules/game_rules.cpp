@@ -7,9 +7,10 @@ namespace {
 
 // One row a game: adding a game starts here (docs/ARCHITECTURE.md, "Adding a game").
 constexpr GameInfo kGames[] = {
-    {Game::EightBall, "8-ball", 8, table::RackType::EightBall},
-    {Game::NineBall, "9-ball", 9, table::RackType::NineBall},
-    {Game::TenBall, "10-ball", 10, table::RackType::TenBall},
+    {Game::EightBall, "8-ball", 8, table::RackType::EightBall, nullptr},
+    {Game::NineBall, "9-ball", 9, table::RackType::NineBall, nullptr},
+    {Game::TenBall, "10-ball", 10, table::RackType::TenBall, nullptr},
+    {Game::ThreeCushion, "three-cushion", 3, table::RackType::ThreeCushion, "carom-match"},
 };
 
 const GameInfo* find(Game game) {
@@ -42,6 +43,26 @@ std::optional<Game> gameOfNumber(long number) {
   return std::nullopt;
 }
 
+std::optional<Game> gameOfName(std::string_view name) {
+  for (const GameInfo& g : kGames) {
+    if (name == g.name || name == std::to_string(g.number)) return g.game;
+  }
+  return std::nullopt;
+}
+
+std::string tableOf(Game game, const std::string& pool_table) {
+  const GameInfo* g = find(game);
+  return g && g->table ? std::string(g->table) : pool_table;
+}
+
+bool isPool(Game game) {
+  return game == Game::EightBall || game == Game::NineBall || game == Game::TenBall;
+}
+
+int cueBallFor(const GameRules& rules, const GameState& state) {
+  return rules.game == Game::ThreeCushion ? caromBallOf(state, state.shooter) : physics::kCueBall;
+}
+
 table::RackType rackTypeOf(Game game) {
   const GameInfo* g = find(game);
   return g ? g->rack : table::RackType::EightBall;
@@ -57,24 +78,34 @@ RotationConfig GameRules::rotation() const {
 Check<> checkIntentFor(const GameRules& rules, const GameState& state, const Intent& intent,
                        const std::vector<physics::Ball>& balls) {
   if (rules.game == Game::EightBall) return checkIntent(state, intent, balls, rules.eight_ball);
+  if (rules.game == Game::ThreeCushion) return checkCaromIntent(intent);
   return checkRotationIntent(state, intent, balls, rules.rotation());
 }
 
 Result<Verdict> judgeShot(const GameRules& rules, const GameState& state, const Shot& shot,
                           const TableContext& table) {
   if (rules.game == Game::EightBall) return judgeEightBall(state, shot, table, rules.eight_ball);
+  if (rules.game == Game::ThreeCushion)
+    return judgeThreeCushion(state, shot, table, rules.three_cushion);
   return judgeRotation(state, shot, table, rules.rotation());
 }
 
 Result<Verdict> applyChoiceFor(const GameRules& rules, const GameState& state, Choice choice,
                                const std::vector<physics::Ball>& balls, const TableContext& table) {
   if (rules.game == Game::EightBall) return applyChoice(state, choice, balls, table);
+  if (rules.game == Game::ThreeCushion)
+    return Result<Verdict>::fail("three-cushion offers no choice");
   return applyRotationChoice(state, choice);
 }
 
 std::vector<int> firstBallsFor(const GameRules& rules, const GameState& state,
                                const std::vector<physics::Ball>& balls) {
   if (rules.game == Game::EightBall) return legalFirstBalls(state, balls);
+  if (rules.game == Game::ThreeCushion) {
+    if (state.phase == Phase::Break) return {kCaromRed};
+    const int own = caromBallOf(state, state.shooter);
+    return {own == kCaromWhite ? kCaromYellow : kCaromWhite, kCaromRed};
+  }
   return rotationFirstBalls(balls);
 }
 

@@ -71,6 +71,8 @@ const char* toString(GameEnd end) {
       return "rack_ball_pocketed";
     case GameEnd::ThreeFouls:
       return "three_fouls";
+    case GameEnd::PointsReached:
+      return "points_reached";
   }
   return "unknown";
 }
@@ -99,6 +101,9 @@ std::string describe(const GameState& state) {
     text += toString(state.options[i]);
   }
   if (state.push_out) text += ", push-out";
+  if (state.points[0] > 0 || state.points[1] > 0) {
+    text += ", points " + std::to_string(state.points[0]) + "-" + std::to_string(state.points[1]);
+  }
   if (int fouls = state.fouls_in_row[state.shooter]; fouls > 0) {
     text += ", " + std::to_string(fouls) + (fouls == 1 ? " foul" : " fouls") + " in a row";
   }

@@ -1,5 +1,5 @@
-// The state of one rack between shots (8-, 9- or 10-ball): whose turn, groups, phase, ball in hand,
-// pending choice, fouls in a row.
+// The state of one rack between shots (8-, 9-, 10-ball; a game of three-cushion): whose turn,
+// groups, phase, ball in hand, pending choice, fouls in a row, points and runs.
 #pragma once
 
 #include <array>
@@ -48,6 +48,7 @@ enum class GameEnd : std::uint8_t {
   Forfeit,                  ///< a player gave up or was forfeited (outside the rules' judging)
   RackBallPocketed,  ///< 9-/10-ball: the shooter legally pocketed the 9 (the 10 called): a win
   ThreeFouls,        ///< 9-/10-ball: the shooter's third foul in a row: a loss
+  PointsReached,     ///< three-cushion: the shooter scored the points that win the game
 };
 
 const char* toString(Phase phase);
@@ -78,6 +79,12 @@ struct GameState {
   std::array<int, kSeats> fouls_in_row{0, 0};
   /// 9-/10-ball: the shot about to be played is a push-out (set by choosing Choice::PushOut).
   bool push_out = false;
+  /// Three-cushion: each seat's points this game, its innings completed (a turn at the table
+  /// ends one), its highest run, and the run of the player at the table.
+  std::array<int, kSeats> points{0, 0};
+  std::array<int, kSeats> innings{0, 0};
+  std::array<int, kSeats> high_run{0, 0};
+  int run = 0;
 };
 
 /// A fresh rack: the breaker to break with the cue ball in hand behind the head string.

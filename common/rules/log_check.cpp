@@ -50,7 +50,7 @@ const char* stateName(MotionState state) {
 using Tracks = std::array<BallTrack, kBalls>;
 
 // Balls before the shot: ids in range, each once, the cue ball on the table.
-Result<Tracks> tracksBefore(const std::vector<physics::Ball>& before) {
+Result<Tracks> tracksBefore(const std::vector<physics::Ball>& before, int struck) {
   Tracks tracks{};
   std::array<bool, kBalls> seen{};
   for (const auto& b : before) {
@@ -60,14 +60,18 @@ Result<Tracks> tracksBefore(const std::vector<physics::Ball>& before) {
     seen[b.id] = true;
     tracks[b.id].on_table = physics::onTable(b.state);
   }
-  if (!tracks[physics::kCueBall].on_table)
-    return Result<Tracks>::fail("balls before: the cue ball is not on the table");
+  if (!tracks[static_cast<std::size_t>(struck)].on_table) {
+    return Result<Tracks>::fail(struck == physics::kCueBall
+                                    ? "balls before: the cue ball is not on the table"
+                                    : "balls before: the struck " + ball(struck) +
+                                          " is not on the table");
+  }
   return Result<Tracks>::ok(tracks);
 }
 
 class LogChecker {
  public:
-  explicit LogChecker(const Tracks& tracks) : tracks_(tracks) {}
+  LogChecker(const Tracks& tracks, int struck) : tracks_(tracks), struck_(struck) {}
 
   // Refuses an event that contradicts what came before, with the reason.
   Check<> apply(std::size_t index, const Event& event) {
@@ -86,9 +90,11 @@ class LogChecker {
     if (!std::isfinite(event.t) || event.t < 0.0)
       return Check<>::refuse("bad_event_order",
                              "event " + std::to_string(index) + ": time is not a finite t >= 0");
-    if (index == 0 && (event.type != EventType::Strike || event.ball_a != physics::kCueBall)) {
+    if (index == 0 && (event.type != EventType::Strike || event.ball_a != struck_)) {
       return Check<>::refuse("bad_event_order",
-                             "the log does not start with the strike of the cue ball");
+                             struck_ == physics::kCueBall
+                                 ? "the log does not start with the strike of the cue ball"
+                                 : "the log does not start with the strike of " + ball(struck_));
     }
     if (index > 0 && event.type == EventType::Strike)
       return Check<>::refuse("bad_event_order", "a second strike" + at(event));
@@ -207,6 +213,7 @@ class LogChecker {
   }
 
   Tracks tracks_;
+  int struck_ = physics::kCueBall;
   double last_t_ = 0.0;
   bool all_rest_ = false;
   double rest_t_ = 0.0;
@@ -256,11 +263,14 @@ Check<> checkAfter(const std::vector<physics::Ball>& after, const Tracks& tracks
 
 }  // namespace
 
-Check<> checkShot(const Shot& shot) {
-  auto tracks = tracksBefore(shot.before);
+Check<> checkShot(const Shot& shot, int struck) {
+  if (!validId(struck))
+    return Check<>::refuse("bad_balls_before", "the struck ball " + std::to_string(struck) +
+                                                   " is not 0-15");
+  auto tracks = tracksBefore(shot.before, struck);
   if (!tracks) return Check<>::refuse("bad_balls_before", tracks.error());
   if (shot.events.empty()) return Check<>::refuse("empty_log", "the event log is empty");
-  LogChecker checker(*tracks);
+  LogChecker checker(*tracks, struck);
   for (std::size_t i = 0; i < shot.events.size(); ++i) {
     if (auto ok = checker.apply(i, shot.events[i]); !ok) return ok;
   }

@@ -49,6 +49,7 @@ std::string joinIds(const std::vector<int>& ids) {
 std::string describe(const Verdict& verdict) {
   std::string text = verdict.legal() ? "legal" : "foul";
   for (Foul foul : verdict.fouls) text += std::string(" ") + toString(foul);
+  if (verdict.scored > 0) text += "; a point";
   if (!verdict.pocketed.empty()) text += "; pocketed " + joinIds(verdict.pocketed);
   if (!verdict.off_table.empty()) text += "; off table " + joinIds(verdict.off_table);
   if (verdict.assigned != Group::None)

@@ -133,6 +133,7 @@ std::optional<RackType> rackTypeFromString(std::string_view name) {
   if (name == "8ball") return RackType::EightBall;
   if (name == "9ball") return RackType::NineBall;
   if (name == "10ball") return RackType::TenBall;
+  if (name == "three_cushion") return RackType::ThreeCushion;
   return std::nullopt;
 }
 
@@ -145,6 +146,8 @@ std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, doubl
       return nineBall(spec, ball_radius, seed, gap);
     case RackType::TenBall:
       return tenBall(spec, ball_radius, seed, gap);
+    case RackType::ThreeCushion:
+      return caromOpening(spec, seed);
   }
   return {};
 }
@@ -155,9 +158,19 @@ std::optional<RackGenerator> rackGeneratorOf(std::int64_t value) {
   return std::nullopt;
 }
 
+std::vector<BallPlacement> caromOpening(const TableSpec& spec, std::uint64_t seed) {
+  const Spots spots = spotsFor(spec);
+  SplitMix64 rng(seed);
+  const double side = rng.below(2) == 0 ? 1.0 : -1.0;
+  return {{0, spots.head_spot + Vec2(0.0, side * kCaromBreakOffset)},
+          {1, spots.head_spot},
+          {2, spots.foot_spot}};
+}
+
 std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double ball_radius,
                                    std::uint64_t seed, RackGenerator generator) {
-  if (generator == RackGenerator::Frozen) return rackBalls(type, spec, ball_radius, seed);
+  if (generator == RackGenerator::Frozen || type == RackType::ThreeCushion)
+    return rackBalls(type, spec, ball_radius, seed);
   auto balls = rackBalls(type, spec, ball_radius, seed, 2.0 * kRackStray);
   // Its own stream, so that the order of the balls stays the one a Frozen rack of the seed has.
   SplitMix64 rng(splitMix64(seed ^ 0x68616e647261636bULL));

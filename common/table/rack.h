@@ -1,5 +1,5 @@
-// Spots, strings and racks of a table (8-, 9- and 10-ball), shared by the physics lab, the rules
-// and the server.
+// Spots, strings and racks of a table (8-, 9-, 10-ball; three-cushion's opening), shared by the
+// physics lab, the rules and the server.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,8 +23,8 @@ struct Spots {
 
 Spots spotsFor(const TableSpec& spec);
 
-enum class RackType { EightBall, NineBall, TenBall };
-/// "8ball", "9ball", "10ball".
+enum class RackType { EightBall, NineBall, TenBall, ThreeCushion };
+/// "8ball", "9ball", "10ball", "three_cushion".
 std::optional<RackType> rackTypeFromString(std::string_view name);
 
 struct BallPlacement {
@@ -36,9 +36,19 @@ struct BallPlacement {
 /// the centre, one solid and one stripe in the back corners, the rest shuffled by `seed`. 9-ball:
 /// a diamond, the 1 at the apex, the 9 in the centre, the rest by `seed`. 10-ball: a triangle of
 /// four rows, the 1 at the apex, the 10 in the middle of the third row, the rest by `seed`.
-/// Neighbours are `gap` metres apart (surface to surface). Deterministic for a seed.
+/// Neighbours are `gap` metres apart (surface to surface). Three-cushion: the opening (see
+/// caromOpening), the three balls, cue ball included. Deterministic for a seed.
 std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
                                      std::uint64_t seed, double gap = 0.0);
+
+/// The breaker's ball beside the head spot on the head string, m (UMB: 182 mm to either side).
+inline constexpr double kCaromBreakOffset = 0.182;
+
+/// Three-cushion's opening position (UMB, World Rules of Carom Billiard, starting position): the
+/// red (2) on the top spot (foot spot), the opponent's ball (1) on the bottom spot (head spot), the
+/// breaker's ball (0) on the head string kCaromBreakOffset to one side of it, the side drawn from
+/// `seed`.
+std::vector<BallPlacement> caromOpening(const TableSpec& spec, std::uint64_t seed);
 
 /// How a match's racks are laid out; stored with each match, so that a stored match racks the
 /// same after an upgrade that changes the generator.

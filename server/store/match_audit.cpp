@@ -48,7 +48,7 @@ Audit auditMatch(MatchStore& store, const std::string& id, const game::LoadedTab
         const server::ShotRecord& r = stored.record;
         const rules::Shot shot{r.before, r.intent, {}, r.after, true};
         const auto verdict =
-            rules::judgeShot({match->settings.game, rules}, r.state, shot, kit.context);
+            rules::judgeShot({match->settings.game, rules, {match->settings.points}}, r.state, shot, kit.context);
         if (!verdict || verdictJson(*verdict) != verdictJson(r.verdict)) {
           audit.problems.push_back("a shot clock expiry after shot " +
                                    std::to_string(r.shot_number) + " re-judges otherwise");
@@ -64,7 +64,7 @@ Audit auditMatch(MatchStore& store, const std::string& id, const game::LoadedTab
                                " stored after shot " + std::to_string(audit.shots));
     }
     audit.shots = stored.record.shot_number;
-    judgeAgain(stored, kit, {match->settings.game, rules}, audit);
+    judgeAgain(stored, kit, {match->settings.game, rules, {match->settings.points}}, audit);
   }
   if (match->shot_number != audit.shots) {
     audit.problems.push_back("the match counts " + std::to_string(match->shot_number) + " shots, " +

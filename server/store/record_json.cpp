@@ -84,8 +84,16 @@ physics::Ball ballAt(const Json& j) {
   return b;
 }
 
+Json pair(const std::array<int, 2>& a) {
+  return Json::array({a[0], a[1]});
+}
+
+std::array<int, 2> pairAt(const Json& j, const char* key) {
+  return {j.at(key).at(0).get<int>(), j.at(key).at(1).get<int>()};
+}
+
 Json gameOf(const rules::GameState& s) {
-  return {{"phase", num(s.phase)},
+  Json out = {{"phase", num(s.phase)},
           {"shooter", s.shooter},
           {"breaker", s.breaker},
           {"groups", Json::array({num(s.groups[0]), num(s.groups[1])})},
@@ -96,6 +104,16 @@ Json gameOf(const rules::GameState& s) {
           {"end", num(s.end)},
           {"fouls_in_row", Json::array({s.fouls_in_row[0], s.fouls_in_row[1]})},
           {"push_out", s.push_out}};
+  // Three-cushion's score, written where a game has one (a pool rack's record is as before).
+  const bool scored = s.points != std::array<int, 2>{0, 0} ||
+                      s.innings != std::array<int, 2>{0, 0} || s.run != 0;
+  if (scored) {
+    out["points"] = pair(s.points);
+    out["innings"] = pair(s.innings);
+    out["high_run"] = pair(s.high_run);
+    out["run"] = s.run;
+  }
+  return out;
 }
 
 rules::GameState gameAt(const Json& j) {
@@ -116,6 +134,12 @@ rules::GameState gameAt(const Json& j) {
     for (std::size_t i = 0; i < 2; ++i) s.fouls_in_row[i] = j.at("fouls_in_row").at(i).get<int>();
   }
   if (j.contains("push_out")) s.push_out = j.at("push_out").get<bool>();
+  if (j.contains("points")) {
+    s.points = pairAt(j, "points");
+    s.innings = pairAt(j, "innings");
+    s.high_run = pairAt(j, "high_run");
+    s.run = j.at("run").get<int>();
+  }
   return s;
 }
 
@@ -136,11 +160,12 @@ std::vector<physics::Ball> ballsFrom(const std::string& text) {
 }
 
 std::string settingsJson(const protocol::MatchSettings& s) {
-  return Json{{"game", rules::gameNumber(s.game)},
-              {"race_to", s.race_to},
-              {"breaks", num(s.breaks)},
-              {"shot_clock", s.shot_clock}}
-      .dump();
+  Json out{{"game", rules::gameNumber(s.game)},
+           {"race_to", s.race_to},
+           {"breaks", num(s.breaks)},
+           {"shot_clock", s.shot_clock}};
+  if (s.game == rules::Game::ThreeCushion) out["points"] = s.points;
+  return out.dump();
 }
 
 protocol::MatchSettings settingsFrom(const std::string& text) {
@@ -154,6 +179,7 @@ protocol::MatchSettings settingsFrom(const std::string& text) {
     if (j.contains("race_to")) s.race_to = j.at("race_to").get<int>();
     if (j.contains("breaks")) s.breaks = enumAt<protocol::BreakOrder>(j, "breaks");
     if (j.contains("shot_clock")) s.shot_clock = j.at("shot_clock").get<double>();
+    if (j.contains("points")) s.points = j.at("points").get<int>();
     return s;
   });
 }
@@ -184,6 +210,11 @@ std::string verdictJson(const rules::Verdict& v) {
                     {"winner", v.winner},
                     {"end", num(v.end)},
                     {"next", gameOf(v.next)}};
+  if (v.scored != 0) {
+    Json with_score = out;
+    with_score["scored"] = v.scored;
+    return with_score.dump();
+  }
   return out.dump();
 }
 
@@ -207,6 +238,7 @@ rules::Verdict verdictFrom(const std::string& text) {
     v.winner = j.at("winner").get<int>();
     v.end = enumAt<rules::GameEnd>(j, "end");
     v.next = gameAt(j.at("next"));
+    if (j.contains("scored")) v.scored = j.at("scored").get<int>();
     return v;
   });
 }

@@ -64,10 +64,9 @@ constexpr double kUnset = 1e9;
 /// Builds a log in time order: a strike at t = 0, then each event `dt` later than the last.
 class LogBuilder {
  public:
-  explicit LogBuilder(double dt = 0.05) : dt_(dt) {
-    add(physics::EventType::Strike, 0, -1, "");
-    log_.back().t = 0.0;
-  }
+  explicit LogBuilder(double dt = 0.05) : LogBuilder(physics::kCueBall, dt) {}
+  /// A log that starts with the strike of ball `struck` (three-cushion: the shooter's own ball).
+  static LogBuilder striking(int struck) { return LogBuilder(struck, 0.05); }
 
   LogBuilder& hit(int a, int b) { return add(physics::EventType::BallBall, a, b, ""); }
   LogBuilder& cushion(int id, std::string name = "foot", double x = 0.0) {
@@ -100,6 +99,11 @@ class LogBuilder {
     e.pos = physics::Vec3::Constant(kUnset);
     log_.push_back(std::move(e));
     return *this;
+  }
+
+  LogBuilder(int struck, double dt) : dt_(dt) {
+    add(physics::EventType::Strike, struck, -1, "");
+    log_.back().t = 0.0;
   }
 
   double dt_;

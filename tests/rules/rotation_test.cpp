@@ -438,10 +438,10 @@ TEST(GameRules, DispatchesByGame) {
   EXPECT_FALSE(gameOfNumber(7));
   EXPECT_EQ(rackTypeOf(Game::TenBall), table::RackType::TenBall);
   auto balls = withPocketed(tenBalls(), {1});
-  GameRules ten{Game::TenBall, {}};
+  GameRules ten{Game::TenBall, {}, {}};
   EXPECT_EQ(firstBallsFor(ten, inPlay(), balls), std::vector<int>{2});
   // 8-ball on the same open table lets any ball but the 8 be hit first.
-  GameRules eight{Game::EightBall, {}};
+  GameRules eight{Game::EightBall, {}, {}};
   EXPECT_GT(firstBallsFor(eight, inPlay(), balls).size(), 5u);
   Shot shot = makeShot(balls, Intent::none(), LogBuilder().hit(0, 2).cushion(2));
   EXPECT_FALSE(judgeShot(ten, inPlay(), shot, nineFoot()));  // 10-ball: a call is needed

@@ -105,7 +105,7 @@ inline Replay replayMatch(const MatchRecorder& recorder, const std::string& matc
     replay.error = "no state of the rack before the break";
     return replay;
   }
-  const rules::GameRules game_rules{start->settings.game, {}};
+  const rules::GameRules game_rules{start->settings.game, {}, {start->settings.points}};
   const int race_to = start->settings.race_to;
   std::array<int, 2> racks{0, 0};
   rules::GameState game = gameStateOf(*start);

@@ -63,6 +63,8 @@ std::span<const BreakStroke> measuredBreaks(rules::Game game) {
       return kNineBall;
     case rules::Game::TenBall:
       return kTenBall;
+    case rules::Game::ThreeCushion:
+      return {};  // no rack to break: the carom planner plays the opening
   }
   return kEightBall;
 }
