@@ -116,6 +116,12 @@ int serve(const pool::server::ServerConfig& config,
   // The file keeps the server's id, so match ids go on where they stopped.
   if (options.server_id.empty()) options.server_id = store.serverId();
   MatchRegistry registry(options, std::move(kit));
+  // The default game's own table (three-cushion's) must load before anyone sits down at it.
+  if (auto table = registry.options().match.tables->forGame(options.match.settings.game); !table) {
+    spdlog::error("--game {}: {}", pool::rules::toString(options.match.settings.game),
+                  table.error());
+    return 1;
+  }
   // Another server live under this id with our key (a copy of this database) must not serve
   // beside us. Entries prove nothing (anyone writes one, a genuine one can be replayed): only a
   // server that answers a fresh challenge signed with our key does.

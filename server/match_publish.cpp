@@ -12,6 +12,7 @@ namespace {
 
 int ballsLeft(const Match& match, rules::Group group) {
   const auto& balls = match.balls();
+  if (match.settings().game == rules::Game::ThreeCushion) return 0;  // nothing to pot
   // 9- and 10-ball: both players shoot at every object ball on the table.
   if (match.settings().game != rules::Game::EightBall) {
     return static_cast<int>(std::count_if(balls.begin(), balls.end(), [](const auto& b) {
@@ -38,6 +39,10 @@ protocol::SeatView seatViewOf(const Match& match, int seat) {
   out.last_seq = s.last_seq;
   out.fouls_in_row = match.game().fouls_in_row[static_cast<std::size_t>(seat)];
   out.extensions_left = match.extensionsLeft(seat);
+  const auto i = static_cast<std::size_t>(seat);
+  out.points = match.game().points[i];
+  out.innings = match.game().innings[i];
+  out.high_run = match.game().high_run[i];
   return out;
 }
 
@@ -88,6 +93,8 @@ protocol::MatchView matchViewOf(const Match& match, std::optional<double> now) {
   st.end = game.end;
   st.last_verdict = match.lastVerdict();
   st.balls = match.balls();
+  st.run = game.run;
+  st.cue_ball = rules::cueBallFor(match.rules(), game);
   return st;
 }
 
@@ -124,6 +131,7 @@ protocol::ShotReport finalReport(const std::string& match, const ShotReport& rep
   r.winner = v.winner;
   r.end = v.end;
   r.verdict_text = report.text.empty() ? rules::describe(v) : report.text;
+  r.scored = v.scored;
   return r;
 }
 

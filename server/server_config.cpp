@@ -35,6 +35,13 @@ template <class T>
 void take(const Json& doc, const std::string& key, T& into) {
   if (const Json* v = find(doc, key)) {
     try {
+      if constexpr (std::is_same_v<T, std::string>) {
+        // A name or a number ("game": 8 and "game": "three-cushion" both name a game).
+        if (v->is_number_integer()) {
+          into = std::to_string(v->get<long>());
+          return;
+        }
+      }
       into = v->get<T>();
     } catch (const Json::exception&) {
       throw std::runtime_error(key + ": wrong type");
@@ -99,7 +106,10 @@ const std::vector<Setting>& settings() {
       setting("log-level", &C::log_level, "trace, debug, info, warn, error, critical, off"),
       setting("db", &C::db,
               "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)"),
-      setting("game", &C::game, "game of the tables this server opens: 8, 9 or 10"),
+      setting("game", &C::game,
+              "game of the tables this server opens: 8, 9, 10 or three-cushion (on its own "
+              "table, carom-match)"),
+      setting("points", &C::points, "three-cushion: points that win a game (1-100, default 5)"),
       setting("race", &C::race, "racks to win a match (1-15)"),
       setting("breaks", &C::breaks, "who breaks the next rack: alternate or winner"),
       setting("shot-clock", &C::shot_clock, "off, or seconds per shot (5-600)"),
@@ -163,10 +173,11 @@ Check<> checkConfig(const ServerConfig& c) {
 Result<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c) {
   using R = Result<protocol::MatchSettings>;
   protocol::MatchSettings s;
-  const auto game = rules::gameOfNumber(c.game);
-  if (!game) return R::fail("bad_game", "game: must be 8, 9 or 10");
+  const auto game = rules::gameOfName(c.game);
+  if (!game) return R::fail("bad_game", "game: must be 8, 9, 10 or three-cushion");
   s.game = *game;
   s.race_to = c.race;
+  if (s.game == rules::Game::ThreeCushion) s.points = c.points;
   const auto breaks = protocol::breakOrderOf(c.breaks);
   if (!breaks) return R::fail("bad_breaks", "breaks: must be alternate or winner");
   s.breaks = *breaks;
@@ -183,13 +194,18 @@ Result<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c) {
     if (ok.code() == "bad_race") {
       return R::fail("bad_race", "race: must be 1-" + std::to_string(protocol::kMaxRace));
     }
+    if (ok.code() == "bad_points") {
+      return R::fail("bad_points", "points: must be 1-" + std::to_string(protocol::kMaxPoints));
+    }
     return R::fail("bad_shot_clock", clock_reason);
   }
   return R::ok(s);
 }
 
 ConfigOutcome parseConfig(int argc, const char* const* argv) {
-  CLI::App app{"pool-server: the authoritative 8-, 9- and 10-ball match server over Cyclone DDS"};
+  CLI::App app{
+      "pool-server: the authoritative 8-, 9-, 10-ball and three-cushion match server over Cyclone "
+      "DDS"};
   ServerConfig flags;
   std::string config_file;
   for (const Setting& s : settings()) {

@@ -34,6 +34,7 @@ static_assert(pool_REJECT_BAD_SIGNATURE == static_cast<int>(RejectReason::BadSig
 static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
 static_assert(pool_REJECT_BAD_PRACTICE == static_cast<int>(RejectReason::BadPractice));
 static_assert(pool_END_THREE_FOULS == static_cast<int>(rules::GameEnd::ThreeFouls));
+static_assert(pool_END_POINTS_REACHED == static_cast<int>(rules::GameEnd::PointsReached));
 static_assert(pool_IN_HAND_BEHIND_HEAD_STRING ==
               static_cast<int>(rules::BallInHand::BehindHeadString));
 static_assert(pool_GROUP_STRIPES == static_cast<int>(rules::Group::Stripes));
@@ -128,17 +129,20 @@ static_assert(pool_BREAK_WINNER == static_cast<int>(BreakOrder::Winner));
 
 // Settings from their wire fields, checked as the server checks a table's settings.
 Result<MatchSettings> settingsOf(std::uint8_t game, std::uint16_t race_to,
-                                 const pool_BreakOrder& breaks, double shot_clock, bool practice) {
+                                 const pool_BreakOrder& breaks, double shot_clock, bool practice,
+                                 std::uint16_t points) {
   MatchSettings s;
   const auto g = rules::gameOfNumber(game);
   const auto order = enumOf<BreakOrder>(breaks, pool_BREAK_WINNER + 1);
-  if (!g) return Result<MatchSettings>::fail("game: must be 8, 9 or 10");
+  if (!g) return Result<MatchSettings>::fail("game: must be 8, 9, 10 or 3 (three-cushion)");
   if (!order) return Result<MatchSettings>::fail("breaks: not a known break order");
   s.game = *g;
   s.race_to = race_to;
   s.breaks = *order;
   s.shot_clock = shot_clock;
   s.practice = practice;
+  // Only three-cushion has points; any other game keeps the default whatever the field says.
+  s.points = s.game == rules::Game::ThreeCushion ? points : kDefaultPoints;
   if (auto why = checkSettings(s); !why) return Result<MatchSettings>::fail(why.error());
   return Result<MatchSettings>::ok(s);
 }
@@ -158,7 +162,8 @@ Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
   entry.seats_taken = info.seats_taken;
   entry.spectators = info.spectators;
   auto settings =
-      settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit, info.practice);
+      settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit, info.practice,
+                 info.points);
   if (!settings) return fail<LobbyEntry>("match info " + entry.match, settings.error());
   entry.settings = *settings;
   entry.racks_won = {info.racks_won[0], info.racks_won[1]};
@@ -193,7 +198,7 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
   const auto phase = enumOf<MatchPhase>(state.phase, pool_PHASE_CLOSED + 1);
   const auto in_hand =
       enumOf<rules::BallInHand>(state.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
-  const auto end = enumOf<rules::GameEnd>(state.end, pool_END_THREE_FOULS + 1);
+  const auto end = enumOf<rules::GameEnd>(state.end, pool_END_POINTS_REACHED + 1);
   if (!phase || !in_hand || !end) return fail<MatchView>(what, "unknown enum value");
   view.phase = *phase;
   view.ball_in_hand = *in_hand;
@@ -207,7 +212,8 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
     view.seats[i].fouls_in_row = state.fouls_in_row[i];
   }
   auto settings =
-      settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit, state.practice);
+      settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit, state.practice,
+                 state.points_to);
   if (!settings) return fail<MatchView>(what, settings.error());
   view.settings = *settings;
   view.shot_clock_total = state.shot_clock_total;
@@ -215,6 +221,14 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
   std::copy(std::begin(state.coefficients), std::end(state.coefficients),
             view.coefficients.begin());
   view.undo_depth = state.undo_depth;
+  for (std::size_t i = 0; i < 2; ++i) {
+    view.seats[i].points = state.points[i];
+    view.seats[i].innings = state.innings[i];
+    view.seats[i].high_run = state.high_run[i];
+  }
+  view.run = state.run;
+  if (state.cue_ball > physics::kMaxBallId) return fail<MatchView>(what, "cue_ball: not a ball id");
+  view.cue_ball = state.cue_ball;
   view.shooter = seatNumber(state.shooter);
   view.breaker = seatNumber(state.breaker);
   view.rack = state.rack;
@@ -242,7 +256,7 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_BAD_PRACTICE + 1);
   const auto in_hand =
       enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
-  const auto end = enumOf<rules::GameEnd>(result.end, pool_END_THREE_FOULS + 1);
+  const auto end = enumOf<rules::GameEnd>(result.end, pool_END_POINTS_REACHED + 1);
   if (!reason || !in_hand || !end) return fail<ShotReport>(what, "unknown enum value");
   report.reject_reason = *reason;
   report.ball_in_hand = *in_hand;
@@ -263,6 +277,7 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   report.game_over = result.game_over;
   report.winner = seatNumber(result.winner);
   report.verdict_text = std::string(textOf(result.verdict_text));
+  report.scored = result.scored;
   return Result<ShotReport>::ok(std::move(report));
 }
 
@@ -299,6 +314,7 @@ Sample<pool_JoinRequest> toWire(const SeatRequest& fields) {
     request.breaks = wireOf<pool_BreakOrder>(fields.settings->breaks);
     request.shot_clock = fields.settings->shot_clock;
     request.practice = fields.settings->practice;
+    request.points = static_cast<std::uint16_t>(fields.settings->points);
   }
   return sample;
 }
@@ -324,7 +340,7 @@ Result<SeatRequest> fromWire(const pool_JoinRequest& r) {
   const auto signature = elementsOf(r.signature);
   c.signature.assign(signature.begin(), signature.end());
   if (r.has_settings) {
-    auto settings = settingsOf(r.game, r.race_to, r.breaks, r.shot_clock, r.practice);
+    auto settings = settingsOf(r.game, r.race_to, r.breaks, r.shot_clock, r.practice, r.points);
     if (!settings) return Result<SeatRequest>::fail("settings: " + settings.error());
     c.settings = *settings;
   }
@@ -348,6 +364,7 @@ Sample<pool_MatchInfo> toWire(const LobbyEntry& entry) {
   info.breaks = wireOf<pool_BreakOrder>(entry.settings.breaks);
   info.shot_clock_limit = entry.settings.shot_clock;
   info.practice = entry.settings.practice;
+  info.points = static_cast<std::uint16_t>(entry.settings.points);
   info.standard_physics = entry.standard_physics;
   for (std::size_t s = 0; s < 2; ++s) {
     info.racks_won[s] = static_cast<std::uint16_t>(entry.racks_won[s]);
@@ -393,6 +410,14 @@ Sample<pool_MatchState> toWire(const MatchView& view) {
   st.standard_physics = view.standard_physics;
   std::copy(view.coefficients.begin(), view.coefficients.end(), st.coefficients);
   st.undo_depth = static_cast<std::uint16_t>(view.undo_depth);
+  st.points_to = static_cast<std::uint16_t>(view.settings.points);
+  for (std::size_t i = 0; i < 2; ++i) {
+    st.points[i] = static_cast<std::uint16_t>(view.seats[i].points);
+    st.innings[i] = static_cast<std::uint16_t>(view.seats[i].innings);
+    st.high_run[i] = static_cast<std::uint16_t>(view.seats[i].high_run);
+  }
+  st.run = static_cast<std::uint16_t>(view.run);
+  st.cue_ball = static_cast<std::uint8_t>(view.cue_ball);
   st.shooter = static_cast<std::int16_t>(view.shooter);
   st.breaker = static_cast<std::int16_t>(view.breaker);
   st.rack = view.rack;
@@ -420,7 +445,8 @@ Sample<pool_ShotResult> toWire(const ShotReport& report) {
   putEvents(r.events, report.events);
   putAll(r.fouls, report.fouls, [](rules::Foul f) { return wireOf<pool_FoulCode>(f); });
   const auto pocketed = resizeSequence(
-      r.pocketed, static_cast<std::uint32_t>(std::min<std::size_t>(report.pocketed.size(), 16)));
+      r.pocketed,
+      static_cast<std::uint32_t>(std::min<std::size_t>(report.pocketed.size(), pool_MAX_BALLS)));
   for (std::size_t i = 0; i < pocketed.size(); ++i) {
     pocketed[i] = static_cast<std::uint8_t>(report.pocketed[i]);
   }
@@ -432,6 +458,7 @@ Sample<pool_ShotResult> toWire(const ShotReport& report) {
   r.winner = static_cast<std::int16_t>(report.winner);
   r.end = wireOf<pool_GameEnd>(report.end);
   setText(r.verdict_text, report.verdict_text);
+  r.scored = static_cast<std::uint16_t>(report.scored);
   return sample;
 }
 

@@ -20,6 +20,7 @@ struct CueShot {
   double elevation = 0.0;  ///< cue angle above horizontal, [0, kMaxElevation] (shot_limits.h)
   double speed = 0.0;      ///< m/s: the cue's speed, or the ball's if speed_is_ball
   bool speed_is_ball = false;
+  int ball = kCueBall;  ///< the ball struck: the cue ball (three-cushion: the shooter's own)
 };
 
 /// The cue ball's motion just after the strike.

@@ -12,7 +12,7 @@
 namespace pool::physics {
 
 enum class EventType : std::uint8_t {
-  Strike,       ///< the cue hits the cue ball (ball_a = 0)
+  Strike,       ///< the cue hits the ball struck (ball_a: the cue ball, 0, but in three-cushion)
   BallBall,     ///< ball_a hits ball_b
   BallCushion,  ///< ball_a hits a cushion or jaw (`where` = its name)
   Pocket,       ///< ball_a drops into a pocket (`where` = the pocket's name)

@@ -609,10 +609,13 @@ Result<bool> Simulation::setBalls(const std::vector<Ball>& balls) {
 
 Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& options) {
   Impl& s = *impl_;
-  auto cue =
-      std::find_if(s.balls.begin(), s.balls.end(), [](const Ball& b) { return b.id == kCueBall; });
+  auto cue = std::find_if(s.balls.begin(), s.balls.end(),
+                          [&shot](const Ball& b) { return b.id == shot.ball; });
   if (cue == s.balls.end() || !onTable(cue->state)) {
-    return Result<ShotOutcome>::fail("no cue ball on the table");
+    return Result<ShotOutcome>::fail(shot.ball == kCueBall
+                                         ? "no cue ball on the table"
+                                         : "no ball " + std::to_string(shot.ball) +
+                                               " on the table to strike");
   }
   const auto strike = strikeCueBall(shot, s.p);
   if (!strike) return Result<ShotOutcome>::fail(strike.error());

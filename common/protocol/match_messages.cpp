@@ -31,6 +31,10 @@ rules::GameState gameStateOf(const MatchView& view) {
   state.winner = view.winner;
   state.end = view.end;
   state.fouls_in_row = {view.seats[0].fouls_in_row, view.seats[1].fouls_in_row};
+  state.points = {view.seats[0].points, view.seats[1].points};
+  state.innings = {view.seats[0].innings, view.seats[1].innings};
+  state.high_run = {view.seats[0].high_run, view.seats[1].high_run};
+  state.run = view.run;
   return state;
 }
 

@@ -65,6 +65,9 @@ struct SeatView {
   std::uint32_t last_seq = 0;  ///< the seat's last used sequence number
   int fouls_in_row = 0;        ///< 9-/10-ball: fouls on its consecutive shots (three lose)
   int extensions_left = 0;     ///< shot clock extensions left this rack
+  int points = 0;              ///< three-cushion: points this game
+  int innings = 0;             ///< three-cushion: innings completed this game
+  int high_run = 0;            ///< three-cushion: the most points in one inning this game
 };
 
 /// A match between shots (MatchState).
@@ -89,6 +92,8 @@ struct MatchView {
   bool standard_physics = true;         ///< false: a practice table's coefficients were changed
   PracticeCoefficients coefficients{};  ///< the table's, in kPracticeCoefficients' order
   int undo_depth = 0;                   ///< practice: shots the table can undo
+  int run = 0;       ///< three-cushion: the points of the inning at the table so far
+  int cue_ball = 0;  ///< the ball the shooter strikes (three-cushion: 0 white, 1 yellow)
 
   /// The warning is on: the clock runs and little time is left.
   bool clockWarning() const {
@@ -121,6 +126,7 @@ struct ShotReport {
   int winner = -1;
   rules::GameEnd end = rules::GameEnd::None;
   std::string verdict_text;
+  int scored = 0;  ///< points the shot scored (three-cushion)
 
   /// True for the report that closes an accepted command (its verdict is known). The immediate
   /// acceptance of a stroke carries neither events nor a verdict text.

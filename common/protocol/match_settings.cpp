@@ -34,7 +34,7 @@ Check<> checkSettings(const MatchSettings& s) {
   if (s.race_to < 1 || s.race_to > kMaxRace) {
     return Check<>::refuse("bad_race", "race: must be 1 to " + std::to_string(kMaxRace) + " racks");
   }
-  if (s.points < 1 || s.points > kMaxPoints) {
+  if (s.game == rules::Game::ThreeCushion && (s.points < 1 || s.points > kMaxPoints)) {
     return Check<>::refuse("bad_points",
                            "points: must be 1 to " + std::to_string(kMaxPoints) + " points");
   }

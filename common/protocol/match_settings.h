@@ -31,7 +31,8 @@ inline constexpr double kShotClockWarning = 10.0;  ///< s left when the warning 
 struct MatchSettings {
   rules::Game game = rules::Game::EightBall;
   int race_to = 1;  ///< racks to win the match, 1..kMaxRace (three-cushion: games)
-  int points = kDefaultPoints;  ///< three-cushion: points that win a game, 1..kMaxPoints
+  int points = kDefaultPoints;  ///< three-cushion: points that win a game, 1..kMaxPoints (other
+                                ///< games: kDefaultPoints, unused)
   BreakOrder breaks = BreakOrder::Alternate;
   double shot_clock = 0.0;  ///< s per shot; 0: no clock; else kMinShotClock..kMaxShotClock
   /// A practice table: its players shoot as they like, ball in hand anywhere, and may lay out,

@@ -11,7 +11,9 @@ namespace pool::protocol {
 /// practice tables (the practice setting, PracticeCommand, the practice fields of MatchInfo and
 /// MatchState); a seat may concede its rack (JOIN_CONCEDE); the shooter's live aim
 /// (AimCommand in, CueAim relayed by the server). 6: JoinRequest has no key (a client's presence
-/// is its writer's, so client ids anyone invents cost the server no instance).
-inline constexpr unsigned kProtocolVersion = 6;
+/// is its writer's, so client ids anyone invents cost the server no instance). 7: three-cushion
+/// (the game on the wire as 3, its points setting, each seat's points, innings and high run, the
+/// run and the ball the shooter strikes), up to 22 balls a table (a snooker set).
+inline constexpr unsigned kProtocolVersion = 7;
 
 }  // namespace pool::protocol

@@ -40,6 +40,7 @@ std::vector<std::uint8_t> signedBytes(const SeatRequest& r) {
   e.u8(r.settings ? static_cast<std::uint8_t>(s.breaks) : 0);
   e.f64(r.settings ? s.shot_clock : 0.0);
   e.u8(r.settings && s.practice ? 1 : 0);
+  e.u32(r.settings ? static_cast<std::uint32_t>(s.points) : 0);  // since version 7
   return e.message();
 }
 

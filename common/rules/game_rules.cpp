@@ -68,6 +68,12 @@ table::RackType rackTypeOf(Game game) {
   return g ? g->rack : table::RackType::EightBall;
 }
 
+GameState newRackOf(Game game, int breaker) {
+  GameState state = newRack(breaker);
+  if (game == Game::ThreeCushion) state.ball_in_hand = BallInHand::None;
+  return state;
+}
+
 RotationConfig GameRules::rotation() const {
   RotationConfig config;
   config.game = game == Game::TenBall ? Rotation::TenBall : Rotation::NineBall;

@@ -50,6 +50,8 @@ std::string tableOf(Game game, const std::string& pool_table);
 bool isPool(Game game);
 /// The rack the game is played from.
 table::RackType rackTypeOf(Game game);
+/// A fresh rack (a fresh game of three-cushion, its white played where it stands) for `breaker`.
+GameState newRackOf(Game game, int breaker);
 
 /// A game and its rule options.
 struct GameRules {

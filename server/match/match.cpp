@@ -44,6 +44,7 @@ Match::Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runne
       rack_seed_(rack_seed),
       rack_generator_(generator),
       settings_(options.settings) {
+  if (auto runner = runnerFor(settings_.game)) runner_ = *runner;
   balls_ = layout(layouts_++, settings_.game);
 }
 
@@ -67,6 +68,7 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
       // Past every revision published before the restart, so readers take the new states.
       revision_(snapshot.revision + 1),
       settings_(snapshot.settings) {
+  if (auto runner = runnerFor(settings_.game)) runner_ = *runner;
   for (Seat& s : seats_) {
     if (s.taken()) s.away_since = now;
   }
@@ -106,6 +108,15 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   // The first player at a table that has not started sets how it is played.
   const bool opens = !started_ && !seats_[static_cast<std::size_t>(1 - seat)].taken();
   if (opens && settings && *settings != settings_) {
+    // A game with a table of its own (three-cushion) moves the match onto that table.
+    auto runner = runnerFor(settings->game);
+    if (!runner) {
+      s = Seat{};
+      return JoinAnswer::refuse(JoinOutcome::NotAllowed,
+                                std::string("this server cannot play ") +
+                                    rules::toString(settings->game) + ": " + runner.error());
+    }
+    runner_ = *runner;
     settings_ = *settings;
     // The same layout number again: the racks of a match do not depend on who chose what.
     balls_ = layout(layouts_ - 1, settings_.game);
@@ -323,8 +334,9 @@ CommandAnswer Match::runPlan(const protocol::ShotRequest& command, ShotPlan plan
   answer.seat = command.seat;
   answer.seq = command.seq;
   answer.shot_number = shot_number_;
-  auto outcome =
-      runner_->run(plan.before, command.cue, options_.snapshot_hz, options_.max_shot_time);
+  physics::CueShot cue = command.cue;
+  cue.ball = rules::cueBallFor(rules(), plan.state);  // three-cushion: the shooter's own ball
+  auto outcome = runner_->run(plan.before, cue, options_.snapshot_hz, options_.max_shot_time);
   if (!outcome) {
     answer.rejection = {Reject::Malformed, "the physics refused the shot: " + outcome.error()};
     return answer;
@@ -486,7 +498,7 @@ bool Match::empty() const {
 }
 
 void Match::startRack(int breaker) {
-  game_ = rules::newRack(breaker);
+  game_ = rules::newRackOf(settings_.game, breaker);
   balls_ = layout(layouts_++, settings_.game);
   ++rack_;
   started_ = true;
@@ -498,6 +510,11 @@ void Match::startRack(int breaker) {
   extensions_ = settings_.clockOn() ? std::array<int, 2>{1, 1} : std::array<int, 2>{0, 0};
   restartClock(0.0);
   touch();
+}
+
+Result<std::shared_ptr<ShotRunner>> Match::runnerFor(rules::Game game) const {
+  if (!options_.tables) return Result<std::shared_ptr<ShotRunner>>::ok(runner_);
+  return options_.tables->forGame(game);
 }
 
 std::vector<physics::Ball> Match::layout(std::uint64_t number, rules::Game game) const {

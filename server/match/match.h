@@ -198,6 +198,8 @@ class Match {
     std::optional<ShotPlan> plan;
   };
 
+  /// The runner of `game`'s table (options().tables), or this match's when there are none.
+  Result<std::shared_ptr<ShotRunner>> runnerFor(rules::Game game) const;
   /// The match's rack number `number` (from 0) of `game`: each number racks the same every time.
   std::vector<physics::Ball> layout(std::uint64_t number, rules::Game game) const;
   CommandAnswer accept(const protocol::ShotRequest& command);

@@ -33,7 +33,10 @@ MatchRegistry::MatchRegistry(RegistryOptions options, std::shared_ptr<const game
     : options_(std::move(options)),
       random_(seedOf(options_.seed)),
       server_id_(options_.server_id.empty() ? randomHex(random_) : options_.server_id),
-      runner_(std::make_shared<ShotRunner>(std::move(kit))) {}
+      runner_(std::make_shared<ShotRunner>(std::move(kit))) {
+  // Every match of this registry finds its game's table here (three-cushion's carom table).
+  if (!options_.match.tables) options_.match.tables = std::make_shared<TableRunners>(runner_);
+}
 
 Match* MatchRegistry::open(std::string name, std::optional<std::uint64_t> rack_seed,
                            table::RackGenerator generator) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "rules/verdict.h"
 #include "server/match/reject.h"
 #include "server/match/shot_record.h"
+#include "server/match/table_runners.h"
 
 namespace pool::server {
 
@@ -26,6 +28,9 @@ struct MatchOptions {
   /// How a table is played unless the player who opens it says otherwise (`pool-server --game,
   /// --race, --breaks, --shot-clock`).
   protocol::MatchSettings settings;
+  /// The runner of each game's table (three-cushion plays on its own); null: every game on the
+  /// runner the match was made with.
+  std::shared_ptr<TableRunners> tables;
 };
 
 /// What the shooter's view still shows of a shot after its last frame is due: the clients play

@@ -5,6 +5,7 @@
 #include <ctime>
 #include <filesystem>
 
+#include "rules/game_rules.h"
 #include "server/store/online_backup.h"
 #include "server/store/record_json.h"
 #include "server/store/schema.h"
@@ -145,7 +146,7 @@ void MatchStore::writeMatch(const server::MatchSnapshot& m) {
       .bind(1, m.id)
       .bind(2, i64(m.number))
       .bind(3, m.name)
-      .bind(4, table_)
+      .bind(4, rules::tableOf(m.settings.game, table_))
       .bind(5, i64(m.rack_seed))
       .bind(6, i64(m.layouts))
       .bind(7, std::int64_t{m.started})

@@ -86,9 +86,11 @@ TEST(Convert, EventFromWireRejectsUnknownType) {
   EXPECT_NE(back.error().find("event type"), std::string::npos);
 }
 
-TEST(Convert, BallSequencesHoldSixteenAndSayWhenCut) {
+// Since protocol version 7 a sequence holds a snooker set, 22 balls (pool.idl's MAX_BALLS).
+TEST(Convert, BallSequencesHoldTwentyTwoAndSayWhenCut) {
   std::vector<physics::Ball> balls;
   for (int id = 0; id < 16; ++id) balls.push_back(oddBall(id));
+  for (int id = 0; id < 6; ++id) balls.push_back(oddBall(id));  // ids repeat: only the count
   Sample<pool_TableSnapshot> snapshot;
   EXPECT_TRUE(putBalls(snapshot->balls, balls));
   const auto back = getBalls(snapshot->balls);
@@ -98,7 +100,7 @@ TEST(Convert, BallSequencesHoldSixteenAndSayWhenCut) {
 
   balls.push_back(oddBall(3));
   EXPECT_FALSE(putBalls(snapshot->balls, balls));  // replaces the buffer: no leak under ASan
-  EXPECT_EQ(snapshot->balls._length, 16u);
+  EXPECT_EQ(snapshot->balls._length, 22u);
 }
 
 TEST(Convert, EventSequencesNameTheBadIndex) {

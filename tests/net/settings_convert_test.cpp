@@ -68,7 +68,15 @@ TEST(SettingsConvert, SeatRequestSettingsInAndBadOnesRefused) {
   EXPECT_EQ(back->settings, tenBall());
 
   wire->game = 7;
-  EXPECT_EQ(fromWire(*wire).error(), "settings: game: must be 8, 9 or 10");
+  EXPECT_EQ(fromWire(*wire).error(), "settings: game: must be 8, 9, 10 or 3 (three-cushion)");
+  // Three-cushion (3) takes its points from the request: 1-100.
+  wire->game = 3;
+  wire->points = 0;
+  EXPECT_EQ(fromWire(*wire).error(), "settings: points: must be 1 to 100 points");
+  wire->points = 7;
+  ASSERT_TRUE(fromWire(*wire));
+  EXPECT_EQ(fromWire(*wire)->settings->points, 7);
+  EXPECT_EQ(fromWire(*wire)->settings->game, rules::Game::ThreeCushion);
   wire->game = 9;
   wire->race_to = 0;
   EXPECT_FALSE(fromWire(*wire));
