@@ -75,6 +75,7 @@ pool::server::RegistryOptions registryOptions(const pool::server::ServerConfig& 
   options.max_matches = static_cast<std::size_t>(config.max_matches);
   options.match.snapshot_hz = config.snapshot_hz;
   options.match.unpaced = config.fast;
+  options.rack_seed = config.rack_seed;
   options.match.settings = *pool::server::matchSettingsOf(config);
   options.protocol_version = pool::protocol::kProtocolVersion;
   return options;

@@ -111,6 +111,9 @@ const std::vector<Setting>& settings() {
               "table, carom-match)"),
       setting("points", &C::points, "three-cushion: points that win a game (1-100, default 5)"),
       setting("race", &C::race, "racks to win a match (1-15)"),
+      setting("rack-seed", &C::rack_seed,
+              "non-zero: the racks of match n come from seed N + n, the same on every run (0: "
+              "random)"),
       setting("breaks", &C::breaks, "who breaks the next rack: alternate or winner"),
       setting("shot-clock", &C::shot_clock, "off, or seconds per shot (5-600)"),
       setting("replay", &C::replay,

@@ -36,6 +36,7 @@ struct ServerConfig {
   std::string game = "8";            ///< 8, 9, 10 or three-cushion (a game's name or number)
   int points = protocol::kDefaultPoints;  ///< three-cushion: points that win a game
   int race = 1;                      ///< racks to win a match
+  std::uint64_t rack_seed = 0;       ///< non-zero: match n racks from seed rack_seed + n
   std::string breaks = "alternate";  ///< "alternate" or "winner"
   std::string shot_clock = "off";    ///< "off" or seconds per shot (5-600)
 };

@@ -39,7 +39,7 @@ protocol::AimSample thinkingAim(const PlannedShot& shot, const std::vector<physi
   aim.elevation = shot.cue.elevation;
   aim.power = p <= kSwingEnd ? 0.0 : powerOf(shot) * (p - kSwingEnd) / (1.0 - kSwingEnd);
   for (const auto& b : balls) {
-    if (b.id != physics::kCueBall || !physics::onTable(b.state)) continue;
+    if (b.id != shot.cue.ball || !physics::onTable(b.state)) continue;  // the ball struck
     aim.cue_ball_x = b.pos.x();
     aim.cue_ball_y = b.pos.y();
   }

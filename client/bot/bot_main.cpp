@@ -34,8 +34,9 @@ struct BotProgramConfig {
   double timeout = 0.0;  // s; 0: none
   pool::bot::BotConfig bot;
   // How to play a table the bot opens (the first player at a table chooses); unset: the server's.
-  int game = 0;
+  std::string game;  ///< empty: the server's
   int race = 1;
+  int points = pool::protocol::kDefaultPoints;
   std::string breaks = "alternate";
   double shot_clock = 0.0;
 };
@@ -62,7 +63,9 @@ void addBotFlags(CLI::App& app, BotProgramConfig& c) {
                "think the full --think even past the shot clock (tests)");
   app.add_option("--concede-from-rack", c.bot.concede_from_rack,
                  "concede every rack from this one on, on the bot's first turn in it (tests)");
-  app.add_option("--game", c.game, "a table the bot opens: 8, 9 or 10 (default: the server's)");
+  app.add_option("--game", c.game,
+                 "a table the bot opens: 8, 9, 10 or three-cushion (default: the server's)");
+  app.add_option("--points", c.points, "with --game three-cushion: points that win a game (1-100)");
   app.add_option("--race", c.race, "with --game: racks to win (1-15)");
   app.add_option("--breaks", c.breaks, "with --game: alternate or winner");
   app.add_option("--shot-clock", c.shot_clock, "with --game: seconds per shot, 0: none");
@@ -78,13 +81,14 @@ void addBotFlags(CLI::App& app, BotProgramConfig& c) {
 pool::Result<std::optional<pool::protocol::MatchSettings>> tableSettings(
     const BotProgramConfig& c) {
   using R = pool::Result<std::optional<pool::protocol::MatchSettings>>;
-  if (c.game == 0) return R::ok(std::nullopt);
+  if (c.game.empty()) return R::ok(std::nullopt);
   pool::protocol::MatchSettings s;
-  const auto game = pool::rules::gameOfNumber(c.game);
+  const auto game = pool::rules::gameOfName(c.game);
   const auto breaks = pool::protocol::breakOrderOf(c.breaks);
   if (!breaks) return R::fail("bad_breaks", "--breaks: must be alternate or winner");
-  if (!game) return R::fail("bad_game", "--game: must be 8, 9 or 10");
+  if (!game) return R::fail("bad_game", "--game: must be 8, 9, 10 or three-cushion");
   s.game = *game;
+  if (s.game == pool::rules::Game::ThreeCushion) s.points = c.points;
   s.race_to = c.race;
   s.breaks = *breaks;
   s.shot_clock = c.shot_clock;

@@ -30,6 +30,9 @@ struct RegistryOptions {
   std::size_t max_matches = 256;       ///< "new" beyond this is refused (server full)
   std::uint32_t protocol_version = 2;  ///< a join with another version is refused
   std::uint64_t seed = 0;              ///< tokens and racks; 0: from the OS entropy source
+  /// Non-zero: match n's racks come from seed rack_seed + n, so a session's racks can be played
+  /// again (pool-server --rack-seed); 0: each match's seed is random.
+  std::uint64_t rack_seed = 0;
 };
 
 /// Owns the matches of one server. Match ids are "<server id>-<n>", n counting from 1 and never

@@ -1,7 +1,7 @@
 // Benchmark: the bot under execution noise, in 8-, 9- and 10-ball: its break on seeded hand racks
 // (pots, legal, keeps the turn) against a centred 9 m/s break and the grid the breaks come from;
 // whole racks alone at the table, exact against sampled planning and at each level; and each
-// level against the one below it.
+// level against the one below it. Three-cushion: points per inning from seeded positions.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -14,11 +14,13 @@
 
 #include "bench_run.h"
 #include "client/bot/ai/bot_level.h"
+#include "client/bot/ai/carom_search.h"
 #include "client/bot/ai/break_shot.h"
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "rules/game_state.h"
+#include "rules/three_cushion.h"
 #include "table/rack.h"
 
 namespace {
@@ -352,6 +354,84 @@ void BM_BotHeadToHead(benchmark::State& state) {
 }
 BENCHMARK(BM_BotHeadToHead)
     ->ArgsProduct({games(), {1, 2, 3}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+/// Three balls at seeded places on the carom table, at least two ball widths apart and clear of
+/// the cushions.
+std::vector<physics::Ball> caromLayout(const bot::TableView& view, bot::Rng& rng) {
+  const double r = view.radius();
+  std::vector<physics::Ball> balls;
+  while (balls.size() < 3) {
+    const Vec2 p((rng.uniform() - 0.5) * (view.spec.length - 6 * r),
+                 (rng.uniform() - 0.5) * (view.spec.width - 6 * r));
+    const bool clear = std::all_of(balls.begin(), balls.end(), [&](const physics::Ball& b) {
+      return (b.pos.head<2>() - p).norm() > 4 * r;
+    });
+    if (clear) balls.push_back(physics::restingBall(static_cast<int>(balls.size()), p, r));
+  }
+  return balls;
+}
+
+/// Three-cushion innings from seeded positions, the bot alone at the table under the olympiad
+/// noise: planned from one exact trial a stroke (0 samples) against the same search replaying its
+/// scoring strokes 8 times under that noise. Points per inning is the game's average (UMB; 1.5 and
+/// more is a world-class player's, about 0.5 an amateur's).
+void BM_CaromInnings(benchmark::State& state) {
+  static const bot::TableView view = [] {
+    auto loaded = bot::loadTableView("carom-match");
+    if (!loaded) throw std::runtime_error(loaded.error());
+    bot::TableView v = std::move(*loaded);
+    v.rules.game = rules::Game::ThreeCushion;
+    v.rules.three_cushion.points_to = 1000;  // innings, not games, are measured
+    return v;
+  }();
+  const int samples = static_cast<int>(state.range(0));
+  const int budget = static_cast<int>(state.range(1));
+  const bot::ExecutionNoise noise = bot::olympiadNoise(view.radius());
+  const int innings = pool::bench::smokeOr(40, 1);
+  int points = 0, strokes = 0;
+  std::vector<double> plan_ms;
+  for (auto _ : state) {
+    bot::Rng rng(41);
+    bot::ShotVerifier verifier(view);
+    points = strokes = 0;
+    for (int k = 0; k < innings; ++k) {
+      auto balls = caromLayout(view, rng);
+      rules::GameState game = rules::newRackOf(rules::Game::ThreeCushion, 0);
+      game.phase = rules::Phase::Open;
+      for (int shot = 0; shot < 30; ++shot) {  // a run of 30 ends the inning all the same
+        const auto start = std::chrono::steady_clock::now();
+        const bot::PlannedShot planned =
+            bot::planCarom(verifier, balls, game, {budget, noise, samples});
+        plan_ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+        bot::PlannedShot noisy = planned;
+        noisy.cue = bot::perturbed(planned.cue, noise, rng);
+        const bot::Trial t = verifier.run(balls, game, noisy);
+        ++strokes;
+        if (!t.judged || t.verdict.scored == 0) break;
+        ++points;
+        balls = t.after;
+        game = t.verdict.next;
+      }
+    }
+  }
+  const double per_inning = static_cast<double>(points) / innings;
+  state.counters["points_per_inning"] = per_inning;
+  std::sort(plan_ms.begin(), plan_ms.end());
+  std::printf(
+      "three-cushion, olympiad noise, %d samples a scoring stroke, %d trials a turn: %d points in "
+      "%d innings (%.2f an inning), %d strokes; planning p50 %.0f ms\n",
+      samples, budget, points, innings, per_inning, strokes,
+      plan_ms.empty() ? 0.0 : plan_ms[plan_ms.size() / 2]);
+}
+BENCHMARK(BM_CaromInnings)
+    ->Args({0, 320})
+    ->Args({8, 320})
+    ->Args({8, 2000})
+    ->Args({16, 2000})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

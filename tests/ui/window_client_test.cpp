@@ -271,7 +271,9 @@ TEST_P(WindowRotationTest, TheTurnAfterTheBreakFacesAndCallsTheLowestBall) {
   const Domain domain = game == 9 ? kWindowNineBall : kWindowTenBall;
   open(domain, "window-" + std::to_string(game) + "-ball");
   MatchRecorder recorder(domain);
-  startServer({"--fast", "--game", std::to_string(game)});
+  // Racks from a fixed seed: the window's break is the same stroke every run, and with a random
+  // rack it sometimes drops the 9 (a win on the break: no second shot to look at).
+  startServer({"--fast", "--game", std::to_string(game), "--rack-seed", "7"});
   startWindow({"--hotseat", "--play"},
               "wait aiming\ndown SPACE\nframes 45\nup SPACE\n"
               "wait aiming\nframes 10\ndown SPACE\nframes 20\nup SPACE\nframes 30\nquit\n");

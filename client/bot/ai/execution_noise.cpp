@@ -2,6 +2,7 @@
 #include "client/bot/ai/execution_noise.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace pool::bot {
@@ -19,6 +20,14 @@ physics::CueShot perturbed(const physics::CueShot& shot, const ExecutionNoise& n
   out.speed = std::max(0.0, out.speed + noise.speed * rng.gaussian());
   out.tip_side += noise.tip * rng.gaussian();
   out.tip_height += noise.tip * rng.gaussian();
+  // A tip pushed past the miscue limit lands on its edge: the stroke stays one the server takes
+  // (beyond it the command is refused as malformed and the turn waits on a resend).
+  const double offset = std::hypot(out.tip_side, out.tip_height);
+  constexpr double kEdge = physics::kMiscueLimit * (1.0 - 1e-9);
+  if (offset > kEdge) {
+    out.tip_side *= kEdge / offset;
+    out.tip_height *= kEdge / offset;
+  }
   return out;
 }
 

@@ -17,6 +17,8 @@ const char* toString(ShotKind kind) {
       return "fallback";
     case ShotKind::Choice:
       return "choice";
+    case ShotKind::Carom:
+      return "carom";
   }
   return "unknown";
 }

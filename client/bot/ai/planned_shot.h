@@ -19,9 +19,11 @@ enum class ShotKind : std::uint8_t {
   Safety,    ///< a declared safety, verified legal in the physics
   Fallback,  ///< nothing verified: a declared safety at the nearest legal ball
   Choice,    ///< an answer to the rules' options that re-racks (no shot)
+  Carom,     ///< three-cushion: a stroke that scores, verified in the physics
 };
 
-const char* toString(ShotKind kind);  ///< "break", "pot", "safety", "fallback", "choice"
+/// "break", "pot", "safety", "fallback", "choice", "carom"
+const char* toString(ShotKind kind);
 
 /// One turn's decision. Angles in radians, speed in m/s of the cue ball (speed_is_ball).
 struct PlannedShot {

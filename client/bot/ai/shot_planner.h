@@ -37,6 +37,7 @@ class ShotPlanner {
   /// The shot for the shooter of `state` on the layout `balls` (every ball, pocketed ones too):
   /// the break; else, after answering pending options, the best verified pot (from the cue ball,
   /// or from a chosen spot when in hand); else the best verified safety; else a fallback hit.
+  /// Three-cushion: the carom search's stroke (carom_search.h).
   PlannedShot plan(const std::vector<physics::Ball>& balls, const rules::GameState& state);
 
   /// Physics trials run so far (all turns).
