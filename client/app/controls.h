@@ -120,6 +120,13 @@ class Controls {
   void mouseMove(double x, double y);
   void scroll(double steps);
   void setViewport(int width, int height);
+  /// Another table from now on (the match's own: three-cushion's carom table): its limits, the
+  /// area a cue ball may be placed in and a camera rig round it.
+  void setTable(protocol::CommandLimits limits, PlacementArea area, CameraRig camera) {
+    limits_ = limits;
+    area_ = area;
+    camera_ = std::move(camera);
+  }
 
   /// Applies the held keys for `dt` seconds (cue, tip, elevation, power, camera).
   void advance(double dt);

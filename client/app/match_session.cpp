@@ -258,7 +258,8 @@ void MatchSession::onReport(const client::ShotReport& report) {
     last_verdict_ = report.verdict_text;
     // A practice table's change (no stroke) says what it did in its own words.
     const bool change = report.events.empty() && practiceTable();
-    banner_ = change ? report.verdict_text : shotStory(report, names_);
+    const rules::Game game = view() ? view()->settings.game : rules::Game::EightBall;
+    banner_ = change ? report.verdict_text : shotStory(report, names_, game);
     shot_log_.push_back(banner_);
     while (shot_log_.size() > kLogKept) shot_log_.pop_front();
     if (listener_) listener_->onShot(report);

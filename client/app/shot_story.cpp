@@ -66,6 +66,8 @@ std::string endReason(rules::GameEnd end) {
       return "the 8 went in the called pocket";
     case rules::GameEnd::Forfeit:
       return "a forfeit";
+    case rules::GameEnd::PointsReached:
+      return "the points of the game reached";
     default:
       return spoken(rules::toString(end));
   }
@@ -104,7 +106,7 @@ std::string choiceSentence(rules::Choice choice, const std::string& other) {
   return "";
 }
 
-std::string shotStory(const client::ShotReport& report, const SeatNames& names) {
+std::string shotStory(const client::ShotReport& report, const SeatNames& names, rules::Game game) {
   const std::string& shooter = nameOf(names, report.seat);
   std::string out;
   if (!report.fouls.empty()) {
@@ -114,6 +116,8 @@ std::string shotStory(const client::ShotReport& report, const SeatNames& names) 
     }
     out += ".";
     if (!report.pocketed.empty()) out += " Down: " + ballsSaid(report.pocketed) + ".";
+  } else if (game == rules::Game::ThreeCushion) {
+    out = shooter + (report.scored > 0 ? " scored a point." : " made no point.");
   } else if (!report.pocketed.empty()) {
     out = shooter + " pocketed " + ballsSaid(report.pocketed) + ".";
   } else {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "client/net/match_types.h"
+#include "rules/game_rules.h"
 #include "rules/game_state.h"
 #include "rules/verdict.h"
 
@@ -30,7 +31,9 @@ std::string choiceSentence(rules::Choice choice, const std::string& other);
 
 /// The story of a shot from its final report, e.g. "Foul by Ada: the cue ball fell in a pocket
 /// (a scratch). Bob has the cue ball in hand anywhere on the table."
-std::string shotStory(const client::ShotReport& report, const SeatNames& names);
+/// `game`: three-cushion tells a point or none where pool tells the balls down.
+std::string shotStory(const client::ShotReport& report, const SeatNames& names,
+                      rules::Game game = rules::Game::EightBall);
 
 /// The server's one-line verdict (a late joiner's only account of the last shot) with seat
 /// numbers as names and identifiers as words.

@@ -126,7 +126,7 @@ void EightBallRoom::draw(const Camera& camera, int width, int height, const std:
   const glm::mat4 ball = glm::scale(
       glm::rotate(glm::translate(glm::mat4(1.0f), ballCentre()), -1.2f, glm::vec3(0, 1, 0)),
       glm::vec3(ballRadius()));
-  shading_.drawBall(sphere_, ball, 8);
+  shading_.drawBall(sphere_, ball, ballLook(8));
   drawWindow(camera, static_cast<float>(width) / static_cast<float>(height), answer);
   shading_.endFrame();
 }

@@ -33,10 +33,20 @@ bool startsWith(const std::string& s, const char* prefix) {
 
 }  // namespace
 
-BallLook ballLook(int id) {
-  if (id <= 0 || id > 15) return {kWhite, false};
-  if (id <= 8) return {kSolids[static_cast<std::size_t>(id - 1)], false};
-  return {kSolids[static_cast<std::size_t>(id - 9)], true};
+BallSet ballSetOf(const table::TableSpec& spec) {
+  return spec.pockets ? BallSet::Pool : BallSet::Carom;
+}
+
+BallLook ballLook(int id, BallSet set) {
+  if (set == BallSet::Carom) {
+    // UMB: a white, a yellow (or a spotted white) and a red, unnumbered.
+    if (id == 1) return {{0.93f, 0.72f, 0.05f}, false, 0};
+    if (id == 2) return {{0.72f, 0.03f, 0.03f}, false, 0};
+    return {kWhite, false, 0};
+  }
+  if (id <= 0 || id > 15) return {kWhite, false, 0};
+  if (id <= 8) return {kSolids[static_cast<std::size_t>(id - 1)], false, id};
+  return {kSolids[static_cast<std::size_t>(id - 9)], true, id};
 }
 
 PartLook partLook(const std::string& part_name) {

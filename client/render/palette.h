@@ -4,16 +4,27 @@
 #include <glm/glm.hpp>
 #include <string>
 
+#include "table/table_spec.h"
+
 namespace pool::render {
 
-/// How a ball looks: a solid colour, or white with a band of `colour` (stripes, 9–15).
+/// How a ball looks: a solid colour, or white with a band of `colour` (stripes, 9–15), and the
+/// number on it.
 struct BallLook {
   glm::vec3 colour;
   bool striped = false;
+  int number = 0;  ///< the number printed on it (0: none)
 };
 
-/// The look of ball `id` (0: the cue ball, 1–15 the object balls).
-BallLook ballLook(int id);
+/// The balls a table is played with: a pool set (the cue ball and 1-15, numbered) or a carom
+/// set (0 the white, 1 the yellow, 2 the red, no numbers).
+enum class BallSet { Pool, Carom };
+
+/// The set of a table: carom balls on a table without pockets, else pool balls.
+BallSet ballSetOf(const table::TableSpec& spec);
+
+/// The look of ball `id` of `set` (pool: 0 the cue ball, 1–15 the object balls).
+BallLook ballLook(int id, BallSet set = BallSet::Pool);
 
 /// How a table mesh part looks: its colour and the scene shader's material (shaders::Material).
 struct PartLook {

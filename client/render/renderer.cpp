@@ -200,7 +200,7 @@ void Renderer::drawBalls() const {
                             glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), glm::vec3(r));
     // The trough is lit by its own strip light under the rail, out of the lamps' cones.
     if (ball.pocketed) shading_.setAmbient(kTroughLight);
-    shading_.drawBall(sphere_, model, ball.id);
+    shading_.drawBall(sphere_, model, ballLook(ball.id, scene_.ball_set));
     if (ball.pocketed) shading_.setAmbient(kHallLight);
   }
 }

@@ -21,6 +21,7 @@ Scene tableScene(const game::LoadedTable& table) {
   scene.geometry = table.geometry;
   scene.ball_radius = table.spec.params.ball_radius;
   scene.cushion_width = table.spec.cushion_width;
+  scene.ball_set = ballSetOf(table.spec);
   return scene;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "client/render/palette.h"
 #include "core/result.h"
 #include "game/loaded_table.h"
 #include "table/table_geometry.h"
@@ -26,6 +27,7 @@ struct Scene {
   pool::table::TableGeometry geometry;
   double ball_radius = 0.0;
   double cushion_width = 0.05;  ///< nose to the back of the cushion (the spec's), m
+  BallSet ball_set = BallSet::Pool;  ///< how the balls look (a carom table's: white, yellow, red)
   std::vector<SceneBall> balls;
 };
 

@@ -93,12 +93,12 @@ void SceneShading::drawFaded(const GpuMesh& mesh, const glm::mat4& model, glm::v
   p.set("uAlpha", 1.0f);
 }
 
-void SceneShading::drawBall(const GpuMesh& sphere, const glm::mat4& model, int id) const {
-  const BallLook look = ballLook(id);
+void SceneShading::drawBall(const GpuMesh& sphere, const glm::mat4& model,
+                            const BallLook& look) const {
   const ShaderProgram& p = *programs_[shaders::kBall];
   p.use();
   p.set("uStriped", look.striped ? 1 : 0);
-  p.set("uBallCell", id);
+  p.set("uBallCell", look.number);
   draw(sphere, model, look.colour, shaders::kBall, 0.5f);
 }
 

@@ -47,8 +47,8 @@ class SceneShading {
   /// Draws `mesh` with opacity `alpha` (blending is the caller's to enable).
   void drawFaded(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
                  float alpha) const;
-  /// Draws a ball: `model` includes its orientation and radius; `id` picks colour and number.
-  void drawBall(const GpuMesh& sphere, const glm::mat4& model, int id) const;
+  /// Draws a ball: `model` includes its orientation and radius; `look` its colour and number.
+  void drawBall(const GpuMesh& sphere, const glm::mat4& model, const BallLook& look) const;
 
  private:
   std::vector<std::unique_ptr<ShaderProgram>> programs_;  ///< one per shaders::Material

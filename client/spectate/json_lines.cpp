@@ -14,7 +14,10 @@ json seatJson(const SeatView& seat) {
           {"group", rules::toString(seat.group)},
           {"balls_left", seat.balls_left},
           {"fouls", seat.fouls},
-          {"racks_won", seat.racks_won}};
+          {"racks_won", seat.racks_won},
+          {"points", seat.points},
+          {"innings", seat.innings},
+          {"high_run", seat.high_run}};
 }
 
 json choicesJson(const std::vector<rules::Choice>& choices) {
@@ -57,6 +60,10 @@ std::string matchStateLine(const MatchView& view) {
               {"balls", view.balls.size()},
               {"balls_on_table", ballsOnTable(view.balls)},
               {"on_table", on_table},
+              {"game", rules::toString(view.settings.game)},
+              {"points_to", view.settings.points},
+              {"run", view.run},
+              {"cue_ball", view.cue_ball},
               {"last_verdict", view.last_verdict}}
       .dump();
 }

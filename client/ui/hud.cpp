@@ -153,6 +153,14 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
     if (!seat.name.empty() && !seat.connected) line += " (away)";
     say.text(line);
     std::string detail = "    ";
+    if (view.settings.game == rules::Game::ThreeCushion) {
+      // A carom score: points, innings and the high run (UMB's scoreboard).
+      detail += std::to_string(seat.points) + (seat.points == 1 ? " point, " : " points, ") +
+                std::to_string(seat.innings) + (seat.innings == 1 ? " inning, " : " innings, ") +
+                "high run " + std::to_string(seat.high_run);
+      say.wrapped(detail);
+      continue;
+    }
     // Groups and balls left are 8-ball's; in 9- and 10-ball both players shoot the lowest ball.
     if (view.settings.game == rules::Game::EightBall) {
       detail += seat.group == rules::Group::None ? "no group yet"
@@ -163,7 +171,10 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
               std::to_string(seat.racks_won) + (seat.racks_won == 1 ? " rack won" : " racks won");
     say.wrapped(detail);
   }
-  if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {
+  if (view.settings.game == rules::Game::ThreeCushion && client::inPlay(view.phase)) {
+    say.text(std::string("  ") + (view.cue_ball == 1 ? "the yellow" : "the white") +
+             " to strike" + (view.run > 0 ? ", run " + std::to_string(view.run) : ""));
+  } else if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {
     const int lowest = rules::lowestBall(view.balls);
     if (lowest > 0) say.text("  ball on: the " + std::to_string(lowest));
   }
@@ -215,6 +226,9 @@ void matchPanel(Say& say, const HudInput& in) {
     if (!v.standard_physics) {
       say.coloured(kBannerFoul, "not a standard table: its coefficients were changed (F7)");
     }
+  } else if (v.settings.game == rules::Game::ThreeCushion) {
+    say.text("three-cushion to " + std::to_string(v.settings.points) + ": " +
+             std::to_string(v.seats[0].points) + "-" + std::to_string(v.seats[1].points));
   } else {
     say.text(app::spoken(rules::toString(v.settings.game)) + ", race to " +
              std::to_string(v.settings.race_to) + ": " + std::to_string(v.seats[0].racks_won) +

@@ -147,6 +147,7 @@ class WindowApp {
   /// and the shot they release.
   void update(double now, double dt) {
     session_.poll(now);
+    followTable();
     if (options_.json) progress_.report(session_);
     for (auto& note : session_.takeNotes()) notes_.add(std::move(note));
     turn_.follow();
@@ -161,6 +162,33 @@ class WindowApp {
     controls_.advance(dt);
     liveAim(now);
     if (auto shot = controls_.takeShot()) shoot(std::move(*shot), now);
+  }
+
+  /// The table the match in hand is played on (its lobby entry's: three-cushion's carom table):
+  /// loaded and drawn from now on when it is not the one shown. Every part holds the table by
+  /// reference, so it changes in place; a table that cannot load leaves the one shown, noted.
+  void followTable() {
+    if (session_.match().empty()) return;
+    const client::LobbyEntry* entry = session_.lobby().find(session_.match());
+    if (!entry || entry->table.empty() || entry->table == view_.spec.name ||
+        entry->table == table_refused_) {
+      return;
+    }
+    auto loaded = game::loadTable(entry->table);
+    if (!loaded) {
+      table_refused_ = entry->table;
+      notes_.add({"table " + entry->table + ": " + loaded.error(), true});
+      return;
+    }
+    view_ = std::move(*loaded);
+    scene_.setTable(render::tableScene(view_));
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_.get(), &width, &height);
+    controls_.setTable(limitsOf(view_), areaOf(view_),
+                       app::CameraRig(view_.spec.length, view_.spec.width,
+                                      static_cast<double>(std::max(width, 1)) /
+                                          std::max(height, 1)));
+    controls_.setViewport(width, height);
   }
 
   /// The live aim of our turn goes out (paced by the session); a remote shooter's stroke starts.
@@ -236,7 +264,8 @@ class WindowApp {
   std::string placement_problem_;
   ProgressLog progress_;  ///< with --json
   bool quit_ = false;
-  bool captured_ = true;  ///< false once writing the capture failed
+  bool captured_ = true;       ///< false once writing the capture failed
+  std::string table_refused_;  ///< a match's table that could not load (not tried again)
 };
 
 }  // namespace

@@ -16,10 +16,15 @@ void bindWindowFramebuffer(int width, int height) {
 
 }  // namespace
 
-WindowScene::WindowScene(const render::Scene& scene) : renderer_(scene) {
+WindowScene::WindowScene(const render::Scene& scene)
+    : renderer_(std::make_unique<render::Renderer>(scene)) {
   // Under a software renderer the light preset keeps the frame budget.
   const GLubyte* gl_renderer = glGetString(GL_RENDERER);
   gl_renderer_ = gl_renderer ? reinterpret_cast<const char*>(gl_renderer) : "";
+}
+
+void WindowScene::setTable(const render::Scene& scene) {
+  renderer_ = std::make_unique<render::Renderer>(scene);
 }
 
 std::string WindowScene::applyQuality(const std::string& chosen) {
@@ -33,20 +38,20 @@ const char* WindowScene::qualityName() const {
 }
 
 void WindowScene::show(const FrameView& frame, app::CameraRig& rig) {
-  if (frame.balls_known) renderer_.setBalls(sceneBalls(frame.shown));
+  if (frame.balls_known) renderer_->setBalls(sceneBalls(frame.shown));
   rig.chase(frame.chased);
-  renderer_.setOverlay(frame.overlay);
-  renderer_.setCue(frame.cue);
-  renderer_.setGhost(frame.ghost);
-  if (const auto& cue = renderer_.cue(); cue && frame.cue_source == "local") {
+  renderer_->setOverlay(frame.overlay);
+  renderer_->setCue(frame.cue);
+  renderer_->setGhost(frame.ghost);
+  if (const auto& cue = renderer_->cue(); cue && frame.cue_source == "local") {
     rig.keepAimAbove(cue->drawn_elevation + app::kEyeOverCue);
   }
-  renderer_.setOptions(render::withQuality(frame.switches, quality_));
+  renderer_->setOptions(render::withQuality(frame.switches, quality_));
 }
 
 void WindowScene::drawTable(const render::Camera& camera, int width, int height) const {
   bindWindowFramebuffer(width, height);
-  renderer_.draw(camera, width, height);
+  renderer_->draw(camera, width, height);
 }
 
 void WindowScene::drawRoom(const render::RenderOptions& switches, int width, int height,

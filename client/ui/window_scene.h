@@ -37,10 +37,13 @@ class WindowScene {
   void drawRoom(const render::RenderOptions& switches, int width, int height,
                 const std::string& answer);
   /// The cue as drawn; none when no cue is shown or it could not be placed.
-  const std::optional<render::CuePlacement>& cue() const { return renderer_.cue(); }
+  const std::optional<render::CuePlacement>& cue() const { return renderer_->cue(); }
+  /// Draws `scene`'s table from now on (a match on another table: three-cushion's carom table);
+  /// the quality stays as chosen.
+  void setTable(const render::Scene& scene);
 
  private:
-  render::Renderer renderer_;
+  std::unique_ptr<render::Renderer> renderer_;
   std::unique_ptr<render::EightBallRoom> room_;
   render::Quality quality_ = render::Quality::Full;
   std::string gl_renderer_;  ///< GL_RENDERER, which "auto" quality reads

@@ -100,8 +100,9 @@ Result<std::string> tableJson(const std::string& table_name) {
     lamps.push_back(json::array({p.x, p.y, p.z}));
   json balls = json::array();
   for (int id = 0; id <= physics::kMaxBallId; ++id) {
-    const render::BallLook look = render::ballLook(id);
-    balls.push_back({{"colour", rgb(look.colour)}, {"striped", look.striped}});
+    const render::BallLook look = render::ballLook(id, render::ballSetOf(*spec));
+    balls.push_back(
+        {{"colour", rgb(look.colour)}, {"striped", look.striped}, {"number", look.number}});
   }
   const json out{{"type", "table"},
                  {"name", spec->name},

@@ -27,8 +27,16 @@ export function describe(state, settings, result, entry) {
   facts.title = `${a} vs ${b}`;
   facts.players = `${a} against ${b}${settings ? `: ${settings}` : ''}`;
   const raceTo = entry ? entry.race_to : null;
-  facts.score = `Racks won: ${a} ${state.seats[0].racks_won}, ${b} ${state.seats[1].racks_won}` +
-    (raceTo ? ` (first to ${raceTo} wins)` : '');
+  if (state.game === 'three-cushion') {
+    // A carom score: points (first to points_to), innings and the high run of each player.
+    const line = (i) => `${nameOf(state, i)} ${state.seats[i].points}` +
+      ` (${state.seats[i].innings} innings, high run ${state.seats[i].high_run})`;
+    facts.score = `Points: ${line(0)}, ${line(1)} (first to ${state.points_to} wins)` +
+      (state.run > 0 ? `; run ${state.run}` : '');
+  } else {
+    facts.score = `Racks won: ${a} ${state.seats[0].racks_won}, ${b} ${state.seats[1].racks_won}` +
+      (raceTo ? ` (first to ${raceTo} wins)` : '');
+  }
   const shooter = state.shooter >= 0 ? nameOf(state, state.shooter) : null;
   switch (state.phase) {
     case 'lobby':
@@ -44,6 +52,10 @@ export function describe(state, settings, result, entry) {
     default: {
       if (!shooter) {
         facts.turn = 'Waiting for the next shot.';
+      } else if (state.game === 'three-cushion') {
+        const ball = state.cue_ball === 1 ? 'yellow' : 'white';
+        facts.turn = state.phase === 'break' ? `${shooter} to open with the ${ball}, red first.`
+          : `${shooter} to shoot the ${ball}.`;
       } else if (state.phase === 'break') {
         facts.turn = `${shooter} to break (rack ${state.rack + 1}).`;
       } else if (state.ball_in_hand === 'anywhere') {
@@ -60,7 +72,7 @@ export function describe(state, settings, result, entry) {
     const fouls = s.fouls ? `, ${s.fouls} foul${s.fouls === 1 ? '' : 's'}` : '';
     return g ? `${nameOf(state, i)} has the ${g}, ${s.balls_left} left${fouls}` : null;
   });
-  facts.groups = groups.every((g) => g === null)
+  facts.groups = state.game === 'three-cushion' ? '' : groups.every((g) => g === null)
     ? (state.phase === 'open' || state.phase === 'break' ? 'Open table: no groups yet.' : '')
     : `${groups.filter((g) => g).join('; ')}.`;
   // The verdict as the game's HUD words it, each "seat N" named.

@@ -10,7 +10,8 @@ function linear(rgb) {
 }
 
 /** A ball's texture: its colour (a band around the body's z for stripes), a white circle with
- * the number on the body's +x and -x sides, as the game's ball shader draws it. */
+ * its number (if it has one: a carom set has none) on the body's +x and -x sides, as the game's
+ * ball shader draws it. */
 function ballTexture(id, look) {
   const canvas = document.createElement('canvas');
   canvas.width = 256;
@@ -29,7 +30,7 @@ function ballTexture(id, look) {
     g.fillStyle = colour;
     g.fillRect(0, 0, 256, 128);
   }
-  if (id > 0) {
+  if (look.number > 0) {
     for (const cx of [0, 128, 256]) {
       g.fillStyle = '#f2f2ea';
       g.beginPath();
@@ -39,7 +40,7 @@ function ballTexture(id, look) {
       g.font = 'bold 20px sans-serif';
       g.textAlign = 'center';
       g.textBaseline = 'middle';
-      g.fillText(String(id), cx, 65);
+      g.fillText(String(look.number), cx, 65);
     }
   }
   const texture = new THREE.CanvasTexture(canvas);
