@@ -50,14 +50,15 @@ int closestPocket(const Eigen::Vector2d& at, const Eigen::Vector2d& heading,
 }  // namespace
 
 AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
-                         const std::vector<physics::Ball>& balls, const game::LoadedTable& view) {
+                         const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
+                         int struck) {
   const double r = view.radius();
   const Eigen::Vector2d dir(std::cos(yaw), std::sin(yaw));
   AimPrediction out;
   out.from = cue;
   double best = toCushion(cue, dir, view.halfLength() - r, view.halfWidth() - r);
   for (const auto& b : balls) {
-    if (b.id == physics::kCueBall || !physics::onTable(b.state)) continue;
+    if (b.id == struck || !physics::onTable(b.state)) continue;
     const double t = sweep(cue, dir, b.pos.head<2>(), 2 * r);
     if (t < best) {
       best = t;
@@ -80,7 +81,8 @@ ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
                   rules::Game game) {
   ShotCall call;
   if (state.phase == rules::Phase::Break || state.phase == rules::Phase::Over) return call;
-  if (game == rules::Game::NineBall) return call;
+  // 9-ball needs no call; three-cushion has nothing to call and no safety to declare.
+  if (game == rules::Game::NineBall || game == rules::Game::ThreeCushion) return call;
   const auto legal = rules::firstBallsFor(rules::GameRules{game, {}, {}}, state, balls);
   const bool callable = aim.ball && aim.pocket >= 0 &&
                         std::find(legal.begin(), legal.end(), *aim.ball) != legal.end();

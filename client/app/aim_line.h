@@ -26,11 +26,13 @@ struct AimPrediction {
 
 /// Where the cue ball at `cue` (m) heading along `yaw` (rad) first touches another ball on the
 /// table in `balls` (centres 2R apart) or a cushion (its centre R inside the playing surface).
+/// `struck`: the ball at `cue` (the cue ball; in three-cushion the shooter's own).
 AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
-                         const std::vector<physics::Ball>& balls, const game::LoadedTable& view);
+                         const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
+                         int struck = physics::kCueBall);
 
-/// The call for `aim` in `state` of `game`: none on the break, and none in 9-ball (it needs no
-/// call); else the first ball touched and the pocket it heads for when that ball is the
+/// The call for `aim` in `state` of `game`: none on the break, none in 9-ball (it needs no
+/// call) or three-cushion; else the first ball touched and the pocket it heads for when that ball is the
 /// shooter's to hit first (rules::firstBallsFor); otherwise a safety.
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
                   const std::vector<physics::Ball>& balls, const game::LoadedTable& view,

@@ -35,7 +35,9 @@ std::optional<Eigen::Vector3d> chasedCueBall(const FrameView& f, const FrameSour
   std::optional<Eigen::Vector3d> chased;
   if (!from.follow_cue || !from.session.inMotion() || f.replay) return chased;
   for (const auto& b : f.shown) {
-    if (b.id == physics::kCueBall && physics::onTable(b.state)) chased = b.pos;
+    const client::MatchView* v = from.session.view();
+    const int struck = v ? v->cue_ball : physics::kCueBall;  // three-cushion: the shooter's own
+    if (b.id == struck && physics::onTable(b.state)) chased = b.pos;
   }
   return chased;
 }

@@ -15,7 +15,7 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
                const std::vector<physics::Ball>& balls, const game::LoadedTable& view) {
   const app::Toggles& t = controls.toggles();
   const auto prediction =
-      app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view);
+      app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view, match.cue_ball);
   controls.suggestCall(
       app::autoCall(prediction, client::gameStateOf(match), balls, view, match.settings.game));
   std::vector<Eigen::Vector3d> ahead;  // the object ball and the pocket it heads for
@@ -32,7 +32,7 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
                       std::move(ahead));
   app::ClickTargets targets;
   for (const auto& b : balls) {
-    if (b.id != physics::kCueBall && physics::onTable(b.state)) {
+    if (b.id != match.cue_ball && physics::onTable(b.state)) {
       targets.balls.emplace_back(b.id, b.pos.head<2>());
     }
   }

@@ -52,7 +52,8 @@ void TurnDesk::start(int shooter, const client::MatchView& v) {
 
 Eigen::Vector3d TurnDesk::cueBallOf(const client::MatchView& view) const {
   for (const auto& b : view.balls) {
-    if (b.id == physics::kCueBall && physics::onTable(b.state)) return b.pos;
+    // The ball the shooter strikes: the cue ball, or in three-cushion the shooter's own.
+    if (b.id == view.cue_ball && physics::onTable(b.state)) return b.pos;
   }
   const Eigen::Vector2d head = table_.context.spots.head_spot;
   return {head.x(), head.y(), table_.radius()};

@@ -47,7 +47,8 @@ enum Domain : std::uint32_t {
   kTenBallRace = 218,
   kShotClock = 219,
   kOpensTable = 123,
-  kThreeCushionGame = 124,
+  kThreeCushionGame = 130,
+  kWindowThreeCushion = 131,
   kWebPage = 40,  ///< 40–59: the web spectator's tests and benchmark
   kWebGateway = 41,
   kWebSlowBrowser = 43,  ///< (42: web_bench)

@@ -329,6 +329,71 @@ INSTANTIATE_TEST_SUITE_P(Games, WindowRotationTest, ::testing::Values(9, 10),
                            return std::to_string(g.param) + "Ball";
                          });
 
+// Three-cushion in the window, two players at one screen: the window moves onto the carom table
+// the match is played on, each player strikes their own ball (the breaker the white, then the
+// other the yellow), nothing is called, and the HUD keeps the carom score.
+TEST_F(WindowClientTest, HotseatThreeCushionStrikesEachPlayersOwnBallOnTheCaromTable) {
+  open(kWindowThreeCushion, "window-three-cushion");
+  MatchRecorder recorder(kWindowThreeCushion);
+  startServer({"--fast", "--game", "three-cushion", "--rack-seed", "3"});
+  startWindow({"--hotseat", "--play"},
+              "wait aiming\ndown SPACE\nframes 30\nup SPACE\n"
+              "wait aiming\nframes 10\ndown SPACE\nframes 30\nup SPACE\nframes 30\nquit\n");
+  std::string match;
+  const protocol::ShotRequest* first = nullptr;
+  const protocol::ShotRequest* second = nullptr;
+  const bool seen = firstTwoShots(recorder, match, first, second);
+  const int status = windowExit();
+  ASSERT_TRUE(seen) << "no two accepted shots from the window\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
+  const auto finals = recorder.finals(match);
+  ASSERT_TRUE(finals.count(1) && finals.count(2));
+  const protocol::ShotReport& shot1 = finals.at(1);
+  const protocol::ShotReport& shot2 = finals.at(2);
+  // The server strikes the shooter's own ball: the log of each shot starts with its strike.
+  const MatchView* last = recorder.latest(match);
+  ASSERT_NE(last, nullptr);
+  EXPECT_EQ(last->settings.game, rules::Game::ThreeCushion);
+  ASSERT_FALSE(shot1.events.empty());
+  EXPECT_EQ(shot1.events.front().ball_a, 0);  // the breaker's white
+  const int second_striker = shot1.turn_continues ? 0 : 1;
+  ASSERT_FALSE(shot2.events.empty());
+  EXPECT_EQ(shot2.events.front().ball_a, second_striker);
+  // Nothing called, no safety declared (three-cushion has neither).
+  EXPECT_FALSE(first->called_ball);
+  EXPECT_FALSE(second->called_ball);
+  EXPECT_FALSE(second->safety);
+  // The turn opened behind the striker's own ball, facing the nearest object ball (the rules'
+  // first balls: both others), from the layout the second shot was played from.
+  std::optional<MatchView> before;
+  for (const auto& st : recorder.states(match)) {
+    if (st.shot_number == 1) before = st;
+  }
+  ASSERT_TRUE(before);
+  Eigen::Vector2d own = Eigen::Vector2d::Zero();
+  for (const auto& b : before->balls) {
+    if (b.id == second_striker) own = b.pos.head<2>();
+  }
+  double nearest = 1e9, facing = 0.0;
+  for (const auto& b : before->balls) {
+    if (b.id == second_striker) continue;
+    const Eigen::Vector2d to = b.pos.head<2>() - own;
+    if (to.norm() < nearest) {
+      nearest = to.norm();
+      facing = std::atan2(to.y(), to.x());
+    }
+  }
+  EXPECT_NEAR(second->cue.yaw, facing, 1e-9);
+  bool score = false;
+  for (const auto& hud : windowLines("hud")) {
+    for (const auto& text : hud["texts"]) {
+      score = score || text.get<std::string>().rfind("three-cushion to 5: ", 0) == 0;
+    }
+  }
+  EXPECT_TRUE(score) << "the HUD never gave the three-cushion score";
+}
+
 // Against pool-bot --stay (the main job's bot): the player concedes the only rack of the race
 // (Q, then Y), and at game over R asks for a rematch, which the bot plays: a second game starts
 // at the table with both in their seats.
