@@ -22,6 +22,10 @@ void tableOptions(TableOptions& options) {
     ImGui::SameLine();
     ImGui::RadioButton(game.name, &options.game, game.number);
   }
+  if (options.game == rules::gameNumber(rules::Game::ThreeCushion)) {
+    ImGui::SetNextItemWidth(160);
+    ImGui::SliderInt("points", &options.points, 1, 50);
+  }
   ImGui::SetNextItemWidth(160);
   ImGui::SliderInt("race to", &options.race_to, 1, protocol::kMaxRace);
   ImGui::SameLine();
@@ -39,7 +43,10 @@ protocol::MatchSettings TableOptions::settings() const {
   protocol::MatchSettings s;
   s.game = rules::gameOfNumber(game).value_or(rules::Game::EightBall);
   s.practice = practice;
+  // A practice table racks a pool game (three-cushion's opening needs no practice table).
+  if (practice && s.game == rules::Game::ThreeCushion) s.game = rules::Game::EightBall;
   if (practice) return s;  // a practice table has no race and no clock
+  if (s.game == rules::Game::ThreeCushion) s.points = points;
   s.race_to = race_to;
   s.breaks = winner_breaks ? protocol::BreakOrder::Winner : protocol::BreakOrder::Alternate;
   s.shot_clock = shot_clock;

@@ -21,8 +21,9 @@ struct LobbyChoice {
 /// How a fresh table is to be played, as the lobby's options set it: game, race, breaks, shot
 /// clock (0: off), or a practice table. Kept by the window between frames.
 struct TableOptions {
-  int game = 8;  ///< 8, 9 or 10
+  int game = 8;  ///< 8, 9, 10 or 3 (three-cushion): rules::gameOfNumber
   int race_to = 1;
+  int points = protocol::kDefaultPoints;  ///< three-cushion: points that win a game
   bool winner_breaks = false;
   int shot_clock = 0;  ///< s; 0: off
   bool practice = false;

@@ -30,7 +30,8 @@ export function describe(state, settings, result, entry) {
   if (state.game === 'three-cushion') {
     // A carom score: points (first to points_to), innings and the high run of each player.
     const line = (i) => `${nameOf(state, i)} ${state.seats[i].points}` +
-      ` (${state.seats[i].innings} innings, high run ${state.seats[i].high_run})`;
+      ` (${state.seats[i].innings} inning${state.seats[i].innings === 1 ? '' : 's'},` +
+      ` high run ${state.seats[i].high_run})`;
     facts.score = `Points: ${line(0)}, ${line(1)} (first to ${state.points_to} wins)` +
       (state.run > 0 ? `; run ${state.run}` : '');
   } else {
