@@ -33,12 +33,12 @@ struct ServerConfig {
   std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
   std::string admin_socket;  ///< the operator's Unix socket; empty: "<db>.sock"
   // Defaults of the tables this server opens (the first player at a table may choose others).
-  std::string game = "8";            ///< 8, 9, 10 or three-cushion (a game's name or number)
+  std::string game = "8";                 ///< 8, 9, 10 or three-cushion (a game's name or number)
   int points = protocol::kDefaultPoints;  ///< three-cushion: points that win a game
-  int race = 1;                      ///< racks to win a match
-  std::uint64_t rack_seed = 0;       ///< non-zero: match n racks from seed rack_seed + n
-  std::string breaks = "alternate";  ///< "alternate" or "winner"
-  std::string shot_clock = "off";    ///< "off" or seconds per shot (5-600)
+  int race = 1;                           ///< racks to win a match
+  std::uint64_t rack_seed = 0;            ///< non-zero: match n racks from seed rack_seed + n
+  std::string breaks = "alternate";       ///< "alternate" or "winner"
+  std::string shot_clock = "off";         ///< "off" or seconds per shot (5-600)
 };
 
 /// The table defaults of `config` (game, race, breaks, shot clock), or why they are not valid.
@@ -53,8 +53,8 @@ struct ConfigOutcome {
 
 /// Reads the flags of every setting (server_config.cpp's table: --domain, --tables, --max-matches,
 /// --snapshot-hz, --fast, --server-id, --grace, --name, --table, --log-level, --db, --game,
-/// --points, --race, --breaks, --shot-clock, --replay, --admin-socket) and --config FILE. The JSON file
-/// gives values under the flags' names (without dashes; "snapshot-hz" or "snapshot_hz"; not
+/// --points, --race, --breaks, --shot-clock, --replay, --admin-socket) and --config FILE. The JSON
+/// file gives values under the flags' names (without dashes; "snapshot-hz" or "snapshot_hz"; not
 /// --replay); flags given on the command line win.
 ConfigOutcome parseConfig(int argc, const char* const* argv);
 

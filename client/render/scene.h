@@ -26,7 +26,7 @@ struct SceneBall {
 struct Scene {
   pool::table::TableGeometry geometry;
   double ball_radius = 0.0;
-  double cushion_width = 0.05;  ///< nose to the back of the cushion (the spec's), m
+  double cushion_width = 0.05;       ///< nose to the back of the cushion (the spec's), m
   BallSet ball_set = BallSet::Pool;  ///< how the balls look (a carom table's: white, yellow, red)
   std::vector<SceneBall> balls;
 };

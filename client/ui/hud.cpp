@@ -172,8 +172,8 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
     say.wrapped(detail);
   }
   if (view.settings.game == rules::Game::ThreeCushion && client::inPlay(view.phase)) {
-    say.text(std::string("  ") + (view.cue_ball == 1 ? "the yellow" : "the white") +
-             " to strike" + (view.run > 0 ? ", run " + std::to_string(view.run) : ""));
+    say.text(std::string("  ") + (view.cue_ball == 1 ? "the yellow" : "the white") + " to strike" +
+             (view.run > 0 ? ", run " + std::to_string(view.run) : ""));
   } else if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {
     const int lowest = rules::lowestBall(view.balls);
     if (lowest > 0) say.text("  ball on: the " + std::to_string(lowest));

@@ -184,10 +184,10 @@ class WindowApp {
     scene_.setTable(render::tableScene(view_));
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
-    controls_.setTable(limitsOf(view_), areaOf(view_),
-                       app::CameraRig(view_.spec.length, view_.spec.width,
-                                      static_cast<double>(std::max(width, 1)) /
-                                          std::max(height, 1)));
+    controls_.setTable(
+        limitsOf(view_), areaOf(view_),
+        app::CameraRig(view_.spec.length, view_.spec.width,
+                       static_cast<double>(std::max(width, 1)) / std::max(height, 1)));
     controls_.setViewport(width, height);
   }
 

@@ -14,8 +14,8 @@ void append(std::vector<app::OverlaySegment>& lines, const std::vector<app::Over
 void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchView& match,
                const std::vector<physics::Ball>& balls, const game::LoadedTable& view) {
   const app::Toggles& t = controls.toggles();
-  const auto prediction =
-      app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls, view, match.cue_ball);
+  const auto prediction = app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls,
+                                          view, match.cue_ball);
   controls.suggestCall(
       app::autoCall(prediction, client::gameStateOf(match), balls, view, match.settings.game));
   std::vector<Eigen::Vector3d> ahead;  // the object ball and the pocket it heads for

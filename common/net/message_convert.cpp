@@ -161,9 +161,8 @@ Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
   for (std::size_t i = 0; i < 2; ++i) entry.players[i] = std::string(textOf(info.players[i]));
   entry.seats_taken = info.seats_taken;
   entry.spectators = info.spectators;
-  auto settings =
-      settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit, info.practice,
-                 info.points);
+  auto settings = settingsOf(info.game, info.race_to, info.breaks, info.shot_clock_limit,
+                             info.practice, info.points);
   if (!settings) return fail<LobbyEntry>("match info " + entry.match, settings.error());
   entry.settings = *settings;
   entry.racks_won = {info.racks_won[0], info.racks_won[1]};
@@ -211,9 +210,8 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
     view.seats[i].extensions_left = state.extensions_left[i];
     view.seats[i].fouls_in_row = state.fouls_in_row[i];
   }
-  auto settings =
-      settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit, state.practice,
-                 state.points_to);
+  auto settings = settingsOf(state.game, state.race_to, state.breaks, state.shot_clock_limit,
+                             state.practice, state.points_to);
   if (!settings) return fail<MatchView>(what, settings.error());
   view.settings = *settings;
   view.shot_clock_total = state.shot_clock_total;
@@ -444,9 +442,8 @@ Sample<pool_ShotResult> toWire(const ShotReport& report) {
   setText(r.reject_text, report.reject_text);
   putEvents(r.events, report.events);
   putAll(r.fouls, report.fouls, [](rules::Foul f) { return wireOf<pool_FoulCode>(f); });
-  const auto pocketed = resizeSequence(
-      r.pocketed,
-      static_cast<std::uint32_t>(std::min<std::size_t>(report.pocketed.size(), pool_MAX_BALLS)));
+  const auto pocketed = resizeSequence(r.pocketed, static_cast<std::uint32_t>(std::min<std::size_t>(
+                                                       report.pocketed.size(), pool_MAX_BALLS)));
   for (std::size_t i = 0; i < pocketed.size(); ++i) {
     pocketed[i] = static_cast<std::uint8_t>(report.pocketed[i]);
   }

@@ -612,10 +612,9 @@ Result<ShotOutcome> Simulation::shoot(const CueShot& shot, const SimOptions& opt
   auto cue = std::find_if(s.balls.begin(), s.balls.end(),
                           [&shot](const Ball& b) { return b.id == shot.ball; });
   if (cue == s.balls.end() || !onTable(cue->state)) {
-    return Result<ShotOutcome>::fail(shot.ball == kCueBall
-                                         ? "no cue ball on the table"
-                                         : "no ball " + std::to_string(shot.ball) +
-                                               " on the table to strike");
+    return Result<ShotOutcome>::fail(
+        shot.ball == kCueBall ? "no cue ball on the table"
+                              : "no ball " + std::to_string(shot.ball) + " on the table to strike");
   }
   const auto strike = strikeCueBall(shot, s.p);
   if (!strike) return Result<ShotOutcome>::fail(strike.error());

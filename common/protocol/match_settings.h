@@ -30,7 +30,7 @@ inline constexpr double kShotClockWarning = 10.0;  ///< s left when the warning 
 /// instead of a foul.
 struct MatchSettings {
   rules::Game game = rules::Game::EightBall;
-  int race_to = 1;  ///< racks to win the match, 1..kMaxRace (three-cushion: games)
+  int race_to = 1;              ///< racks to win the match, 1..kMaxRace (three-cushion: games)
   int points = kDefaultPoints;  ///< three-cushion: points that win a game, 1..kMaxPoints (other
                                 ///< games: kDefaultPoints, unused)
   BreakOrder breaks = BreakOrder::Alternate;

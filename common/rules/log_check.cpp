@@ -265,8 +265,8 @@ Check<> checkAfter(const std::vector<physics::Ball>& after, const Tracks& tracks
 
 Check<> checkShot(const Shot& shot, int struck) {
   if (!validId(struck))
-    return Check<>::refuse("bad_balls_before", "the struck ball " + std::to_string(struck) +
-                                                   " is not 0-15");
+    return Check<>::refuse("bad_balls_before",
+                           "the struck ball " + std::to_string(struck) + " is not 0-15");
   auto tracks = tracksBefore(shot.before, struck);
   if (!tracks) return Check<>::refuse("bad_balls_before", tracks.error());
   if (shot.events.empty()) return Check<>::refuse("empty_log", "the event log is empty");

@@ -48,7 +48,7 @@ struct Verdict {
   std::vector<Choice> options;                 ///< the next shooter must choose one of these first
   bool rerack = false;     ///< rack again; next.breaker breaks (a choice or a stalemate)
   bool stalemate = false;  ///< the re-rack is because of a stalemate
-  int scored = 0;  ///< points the shot scored (three-cushion: 1 for a point)
+  int scored = 0;          ///< points the shot scored (three-cushion: 1 for a point)
   bool game_over = false;
   int winner = -1;              ///< seat, when game_over
   GameEnd end = GameEnd::None;  ///< why the game ended

@@ -203,8 +203,9 @@ Result<TableGeometry> importMesh(const TableSpec& spec) {
       loaded.geometry.parts.empty()) {
     return Result<TableGeometry>::fail(
         "collision_mesh: " + path +
-        (spec.pockets ? ": needs nose_*, hole_* and mesh objects"
-                      : ": needs nose_* and mesh objects, and no hole_* (a table without pockets)"));
+        (spec.pockets
+             ? ": needs nose_*, hole_* and mesh objects"
+             : ": needs nose_* and mesh objects, and no hole_* (a table without pockets)"));
   }
   TableGeometry& g = loaded.geometry;
   g.name = spec.name;

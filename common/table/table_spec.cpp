@@ -104,8 +104,7 @@ Check<> readPockets(const json& root, TableSpec& spec) {
 Check<> readSnookerMarks(const json& root, std::optional<SnookerMarks>& out) {
   const auto it = root.find("snooker_marks");
   if (it == root.end()) return Check<>::pass();
-  if (!it->is_object())
-    return Check<>::refuse("not_an_object", "snooker_marks: must be an object");
+  if (!it->is_object()) return Check<>::refuse("not_an_object", "snooker_marks: must be an object");
   SnookerMarks m;
   if (auto r = readFields(*it, "snooker_marks.",
                           {{"baulk_line", &m.baulk_line, &kPositive},

@@ -39,9 +39,9 @@ struct TableSpec {
   double cushion_width = 0.05;     ///< nose to the back of the cushion rubber, m
   double rail_width = 0.10;        ///< wooden rail beyond the cushion, m
   double slate_thickness = 0.025;  ///< m
-  bool pockets = true;  ///< false: a carom table, four whole cushions and no pocket
-  PocketSpec corner;    ///< unused without pockets
-  PocketSpec side;      ///< unused without pockets
+  bool pockets = true;             ///< false: a carom table, four whole cushions and no pocket
+  PocketSpec corner;               ///< unused without pockets
+  PocketSpec side;                 ///< unused without pockets
   std::optional<SnookerMarks> snooker_marks;  ///< a snooker table's baulk line, D and spots
   PhysicsParams params;
   ContactModels models;                  ///< the contact model of each pair (`models` in the spec)

@@ -44,7 +44,7 @@ Match::Match(std::string id, std::string name, std::shared_ptr<ShotRunner> runne
       rack_seed_(rack_seed),
       rack_generator_(generator),
       settings_(options.settings) {
-  if (auto runner = runnerFor(settings_.game)) runner_ = *runner;
+  if (auto own = runnerFor(settings_.game)) runner_ = *own;
   balls_ = layout(layouts_++, settings_.game);
 }
 
@@ -68,7 +68,7 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
       // Past every revision published before the restart, so readers take the new states.
       revision_(snapshot.revision + 1),
       settings_(snapshot.settings) {
-  if (auto runner = runnerFor(settings_.game)) runner_ = *runner;
+  if (auto own = runnerFor(settings_.game)) runner_ = *own;
   for (Seat& s : seats_) {
     if (s.taken()) s.away_since = now;
   }
@@ -112,9 +112,9 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
     auto runner = runnerFor(settings->game);
     if (!runner) {
       s = Seat{};
-      return JoinAnswer::refuse(JoinOutcome::NotAllowed,
-                                std::string("this server cannot play ") +
-                                    rules::toString(settings->game) + ": " + runner.error());
+      return JoinAnswer::refuse(JoinOutcome::NotAllowed, std::string("this server cannot play ") +
+                                                             rules::toString(settings->game) +
+                                                             ": " + runner.error());
     }
     runner_ = *runner;
     settings_ = *settings;

@@ -159,9 +159,7 @@ class Match {
   /// Game, race, breaks and shot clock of this match.
   const protocol::MatchSettings& settings() const { return settings_; }
   /// The rule set this match is judged by.
-  rules::GameRules rules() const {
-    return {settings_.game, options_.rules, {settings_.points}};
-  }
+  rules::GameRules rules() const { return {settings_.game, options_.rules, {settings_.points}}; }
   /// Increases with every change of the match itself (state, seats, presence), each stored and
   /// published; spectators coming and going are not changes of the match (see spectators()).
   std::uint64_t revision() const { return revision_; }

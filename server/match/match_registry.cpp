@@ -45,7 +45,7 @@ Match* MatchRegistry::open(std::string name, std::optional<std::uint64_t> rack_s
   if (name.empty()) name = "Table " + std::to_string(opened_);
   const std::string id = server_id_ + "-" + std::to_string(opened_);
   matches_.push_back(std::make_unique<Match>(id, std::move(name), runner_, options_.match,
-                                             rack_seed              ? *rack_seed
+                                             rack_seed            ? *rack_seed
                                              : options_.rack_seed ? options_.rack_seed + opened_
                                                                   : random_.next(),
                                              generator));

@@ -47,8 +47,8 @@ Audit auditMatch(MatchStore& store, const std::string& id, const game::LoadedTab
       if (stored.record.command.seq == 0) {
         const server::ShotRecord& r = stored.record;
         const rules::Shot shot{r.before, r.intent, {}, r.after, true};
-        const auto verdict =
-            rules::judgeShot({match->settings.game, rules, {match->settings.points}}, r.state, shot, kit.context);
+        const auto verdict = rules::judgeShot(
+            {match->settings.game, rules, {match->settings.points}}, r.state, shot, kit.context);
         if (!verdict || verdictJson(*verdict) != verdictJson(r.verdict)) {
           audit.problems.push_back("a shot clock expiry after shot " +
                                    std::to_string(r.shot_number) + " re-judges otherwise");

@@ -94,19 +94,19 @@ std::array<int, 2> pairAt(const Json& j, const char* key) {
 
 Json gameOf(const rules::GameState& s) {
   Json out = {{"phase", num(s.phase)},
-          {"shooter", s.shooter},
-          {"breaker", s.breaker},
-          {"groups", Json::array({num(s.groups[0]), num(s.groups[1])})},
-          {"ball_in_hand", num(s.ball_in_hand)},
-          {"options", enums(s.options)},
-          {"dry_turns", s.dry_turns},
-          {"winner", s.winner},
-          {"end", num(s.end)},
-          {"fouls_in_row", Json::array({s.fouls_in_row[0], s.fouls_in_row[1]})},
-          {"push_out", s.push_out}};
+              {"shooter", s.shooter},
+              {"breaker", s.breaker},
+              {"groups", Json::array({num(s.groups[0]), num(s.groups[1])})},
+              {"ball_in_hand", num(s.ball_in_hand)},
+              {"options", enums(s.options)},
+              {"dry_turns", s.dry_turns},
+              {"winner", s.winner},
+              {"end", num(s.end)},
+              {"fouls_in_row", Json::array({s.fouls_in_row[0], s.fouls_in_row[1]})},
+              {"push_out", s.push_out}};
   // Three-cushion's score, written where a game has one (a pool rack's record is as before).
-  const bool scored = s.points != std::array<int, 2>{0, 0} ||
-                      s.innings != std::array<int, 2>{0, 0} || s.run != 0;
+  const bool scored =
+      s.points != std::array<int, 2>{0, 0} || s.innings != std::array<int, 2>{0, 0} || s.run != 0;
   if (scored) {
     out["points"] = pair(s.points);
     out["innings"] = pair(s.innings);

@@ -14,8 +14,8 @@
 
 #include "bench_run.h"
 #include "client/bot/ai/bot_level.h"
-#include "client/bot/ai/carom_search.h"
 #include "client/bot/ai/break_shot.h"
+#include "client/bot/ai/carom_search.h"
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/shot_planner.h"
 #include "client/bot/ai/shot_verifier.h"

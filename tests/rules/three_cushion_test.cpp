@@ -29,7 +29,8 @@ physics::Ball caromBall(int id, double x, double y) {
 
 // The balls apart in mid-table: white, yellow, red.
 std::vector<physics::Ball> caromSpread() {
-  return {caromBall(kCaromWhite, -0.5, 0.2), caromBall(kCaromYellow, 0.3, -0.3), caromBall(kCaromRed, 0.6, 0.4)};
+  return {caromBall(kCaromWhite, -0.5, 0.2), caromBall(kCaromYellow, 0.3, -0.3),
+          caromBall(kCaromRed, 0.6, 0.4)};
 }
 
 // Play after the opening: seat 0 broke (the white is its ball), `shooter` at the table.
@@ -43,7 +44,8 @@ GameState caromInPlay(int shooter) {
 
 const ThreeCushionConfig kToFive{5};
 
-Verdict caromJudged(const GameState& state, const Shot& shot, const ThreeCushionConfig& c = kToFive) {
+Verdict caromJudged(const GameState& state, const Shot& shot,
+                    const ThreeCushionConfig& c = kToFive) {
   auto v = judgeThreeCushion(state, shot, caromTable(), c);
   EXPECT_TRUE(v) << v.error();
   return v ? *v : Verdict{};

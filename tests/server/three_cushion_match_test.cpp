@@ -49,8 +49,7 @@ protocol::ShotRequest atTheRed(const Match& m, int seat, std::uint32_t seq) {
 TEST(ThreeCushionMatch, TheOpenersChoiceMovesTheMatchOntoTheCaromTable) {
   Match m("srv-1", "Table 1", runner(), withTables(), 42);
   EXPECT_EQ(m.table().spec.name, "wpa-9ft");
-  ASSERT_TRUE(
-      m.takeSeat(0, "Ada", "a", kToken0, publicKeyOf("a"), threeCushion(3)).accepted());
+  ASSERT_TRUE(m.takeSeat(0, "Ada", "a", kToken0, publicKeyOf("a"), threeCushion(3)).accepted());
   ASSERT_TRUE(m.takeSeat(1, "Bob", "b", kToken1, publicKeyOf("b")).accepted());
   EXPECT_EQ(m.table().spec.name, "carom-match");
   EXPECT_FALSE(m.table().spec.pockets);
@@ -64,8 +63,7 @@ TEST(ThreeCushionMatch, TheOpenersChoiceMovesTheMatchOntoTheCaromTable) {
 
 TEST(ThreeCushionMatch, EachPlayerStrikesTheirOwnBall) {
   Match m("srv-1", "Table 1", runner(), withTables(), 42);
-  ASSERT_TRUE(
-      m.takeSeat(0, "Ada", "a", kToken0, publicKeyOf("a"), threeCushion(3)).accepted());
+  ASSERT_TRUE(m.takeSeat(0, "Ada", "a", kToken0, publicKeyOf("a"), threeCushion(3)).accepted());
   ASSERT_TRUE(m.takeSeat(1, "Bob", "b", kToken1, publicKeyOf("b")).accepted());
   const int breaker = m.game().breaker;
   const int other = 1 - breaker;

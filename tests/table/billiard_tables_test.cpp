@@ -69,7 +69,7 @@ TEST(SnookerTable, TheMarksAndSpotsAreWhereTheRulesPutThem) {
   // In the D: on the baulk line's side of it and within the radius of the brown spot.
   EXPECT_TRUE(inTheD(*spots, spots->brown + Eigen::Vector2d(-0.29, 0.0)));
   EXPECT_TRUE(inTheD(*spots, spots->yellow));
-  EXPECT_FALSE(inTheD(*spots, spots->brown + Eigen::Vector2d(0.01, 0.0)));  // above the line
+  EXPECT_FALSE(inTheD(*spots, spots->brown + Eigen::Vector2d(0.01, 0.0)));    // above the line
   EXPECT_FALSE(inTheD(*spots, spots->brown + Eigen::Vector2d(-0.21, 0.21)));  // 297 mm away
   // A pool table has no snooker marks.
   EXPECT_FALSE(snookerSpotsFor(load("wpa-9ft")));

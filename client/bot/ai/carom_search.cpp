@@ -10,9 +10,9 @@
 namespace pool::bot {
 namespace {
 
-constexpr int kHeadings = 120;  // 3° apart round the ball
+constexpr int kHeadings = 120;                      // 3° apart round the ball
 constexpr double kSpeeds[] = {2.0, 2.8, 3.6, 4.5};  // m/s of the ball: round a match table
-constexpr double kSides[] = {-0.4, 0.0, 0.4};  // side, fraction of R (the miscue limit is 0.5)
+constexpr double kSides[] = {-0.4, 0.0, 0.4};       // side, fraction of R (the miscue limit is 0.5)
 
 struct Candidate {
   PlannedShot shot;
@@ -33,8 +33,8 @@ PlannedShot caromStroke(int ball, double yaw, double speed, double side) {
 
 }  // namespace
 
-PlannedShot planCarom(ShotVerifier& verifier, const std::vector<physics::Ball>& balls, const rules::GameState& state,
-                      const CaromSearchOptions& options) {
+PlannedShot planCarom(ShotVerifier& verifier, const std::vector<physics::Ball>& balls,
+                      const rules::GameState& state, const CaromSearchOptions& options) {
   const int own = rules::caromBallOf(state, state.shooter);
   const int budget_end = verifier.runs() + options.max_runs;
   std::vector<Candidate> scoring;
@@ -94,10 +94,9 @@ PlannedShot planCarom(ShotVerifier& verifier, const std::vector<physics::Ball>& 
       scoring[i].score = static_cast<double>(made) / options.samples;
     }
   }
-  const auto best = std::max_element(scoring.begin(), scoring.end(),
-                                     [](const Candidate& a, const Candidate& b) {
-                                       return a.score < b.score;
-                                     });
+  const auto best =
+      std::max_element(scoring.begin(), scoring.end(),
+                       [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
   PlannedShot chosen = best->shot;
   chosen.value = best->score;
   chosen.success = best->score;
