@@ -15,6 +15,7 @@
 #include "net/server_transport.h"
 #include "protocol/protocol_version.h"
 #include "protocol/server_signature.h"
+#include "rules/game_rules.h"
 #include "server/admin/admin_cli.h"
 #include "server/admin/admin_listener.h"
 #include "server/admin_desk.h"
@@ -194,7 +195,11 @@ int replayMatch(const pool::server::ServerConfig& config, pool::store::MatchStor
     spdlog::error("--replay {}: no such match in the database", config.replay);
     return 1;
   }
-  auto kit = pool::game::loadSharedTable(store.tableOf(config.replay));
+  // A pool match replays on the table it was played on; a game with a table of its own
+  // (three-cushion) moves onto it when its players sit down, the free tables beside it staying
+  // this server's pool tables.
+  auto kit = pool::game::loadSharedTable(
+      pool::rules::isPool(stored->settings.game) ? store.tableOf(config.replay) : config.table);
   if (!kit) {
     spdlog::error("--replay {}: {}", config.replay, kit.error());
     return 1;

@@ -330,6 +330,7 @@ const PlannedShot& BotPlayer::planFor(const client::MatchView& view) {
   if (!plan_ || plan_revision_ != view.revision) {
     // The game decides what is legal: the view's rules follow the match's settings.
     tables_[planner_table_]->rules.game = view.settings.game;
+    tables_[planner_table_]->rules.three_cushion.points_to = view.settings.points;
     plan_ = planner_->plan(view.balls, client::gameStateOf(view));
     plan_revision_ = view.revision;
   }

@@ -68,7 +68,12 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
       // Past every revision published before the restart, so readers take the new states.
       revision_(snapshot.revision + 1),
       settings_(snapshot.settings) {
-  if (auto own = runnerFor(settings_.game)) runner_ = *own;
+  if (auto own = runnerFor(settings_.game)) {
+    runner_ = *own;
+  } else if (!closed_) {
+    // Its game's table cannot load here: the match is not resumed on another table.
+    close("closed: its table cannot load: " + own.error());
+  }
   for (Seat& s : seats_) {
     if (s.taken()) s.away_since = now;
   }

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "game/loaded_table.h"
+#include "rules/game_rules.h"
 #include "server/store/match_store.h"
 
 namespace pool::sim {
@@ -18,6 +19,8 @@ Result<scenario::Scenario> storedShotScenario(const std::string& db, const std::
   try {
     const std::string table = (*store)->tableOf(match);
     if (table.empty()) return Out::fail("--match " + match + ": no such match in " + db);
+    const auto stored_match = (*store)->match(match);
+    const rules::Game game = stored_match ? stored_match->settings.game : rules::Game::EightBall;
     for (const auto& stored : (*store)->shots(match)) {
       const server::ShotRecord& r = stored.record;
       if (!r.shoots || r.shot_number != shot) continue;
@@ -30,6 +33,8 @@ Result<scenario::Scenario> storedShotScenario(const std::string& db, const std::
         if (physics::onTable(b.state)) out.balls.push_back(b);
       }
       out.shot = r.command.cue;
+      // The ball the server struck: the cue ball, or in three-cushion the shooter's own.
+      out.shot.ball = rules::cueBallFor({game, {}, {}}, r.state);
       return Out::ok(std::move(out));
     }
   } catch (const store::StoreError& e) {

@@ -124,6 +124,23 @@ inline protocol::ShotRequest anyLegalShot(const pool_MatchState& state, const Se
       state.ball_in_hand != pool_IN_HAND_NONE || r.option == protocol::ShotOption::BallInHand;
   Eigen::Vector2d from(-0.9, 0.3);
   if (in_hand) {
+    // The first of a few places behind the head string that no ball covers (a break can leave a
+    // ball anywhere, the kitchen included: a covered place is refused as an illegal placement).
+    for (const Eigen::Vector2d& at : {Eigen::Vector2d(-0.9, 0.3), Eigen::Vector2d(-0.9, -0.3),
+                                      Eigen::Vector2d(-1.0, 0.0), Eigen::Vector2d(-0.75, 0.45),
+                                      Eigen::Vector2d(-0.75, -0.45), Eigen::Vector2d(-1.1, 0.4)}) {
+      bool clear = true;
+      for (std::uint32_t i = 0; i < state.balls._length; ++i) {
+        const auto& b = state.balls._buffer[i];
+        const bool on_table = b.state != pool_MOTION_POCKETED && b.state != pool_MOTION_OFF_TABLE;
+        if (b.id != 0 && on_table && (Eigen::Vector2d(b.pos.x, b.pos.y) - at).norm() < 0.07)
+          clear = false;
+      }
+      if (clear) {
+        from = at;
+        break;
+      }
+    }
     r.cue_ball_at = from;
   } else {
     for (std::uint32_t i = 0; i < state.balls._length; ++i) {
