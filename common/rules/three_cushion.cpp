@@ -6,16 +6,12 @@
 #include <array>
 
 #include "rules/log_check.h"
+#include "rules/verdict_steps.h"
 
 namespace pool::rules {
 namespace {
 
 using physics::EventType;
-
-bool holds(const std::vector<physics::Ball>& balls, int id) {
-  return std::any_of(balls.begin(), balls.end(),
-                     [id](const physics::Ball& b) { return b.id == id && onTable(b.state); });
-}
 
 /// Where a ball that left the table goes back (UMB: the red on the top spot, the striker's ball on
 /// the bottom spot, the opponent's on the centre spot; a spot taken sends it to the spot of the
@@ -111,7 +107,7 @@ Result<Verdict> judgeThreeCushion(const GameState& state, const Shot& shot,
     }
   }
   for (int id : v.off_table) {
-    if (holds(shot.before, id) && !holds(shot.after, id))
+    if (detail::ballOnTable(id, shot.before) && !detail::ballOnTable(id, shot.after))
       v.respots.push_back({id, caromSpot(id, cue, shot.after, v.respots, table)});
   }
 
