@@ -79,7 +79,8 @@ void addClientFlags(CLI::App& app, ClientConfig& c) {
   app.add_option("--capture", c.window.capture, "write the window's last frame to this PNG");
   app.add_flag("--log-frames", c.window.log_frames,
                "with --json in a window: a line for every frame drawn (camera, cue ball, mouse)");
-  app.add_option("--table", c.window.table, "table spec the window draws");
+  app.add_option("--table", c.window.table,
+                 "table spec the window draws (and the rack, aim and top screenshot scenes)");
   app.add_option("--width", c.window.width, "window width")->check(CLI::Range(320, 8192));
   app.add_option("--height", c.window.height, "window height")->check(CLI::Range(240, 8192));
   app.add_option("--screenshot", c.screenshot.path,
@@ -103,10 +104,12 @@ void addClientFlags(CLI::App& app, ClientConfig& c) {
   app.add_option("--camera-distance", aim.camera_distance,
                  "--scene aim: the aiming view this far from the cue ball, m")
       ->check(CLI::PositiveNumber);
-  app.add_option("--cue-at", aim.cue_at, "--scene aim: the cue ball's x y on the table, m")
+  app.add_option("--cue-at", aim.cue_at,
+                 "--scene aim, rack or top: the cue ball's x y on the table, m")
       ->expected(2);
   app.add_option("--balls", aim.balls,
-                 "--scene aim: ID X Y of each object ball (m), instead of the rack")
+                 "--scene aim, rack or top: ID X Y of each object ball (m), instead of the "
+                 "scene's")
       ->expected(3, 45);
   app.add_flag("--hud", aim.hud,
                "--scene aim: drawn with the window's HUD as a player sees it, the view framed");
@@ -131,6 +134,7 @@ void addClientFlags(CLI::App& app, ClientConfig& c) {
 void completeOptions(ClientConfig& c) {
   c.window.keep_identity = !c.fresh_identity;
   c.screenshot.render.textures = !c.no_textures;
+  c.screenshot.table = c.window.table;
   if (c.window.quality == "light") {
     c.screenshot.render = withQuality(c.screenshot.render, pool::render::Quality::Light);
   }

@@ -43,6 +43,7 @@ protocol::SeatView seatViewOf(const Match& match, int seat) {
   out.points = match.game().points[i];
   out.innings = match.game().innings[i];
   out.high_run = match.game().high_run[i];
+  out.misses = match.game().misses[i];
   return out;
 }
 
@@ -95,6 +96,8 @@ protocol::MatchView matchViewOf(const Match& match, std::optional<double> now) {
   st.balls = match.balls();
   st.run = game.run;
   st.cue_ball = rules::cueBallFor(match.rules(), game);
+  st.ball_on = game.ball_on;
+  st.free_ball = game.free_ball;
   return st;
 }
 

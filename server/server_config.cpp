@@ -107,10 +107,10 @@ const std::vector<Setting>& settings() {
       setting("db", &C::db,
               "SQLite file keeping every match (default $XDG_DATA_HOME/pool/pool.db)"),
       setting("game", &C::game,
-              "game of the tables this server opens: 8, 9, 10 or three-cushion (on its own "
-              "table, carom-match)"),
+              "game of the tables this server opens: 8, 9, 10, three-cushion or snooker (each of "
+              "the last two on its own table, carom-match and snooker-12ft)"),
       setting("points", &C::points, "three-cushion: points that win a game (1-100, default 5)"),
-      setting("race", &C::race, "racks to win a match (1-15)"),
+      setting("race", &C::race, "racks (snooker: frames) to win a match (1-15)"),
       setting("rack-seed", &C::rack_seed,
               "non-zero: the racks of match n come from seed N + n, the same on every run (0: "
               "random)"),
@@ -177,7 +177,7 @@ Result<protocol::MatchSettings> matchSettingsOf(const ServerConfig& c) {
   using R = Result<protocol::MatchSettings>;
   protocol::MatchSettings s;
   const auto game = rules::gameOfName(c.game);
-  if (!game) return R::fail("bad_game", "game: must be 8, 9, 10 or three-cushion");
+  if (!game) return R::fail("bad_game", "game: must be 8, 9, 10, three-cushion or snooker");
   s.game = *game;
   s.race_to = c.race;
   if (s.game == rules::Game::ThreeCushion) s.points = c.points;

@@ -33,7 +33,7 @@ struct ServerConfig {
   std::string replay;  ///< a stored match to play again for spectators (nothing is stored then)
   std::string admin_socket;  ///< the operator's Unix socket; empty: "<db>.sock"
   // Defaults of the tables this server opens (the first player at a table may choose others).
-  std::string game = "8";                 ///< 8, 9, 10 or three-cushion (a game's name or number)
+  std::string game = "8";  ///< 8, 9, 10, three-cushion or snooker (a game's name or number)
   int points = protocol::kDefaultPoints;  ///< three-cushion: points that win a game
   int race = 1;                           ///< racks to win a match
   std::uint64_t rack_seed = 0;            ///< non-zero: match n racks from seed rack_seed + n

@@ -13,7 +13,7 @@ namespace pool::app {
 
 /// The call that goes with a shot: a ball and a pocket, or a safety.
 struct ShotCall {
-  std::optional<int> ball;  ///< 1–15
+  std::optional<int> ball;  ///< 1–21
   std::string pocket;       ///< a pocket name (rules::pocketNames); with `ball`
   bool safety = false;      ///< a declared safety (no ball, no pocket)
   bool by_player = false;   ///< chosen by the player: the automatic call leaves it alone

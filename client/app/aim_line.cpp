@@ -81,8 +81,12 @@ ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
                   rules::Game game) {
   ShotCall call;
   if (state.phase == rules::Phase::Break || state.phase == rules::Phase::Over) return call;
-  // 9-ball needs no call; three-cushion has nothing to call and no safety to declare.
-  if (game == rules::Game::NineBall || game == rules::Game::ThreeCushion) return call;
+  // 9-ball needs no call; three-cushion has nothing to call and no safety to declare; snooker
+  // calls no pocket, and the colour (or free ball) the cue ball hits first is the one nominated.
+  if (game == rules::Game::NineBall || game == rules::Game::ThreeCushion ||
+      game == rules::Game::Snooker) {
+    return call;
+  }
   const auto legal = rules::firstBallsFor(rules::GameRules{game, {}, {}}, state, balls);
   const bool callable = aim.ball && aim.pocket >= 0 &&
                         std::find(legal.begin(), legal.end(), *aim.ball) != legal.end();

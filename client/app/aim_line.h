@@ -32,8 +32,9 @@ AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
                          int struck = physics::kCueBall);
 
 /// The call for `aim` in `state` of `game`: none on the break, none in 9-ball (it needs no
-/// call) or three-cushion; else the first ball touched and the pocket it heads for when that ball
-/// is the shooter's to hit first (rules::firstBallsFor); otherwise a safety.
+/// call), three-cushion or snooker (the colour hit first is the one nominated); else the first ball
+/// touched and the pocket it heads for when that ball is the shooter's to hit first
+/// (rules::firstBallsFor); otherwise a safety.
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
                   const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
                   rules::Game game);

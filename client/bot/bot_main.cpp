@@ -63,8 +63,9 @@ void addBotFlags(CLI::App& app, BotProgramConfig& c) {
                "think the full --think even past the shot clock (tests)");
   app.add_option("--concede-from-rack", c.bot.concede_from_rack,
                  "concede every rack from this one on, on the bot's first turn in it (tests)");
-  app.add_option("--game", c.game,
-                 "a table the bot opens: 8, 9, 10 or three-cushion (default: the server's)");
+  app.add_option(
+      "--game", c.game,
+      "a table the bot opens: 8, 9, 10, three-cushion or snooker (default: the server's)");
   app.add_option("--points", c.points, "with --game three-cushion: points that win a game (1-100)");
   app.add_option("--race", c.race, "with --game: racks to win (1-15)");
   app.add_option("--breaks", c.breaks, "with --game: alternate or winner");
@@ -86,7 +87,7 @@ pool::Result<std::optional<pool::protocol::MatchSettings>> tableSettings(
   const auto game = pool::rules::gameOfName(c.game);
   const auto breaks = pool::protocol::breakOrderOf(c.breaks);
   if (!breaks) return R::fail("bad_breaks", "--breaks: must be alternate or winner");
-  if (!game) return R::fail("bad_game", "--game: must be 8, 9, 10 or three-cushion");
+  if (!game) return R::fail("bad_game", "--game: must be 8, 9, 10, three-cushion or snooker");
   s.game = *game;
   if (s.game == pool::rules::Game::ThreeCushion) s.points = c.points;
   s.race_to = c.race;

@@ -11,9 +11,10 @@ protocol::ShotRequest requestOf(const PlannedShot& shot) {
     request.cue.speed = 1.0;
     request.cue.speed_is_ball = true;
   }
-  request.called_ball = shot.called_ball;
-  request.called_pocket = shot.called_pocket;
-  request.safety = shot.safety;
+  const rules::Intent intent = intentOf(shot);
+  request.called_ball = intent.ball;
+  request.called_pocket = intent.pocket;
+  request.safety = intent.safety;
   request.cue_ball_at = shot.cue_ball_at;
   request.option = shot.choice ? protocol::optionOf(*shot.choice) : protocol::ShotOption::None;
   return request;

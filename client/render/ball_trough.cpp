@@ -8,20 +8,24 @@ namespace pool::render {
 
 namespace {
 
-constexpr int kSlots = 16;
+constexpr int kPoolSlots = 16;  // the cue ball and 1-15
 constexpr double kGap = 0.004;  ///< between the rail's outer face and a ball, m
 
 }  // namespace
 
-BallTrough::BallTrough(const pool::table::TableGeometry& geometry, double ball_radius)
-    : radius_(ball_radius) {
+int troughSlotsFor(BallSet set) {
+  return std::max(kPoolSlots, maxBallIdOf(set) + 1);
+}
+
+BallTrough::BallTrough(const pool::table::TableGeometry& geometry, double ball_radius, int slots)
+    : radius_(ball_radius), slots_(slots) {
   // The channel hangs in front of the near rail's outer face, its balls just under the slate.
   double near_y = std::numeric_limits<double>::max();
   for (const auto& part : geometry.parts) {
     for (const auto& v : part.vertices) near_y = std::min(near_y, v.y());
   }
   if (geometry.parts.empty()) near_y = -geometry.width * 0.5;
-  const double half_row = kSlots * ball_radius;
+  const double half_row = slots_ * ball_radius;
   first_ = Eigen::Vector3d(half_row - ball_radius, near_y - ball_radius - kGap, -ball_radius);
 }
 
@@ -54,7 +58,7 @@ MeshData BallTrough::mesh() const {
   const glm::vec3 first(static_cast<float>(first_.x()), static_cast<float>(first_.y()),
                         static_cast<float>(first_.z()));
   const float x_foot = first.x + r + wall;
-  const float x_head = first.x - (2.0f * kSlots - 1.0f) * r - wall;
+  const float x_head = first.x - (2.0f * static_cast<float>(slots_) - 1.0f) * r - wall;
   const float y_back = first.y + r + static_cast<float>(kGap);
   const float y_front = first.y - r;
   const float z_floor = first.z - r;

@@ -11,10 +11,15 @@
 
 namespace pool::render {
 
+/// The slots a trough needs for `set`: one for each of its balls, the cue ball included (a pool
+/// set's 16 at least: a carom table keeps the pool table's channel).
+int troughSlotsFor(BallSet set);
+
 /// The channel's layout and its fill. Pure (no GL).
 class BallTrough {
  public:
-  BallTrough(const pool::table::TableGeometry& geometry, double ball_radius);
+  /// A channel of `slots` balls (a pool set's 16 unless told).
+  BallTrough(const pool::table::TableGeometry& geometry, double ball_radius, int slots = 16);
 
   /// Follows a new set of balls: newly pocketed ones join the end of the row (several at once:
   /// by id), balls back on the table leave it.
@@ -25,9 +30,12 @@ class BallTrough {
   std::optional<int> slotOf(int id) const;
   /// The channel: floor, front lip and end caps.
   MeshData mesh() const;
+  /// How many balls it holds.
+  int slots() const { return slots_; }
 
  private:
   double radius_;
+  int slots_;
   Eigen::Vector3d first_;  ///< centre of slot 0
   std::vector<int> order_;
 };

@@ -4,6 +4,8 @@
 #include <array>
 
 #include "client/render/shaders.h"
+#include "physics/ball.h"
+#include "table/snooker_spots.h"
 
 namespace pool::render {
 
@@ -27,6 +29,22 @@ constexpr std::array<glm::vec3, 8> kSolids{{
     {0.03f, 0.03f, 0.03f},  // 8 black
 }};
 
+/// Snooker's colours 16–21 (the reds 1–15 share kSnookerRed), chosen to read apart under the
+/// lamps: the reds a deep red, the pink light and bluish beside them, the brown dark and
+/// orange-tinged between the reds and the black, the green a third darker than the cloth.
+constexpr glm::vec3 kSnookerRed(0.68f, 0.03f, 0.035f);
+constexpr std::array<glm::vec3, 6> kSnookerColours{{
+    {0.96f, 0.76f, 0.04f},     // 16 yellow
+    {0.01f, 0.24f, 0.10f},     // 17 green
+    {0.32f, 0.16f, 0.05f},     // 18 brown
+    {0.03f, 0.12f, 0.72f},     // 19 blue
+    {0.98f, 0.45f, 0.60f},     // 20 pink
+    {0.025f, 0.025f, 0.025f},  // 21 black
+}};
+constexpr int kSnookerReds = 15;
+static_assert(kSnookerReds + static_cast<int>(kSnookerColours.size()) == physics::kMaxBallId,
+              "a snooker set's black is the highest ball id the physics knows");
+
 bool startsWith(const std::string& s, const char* prefix) {
   return s.rfind(prefix, 0) == 0;
 }
@@ -34,10 +52,30 @@ bool startsWith(const std::string& s, const char* prefix) {
 }  // namespace
 
 BallSet ballSetOf(const table::TableSpec& spec) {
+  if (table::snookerSpotsFor(spec)) return BallSet::Snooker;
   return spec.pockets ? BallSet::Pool : BallSet::Carom;
 }
 
+int maxBallIdOf(BallSet set) {
+  switch (set) {
+    case BallSet::Carom:
+      return 2;
+    case BallSet::Snooker:
+      return kSnookerReds + static_cast<int>(kSnookerColours.size());
+    case BallSet::Pool:
+      break;
+  }
+  return 15;
+}
+
 BallLook ballLook(int id, BallSet set) {
+  if (set == BallSet::Snooker) {
+    if (id >= 1 && id <= kSnookerReds) return {kSnookerRed, false, 0};
+    if (id > kSnookerReds && id <= maxBallIdOf(set)) {
+      return {kSnookerColours[static_cast<std::size_t>(id - kSnookerReds - 1)], false, 0};
+    }
+    return {kWhite, false, 0};
+  }
   if (set == BallSet::Carom) {
     // UMB: a white, a yellow (or a spotted white) and a red, unnumbered.
     if (id == 1) return {{0.93f, 0.72f, 0.05f}, false, 0};
@@ -56,6 +94,10 @@ PartLook partLook(const std::string& part_name) {
   }
   if (startsWith(part_name, "rail_") || part_name == "trough") return {kWood, shaders::kWood};
   return {kDark, shaders::kPlain};
+}
+
+glm::vec3 chalkColour() {
+  return {0.80f, 0.82f, 0.76f};
 }
 
 glm::vec3 woodColour() {

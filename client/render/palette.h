@@ -16,14 +16,20 @@ struct BallLook {
   int number = 0;  ///< the number printed on it (0: none)
 };
 
-/// The balls a table is played with: a pool set (the cue ball and 1-15, numbered) or a carom
-/// set (0 the white, 1 the yellow, 2 the red, no numbers).
-enum class BallSet { Pool, Carom };
+/// The balls a table is played with: a pool set (the cue ball and 1-15, numbered), a carom set
+/// (0 the white, 1 the yellow, 2 the red, no numbers) or a snooker set (0 the cue ball, 1–15 the
+/// reds, 16 yellow, 17 green, 18 brown, 19 blue, 20 pink, 21 black, no numbers).
+enum class BallSet { Pool, Carom, Snooker };
 
-/// The set of a table: carom balls on a table without pockets, else pool balls.
+/// The set of a table: snooker balls on a table with snooker marks, carom balls on a table
+/// without pockets, else pool balls.
 BallSet ballSetOf(const table::TableSpec& spec);
 
-/// The look of ball `id` of `set` (pool: 0 the cue ball, 1–15 the object balls).
+/// The highest ball id of `set` (pool 15, carom 2, snooker 21); 0 is the cue ball in each.
+int maxBallIdOf(BallSet set);
+
+/// The look of ball `id` of `set` (pool: 0 the cue ball, 1–15 the object balls); an id the set
+/// has not is drawn white.
 BallLook ballLook(int id, BallSet set = BallSet::Pool);
 
 /// How a table mesh part looks: its colour and the scene shader's material (shaders::Material).
@@ -39,6 +45,9 @@ PartLook partLook(const std::string& part_name);
 /// The look of a part of the hall (hall_room.h) or of a table's dressing (table_dressing.h) by
 /// its name; an unknown name is drawn a neutral grey.
 PartLook hallPartLook(const std::string& part_name);
+
+/// The chalk of a snooker table's baulk line, D and spots (chalk_marks.h), mixed into the felt.
+glm::vec3 chalkColour();
 
 /// The wood of the rails and cabinet.
 glm::vec3 woodColour();

@@ -1,6 +1,7 @@
-// Scene drawing: felt and wooden table parts, diamonds, pocket holes, the balls' shadows,
-// numbered balls turned by their orientation, the cue, the lamps and the trough of pocketed
-// balls, then the ghost ball's outline and the overlay lines on top.
+// Scene drawing: felt and wooden table parts (a snooker table's slate with its chalk marks),
+// diamonds, pocket holes, the balls' shadows, numbered balls turned by their orientation, the cue,
+// the lamps and the trough of pocketed balls, then the ghost ball's outline and the overlay lines
+// on top.
 #include "client/render/renderer.h"
 
 #include <glad/gl.h>
@@ -90,7 +91,7 @@ CueObstacles cueObstaclesOf(const Scene& scene, glm::vec3 cue_ball) {
 
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
-      trough_(scene.geometry, scene.ball_radius),
+      trough_(scene.geometry, scene.ball_radius, troughSlotsFor(scene.ball_set)),
       sphere_(unitSphere(16, 24)),
       shade_(lampShade()),
       bulb_(unitSphere(8, 12)),
@@ -99,8 +100,16 @@ Renderer::Renderer(const Scene& scene)
       cue_model_(cueMeshOrThrow()) {
   for (const auto& part : scene_.geometry.parts) {
     if (part.triangles.empty() || dressedOver(part.name)) continue;
-    const PartLook look = partLook(part.name);
+    PartLook look = partLook(part.name);
+    // A snooker table's slate carries the chalk of its baulk line, D and spots.
+    if (scene_.snooker_marks && look.material == shaders::kFelt && part.name == "slate") {
+      look.material = shaders::kMarkedFelt;
+    }
     parts_.push_back({std::make_unique<GpuMesh>(meshFromPart(part)), look.colour, look.material});
+  }
+  if (scene_.snooker_marks) {
+    shading_.setChalkMarks(
+        {*scene_.snooker_marks, static_cast<float>(scene_.geometry.width) * 0.5f});
   }
   parts_.push_back({std::make_unique<GpuMesh>(trough_.mesh()), woodColour(), shaders::kWood});
   for (const NamedMesh& part :

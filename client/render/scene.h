@@ -3,12 +3,14 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "client/render/palette.h"
 #include "core/result.h"
 #include "game/loaded_table.h"
+#include "table/snooker_spots.h"
 #include "table/table_geometry.h"
 
 namespace pool::render {
@@ -28,6 +30,8 @@ struct Scene {
   double ball_radius = 0.0;
   double cushion_width = 0.05;       ///< nose to the back of the cushion (the spec's), m
   BallSet ball_set = BallSet::Pool;  ///< how the balls look (a carom table's: white, yellow, red)
+  /// A snooker table's baulk line, D and spots, chalked on the felt; none on other tables.
+  std::optional<pool::table::SnookerSpots> snooker_marks;
   std::vector<SceneBall> balls;
 };
 
@@ -42,9 +46,18 @@ Scene tableScene(const game::LoadedTable& table);
 Result<Scene> tableScene(const std::string& table);
 
 /// A freshly racked 8-ball table (rack seed 0) with the cue ball on the head spot, every ball
-/// turned to show its number to the overview camera.
+/// turned to show its number to the overview camera. A snooker table gets a snooker frame's
+/// opening instead: the colours on their spots, the fifteen reds packed in a triangle behind the
+/// pink (its apex a millimetre clear of the pink), the cue ball in the D.
 Scene rackScene(const game::LoadedTable& table);
 /// As above, of the table named `table`.
 Result<Scene> rackScene(const std::string& table = "wpa-9ft");
+
+/// Puts the cue ball (the scene's first ball) at `cue_at` (x, y, m; empty: where it is) and,
+/// when `balls` holds an ID X Y triple for each object ball, those balls in place of the scene's
+/// others. Fails, saying why, on a list that is not triples, an id not of the scene's ball set
+/// (1 to maxBallIdOf) or a ball off the playing surface of `spec`.
+Result<Scene> withBalls(Scene scene, const pool::table::TableSpec& spec,
+                        const std::vector<double>& cue_at, const std::vector<double>& balls);
 
 }  // namespace pool::render

@@ -4,6 +4,7 @@
 #include <glad/gl.h>
 
 #include <cmath>
+#include <string>
 
 #include "client/render/lamps.h"
 #include "client/render/noise_texture.h"
@@ -91,6 +92,24 @@ void SceneShading::drawFaded(const GpuMesh& mesh, const glm::mat4& model, glm::v
   p.set("uAlpha", alpha);
   draw(mesh, model, colour, material, 0.0f);
   p.set("uAlpha", 1.0f);
+}
+
+void SceneShading::setChalkMarks(const ChalkMarks& marks) const {
+  const ShaderProgram& p = *programs_[shaders::kMarkedFelt];
+  p.use();
+  const auto at = [](const Eigen::Vector2d& v) {
+    return glm::vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
+  };
+  const table::SnookerSpots& s = marks.spots;
+  p.set("uChalk", chalkColour());
+  p.set("uBaulk", glm::vec4(static_cast<float>(s.baulk_x), static_cast<float>(s.d_radius),
+                            marks.bed_half_width, ChalkMarks::kStrength));
+  const Eigen::Vector2d* spots[] = {&s.yellow, &s.green, &s.brown, &s.blue, &s.pink, &s.black};
+  for (int i = 0; i < 6; ++i) {
+    const std::string name = "uSpots[" + std::to_string(i) + "]";
+    p.set(name.c_str(), at(*spots[i]));
+  }
+  p.set("uMarkSize", glm::vec2(0.5f * ChalkMarks::kLineWidth, ChalkMarks::kSpotRadius));
 }
 
 void SceneShading::drawBall(const GpuMesh& sphere, const glm::mat4& model,

@@ -7,7 +7,9 @@
 #include <memory>
 #include <vector>
 
+#include "client/render/chalk_marks.h"
 #include "client/render/mesh.h"
+#include "client/render/palette.h"
 #include "client/render/shader.h"
 #include "client/render/texture.h"
 
@@ -47,6 +49,8 @@ class SceneShading {
   /// Draws `mesh` with opacity `alpha` (blending is the caller's to enable).
   void drawFaded(const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, int material,
                  float alpha) const;
+  /// Sets the marks the marked felt draws (kept until set again).
+  void setChalkMarks(const ChalkMarks& marks) const;
   /// Draws a ball: `model` includes its orientation and radius; `look` its colour and number.
   void drawBall(const GpuMesh& sphere, const glm::mat4& model, const BallLook& look) const;
 

@@ -100,21 +100,26 @@ int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
   return renderScreenshot(options, scene, overviewCamera(scene.geometry, aspect), {}, before_frame);
 }
 
-Result<Scene> spreadScene(const std::string& table) {
-  auto scene = tableScene(table);
-  if (!scene) return scene;
-  const double r = scene->ball_radius;
+Scene spreadScene(const game::LoadedTable& table) {
+  Scene scene = tableScene(table);
+  const double r = scene.ball_radius;
   // Between and beside the lamps (over x = ±L/4), none straight under one; the last against the
   // +y cushion, a little toward the middle from the head lamp (it darkens the cushion).
-  const double against = scene->geometry.width / 2 - r;
+  const double against = scene.geometry.width / 2 - r;
   const double spots[][2] = {{0.0, 0.0},     {-0.3, 0.3}, {0.35, -0.3},
                              {-0.95, -0.35}, {1.0, 0.4},  {-0.45, against}};
   int id = 0;
   for (const auto& spot : spots) {
-    scene->balls.push_back({id, Eigen::Vector3d(spot[0], spot[1], r), numberTowardViewer()});
+    scene.balls.push_back({id, Eigen::Vector3d(spot[0], spot[1], r), numberTowardViewer()});
     id = id == 0 ? 2 : id + 2;
   }
   return scene;
+}
+
+Result<Scene> spreadScene(const std::string& table) {
+  auto loaded = game::loadTable(table);
+  if (!loaded) return Result<Scene>::fail(loaded.error());
+  return Result<Scene>::ok(spreadScene(*loaded));
 }
 
 int renderEightBallScreenshot(const ScreenshotOptions& options, const std::string& answer) {
@@ -146,10 +151,16 @@ int runScreenshot(const ScreenshotOptions& options) {
     std::cerr << "unknown scene '" << options.scene << "' (known: rack, top, aim, eightball)\n";
     return 2;
   }
-  auto scene = options.scene == "top" ? spreadScene() : rackScene();
-  if (!scene) {
-    std::cerr << "scene: " << scene.error() << '\n';
+  auto loaded = game::loadTable(options.table);
+  if (!loaded) {
+    std::cerr << "scene: " << loaded.error() << '\n';
     return 1;
+  }
+  auto scene = withBalls(options.scene == "top" ? spreadScene(*loaded) : rackScene(*loaded),
+                         loaded->spec, options.aim.cue_at, options.aim.balls);
+  if (!scene) {
+    std::cerr << scene.error() << '\n';
+    return 2;
   }
   if (options.scene == "top") {
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);

@@ -21,18 +21,19 @@ struct AimOptions {
   double power = 0.0;             ///< 0–1: the cue drawn back
   std::optional<double> camera_elevation_deg;  ///< the aiming view raised to this; default: eye
   std::optional<double> camera_distance;       ///< the aiming view this far from the cue ball, m
-  std::vector<double> cue_at;                  ///< x, y of the cue ball (m); empty: the head spot
-  /// ID X Y of each object ball (m), instead of the rack; empty: the rack.
+  std::vector<double> cue_at;                  ///< x, y of the cue ball (m); empty: the scene's
+  /// ID X Y of each object ball (m), instead of the scene's (rack, aim and top); empty: those.
   std::vector<double> balls;
   bool hud = false;  ///< drawn with the window's HUD as a player sees it (and the view framed)
 };
 
 /// What to render and where to write it.
 struct ScreenshotOptions {
-  std::string path;            ///< PNG file to write
-  std::string info_path;       ///< JSON sidecar (camera, image size, balls drawn); empty: none
-  int frames = 3;              ///< frames to render; the last one is written
-  std::string scene = "rack";  ///< rack, aim, top or eightball (ignored when spectating)
+  std::string path;               ///< PNG file to write
+  std::string info_path;          ///< JSON sidecar (camera, image size, balls drawn); empty: none
+  int frames = 3;                 ///< frames to render; the last one is written
+  std::string scene = "rack";     ///< rack, aim, top or eightball (ignored when spectating)
+  std::string table = "wpa-9ft";  ///< the table spec of the rack, aim and top scenes
   std::string question = "Will I win?";  ///< asked in the eightball scene
   std::uint64_t seed = 0;                ///< the Magic Eight Ball's seed
   AimOptions aim;                        ///< the aim scene's shot
@@ -65,13 +66,16 @@ int renderScreenshot(const ScreenshotOptions& options, const Scene& scene,
 
 /// A few balls spread over the table, apart from each other and from under the lamps (the top
 /// scene: their shadows fall clear of them), and one against the +y cushion near the head lamp.
+Scene spreadScene(const game::LoadedTable& table);
+/// As above, of the table named `table`.
 Result<Scene> spreadScene(const std::string& table = "wpa-9ft");
 
 /// The Magic Eight Ball room answering `answer`, from its default camera.
 int renderEightBallScreenshot(const ScreenshotOptions& options, const std::string& answer);
 
-/// The --screenshot mode without a server: the scene named in the options (rack, top or
-/// eightball; the aim scene needs the client's aiming model and is run by pool::ui).
+/// The --screenshot mode without a server: the scene named in the options (rack or top on
+/// options.table, with --cue-at and --balls; eightball; the aim scene needs the client's aiming
+/// model and is run by pool::ui).
 int runScreenshot(const ScreenshotOptions& options);
 
 }  // namespace pool::render

@@ -65,6 +65,10 @@ void ShaderProgram::set(const char* name, const glm::mat3& value) const {
   glUniformMatrix3fv(location(name), 1, GL_FALSE, glm::value_ptr(value));
 }
 
+void ShaderProgram::set(const char* name, const glm::vec2& value) const {
+  glUniform2fv(location(name), 1, glm::value_ptr(value));
+}
+
 void ShaderProgram::set(const char* name, const glm::vec3& value) const {
   glUniform3fv(location(name), 1, glm::value_ptr(value));
 }

@@ -19,6 +19,7 @@ class ShaderProgram {
   /// Uniform setters (the program must be in use).
   void set(const char* name, const glm::mat4& value) const;
   void set(const char* name, const glm::mat3& value) const;
+  void set(const char* name, const glm::vec2& value) const;
   void set(const char* name, const glm::vec3& value) const;
   void set(const char* name, const glm::vec4& value) const;
   void set(const char* name, float value) const;

@@ -1,6 +1,6 @@
 // GLSL 3.30 sources: the scene shader (world-space Blinn-Phong from two spotlights, procedural
-// felt and wood, numbered balls, the cue's varnished wood, the lamp shades) and the unlit
-// overlay-line shader.
+// felt and wood, a snooker table's chalk marks, numbered balls, the cue's varnished wood, the lamp
+// shades) and the unlit overlay-line shader.
 #pragma once
 
 #include <string>
@@ -23,7 +23,10 @@ enum Material : int {
   kRoomWood = 9,    ///< panelling and furniture: the table's grain
   kRoomPlain = 10,  ///< flat colour
   kLiner = 11,      ///< a pocket's leather, darker the deeper inside
-  kMaterials = 12
+  /// A snooker table's slate: the felt with the chalk of its baulk line, D and spots
+  /// (SceneShading::setChalkMarks), each mark antialiased by the share of a pixel it covers.
+  kMarkedFelt = 12,
+  kMaterials = 13
 };
 
 /// Vertex stage: world position and normal, plus the object-space normal and position (ball
@@ -52,7 +55,9 @@ void main() {
 /// shader, so each material's program holds only its own work.
 /// Balls: solid colour, or white with a band |z| < 0.5 (stripes); a white circle with the number
 /// (atlas cell uBallCell) on the body's +x and -x sides. Felt and wood modulate brightness with a
-/// tiling noise texture, so their hue stays that of uColour. uLighting 0: albedo unlit. Lamp light
+/// tiling noise texture, so their hue stays that of uColour. The marked felt mixes uChalk into
+/// the felt by the share of the pixel's footprint a mark covers (a mark thinner than a pixel
+/// shows fainter, never broken). uLighting 0: albedo unlit. Lamp light
 /// falls off as (lamp height / distance)², so each lamp makes its own pool on the felt. uAlpha:
 /// the fragment's opacity (fading lamps).
 inline constexpr const char* kSceneFragment = R"(
@@ -78,6 +83,34 @@ uniform float uCosOuter;
 out vec4 fragColour;
 const vec3 kWhite = vec3(0.95, 0.95, 0.92);
 const float kCircleCos = 0.9;  // number circle: about 26 degrees around the axis
+#if MATERIAL == 1 || MATERIAL == 12
+vec3 feltAlbedo() {
+  if (uTextures == 0) return uColour;
+  float fibre = texture(uNoise, vWorldPos.xy * 6.0).r * 0.08;
+  float broad = texture(uNoise, vWorldPos.xy * 0.35).r * 0.06;
+  return uColour * (0.93 + fibre + broad);
+}
+#endif
+#if MATERIAL == 12
+uniform vec3 uChalk;
+uniform vec4 uBaulk;     // the baulk line's x, the D's radius, the bed's half width, chalk's share
+uniform vec2 uSpots[6];  // yellow, green, brown (the D's centre), blue, pink, black
+uniform vec2 uMarkSize;  // half a line's width, a spot's radius
+// The share of one pixel's footprint (across d) inside |d| < w: d across a line, m.
+float cover(float d, float w) {
+  float f = max(fwidth(d), 1e-5);
+  return clamp((min(d + 0.5 * f, w) - max(d - 0.5 * f, -w)) / f, 0.0, 1.0);
+}
+float chalk() {
+  vec2 p = vWorldPos.xy;
+  float line = cover(p.x - uBaulk.x, uMarkSize.x) * step(abs(p.y), uBaulk.z);
+  float arc = cover(length(p - uSpots[2]) - uBaulk.y, uMarkSize.x) * step(p.x, uBaulk.x);
+  float spot = 0.0;
+  for (int i = 0; i < 6; ++i) spot = max(spot, cover(length(p - uSpots[i]), uMarkSize.y));
+  // On the slate's top only, not down the faces of its pocket cuts.
+  return step(abs(vWorldPos.z), 1e-3) * max(line, max(arc, spot));
+}
+#endif
 vec3 albedo() {
 #if MATERIAL == 3
   vec3 n = normalize(vLocalNormal);
@@ -89,10 +122,9 @@ vec3 albedo() {
   float ink = texture(uNumbers, (cell + vec2(0.5 + 0.5 * uv.x, 0.5 - 0.5 * uv.y)) / 4.0).r;
   return mix(kWhite, vec3(0.04), ink);
 #elif MATERIAL == 1
-  if (uTextures == 0) return uColour;
-  float fibre = texture(uNoise, vWorldPos.xy * 6.0).r * 0.08;
-  float broad = texture(uNoise, vWorldPos.xy * 0.35).r * 0.06;
-  return uColour * (0.93 + fibre + broad);
+  return feltAlbedo();
+#elif MATERIAL == 12
+  return mix(feltAlbedo(), uChalk, uBaulk.w * chalk());
 #elif MATERIAL == 2 || MATERIAL == 9
   if (uTextures == 0) return uColour;
   float along = abs(vNormal.x) > abs(vNormal.y) ? vWorldPos.y : vWorldPos.x;
@@ -147,7 +179,7 @@ void main() {
   vec3 v = normalize(uEye - vWorldPos);
   bool inside = dot(n, v) < 0.0;
   if (inside) n = -n;
-#if MATERIAL >= 7
+#if MATERIAL >= 7 && MATERIAL <= 11
   fragColour = vec4(min(roomLit(base, n), vec3(1.0)), uAlpha);
   return;
 #endif

@@ -44,47 +44,19 @@ render::CueAim cueAimOf(const app::AimState& aim, const Eigen::Vector3d& cue_bal
       static_cast<float>(aim.stroke_back ? *aim.stroke_back / render::kMaxDrawBack : aim.power)};
 }
 
-namespace {
-
-/// The object balls of --balls (ID X Y triples) in place of the rack; false (said on stderr) when
-/// they are not triples of a ball number 1–15 on the slate.
-bool placeBalls(const std::vector<double>& triples, const game::LoadedTable& view,
-                render::Scene& scene) {
-  if (triples.empty()) return true;
-  if (triples.size() % 3 != 0) {
-    std::cerr << "--balls needs ID X Y for each ball\n";
-    return false;
-  }
-  const double r = view.radius();
-  scene.balls.resize(1);  // the cue ball stays
-  for (std::size_t i = 0; i < triples.size(); i += 3) {
-    const double id = triples[i], x = triples[i + 1], y = triples[i + 2];
-    if (id != std::floor(id) || id < 1 || id > 15 || std::abs(x) > view.spec.length / 2 - r ||
-        std::abs(y) > view.spec.width / 2 - r) {
-      std::cerr << "--balls: ball " << id << " at " << x << ", " << y
-                << " is not a ball 1-15 on the slate\n";
-      return false;
-    }
-    scene.balls.push_back(
-        {static_cast<int>(id), Eigen::Vector3d(x, y, r), render::numberTowardViewer(), false});
-  }
-  return true;
-}
-
-}  // namespace
-
 int runAimScreenshot(const render::ScreenshotOptions& options) {
-  auto view = game::loadTable("wpa-9ft");
+  auto view = game::loadTable(options.table);
   if (!view) {
     std::cerr << "scene: " << view.error() << '\n';
     return 1;
   }
-  render::Scene scene = render::rackScene(*view);
-  if (options.aim.cue_at.size() == 2) {
-    scene.balls.front().pos.head<2>() =
-        Eigen::Vector2d(options.aim.cue_at[0], options.aim.cue_at[1]);
+  auto placed_balls = render::withBalls(render::rackScene(*view), view->spec, options.aim.cue_at,
+                                        options.aim.balls);
+  if (!placed_balls) {
+    std::cerr << placed_balls.error() << '\n';
+    return 2;
   }
-  if (!placeBalls(options.aim.balls, *view, scene)) return 2;
+  render::Scene scene = std::move(*placed_balls);
   const Eigen::Vector3d cue = scene.balls.front().pos;
   const Eigen::Vector2d apex = view->context.spots.foot_spot - cue.head<2>();
   app::AimState aim;

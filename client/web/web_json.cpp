@@ -6,10 +6,12 @@
 #include <nlohmann/json.hpp>
 
 #include "client/app/spoken.h"
+#include "client/render/chalk_marks.h"
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/spectate/json_lines.h"
 #include "protocol/match_settings.h"
+#include "table/snooker_spots.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
 
@@ -80,6 +82,29 @@ std::string lobbyJson(const std::vector<const std::string*>& entries) {
   return out;
 }
 
+namespace {
+
+/// A snooker table's baulk line, D and spots as the window chalks them
+/// (render::ChalkMarks); null for a table without them.
+json snookerMarks(const table::TableSpec& spec) {
+  const auto spots = table::snookerSpotsFor(spec);
+  if (!spots) return nullptr;
+  return {{"baulk_x", spots->baulk_x},
+          {"d_radius", spots->d_radius},
+          {"spots",
+           {{"yellow", vec2(spots->yellow)},
+            {"green", vec2(spots->green)},
+            {"brown", vec2(spots->brown)},
+            {"blue", vec2(spots->blue)},
+            {"pink", vec2(spots->pink)},
+            {"black", vec2(spots->black)}}},
+          {"line_width", render::ChalkMarks::kLineWidth},
+          {"spot_radius", render::ChalkMarks::kSpotRadius},
+          {"strength", render::ChalkMarks::kStrength}};
+}
+
+}  // namespace
+
 Result<std::string> tableJson(const std::string& table_name) {
   if (!validTableName(table_name))
     return Result<std::string>::fail("not a table name: '" + table_name + "'");
@@ -99,8 +124,9 @@ Result<std::string> tableJson(const std::string& table_name) {
   for (const auto& p : render::lampPositions(geometry))
     lamps.push_back(json::array({p.x, p.y, p.z}));
   json balls = json::array();
-  for (int id = 0; id <= physics::kMaxBallId; ++id) {
-    const render::BallLook look = render::ballLook(id, render::ballSetOf(*spec));
+  const render::BallSet set = render::ballSetOf(*spec);
+  for (int id = 0; id <= render::maxBallIdOf(set); ++id) {
+    const render::BallLook look = render::ballLook(id, set);
     balls.push_back(
         {{"colour", rgb(look.colour)}, {"striped", look.striped}, {"number", look.number}});
   }
@@ -114,6 +140,7 @@ Result<std::string> tableJson(const std::string& table_name) {
                  {"ball_radius", spec->params.ball_radius},
                  {"noses", noses},
                  {"holes", holes},
+                 {"snooker_marks", snookerMarks(*spec)},
                  {"lamps",
                   {{"positions", lamps},
                    {"inner_deg", render::kSpotInnerDeg},
@@ -126,6 +153,7 @@ Result<std::string> tableJson(const std::string& table_name) {
                    {"cushion", rgb(render::partLook("cushion_head").colour)},
                    {"wood", rgb(render::woodColour())},
                    {"pocket", rgb(render::partLook("pocket_head_left_corner").colour)},
+                   {"chalk", rgb(render::chalkColour())},
                    {"balls", balls}}}};
   return Result<std::string>::ok(out.dump());
 }

@@ -135,7 +135,7 @@ pool_BallState toWire(const physics::Ball& ball) {
 
 Result<physics::Ball> fromWire(const pool_BallState& ball) {
   if (ball.id > physics::kMaxBallId) {
-    return Result<physics::Ball>::fail("ball id " + std::to_string(ball.id) + " is not in 0-15");
+    return Result<physics::Ball>::fail("ball id " + std::to_string(ball.id) + " is not in 0-21");
   }
   const auto state = fromWire(ball.state);
   if (!state) {
@@ -242,6 +242,10 @@ pool_ShotOption toWire(protocol::ShotOption option) {
       return pool_OPTION_PUSH_OUT;
     case protocol::ShotOption::PassBack:
       return pool_OPTION_PASS_BACK;
+    case protocol::ShotOption::FreeBall:
+      return pool_OPTION_FREE_BALL;
+    case protocol::ShotOption::Replace:
+      return pool_OPTION_REPLACE;
   }
   return pool_OPTION_NONE;
 }
@@ -264,6 +268,10 @@ Result<protocol::ShotOption> fromWire(const pool_ShotOption& option) {
       return Result<protocol::ShotOption>::ok(protocol::ShotOption::PushOut);
     case pool_OPTION_PASS_BACK:
       return Result<protocol::ShotOption>::ok(protocol::ShotOption::PassBack);
+    case pool_OPTION_FREE_BALL:
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::FreeBall);
+    case pool_OPTION_REPLACE:
+      return Result<protocol::ShotOption>::ok(protocol::ShotOption::Replace);
   }
   return Result<protocol::ShotOption>::fail("unknown shot option " +
                                             std::to_string(rawValue(option)));

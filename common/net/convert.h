@@ -17,7 +17,7 @@ namespace pool::net {
 /// A ball on the wire. Exact: every double is copied bit for bit. A pocket name longer than 32
 /// characters is cut (the physics' names are shorter).
 pool_BallState toWire(const physics::Ball& ball);
-/// A ball from the wire; fails on an id outside 0–15 or an unknown motion state. Values are not
+/// A ball from the wire; fails on an id outside 0–21 or an unknown motion state. Values are not
 /// range-checked (a snapshot's balls may be anywhere the physics put them).
 Result<physics::Ball> fromWire(const pool_BallState& ball);
 

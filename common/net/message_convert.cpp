@@ -35,13 +35,12 @@ static_assert(pool_REJECT_UNSIGNED == static_cast<int>(RejectReason::Unsigned));
 static_assert(pool_REJECT_BAD_PRACTICE == static_cast<int>(RejectReason::BadPractice));
 static_assert(pool_END_THREE_FOULS == static_cast<int>(rules::GameEnd::ThreeFouls));
 static_assert(pool_END_POINTS_REACHED == static_cast<int>(rules::GameEnd::PointsReached));
-static_assert(pool_IN_HAND_BEHIND_HEAD_STRING ==
-              static_cast<int>(rules::BallInHand::BehindHeadString));
+static_assert(pool_END_THREE_MISSES == static_cast<int>(rules::GameEnd::ThreeMisses));
+static_assert(pool_IN_HAND_IN_THE_D == static_cast<int>(rules::BallInHand::InTheD));
 static_assert(pool_GROUP_STRIPES == static_cast<int>(rules::Group::Stripes));
-static_assert(pool_FOUL_BEHIND_HEAD_STRING_DIRECT ==
-              static_cast<int>(rules::Foul::BehindHeadStringDirect));
-static_assert(pool_OPTION_PASS_BACK - pool_OPTION_PLAY_ON ==
-              static_cast<int>(rules::Choice::PassBack));
+static_assert(pool_FOUL_PUSH_STROKE == static_cast<int>(rules::Foul::PushStroke));
+static_assert(pool_OPTION_REPLACE - pool_OPTION_PLAY_ON ==
+              static_cast<int>(rules::Choice::Replace));
 
 // An IDL enum field as a domain enum whose enumerators follow the IDL's order one to one, or
 // empty when the value is out of range.
@@ -101,7 +100,7 @@ Result<std::vector<rules::Choice>> choicesOf(const dds_sequence_pool_ShotOption&
 Result<std::vector<rules::Foul>> foulsOf(const dds_sequence_pool_FoulCode& seq) {
   std::vector<rules::Foul> out;
   for (const auto& code : elementsOf(seq)) {
-    const auto foul = enumOf<rules::Foul>(code, pool_FOUL_BEHIND_HEAD_STRING_DIRECT + 1);
+    const auto foul = enumOf<rules::Foul>(code, pool_FOUL_PUSH_STROKE + 1);
     if (!foul) return Result<std::vector<rules::Foul>>::fail("unknown foul");
     out.push_back(*foul);
   }
@@ -195,9 +194,8 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
   const std::string what = "match state " + view.match;
   view.revision = state.revision;
   const auto phase = enumOf<MatchPhase>(state.phase, pool_PHASE_CLOSED + 1);
-  const auto in_hand =
-      enumOf<rules::BallInHand>(state.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
-  const auto end = enumOf<rules::GameEnd>(state.end, pool_END_POINTS_REACHED + 1);
+  const auto in_hand = enumOf<rules::BallInHand>(state.ball_in_hand, pool_IN_HAND_IN_THE_D + 1);
+  const auto end = enumOf<rules::GameEnd>(state.end, pool_END_THREE_MISSES + 1);
   if (!phase || !in_hand || !end) return fail<MatchView>(what, "unknown enum value");
   view.phase = *phase;
   view.ball_in_hand = *in_hand;
@@ -227,6 +225,10 @@ Result<MatchView> fromWire(const pool_MatchState& state) {
   view.run = state.run;
   if (state.cue_ball > physics::kMaxBallId) return fail<MatchView>(what, "cue_ball: not a ball id");
   view.cue_ball = state.cue_ball;
+  if (state.ball_on > physics::kMaxBallId) return fail<MatchView>(what, "ball_on: not a ball id");
+  view.ball_on = state.ball_on;
+  view.free_ball = state.free_ball;
+  for (std::size_t i = 0; i < 2; ++i) view.seats[i].misses = state.misses[i];
   view.shooter = seatNumber(state.shooter);
   view.breaker = seatNumber(state.breaker);
   view.rack = state.rack;
@@ -252,9 +254,8 @@ Result<ShotReport> fromWire(const pool_ShotResult& result) {
   report.shot_number = result.shot_number;
   report.accepted = result.accepted;
   const auto reason = enumOf<RejectReason>(result.reject_reason, pool_REJECT_BAD_PRACTICE + 1);
-  const auto in_hand =
-      enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_BEHIND_HEAD_STRING + 1);
-  const auto end = enumOf<rules::GameEnd>(result.end, pool_END_POINTS_REACHED + 1);
+  const auto in_hand = enumOf<rules::BallInHand>(result.ball_in_hand, pool_IN_HAND_IN_THE_D + 1);
+  const auto end = enumOf<rules::GameEnd>(result.end, pool_END_THREE_MISSES + 1);
   if (!reason || !in_hand || !end) return fail<ShotReport>(what, "unknown enum value");
   report.reject_reason = *reason;
   report.ball_in_hand = *in_hand;
@@ -416,6 +417,10 @@ Sample<pool_MatchState> toWire(const MatchView& view) {
   }
   st.run = static_cast<std::uint16_t>(view.run);
   st.cue_ball = static_cast<std::uint8_t>(view.cue_ball);
+  st.ball_on = static_cast<std::uint8_t>(view.ball_on);
+  st.free_ball = view.free_ball;
+  for (std::size_t i = 0; i < 2; ++i)
+    st.misses[i] = static_cast<std::uint8_t>(view.seats[i].misses);
   st.shooter = static_cast<std::int16_t>(view.shooter);
   st.breaker = static_cast<std::int16_t>(view.breaker);
   st.rack = view.rack;

@@ -88,15 +88,16 @@ Check checkCue(const pool_ShotCommand& c, const protocol::CommandLimits& limits)
 
 Check checkCall(const pool_ShotCommand& c) {
   const bool has_ball = c.called_ball != -1;
-  if (has_ball && (c.called_ball < 1 || c.called_ball > 15)) {
-    return fail(CommandProblem::BadCall, "called_ball: must be 1-15, or -1 for none");
+  if (has_ball && (c.called_ball < 1 || c.called_ball > physics::kMaxBallId)) {
+    return fail(CommandProblem::BadCall, "called_ball: must be 1-21, or -1 for none");
   }
   const std::string_view pocket = textOf(c.called_pocket);
   if (!terminated(c.called_pocket) || !printable(pocket)) {
     return fail(CommandProblem::BadCall, "called_pocket: must be a printable pocket name");
   }
-  if (has_ball != !pocket.empty()) {
-    return fail(CommandProblem::BadCall, "called_ball, called_pocket: give both or neither");
+  // A ball alone is snooker's nominated ball; a pool game's rules refuse a call without a pocket.
+  if (!has_ball && !pocket.empty()) {
+    return fail(CommandProblem::BadCall, "called_pocket: needs a called_ball");
   }
   return std::nullopt;
 }

@@ -26,7 +26,7 @@ enum class CommandProblem : std::uint8_t {
   ElevationOutOfRange,  ///< not in [0, max_elevation]
   TipOutOfRange,        ///< sqrt(side² + height²) beyond the miscue limit
   YawOutOfRange,        ///< |yaw| beyond max_abs_yaw
-  BadCall,  ///< a called ball outside 1–15, a bad pocket name, or one without the other
+  BadCall,  ///< a called ball outside 1–21, a bad pocket name, or a pocket without a ball
   PlacementOutOfRange,  ///< cue-ball placement off the table's playing surface
   BadSignature,         ///< longer than 64 bytes, or a length without a buffer
 };

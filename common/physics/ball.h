@@ -16,7 +16,8 @@ using Quat = Eigen::Quaterniond;
 
 constexpr double kGravity = 9.81;  ///< m/s²
 constexpr int kCueBall = 0;
-constexpr int kMaxBallId = 15;
+/// The highest ball id: a snooker set (the cue ball, 15 reds and six colours; pool uses 0–15).
+constexpr int kMaxBallId = 21;
 
 /// What a ball is doing. Stationary: no motion. Spinning: in place about the vertical. Sliding:
 /// its contact point slips on the cloth. Rolling: no slip. Airborne: off the slate. Pocketed: in a

@@ -35,6 +35,9 @@ rules::GameState gameStateOf(const MatchView& view) {
   state.innings = {view.seats[0].innings, view.seats[1].innings};
   state.high_run = {view.seats[0].high_run, view.seats[1].high_run};
   state.run = view.run;
+  state.ball_on = view.ball_on;
+  state.free_ball = view.free_ball;
+  state.misses = {view.seats[0].misses, view.seats[1].misses};
   return state;
 }
 

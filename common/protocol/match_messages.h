@@ -65,9 +65,10 @@ struct SeatView {
   std::uint32_t last_seq = 0;  ///< the seat's last used sequence number
   int fouls_in_row = 0;        ///< 9-/10-ball: fouls on its consecutive shots (three lose)
   int extensions_left = 0;     ///< shot clock extensions left this rack
-  int points = 0;              ///< three-cushion: points this game
+  int points = 0;              ///< three-cushion: points this game; snooker: the frame score
   int innings = 0;             ///< three-cushion: innings completed this game
-  int high_run = 0;            ///< three-cushion: the most points in one inning this game
+  int high_run = 0;  ///< three-cushion: the most points in one inning; snooker: the highest break
+  int misses = 0;    ///< snooker: misses in a row with a ball on in plain view (three lose)
 };
 
 /// A match between shots (MatchState).
@@ -92,8 +93,10 @@ struct MatchView {
   bool standard_physics = true;         ///< false: a practice table's coefficients were changed
   PracticeCoefficients coefficients{};  ///< the table's, in kPracticeCoefficients' order
   int undo_depth = 0;                   ///< practice: shots the table can undo
-  int run = 0;       ///< three-cushion: the points of the inning at the table so far
-  int cue_ball = 0;  ///< the ball the shooter strikes (three-cushion: 0 white, 1 yellow)
+  int run = 0;             ///< three-cushion: the points of the inning so far; snooker: the break
+  int cue_ball = 0;        ///< the ball the shooter strikes (three-cushion: 0 white, 1 yellow)
+  int ball_on = 0;         ///< snooker: rules::kOnRed, kOnColour or the colour's id
+  bool free_ball = false;  ///< snooker: the shooter plays a free ball
 
   /// The warning is on: the clock runs and little time is left.
   bool clockWarning() const {

@@ -29,7 +29,8 @@ double MatchSettings::warningAt() const {
 Check<> checkSettings(const MatchSettings& s) {
   const auto games = rules::allGames();
   if (std::none_of(games.begin(), games.end(), [&](const auto& g) { return g.game == s.game; })) {
-    return Check<>::refuse("bad_game", "game: must be 8-ball, 9-ball, 10-ball or three-cushion");
+    return Check<>::refuse("bad_game",
+                           "game: must be 8-ball, 9-ball, 10-ball, three-cushion or snooker");
   }
   if (s.race_to < 1 || s.race_to > kMaxRace) {
     return Check<>::refuse("bad_race", "race: must be 1 to " + std::to_string(kMaxRace) + " racks");
@@ -38,7 +39,7 @@ Check<> checkSettings(const MatchSettings& s) {
     return Check<>::refuse("bad_points",
                            "points: must be 1 to " + std::to_string(kMaxPoints) + " points");
   }
-  if (s.practice && s.game == rules::Game::ThreeCushion) {
+  if (s.practice && !rules::isPool(s.game)) {
     return Check<>::refuse("bad_practice", "practice: practice tables rack pool games");
   }
   if (s.breaks != BreakOrder::Alternate && s.breaks != BreakOrder::Winner) {

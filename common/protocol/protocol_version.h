@@ -13,7 +13,9 @@ namespace pool::protocol {
 /// (AimCommand in, CueAim relayed by the server). 6: JoinRequest has no key (a client's presence
 /// is its writer's, so client ids anyone invents cost the server no instance). 7: three-cushion
 /// (the game on the wire as 3, its points setting, each seat's points, innings and high run, the
-/// run and the ball the shooter strikes), up to 22 balls a table (a snooker set).
-inline constexpr unsigned kProtocolVersion = 7;
+/// run and the ball the shooter strikes), up to 22 balls a table (a snooker set). 8: snooker
+/// (ball ids to 21, the game as 22, the ball on, free balls, misses, the cue ball in hand in the
+/// D, a ball nominated without a pocket).
+inline constexpr unsigned kProtocolVersion = 8;
 
 }  // namespace pool::protocol

@@ -21,13 +21,17 @@ const char* toString(ShotOption option) {
       return "push_out";
     case ShotOption::PassBack:
       return "pass_back";
+    case ShotOption::FreeBall:
+      return "free_ball";
+    case ShotOption::Replace:
+      return "replace";
   }
   return "unknown";
 }
 
 bool optionShoots(ShotOption option) {
   return option != ShotOption::ReBreak && option != ShotOption::OpponentReBreaks &&
-         option != ShotOption::PassBack;
+         option != ShotOption::PassBack && option != ShotOption::Replace;
 }
 
 ShotOption optionOf(rules::Choice choice) {
@@ -46,6 +50,10 @@ ShotOption optionOf(rules::Choice choice) {
       return ShotOption::PushOut;
     case rules::Choice::PassBack:
       return ShotOption::PassBack;
+    case rules::Choice::FreeBall:
+      return ShotOption::FreeBall;
+    case rules::Choice::Replace:
+      return ShotOption::Replace;
   }
   return ShotOption::None;
 }
@@ -68,6 +76,10 @@ std::optional<rules::Choice> choiceOf(ShotOption option) {
       return rules::Choice::PushOut;
     case ShotOption::PassBack:
       return rules::Choice::PassBack;
+    case ShotOption::FreeBall:
+      return rules::Choice::FreeBall;
+    case ShotOption::Replace:
+      return rules::Choice::Replace;
   }
   return std::nullopt;
 }

@@ -21,7 +21,9 @@ enum class ShotOption : std::uint8_t {
   ReBreak,           ///< re-rack, the chooser breaks; the command carries no shot
   OpponentReBreaks,  ///< re-rack, the other player breaks; the command carries no shot
   PushOut,           ///< 9-/10-ball: play this shot as a push-out
-  PassBack,          ///< 9-/10-ball: the player who just shot shoots again; no shot
+  PassBack,          ///< 9-/10-ball, snooker: the player who just shot shoots again; no shot
+  FreeBall,          ///< snooker: play a free ball, and shoot
+  Replace,           ///< snooker: the balls back as before the miss, the offender plays; no shot
 };
 
 const char* toString(ShotOption option);
@@ -43,7 +45,7 @@ struct ShotRequest {
   std::uint64_t seat_token = 0;                ///< from the JoinReply that gave the seat
   std::uint32_t seq = 0;                       ///< per seat, strictly increasing
   physics::CueShot cue;                        ///< yaw, tip offset, elevation (rad), speed (m/s)
-  std::optional<int> called_ball;              ///< 1–15; with called_pocket
+  std::optional<int> called_ball;              ///< 1–21 (a pool game: 1–15); with called_pocket
   std::string called_pocket;                   ///< pocket name (SIM-CONTRACT.md); empty: none
   bool safety = false;                         ///< a declared safety
   std::optional<Eigen::Vector2d> cue_ball_at;  ///< ball in hand: place the cue ball here, m

@@ -1,6 +1,8 @@
 // Ball numbers and groups of 8-ball.
 #include "rules/ball_groups.h"
 
+#include "physics/ball.h"
+
 namespace pool::rules {
 
 const char* toString(Group group) {
@@ -16,7 +18,7 @@ const char* toString(Group group) {
 }
 
 bool isObjectBall(int id) {
-  return id >= 1 && id <= 15;
+  return id >= 1 && id <= physics::kMaxBallId;
 }
 
 Group groupOf(int id) {

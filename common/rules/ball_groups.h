@@ -12,7 +12,8 @@ enum class Group : std::uint8_t { None, Solids, Stripes };
 
 const char* toString(Group group);  ///< "none", "solids", "stripes"
 
-/// True for the numbered balls 1–15.
+/// True for every ball but the cue ball: pool's numbered balls 1–15, snooker's reds and colours
+/// (16–21).
 bool isObjectBall(int id);
 
 /// Solids for 1–7, Stripes for 9–15, None for the cue ball, the 8 and anything else.

@@ -11,6 +11,7 @@ constexpr GameInfo kGames[] = {
     {Game::NineBall, "9-ball", 9, table::RackType::NineBall, nullptr},
     {Game::TenBall, "10-ball", 10, table::RackType::TenBall, nullptr},
     {Game::ThreeCushion, "three-cushion", 3, table::RackType::ThreeCushion, "carom-match"},
+    {Game::Snooker, "snooker", 22, table::RackType::Snooker, "snooker-12ft"},
 };
 
 const GameInfo* find(Game game) {
@@ -71,7 +72,14 @@ table::RackType rackTypeOf(Game game) {
 GameState newRackOf(Game game, int breaker) {
   GameState state = newRack(breaker);
   if (game == Game::ThreeCushion) state.ball_in_hand = BallInHand::None;
+  if (game == Game::Snooker) state = newFrame(breaker);
   return state;
+}
+
+SnookerConfig GameRules::snooker() const {
+  SnookerConfig config;
+  config.stalemate_turns = eight_ball.stalemate_turns;
+  return config;
 }
 
 RotationConfig GameRules::rotation() const {
@@ -85,6 +93,7 @@ Check<> checkIntentFor(const GameRules& rules, const GameState& state, const Int
                        const std::vector<physics::Ball>& balls) {
   if (rules.game == Game::EightBall) return checkIntent(state, intent, balls, rules.eight_ball);
   if (rules.game == Game::ThreeCushion) return checkCaromIntent(intent);
+  if (rules.game == Game::Snooker) return checkSnookerIntent(state, intent);
   return checkRotationIntent(state, intent, balls, rules.rotation());
 }
 
@@ -93,6 +102,7 @@ Result<Verdict> judgeShot(const GameRules& rules, const GameState& state, const 
   if (rules.game == Game::EightBall) return judgeEightBall(state, shot, table, rules.eight_ball);
   if (rules.game == Game::ThreeCushion)
     return judgeThreeCushion(state, shot, table, rules.three_cushion);
+  if (rules.game == Game::Snooker) return judgeSnooker(state, shot, table, rules.snooker());
   return judgeRotation(state, shot, table, rules.rotation());
 }
 
@@ -101,6 +111,7 @@ Result<Verdict> applyChoiceFor(const GameRules& rules, const GameState& state, C
   if (rules.game == Game::EightBall) return applyChoice(state, choice, balls, table);
   if (rules.game == Game::ThreeCushion)
     return Result<Verdict>::fail("three-cushion offers no choice");
+  if (rules.game == Game::Snooker) return applySnookerChoice(state, choice);
   return applyRotationChoice(state, choice);
 }
 
@@ -111,6 +122,14 @@ std::vector<int> firstBallsFor(const GameRules& rules, const GameState& state,
     if (state.phase == Phase::Break) return {kCaromRed};
     const int own = caromBallOf(state, state.shooter);
     return {own == kCaromWhite ? kCaromYellow : kCaromWhite, kCaromRed};
+  }
+  if (rules.game == Game::Snooker) {
+    if (!state.free_ball) return snookerBallsOn(state, balls);
+    std::vector<int> all;
+    for (const auto& b : balls) {
+      if (b.id != physics::kCueBall && physics::onTable(b.state)) all.push_back(b.id);
+    }
+    return all;
   }
   return rotationFirstBalls(balls);
 }

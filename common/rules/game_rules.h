@@ -1,4 +1,5 @@
-// Which game a match plays (8-, 9-, 10-ball, three-cushion) and the one entry to its rule set.
+// Which game a match plays (8-, 9-, 10-ball, three-cushion, snooker) and the one entry to its rule
+// set.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include "rules/game_state.h"
 #include "rules/rotation.h"
 #include "rules/shot.h"
+#include "rules/snooker.h"
 #include "rules/table_context.h"
 #include "rules/three_cushion.h"
 #include "rules/verdict.h"
@@ -22,7 +24,7 @@
 
 namespace pool::rules {
 
-enum class Game : std::uint8_t { EightBall, NineBall, TenBall, ThreeCushion };
+enum class Game : std::uint8_t { EightBall, NineBall, TenBall, ThreeCushion, Snooker };
 
 /// What names a game and what it is played from.
 struct GameInfo {
@@ -37,8 +39,8 @@ struct GameInfo {
 /// Every game, in the order players are offered them.
 std::span<const GameInfo> allGames();
 
-const char* toString(Game game);  ///< "8-ball", "9-ball", "10-ball", "three-cushion"
-/// 8, 9, 10 or 3: the number that names the game on the wire (`--game 9`).
+const char* toString(Game game);  ///< "8-ball", "9-ball", "10-ball", "three-cushion", "snooker"
+/// 8, 9, 10, 3 or 22: the number that names the game on the wire (`--game 9`).
 int gameNumber(Game game);
 /// The game of that number; empty otherwise.
 std::optional<Game> gameOfNumber(long number);
@@ -60,25 +62,27 @@ struct GameRules {
   ThreeCushionConfig three_cushion;  ///< the points that win a game of three-cushion
 
   RotationConfig rotation() const;
+  SnookerConfig snooker() const;
 };
 
 /// The ball the shooter strikes: the cue ball, or in three-cushion the shooter's own ball.
 int cueBallFor(const GameRules& rules, const GameState& state);
 
-/// checkIntent, checkRotationIntent or checkCaromIntent, by game.
+/// checkIntent, checkRotationIntent, checkCaromIntent or checkSnookerIntent, by game.
 Check<> checkIntentFor(const GameRules& rules, const GameState& state, const Intent& intent,
                        const std::vector<physics::Ball>& balls);
 
-/// judgeEightBall, judgeRotation or judgeThreeCushion, by game.
+/// judgeEightBall, judgeRotation, judgeThreeCushion or judgeSnooker, by game.
 Result<Verdict> judgeShot(const GameRules& rules, const GameState& state, const Shot& shot,
                           const TableContext& table);
 
-/// applyChoice or applyRotationChoice, by game (three-cushion offers no choice: refused).
+/// applyChoice, applyRotationChoice or applySnookerChoice, by game (three-cushion offers no
+/// choice: refused).
 Result<Verdict> applyChoiceFor(const GameRules& rules, const GameState& state, Choice choice,
                                const std::vector<physics::Ball>& balls, const TableContext& table);
 
 /// legalFirstBalls or rotationFirstBalls, by game; three-cushion: the red on the opening, else
-/// both object balls.
+/// both object balls; snooker: the balls on (every object ball with a free ball).
 std::vector<int> firstBallsFor(const GameRules& rules, const GameState& state,
                                const std::vector<physics::Ball>& balls);
 

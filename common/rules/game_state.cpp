@@ -25,6 +25,8 @@ const char* toString(BallInHand ball_in_hand) {
       return "anywhere";
     case BallInHand::BehindHeadString:
       return "behind_head_string";
+    case BallInHand::InTheD:
+      return "in_the_d";
   }
   return "unknown";
 }
@@ -45,6 +47,10 @@ const char* toString(Choice choice) {
       return "push_out";
     case Choice::PassBack:
       return "pass_back";
+    case Choice::FreeBall:
+      return "free_ball";
+    case Choice::Replace:
+      return "replace";
   }
   return "unknown";
 }
@@ -73,6 +79,10 @@ const char* toString(GameEnd end) {
       return "three_fouls";
     case GameEnd::PointsReached:
       return "points_reached";
+    case GameEnd::FrameOver:
+      return "frame_over";
+    case GameEnd::ThreeMisses:
+      return "three_misses";
   }
   return "unknown";
 }
@@ -101,6 +111,7 @@ std::string describe(const GameState& state) {
     text += toString(state.options[i]);
   }
   if (state.push_out) text += ", push-out";
+  if (state.free_ball) text += ", free ball";
   if (state.points[0] > 0 || state.points[1] > 0) {
     text += ", points " + std::to_string(state.points[0]) + "-" + std::to_string(state.points[1]);
   }

@@ -1,5 +1,6 @@
-// The state of one rack between shots (8-, 9-, 10-ball; a game of three-cushion): whose turn,
-// groups, phase, ball in hand, pending choice, fouls in a row, points and runs.
+// The state of one rack between shots (8-, 9-, 10-ball; a game of three-cushion; a frame of
+// snooker): whose turn, groups, phase, ball in hand, pending choice, fouls in a row, points, runs
+// and breaks, the ball on.
 #pragma once
 
 #include <array>
@@ -17,7 +18,8 @@ enum class Phase : std::uint8_t { Break, Open, Assigned, Over };
 
 /// Where the next shooter may place the cue ball before shooting. None: it is played where it
 /// lies. Anywhere: anywhere on the slate. BehindHeadString: with its centre at x < head string x.
-enum class BallInHand : std::uint8_t { None, Anywhere, BehindHeadString };
+/// InTheD: snooker, with its centre in the D (on its lines or inside them).
+enum class BallInHand : std::uint8_t { None, Anywhere, BehindHeadString, InTheD };
 
 /// A choice the rules offer the next player before the next shot.
 enum class Choice : std::uint8_t {
@@ -31,7 +33,11 @@ enum class Choice : std::uint8_t {
   PushOut,           ///< 9-/10-ball, the shot after the break: play a push-out (no contact
                      ///< fouls; the opponent then chooses who shoots next)
   PassBack,          ///< 9-/10-ball, after a push-out or a 10-ball shot that missed its call:
-                     ///< the player who just shot must shoot again
+                     ///< the player who just shot must shoot again (snooker: after a foul)
+  FreeBall,          ///< snooker, after a foul that leaves the cue ball snookered: play, any
+                     ///< ball nominated (the intent's ball) taken as the ball on
+  Replace,           ///< snooker, after a foul and a miss: the balls go back where they stood
+                     ///< before it and the offender plays again
 };
 
 /// Why a game ended. Every reason but EightPocketed, RackBallPocketed and Forfeit is a loss of the
@@ -49,6 +55,9 @@ enum class GameEnd : std::uint8_t {
   RackBallPocketed,  ///< 9-/10-ball: the shooter legally pocketed the 9 (the 10 called): a win
   ThreeFouls,        ///< 9-/10-ball: the shooter's third foul in a row: a loss
   PointsReached,     ///< three-cushion: the shooter scored the points that win the game
+  FrameOver,         ///< snooker: the last ball is down (or the black scored on): the higher
+                     ///< score wins
+  ThreeMisses,       ///< snooker: the shooter's third miss in a row with a ball on in plain view
 };
 
 const char* toString(Phase phase);
@@ -63,6 +72,13 @@ constexpr int kSeats = 2;
 inline int opponentOf(int seat) {
   return 1 - seat;
 }
+
+/// A ball where it stood (table plane, m).
+struct BallAt {
+  int id = 0;
+  double x = 0.0;
+  double y = 0.0;
+};
 
 /// Everything the rules need to remember between shots of one rack.
 struct GameState {
@@ -85,6 +101,17 @@ struct GameState {
   std::array<int, kSeats> innings{0, 0};
   std::array<int, kSeats> high_run{0, 0};
   int run = 0;
+  /// Snooker: `points` is the frame score, `run` the current break, `high_run` each seat's
+  /// highest break. The ball on (rules/snooker.h: kOnRed, kOnColour or a colour's id), whether
+  /// the shooter plays a free ball, each seat's misses in a row with a ball on in plain view, and
+  /// the layout (with its ball in hand and ball on) before the last foul and a miss, for
+  /// Choice::Replace.
+  int ball_on = 0;
+  bool free_ball = false;
+  std::array<int, kSeats> misses{0, 0};
+  std::vector<BallAt> before_miss;
+  BallInHand before_miss_in_hand = BallInHand::None;
+  int before_miss_on = 0;
 };
 
 /// A fresh rack: the breaker to break with the cue ball in hand behind the head string.

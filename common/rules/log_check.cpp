@@ -55,7 +55,7 @@ Result<Tracks> tracksBefore(const std::vector<physics::Ball>& before, int struck
   std::array<bool, kBalls> seen{};
   for (const auto& b : before) {
     if (!validId(b.id))
-      return Result<Tracks>::fail("balls before: id " + std::to_string(b.id) + " is not 0-15");
+      return Result<Tracks>::fail("balls before: id " + std::to_string(b.id) + " is not 0-21");
     if (seen[b.id]) return Result<Tracks>::fail("balls before: " + ball(b.id) + " is listed twice");
     seen[b.id] = true;
     tracks[b.id].on_table = physics::onTable(b.state);
@@ -241,7 +241,7 @@ Check<> checkAfter(const std::vector<physics::Ball>& after, const Tracks& tracks
   for (const auto& b : after) {
     if (!validId(b.id))
       return Check<>::refuse("bad_balls_after",
-                             "balls after: id " + std::to_string(b.id) + " is not 0-15");
+                             "balls after: id " + std::to_string(b.id) + " is not 0-21");
     if (seen[b.id])
       return Check<>::refuse("bad_balls_after", "balls after: " + ball(b.id) + " is listed twice");
     seen[b.id] = true;
@@ -266,7 +266,7 @@ Check<> checkAfter(const std::vector<physics::Ball>& after, const Tracks& tracks
 Check<> checkShot(const Shot& shot, int struck) {
   if (!validId(struck))
     return Check<>::refuse("bad_balls_before",
-                           "the struck ball " + std::to_string(struck) + " is not 0-15");
+                           "the struck ball " + std::to_string(struck) + " is not 0-21");
   auto tracks = tracksBefore(shot.before, struck);
   if (!tracks) return Check<>::refuse("bad_balls_before", tracks.error());
   if (shot.events.empty()) return Check<>::refuse("empty_log", "the event log is empty");

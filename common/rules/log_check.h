@@ -9,7 +9,7 @@
 namespace pool::rules {
 
 /// Checks a shot before it is judged. Refused, with a one-line reason naming the ball and time:
-/// balls before that repeat an id, lack the struck ball or use an id outside 0–15; an empty log; a
+/// balls before that repeat an id, lack the struck ball or use an id outside 0–21; an empty log; a
 /// log that does not start with the strike of `struck` (the cue ball; in three-cushion the
 /// shooter's own ball), or strikes twice; times not finite or out of
 /// order; an event naming a ball that was not on the table; a ball hitting itself; an unknown

@@ -54,6 +54,8 @@ const char* toString(PlacementProblem problem) {
       return "overlaps";
     case PlacementProblem::NotBehindHeadString:
       return "not_behind_head_string";
+    case PlacementProblem::NotInTheD:
+      return "not_in_the_d";
   }
   return "unknown";
 }
@@ -84,6 +86,9 @@ PlacementCheck checkCueBallPlacement(BallInHand in_hand, const Eigen::Vector2d& 
   if (in_hand == BallInHand::BehindHeadString && !(pos.x() < table.spots.head_string_x)) {
     return refuse(PlacementProblem::NotBehindHeadString,
                   "the cue ball must be behind the head string");
+  }
+  if (in_hand == BallInHand::InTheD && !(table.snooker && table::inTheD(*table.snooker, pos))) {
+    return refuse(PlacementProblem::NotInTheD, "the cue ball must be in the D");
   }
   return PlacementCheck::pass();
 }

@@ -24,6 +24,7 @@ enum class PlacementProblem : std::uint8_t {
   OverPocket,           ///< the ball's centre would be over a pocket hole
   Overlaps,             ///< it would overlap another ball on the table
   NotBehindHeadString,  ///< in hand behind the head string, but its centre is at x >= head string x
+  NotInTheD,            ///< snooker: in hand in the D, but its centre is outside it
 };
 
 const char* toString(PlacementProblem problem);
@@ -40,7 +41,8 @@ PlacementCheck checkBallPlacement(int id, const Eigen::Vector2d& pos,
                                   const TableContext& table);
 
 /// The cue ball in hand at `pos`: as checkBallPlacement, and behind the head string (centre
-/// x < head string x) when `in_hand` is BehindHeadString; refused when `in_hand` is None.
+/// x < head string x) when `in_hand` is BehindHeadString, in the D when InTheD (a table without
+/// snooker marks has no D: refused); refused when `in_hand` is None.
 PlacementCheck checkCueBallPlacement(BallInHand in_hand, const Eigen::Vector2d& pos,
                                      const std::vector<physics::Ball>& balls,
                                      const TableContext& table);

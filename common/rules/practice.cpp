@@ -64,7 +64,7 @@ Result<std::vector<physics::Ball>> placeBalls(const std::vector<physics::Ball>& 
   std::vector<physics::Ball> placed = balls;
   for (const auto& move : moves) {
     std::string name = "ball " + std::to_string(move.id);
-    if (move.id < 0 || move.id > physics::kMaxBallId) {
+    if (move.id < 0 || move.id > kPracticeMaxBallId) {
       return Result<std::vector<physics::Ball>>::fail(name + ": not a ball id (0-15)");
     }
     PlacementCheck check = checkBallPlacement(move.id, move.pos, placed, table);

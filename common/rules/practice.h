@@ -14,6 +14,9 @@
 
 namespace pool::rules {
 
+/// A practice table racks a pool game: its balls are 0–15.
+inline constexpr int kPracticeMaxBallId = 15;
+
 /// The practice state: seat 0 shoots every shot, the cue ball in hand anywhere to start.
 GameState practiceState();
 

@@ -14,7 +14,7 @@ namespace pool::rules {
 
 /// What the shooter declared before the shot.
 struct Intent {
-  std::optional<int> ball;  ///< called ball (1–15)
+  std::optional<int> ball;  ///< called ball (1–15; snooker: the nominated ball, 1–21)
   std::string pocket;       ///< called pocket (see pocketNames()); with `ball`
   bool safety = false;      ///< a declared safety: the turn passes whatever falls
   std::optional<Choice>

@@ -33,9 +33,9 @@ struct ShotFacts {
   bool isRemoved(int id) const;
   /// The pocket ball `id` dropped into; "" if it did not.
   std::string pocketOf(int id) const;
-  /// Object balls (1–15) that dropped, in time order.
+  /// Object balls (1–21) that dropped, in time order.
   std::vector<int> objectBallsPocketed() const;
-  /// Object balls (1–15) that left the table, in time order.
+  /// Object balls (1–21) that left the table, in time order.
   std::vector<int> objectBallsOffTable() const;
   bool cueBallLost() const { return isPocketed(0) || isOffTable(0); }
 };

@@ -10,6 +10,7 @@ TableContext tableContext(const table::TableSpec& spec) {
   context.spec = spec;
   context.spots = table::spotsFor(spec);
   context.ball_radius = spec.params.ball_radius;
+  context.snooker = table::snookerSpotsFor(spec);
   return context;
 }
 

@@ -25,6 +25,10 @@ const char* toString(Foul foul) {
       return "illegal_break";
     case Foul::BehindHeadStringDirect:
       return "behind_head_string_direct";
+    case Foul::BallNotOnPocketed:
+      return "ball_not_on_pocketed";
+    case Foul::PushStroke:
+      return "push_stroke";
   }
   return "unknown";
 }
@@ -49,7 +53,10 @@ std::string joinIds(const std::vector<int>& ids) {
 std::string describe(const Verdict& verdict) {
   std::string text = verdict.legal() ? "legal" : "foul";
   for (Foul foul : verdict.fouls) text += std::string(" ") + toString(foul);
-  if (verdict.scored > 0) text += "; a point";
+  if (verdict.penalty > 0) text += "; " + std::to_string(verdict.penalty) + " away";
+  if (verdict.miss) text += "; a miss";
+  if (verdict.scored > 0)
+    text += verdict.scored == 1 ? "; a point" : "; " + std::to_string(verdict.scored) + " points";
   if (!verdict.pocketed.empty()) text += "; pocketed " + joinIds(verdict.pocketed);
   if (!verdict.off_table.empty()) text += "; off table " + joinIds(verdict.off_table);
   if (verdict.assigned != Group::None)

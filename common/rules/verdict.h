@@ -25,6 +25,8 @@ enum class Foul : std::uint8_t {
   IllegalBreak,            ///< no ball pocketed and fewer than four object balls reached a cushion
   BehindHeadStringDirect,  ///< in hand behind the head string, hit a ball behind it without
                            ///< crossing first
+  BallNotOnPocketed,       ///< snooker: a ball that was not on fell
+  PushStroke,              ///< snooker: a ball touching the cue ball moved with the stroke
 };
 
 const char* toString(Foul foul);
@@ -49,6 +51,8 @@ struct Verdict {
   bool rerack = false;     ///< rack again; next.breaker breaks (a choice or a stalemate)
   bool stalemate = false;  ///< the re-rack is because of a stalemate
   int scored = 0;          ///< points the shot scored (three-cushion: 1 for a point)
+  int penalty = 0;         ///< snooker: the points a foul gave the opponent
+  bool miss = false;       ///< snooker: the foul was called a foul and a miss
   bool game_over = false;
   int winner = -1;              ///< seat, when game_over
   GameEnd end = GameEnd::None;  ///< why the game ended

@@ -1,5 +1,5 @@
-// Spots, 8-, 9- and 10-ball racks (deterministic shuffles, frozen or hand-racked) and re-spotting
-// on the long string.
+// Spots, 8-, 9- and 10-ball racks (deterministic shuffles, frozen or hand-racked), snooker's rack
+// and re-spotting on the long string.
 #include "table/rack.h"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/split_mix64.h"
+#include "table/snooker_spots.h"
 
 namespace pool::table {
 namespace {
@@ -21,13 +22,12 @@ void shuffle(std::vector<int>& v, SplitMix64& rng) {
   }
 }
 
-/// Rack positions row by row from the apex on the foot spot; row k holds sizes[k] balls, listed
-/// from −y (right) to +y (left).
-std::vector<Vec2> rackSlots(const TableSpec& spec, double ball_radius, double gap,
+/// Rack positions row by row from `apex`; row k holds sizes[k] balls, listed from −y (right) to
+/// +y (left).
+std::vector<Vec2> rackSlots(const Vec2& apex, double ball_radius, double gap,
                             const std::vector<int>& sizes) {
   const double pitch = 2.0 * ball_radius + gap;
   const double row_step = pitch * std::sqrt(3.0) / 2.0;
-  const Vec2 apex = spotsFor(spec).foot_spot;
   std::vector<Vec2> slots;
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const int n = sizes[k];
@@ -54,7 +54,7 @@ std::vector<BallPlacement> place(const std::vector<Vec2>& slots, std::vector<int
 
 std::vector<BallPlacement> eightBall(const TableSpec& spec, double ball_radius, std::uint64_t seed,
                                      double gap) {
-  const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 4, 5});
+  const auto slots = rackSlots(spotsFor(spec).foot_spot, ball_radius, gap, {1, 2, 3, 4, 5});
   constexpr std::size_t kCentre = 4, kBackRight = 10, kBackLeft = 14;
   SplitMix64 rng(seed);
   const bool solid_left = rng.below(2) == 0;
@@ -74,7 +74,7 @@ std::vector<BallPlacement> eightBall(const TableSpec& spec, double ball_radius, 
 
 std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, std::uint64_t seed,
                                     double gap) {
-  const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 2, 1});
+  const auto slots = rackSlots(spotsFor(spec).foot_spot, ball_radius, gap, {1, 2, 3, 2, 1});
   constexpr std::size_t kApex = 0, kCentre = 4;
   SplitMix64 rng(seed);
   std::vector<int> ids(slots.size(), 0);
@@ -87,7 +87,7 @@ std::vector<BallPlacement> nineBall(const TableSpec& spec, double ball_radius, s
 
 std::vector<BallPlacement> tenBall(const TableSpec& spec, double ball_radius, std::uint64_t seed,
                                    double gap) {
-  const auto slots = rackSlots(spec, ball_radius, gap, {1, 2, 3, 4});
+  const auto slots = rackSlots(spotsFor(spec).foot_spot, ball_radius, gap, {1, 2, 3, 4});
   constexpr std::size_t kApex = 0, kCentre = 4;
   SplitMix64 rng(seed);
   std::vector<int> ids(slots.size(), 0);
@@ -134,6 +134,7 @@ std::optional<RackType> rackTypeFromString(std::string_view name) {
   if (name == "9ball") return RackType::NineBall;
   if (name == "10ball") return RackType::TenBall;
   if (name == "three_cushion") return RackType::ThreeCushion;
+  if (name == "snooker") return RackType::Snooker;
   return std::nullopt;
 }
 
@@ -148,6 +149,8 @@ std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, doubl
       return tenBall(spec, ball_radius, seed, gap);
     case RackType::ThreeCushion:
       return caromOpening(spec, seed);
+    case RackType::Snooker:
+      return snookerRack(spec, ball_radius, gap);
   }
   return {};
 }
@@ -167,6 +170,40 @@ std::vector<BallPlacement> caromOpening(const TableSpec& spec, std::uint64_t see
           {2, spots.foot_spot}};
 }
 
+std::vector<BallPlacement> snookerRack(const TableSpec& spec, double ball_radius, double gap) {
+  const auto spots = snookerSpotsFor(spec);
+  if (!spots) return {};
+  const Vec2 apex = spots->pink + Vec2(2.0 * ball_radius + kSnookerApexGap, 0.0);
+  const auto slots = rackSlots(apex, ball_radius, gap, {1, 2, 3, 4, 5});
+  std::vector<BallPlacement> out;
+  out.push_back({0, {spots->baulk_x, (spots->brown.y() + spots->yellow.y()) / 2.0}});
+  for (std::size_t i = 0; i < slots.size(); ++i) out.push_back({static_cast<int>(i) + 1, slots[i]});
+  for (int colour = kSnookerYellow; colour <= kSnookerBlack; ++colour)
+    out.push_back({colour, *snookerSpotOf(spec, colour)});
+  return out;
+}
+
+std::optional<Vec2> snookerSpotOf(const TableSpec& spec, int colour) {
+  const auto spots = snookerSpotsFor(spec);
+  if (!spots) return std::nullopt;
+  switch (colour) {
+    case kSnookerYellow:
+      return spots->yellow;
+    case kSnookerGreen:
+      return spots->green;
+    case kSnookerBrown:
+      return spots->brown;
+    case kSnookerBlue:
+      return spots->blue;
+    case kSnookerPink:
+      return spots->pink;
+    case kSnookerBlack:
+      return spots->black;
+    default:
+      return std::nullopt;
+  }
+}
+
 std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double ball_radius,
                                    std::uint64_t seed, RackGenerator generator) {
   if (generator == RackGenerator::Frozen || type == RackType::ThreeCushion)
@@ -176,6 +213,8 @@ std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double 
   SplitMix64 rng(splitMix64(seed ^ 0x68616e647261636bULL));
   constexpr double kTwoPi = 6.283185307179586;
   for (BallPlacement& b : balls) {
+    // Snooker's colours sit on their spots and its cue ball waits in the D: only the reds stray.
+    if (type == RackType::Snooker && (b.id == 0 || b.id > kSnookerReds)) continue;
     const double r = kRackStray * std::sqrt(rng.uniform());  // uniform over the disc
     const double a = kTwoPi * rng.uniform();
     b.pos += Vec2(r * std::cos(a), r * std::sin(a));

@@ -1,5 +1,5 @@
-// Spots, strings and racks of a table (8-, 9-, 10-ball; three-cushion's opening), shared by the
-// physics lab, the rules and the server.
+// Spots, strings and racks of a table (8-, 9-, 10-ball; three-cushion's opening; snooker's), shared
+// by the physics lab, the rules and the server.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,8 +23,8 @@ struct Spots {
 
 Spots spotsFor(const TableSpec& spec);
 
-enum class RackType { EightBall, NineBall, TenBall, ThreeCushion };
-/// "8ball", "9ball", "10ball", "three_cushion".
+enum class RackType { EightBall, NineBall, TenBall, ThreeCushion, Snooker };
+/// "8ball", "9ball", "10ball", "three_cushion", "snooker".
 std::optional<RackType> rackTypeFromString(std::string_view name);
 
 struct BallPlacement {
@@ -37,7 +37,8 @@ struct BallPlacement {
 /// a diamond, the 1 at the apex, the 9 in the centre, the rest by `seed`. 10-ball: a triangle of
 /// four rows, the 1 at the apex, the 10 in the middle of the third row, the rest by `seed`.
 /// Neighbours are `gap` metres apart (surface to surface). Three-cushion: the opening (see
-/// caromOpening), the three balls, cue ball included. Deterministic for a seed.
+/// caromOpening), the three balls, cue ball included. Snooker: see snookerRack (cue ball
+/// included). Deterministic for a seed.
 std::vector<BallPlacement> rackBalls(RackType type, const TableSpec& spec, double ball_radius,
                                      std::uint64_t seed, double gap = 0.0);
 
@@ -49,6 +50,29 @@ inline constexpr double kCaromBreakOffset = 0.182;
 /// breaker's ball (0) on the head string kCaromBreakOffset to one side of it, the side drawn from
 /// `seed`.
 std::vector<BallPlacement> caromOpening(const TableSpec& spec, std::uint64_t seed);
+
+/// Snooker ball ids: 0 the cue ball, 1–15 the reds, then the colours in their order of value.
+inline constexpr int kSnookerReds = 15;
+inline constexpr int kSnookerYellow = 16;
+inline constexpr int kSnookerGreen = 17;
+inline constexpr int kSnookerBrown = 18;
+inline constexpr int kSnookerBlue = 19;
+inline constexpr int kSnookerPink = 20;
+inline constexpr int kSnookerBlack = 21;
+
+/// The gap between the pink and the apex red, m. Official Rules of Snooker, Section 2, 2(a): the
+/// apex red "as near to the pink as possible without touching it"; a millimetre is the least a
+/// racking by hand reliably leaves.
+inline constexpr double kSnookerApexGap = 1e-3;
+
+/// Snooker's rack (Section 2, 2(a)): the reds in a triangle of five rows, its apex kSnookerApexGap
+/// behind the pink spot on the long string and its base toward the top cushion; the colours on
+/// their spots; the cue ball in the D halfway between the brown and the yellow spots (the breaker
+/// places it). Empty for a spec without snooker marks. Neighbouring reds are `gap` apart.
+std::vector<BallPlacement> snookerRack(const TableSpec& spec, double ball_radius, double gap = 0.0);
+
+/// The spot of a snooker colour (16–21), for a spec with snooker marks.
+std::optional<Eigen::Vector2d> snookerSpotOf(const TableSpec& spec, int colour);
 
 /// How a match's racks are laid out; stored with each match, so that a stored match racks the
 /// same after an upgrade that changes the generator.
@@ -68,7 +92,8 @@ inline constexpr double kRackStray = 0.127e-3;
 
 /// The rack of `type` laid out by `generator`: Frozen is rackBalls with no gap; Hand puts the
 /// slots 2 × kRackStray apart and moves each ball by up to kRackStray in a direction, both drawn
-/// from `seed` (the same seed also chooses the order, as for Frozen). No two balls overlap.
+/// from `seed` (the same seed also chooses the order, as for Frozen); of a snooker rack only the
+/// reds. No two balls overlap.
 std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double ball_radius,
                                    std::uint64_t seed, RackGenerator generator);
 

@@ -29,7 +29,7 @@ Check checkValues(const Match& match, const protocol::ShotRequest& c) {
     return refuse(Reject::Malformed, ok.error());
   }
   if (c.called_ball && (*c.called_ball < 1 || *c.called_ball > physics::kMaxBallId)) {
-    return refuse(Reject::Malformed, "called_ball: must be 1-15");
+    return refuse(Reject::Malformed, "called_ball: must be 1-21");
   }
   return Check::pass();
 }

@@ -113,6 +113,20 @@ Json gameOf(const rules::GameState& s) {
     out["high_run"] = pair(s.high_run);
     out["run"] = s.run;
   }
+  // Snooker's ball on, free ball, misses and the position a miss can put back, where a frame has
+  // them (a red on and nothing else pending writes nothing: the default).
+  if (s.ball_on != 0 || s.free_ball || s.misses != std::array<int, 2>{0, 0} ||
+      !s.before_miss.empty() || s.before_miss_in_hand != rules::BallInHand::None ||
+      s.before_miss_on != 0) {
+    Json layout = Json::array();
+    for (const auto& b : s.before_miss) layout.push_back({b.id, b.x, b.y});
+    out["snooker"] = {{"ball_on", s.ball_on},
+                      {"free_ball", s.free_ball},
+                      {"misses", pair(s.misses)},
+                      {"before_miss", layout},
+                      {"before_miss_in_hand", num(s.before_miss_in_hand)},
+                      {"before_miss_on", s.before_miss_on}};
+  }
   return out;
 }
 
@@ -139,6 +153,17 @@ rules::GameState gameAt(const Json& j) {
     s.innings = pairAt(j, "innings");
     s.high_run = pairAt(j, "high_run");
     s.run = j.at("run").get<int>();
+  }
+  if (j.contains("snooker")) {
+    const Json& k = j.at("snooker");
+    s.ball_on = k.at("ball_on").get<int>();
+    s.free_ball = k.at("free_ball").get<bool>();
+    s.misses = pairAt(k, "misses");
+    for (const auto& b : k.at("before_miss")) {
+      s.before_miss.push_back({b.at(0).get<int>(), b.at(1).get<double>(), b.at(2).get<double>()});
+    }
+    s.before_miss_in_hand = enumAt<rules::BallInHand>(k, "before_miss_in_hand");
+    s.before_miss_on = k.at("before_miss_on").get<int>();
   }
   return s;
 }

@@ -3,13 +3,10 @@
 // server's stored shots, judged again, give the same points and winner.
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <cstdio>
 
-#include "game/loaded_table.h"
-#include "server/store/match_audit.h"
-#include "server/store/match_store.h"
 #include "support/client_fixture.h"
+#include "support/stored_match_check.h"
 
 namespace pool::client::test {
 namespace {
@@ -62,23 +59,8 @@ TEST_F(ThreeCushionMatchTest, TwoBotsPlayAGameToFivePointsOnTheCaromTable) {
   EXPECT_GE(last->seats[w].high_run, 1);
   ASSERT_EQ(last->balls.size(), 3u);
   for (const auto& b : last->balls) EXPECT_NEAR(b.pos.z(), 0.03075, 1e-9) << b.id;
-  // The spectator saw every shot in motion: frames of each, the first striking the shooter's
-  // ball.
-  for (std::uint32_t shot = 1; shot <= last->shot_number; ++shot) {
-    EXPECT_FALSE(recorder.frames(match, shot).empty()) << "no frame of shot " << shot;
-  }
-
-  server.kill(SIGTERM);
-  ASSERT_TRUE(server.waitExit(20s)) << "the server did not stop";
-  auto store = store::MatchStore::open(scratch_->file("pool.db"));
-  ASSERT_TRUE(store) << store.error();
-  EXPECT_EQ((*store)->tableOf(match), "carom-match");
-  auto kit = game::loadSharedTable("carom-match");
-  ASSERT_TRUE(kit) << kit.error();
-  const store::Audit audit = store::auditMatch(**store, match, **kit);
-  for (const auto& problem : audit.problems) ADD_FAILURE() << match << ": " << problem;
-  EXPECT_EQ(audit.shots, last->shot_number);
-  EXPECT_EQ(audit.winner, last->winner);
+  // The spectator saw every shot in motion; the store agrees.
+  expectStoredMatchAgrees(recorder, server, scratch_->file("pool.db"), match, "carom-match", *last);
   std::printf("three-cushion to 5, match %s: %u shots in %.1f s, %d-%d, innings %d-%d\n",
               match.c_str(), last->shot_number, seconds, last->seats[0].points,
               last->seats[1].points, last->seats[0].innings, last->seats[1].innings);

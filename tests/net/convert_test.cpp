@@ -49,7 +49,7 @@ TEST(Convert, BallRoundTripsExactlyInEveryState) {
 
 TEST(Convert, BallFromWireRejectsBadIdAndState) {
   pool_BallState b = toWire(oddBall(1));
-  b.id = 16;
+  b.id = 22;
   EXPECT_FALSE(fromWire(b));
   b.id = 1;
   setRawValue(b.state, 99);

@@ -62,11 +62,10 @@ TEST(ShotCommandCheck, EachSpoiledFieldIsCaughtWithItsReason) {
       {"miscue", [](auto& c) { c.tip_side = 0.4, c.tip_height = 0.31; },
        CommandProblem::TipOutOfRange},
       {"yaw 7", [](auto& c) { c.yaw = 7.0; }, CommandProblem::YawOutOfRange},
-      {"called ball 16", [](auto& c) { c.called_ball = 16, setText(c.called_pocket, "left_side"); },
+      {"called ball 22", [](auto& c) { c.called_ball = 22, setText(c.called_pocket, "left_side"); },
        CommandProblem::BadCall},
       {"called ball 0", [](auto& c) { c.called_ball = 0, setText(c.called_pocket, "left_side"); },
        CommandProblem::BadCall},
-      {"ball without pocket", [](auto& c) { c.called_ball = 3; }, CommandProblem::BadCall},
       {"pocket without ball", [](auto& c) { setText(c.called_pocket, "left_side"); },
        CommandProblem::BadCall},
       {"pocket with a space", [](auto& c) { c.called_ball = 3, setText(c.called_pocket, "a b"); },
@@ -96,6 +95,13 @@ TEST(ShotCommandCheck, EdgesOfRangesAreLegal) {
   c->has_cue_ball_placement = true, c->cue_ball_x = -1.27, c->cue_ball_y = 0.635;
   c->called_ball = 15, setText(c->called_pocket, "foot_right_corner");
   resizeSequence(c->signature, 64);
+  const CommandCheck check = validateShotCommand(*c);
+  EXPECT_TRUE(check.ok()) << check.error();
+}
+
+TEST(ShotCommandCheck, ABallWithoutAPocketIsSnookersNomination) {
+  auto c = goodCommand();
+  c->called_ball = 21;  // the black, nominated (the rules of a pool game refuse it)
   const CommandCheck check = validateShotCommand(*c);
   EXPECT_TRUE(check.ok()) << check.error();
 }

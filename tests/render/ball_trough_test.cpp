@@ -1,4 +1,5 @@
-// The pocketed-ball trough: pocketing order, balls leaving it, and where its slots are.
+// The pocketed-ball trough: pocketing order, balls leaving it, where its slots are, and a snooker
+// set's 22.
 #include "client/render/ball_trough.h"
 
 #include <gtest/gtest.h>
@@ -57,6 +58,36 @@ TEST_F(BallTroughTest, SlotsLieOutsideTheTableUnderTheRailOneDiameterApart) {
     }
   }
   EXPECT_GT(trough.slot(0).x(), trough.slot(15).x()) << "the first ball sits at the foot end";
+}
+
+// A snooker set: every ball of it (the cue ball and 1-21) pocketed at once has a slot, the row
+// within the table's length and the channel's ends round it.
+TEST(BallTroughSnookerTest, HoldsEverySnookerBall) {
+  auto s = tableScene("snooker-12ft");
+  ASSERT_TRUE(static_cast<bool>(s)) << s.error();
+  ASSERT_EQ(s->ball_set, BallSet::Snooker);
+  const int slots = troughSlotsFor(s->ball_set);
+  EXPECT_EQ(slots, 22);
+  EXPECT_EQ(troughSlotsFor(BallSet::Pool), 16);
+  BallTrough trough(s->geometry, s->ball_radius, slots);
+  std::vector<SceneBall> balls;
+  for (int id = 0; id <= 21; ++id)
+    balls.push_back({id, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), true});
+  trough.update(balls);
+  const double r = s->ball_radius;
+  double lo = 1e9, hi = -1e9;
+  for (const auto& p : trough.mesh().positions) {
+    lo = std::min(lo, double(p.x));
+    hi = std::max(hi, double(p.x));
+  }
+  for (int id = 0; id <= 21; ++id) {
+    const auto slot = trough.slotOf(id);
+    ASSERT_TRUE(slot.has_value()) << id;
+    const Eigen::Vector3d p = trough.slot(*slot);
+    EXPECT_LT(std::abs(p.x()), s->geometry.length / 2.0) << id;
+    EXPECT_GE(p.x() - r, lo) << id << ": inside the channel's head end";
+    EXPECT_LE(p.x() + r, hi) << id << ": inside its foot end";
+  }
 }
 
 }  // namespace

@@ -289,7 +289,8 @@ TEST(ThreeCushionIntent, NothingIsCalledOrChosen) {
   EXPECT_EQ(tableOf(Game::NineBall, "wpa-8ft"), "wpa-8ft");
   EXPECT_EQ(gameOfName("three-cushion"), Game::ThreeCushion);
   EXPECT_EQ(gameOfName("9"), Game::NineBall);
-  EXPECT_FALSE(gameOfName("snooker"));
+  EXPECT_EQ(gameOfName("snooker"), Game::Snooker);
+  EXPECT_FALSE(gameOfName("carom"));
 }
 
 }  // namespace

@@ -179,7 +179,7 @@ TEST(Scenes, ThreeCushionScoresAPoint) {
 
 TEST(Scenes, SnookerBlackDropsInTheTopCorner) {
   const Ran r = runScene("snooker_black");
-  const auto pockets = eventsOf(r, EventType::Pocket, 7);
+  const auto pockets = eventsOf(r, EventType::Pocket, 21);  // the black
   ASSERT_EQ(pockets.size(), 1u);
   EXPECT_EQ(pockets.front().where, "foot_left_corner");
   // The first contact is at two snooker radii (52.5 mm between centres), the cue ball's centre

@@ -49,6 +49,7 @@ enum Domain : std::uint32_t {
   kOpensTable = 123,
   kThreeCushionGame = 130,
   kWindowThreeCushion = 131,
+  kSnookerFrame = 132,
   kWebPage = 40,  ///< 40–59: the web spectator's tests and benchmark
   kWebGateway = 41,
   kWebSlowBrowser = 43,  ///< (42: web_bench)
@@ -56,6 +57,7 @@ enum Domain : std::uint32_t {
   kWebConnectionFlood = 45,
   kWebLobbyFlood = 46,
   kWebPinFlood = 47,
+  kWebSnookerPage = 48,
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,

@@ -1,6 +1,6 @@
 // The gateway's fan-out with browsers faked as sinks: late join, one message shared by every
 // browser of a match, bad requests refused without a change, slow browsers dropped alone, table
-// names from the wire kept inside assets/tables.
+// names from the wire kept inside assets/tables, a snooker table's marks and balls.
 #include "client/web/gateway.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 #include "client/web/out_queue.h"
 #include "client/web/web_json.h"
 #include "support/client_fixture.h"
+#include "table/table_spec.h"
 
 namespace pool::web {
 namespace {
@@ -182,6 +183,50 @@ TEST_F(GatewayTest, ASlowBrowserIsDroppedAndTheOthersGetEverything) {
   for (const auto& t : fast.types()) frames += t == "frame" ? 1 : 0;
   EXPECT_EQ(frames, 50);
   EXPECT_EQ(slow.got.size(), slow.room);
+}
+
+// A snooker table's message: the marks from its spec's figures (the baulk line 737 mm from the
+// bottom cushion at -x, the D's radius, the black's spot 324 mm from the top cushion), 22 balls
+// without numbers or stripes, the fifteen reds alike and the six colours apart from the reds and
+// from one another; a pool table's carries no marks and its 16 balls.
+TEST(TableJsonTest, ASnookerTableCarriesItsMarksAndItsSetOfBalls) {
+  const auto spec = table::loadTableSpec("snooker-12ft");
+  ASSERT_TRUE(spec) << spec.error();
+  ASSERT_TRUE(spec->snooker_marks.has_value());
+  const auto text = tableJson("snooker-12ft");
+  ASSERT_TRUE(text) << text.error();
+  const json table = json::parse(*text);
+  const json& marks = table.at("snooker_marks");
+  ASSERT_TRUE(marks.is_object());
+  EXPECT_NEAR(marks.at("baulk_x").get<double>(),
+              -spec->length / 2 + spec->snooker_marks->baulk_line, 1e-12);
+  EXPECT_NEAR(marks.at("d_radius").get<double>(), spec->snooker_marks->d_radius, 1e-12);
+  EXPECT_NEAR(marks.at("spots").at("black")[0].get<double>(),
+              spec->length / 2 - spec->snooker_marks->black_spot, 1e-12);
+  EXPECT_NEAR(marks.at("spots").at("pink")[0].get<double>(), spec->length / 4, 1e-12);
+  EXPECT_GT(marks.at("line_width").get<double>(), 0.0015);
+  EXPECT_LT(marks.at("line_width").get<double>(), 0.0035);
+  EXPECT_EQ(table.at("colours").at("chalk").size(), 3u);
+
+  const json& balls = table.at("colours").at("balls");
+  ASSERT_EQ(balls.size(), 22u) << "the cue ball, 15 reds and six colours: ids 0-21";
+  for (const json& ball : balls) {
+    EXPECT_EQ(ball.at("number"), 0);
+    EXPECT_FALSE(ball.at("striped").get<bool>());
+  }
+  const auto colour = [&](int id) { return balls[static_cast<std::size_t>(id)].at("colour"); };
+  for (int id = 2; id <= 15; ++id) EXPECT_EQ(colour(id), colour(1)) << id;
+  for (int id = 16; id <= 21; ++id) {
+    EXPECT_NE(colour(id), colour(1)) << id;
+    EXPECT_NE(colour(id), colour(0)) << id;
+    for (int other = 16; other < id; ++other) EXPECT_NE(colour(id), colour(other)) << id;
+  }
+
+  const auto pool = tableJson("wpa-9ft");
+  ASSERT_TRUE(pool) << pool.error();
+  const json pool_table = json::parse(*pool);
+  EXPECT_TRUE(pool_table.at("snooker_marks").is_null());
+  EXPECT_EQ(pool_table.at("colours").at("balls").size(), 16u);
 }
 
 TEST(OutQueueTest, HoldsMessagesUpToItsBudgetAndRefusesPastIt) {

@@ -65,6 +65,8 @@ std::span<const BreakStroke> measuredBreaks(rules::Game game) {
       return kTenBall;
     case rules::Game::ThreeCushion:
       return {};  // no rack to break: the carom planner plays the opening
+    case rules::Game::Snooker:
+      return {};  // the break-off is a safety (planSnookerBreak)
   }
   return kEightBall;
 }
@@ -116,7 +118,56 @@ PlannedShot breakShot(const TableView& view, const Vec2& apex, const BreakStroke
   return shot;
 }
 
+// Snooker's break-off (a safety, as every player plays it): from the D halfway between the
+// brown and the yellow, a thin contact on the outside of the back row's end red on that side,
+// the cue ball off the top and side cushions back toward baulk. The strokes are tried in the
+// physics: the first legal one that brings the cue ball back behind the blue, else the legal one
+// ending farthest back.
+std::optional<PlannedShot> snookerBreakOff(PlanContext& context) {
+  const auto& d = context.view.context.snooker;
+  if (!d) return std::nullopt;
+  const double r = context.view.radius();
+  const Vec2 at = d->brown + 0.5 * (d->yellow - d->brown);
+  std::optional<Vec2> end_red;
+  for (const auto& b : context.balls) {
+    if (!rules::isRed(b.id) || !physics::onTable(b.state)) continue;
+    const Vec2 p = b.pos.head<2>();
+    // The back row's (largest x) ball nearest the cue ball's side.
+    if (!end_red || p.x() > end_red->x() + r ||
+        (std::abs(p.x() - end_red->x()) <= r && p.y() < end_red->y()))
+      end_red = p;
+  }
+  if (!end_red) return std::nullopt;
+  const Vec2 to = (*end_red - at).normalized();
+  const Vec2 outside(to.y(), -to.x());  // square to the line, away from the pack (−y)
+  std::optional<PlannedShot> best;
+  double best_back = std::numeric_limits<double>::infinity();
+  for (double thin : {0.92, 0.85, 0.97}) {
+    for (double speed : {2.6, 3.0, 2.2}) {
+      PlannedShot shot = context.blank(ShotKind::Break);
+      shot.cue_ball_at = at;
+      const Vec2 aim = *end_red + thin * 2.0 * r * outside;
+      shot.cue = stroke(std::atan2(aim.y() - at.y(), aim.x() - at.x()), speed, 0.0);
+      shot.cue.tip_side = -0.3;  // running side off the top cushion
+      if (!placementLegal(context, at)) return std::nullopt;
+      const auto trial = context.tryShot(shot);
+      if (!trial) return best;
+      if (!legalBreak(*trial)) continue;
+      shot.value = breakValue(*trial);
+      if (trial->cue_end.x() < 0.0) return shot;
+      if (trial->cue_end.x() < best_back) {
+        best_back = trial->cue_end.x();
+        best = shot;
+      }
+    }
+  }
+  return best;
+}
+
 PlannedShot planBreak(PlanContext& context) {
+  if (context.view.rules.game == rules::Game::Snooker) {
+    if (auto off = snookerBreakOff(context)) return *off;
+  }
   const Vec2 apex = apexBall(context.view, context.balls);
   std::optional<PlannedShot> best;
   for (const BreakStroke& candidate : measuredBreaks(context.view.rules.game)) {

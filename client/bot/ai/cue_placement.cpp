@@ -69,6 +69,24 @@ std::vector<Vec2> kitchenGrid(const PlanContext& context) {
   return spots;
 }
 
+// Snooker: spots in the D, on rings about the brown spot across its baulk half.
+std::vector<Vec2> dGrid(const PlanContext& context) {
+  std::vector<Vec2> spots;
+  const auto& d = context.view.context.snooker;
+  if (!d) return spots;
+  constexpr std::array<double, 4> kRings{0.0, 0.35, 0.7, 0.97};  // of the D's radius
+  constexpr int kSteps = 7;                                      // across the half circle
+  constexpr double kPi = 3.141592653589793;
+  for (double ring : kRings) {
+    for (int k = 0; k < (ring == 0.0 ? 1 : kSteps); ++k) {
+      const double a = kPi / 2.0 + kPi * k / (kSteps - 1);  // +y round through baulk to −y
+      const Vec2 at = d->brown + ring * d->d_radius * Vec2(std::cos(a), std::sin(a));
+      if (placementLegal(context, at)) spots.push_back(at);
+    }
+  }
+  return spots;
+}
+
 }  // namespace
 
 std::vector<physics::Ball> withoutCueBall(const std::vector<physics::Ball>& balls) {
@@ -93,6 +111,9 @@ std::vector<PotCandidate> potsFromHand(const PlanContext& context) {
   if (context.play_state.ball_in_hand == rules::BallInHand::BehindHeadString) {
     for (const Vec2& at : kitchenGrid(context)) addLinesFrom(context, at, legal, table, out);
   }
+  if (context.play_state.ball_in_hand == rules::BallInHand::InTheD) {
+    for (const Vec2& at : dGrid(context)) addLinesFrom(context, at, legal, table, out);
+  }
   std::stable_sort(out.begin(), out.end(), [](const PotCandidate& a, const PotCandidate& b) {
     return a.line.difficulty < b.line.difficulty;
   });
@@ -100,6 +121,7 @@ std::vector<PotCandidate> potsFromHand(const PlanContext& context) {
 }
 
 std::vector<Vec2> restingSpots(const PlanContext& context) {
+  if (context.play_state.ball_in_hand == rules::BallInHand::InTheD) return dGrid(context);
   std::vector<Vec2> spots;
   const Vec2 head = context.view.context.spots.head_spot;
   const double hs = context.view.headStringX();

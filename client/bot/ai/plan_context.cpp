@@ -21,6 +21,7 @@ PlannedShot PlanContext::blank(ShotKind kind) const {
   PlannedShot shot;
   shot.kind = kind;
   shot.choice = choice;
+  shot.calls_pockets = view.rules.game != rules::Game::Snooker;
   return shot;
 }
 

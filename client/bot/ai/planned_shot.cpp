@@ -25,6 +25,11 @@ const char* toString(ShotKind kind) {
 
 rules::Intent intentOf(const PlannedShot& shot) {
   rules::Intent intent;
+  if (!shot.calls_pockets) {
+    // Snooker: a choice is made before the stroke, never with it.
+    if (shot.nominate) intent.ball = shot.called_ball;
+    return intent;
+  }
   if (shot.called_ball) intent = rules::Intent::call(*shot.called_ball, shot.called_pocket);
   intent.safety = shot.safety;
   intent.choice = shot.choice;
@@ -34,7 +39,7 @@ rules::Intent intentOf(const PlannedShot& shot) {
 bool shoots(const PlannedShot& shot) {
   return !shot.choice || *shot.choice == rules::Choice::PlayOn ||
          *shot.choice == rules::Choice::BallInHand || *shot.choice == rules::Choice::RespotEight ||
-         *shot.choice == rules::Choice::PushOut;
+         *shot.choice == rules::Choice::PushOut || *shot.choice == rules::Choice::FreeBall;
 }
 
 std::string describe(const PlannedShot& shot) {

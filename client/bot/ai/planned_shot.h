@@ -29,8 +29,12 @@ const char* toString(ShotKind kind);
 struct PlannedShot {
   ShotKind kind = ShotKind::Fallback;
   physics::CueShot cue;
-  std::optional<int> called_ball;              ///< with called_pocket
-  std::string called_pocket;                   ///< pocket name; empty: none
+  std::optional<int> called_ball;  ///< with called_pocket
+  std::string called_pocket;       ///< pocket name; empty: none
+  /// False in snooker: no pocket is called and no safety declared; the called ball is what the
+  /// planner aims to pot, declared only as a nomination (`nominate`).
+  bool calls_pockets = true;
+  bool nominate = false;                       ///< snooker: the called ball is the nominated ball
   bool safety = false;                         ///< a declared safety
   std::optional<Eigen::Vector2d> cue_ball_at;  ///< ball in hand: place the cue ball here, m
   std::optional<rules::Choice> choice;         ///< the answer to pending options
@@ -39,7 +43,7 @@ struct PlannedShot {
   std::optional<double> success;
 };
 
-/// The shooter's declared intent for the rules.
+/// The shooter's declared intent for the rules (snooker: the nominated ball, if any, alone).
 rules::Intent intentOf(const PlannedShot& shot);
 
 /// True when the decision carries a stroke (everything but a re-racking choice).

@@ -100,6 +100,7 @@ PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
   shot.cue = stroke(candidate.line.yaw, speed * variant.speed_factor, variant.tip);
   shot.called_ball = candidate.line.ball;
   shot.called_pocket = context.view.pockets[static_cast<std::size_t>(candidate.line.pocket)].name;
+  shot.nominate = context.play_state.ball_on == rules::kOnColour || context.play_state.free_ball;
   shot.cue_ball_at = candidate.place;
   return shot;
 }

@@ -25,6 +25,7 @@ rules::GameState stateAfterChoice(rules::GameState state, std::optional<rules::C
   if (*choice == rules::Choice::BallInHand)
     state.ball_in_hand = rules::BallInHand::BehindHeadString;
   state.push_out = *choice == rules::Choice::PushOut;
+  state.free_ball = *choice == rules::Choice::FreeBall;
   state.options.clear();
   return state;
 }
@@ -62,8 +63,9 @@ PlannedShot planPlay(PlanContext& context) {
 
 std::optional<rules::Choice> chooseOption(const std::vector<rules::Choice>& options) {
   if (options.empty()) return std::nullopt;
-  for (rules::Choice c : {rules::Choice::BallInHand, rules::Choice::PlayOn, rules::Choice::ReBreak,
-                          rules::Choice::OpponentReBreaks}) {
+  // Snooker: a free ball is the table as it lies with one more ball to play at.
+  for (rules::Choice c : {rules::Choice::BallInHand, rules::Choice::FreeBall, rules::Choice::PlayOn,
+                          rules::Choice::ReBreak, rules::Choice::OpponentReBreaks}) {
     if (offered(options, c)) return c;
   }
   return options.front();
@@ -94,7 +96,7 @@ PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
                       options_.samples,
                       options_.leave_weight};
   if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand &&
-      *choice != rules::Choice::PushOut) {
+      *choice != rules::Choice::PushOut && *choice != rules::Choice::FreeBall) {
     // Re-racking answers carry no stroke (a re-spotted 8 is never chosen: re-breaking is simpler).
     return context.blank(ShotKind::Choice);
   }

@@ -209,6 +209,11 @@ window.poolTest = {
       rect: [r.left, r.top, r.width, r.height],
     };
   },
+  /** Takes one message as if the gateway had sent it (a table or a state drawn without a match
+   * on the wire). */
+  receive(message) {
+    receive(message);
+  },
   status() {
     return {
       connected: app.connected,

@@ -1,6 +1,7 @@
-// The table and balls in three.js, from the gateway's table message: felt, cushions along the
-// nose lines, wooden rails, pocket holes, the two lamps' spot light and numbered balls, in the
-// game window's colours (linear RGB, as its palette gives them).
+// The table and balls in three.js, from the gateway's table message: felt (a snooker table's with
+// its baulk line, D and spots chalked on it), cushions along the nose lines, wooden rails, pocket
+// holes, the two lamps' spot light and numbered balls, in the game window's colours (linear RGB,
+// as its palette gives them).
 import * as THREE from './three.module.js';
 
 const RAIL_HEIGHT_OVER_NOSE = 1.15;
@@ -49,6 +50,48 @@ function ballTexture(id, look) {
   return texture;
 }
 
+/** The cloth of a snooker table's bed (`sx` × `sy` m, centred on the table) as a texture: the
+ * felt with the baulk line, the D and the six spots chalked on it, as the window's marked felt
+ * mixes chalk into the felt (`marks.strength` of it where a mark covers); null for a table
+ * without marks. About 1.8 mm a texel, mipmapped: a line thinner than a pixel shows fainter,
+ * never broken. */
+function markedCloth(table, sx, sy) {
+  const marks = table.snooker_marks;
+  if (!marks) return null;
+  const perMetre = 560;
+  const canvas = document.createElement('canvas');
+  canvas.width = Math.ceil(sx * perMetre);
+  canvas.height = Math.ceil(sy * perMetre);
+  const g = canvas.getContext('2d');
+  const felt = table.colours.felt;
+  const s = marks.strength;
+  const chalk = table.colours.chalk.map((v, i) => felt[i] * (1 - s) + v * s);
+  g.fillStyle = linear(felt).getStyle();
+  g.fillRect(0, 0, canvas.width, canvas.height);
+  // The table frame: x to the right, y up the canvas, metres.
+  g.setTransform(canvas.width / sx, 0, 0, -canvas.height / sy, canvas.width / 2, canvas.height / 2);
+  g.strokeStyle = g.fillStyle = linear(chalk).getStyle();
+  g.lineWidth = marks.line_width;
+  const halfWidth = table.width / 2;
+  const brown = marks.spots.brown;
+  g.beginPath();
+  g.moveTo(marks.baulk_x, -halfWidth);
+  g.lineTo(marks.baulk_x, halfWidth);
+  g.stroke();
+  g.beginPath(); // the D: from +y round through -x (the baulk side) to -y
+  g.arc(brown[0], brown[1], marks.d_radius, Math.PI / 2, 1.5 * Math.PI);
+  g.stroke();
+  for (const at of Object.values(marks.spots)) {
+    g.beginPath();
+    g.arc(at[0], at[1], marks.spot_radius, 0, 2 * Math.PI);
+    g.fill();
+  }
+  const texture = new THREE.CanvasTexture(canvas);
+  texture.colorSpace = THREE.SRGBColorSpace;
+  texture.anisotropy = 8;
+  return texture;
+}
+
 /** Builds the scene of one table; returns {scene, balls: Map(id → mesh), outer: [x, y]}. */
 export function buildTable(table) {
   const scene = new THREE.Scene();
@@ -75,12 +118,14 @@ export function buildTable(table) {
   }
 
   const felt = new THREE.MeshLambertMaterial({ color: linear(c.felt) });
+  const cloth = markedCloth(table, table.length + 2 * cw, table.width + 2 * cw);
+  const bedMaterial = cloth ? new THREE.MeshLambertMaterial({ map: cloth }) : felt;
   const cushion = new THREE.MeshLambertMaterial({ color: linear(c.cushion) });
   const wood = new THREE.MeshLambertMaterial({ color: linear(c.wood) });
   const pocket = new THREE.MeshBasicMaterial({ color: linear(c.pocket) });
 
   const bed = new THREE.Mesh(new THREE.PlaneGeometry(table.length + 2 * cw, table.width + 2 * cw),
-    felt);
+    bedMaterial);
   scene.add(bed);
 
   // Cushions: each nose segment pushed back by the cushion's width, up to the rail's top.
