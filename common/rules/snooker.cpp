@@ -16,14 +16,15 @@ namespace {
 using physics::EventType;
 using Vec2 = Eigen::Vector2d;
 
-/// A ball counts as touching the cue ball when their surfaces are this close, m (Section 3, 18:
-/// the referee's "touching ball"; a tenth of a millimetre is below what an eye can tell apart).
+/// A ball counts as touching the cue ball when their surfaces are this close, m (Section 3,
+/// "Touching Ball": the referee's "touching ball"; a tenth of a millimetre is below what an eye can
+/// tell apart).
 constexpr double kTouching = 1e-4;
 /// The re-spot search walks its line in steps of this length, m.
 constexpr double kRespotStep = 5e-4;
-/// The least penalty (Section 3, 12).
+/// The least penalty (Section 3, "Fouls").
 constexpr int kMinPenalty = 4;
-/// A foul after a red before a colour is nominated or hit (Section 3, 12(c)).
+/// A foul after a red before a colour is nominated or hit (Section 3, "Fouls").
 constexpr int kUnnominatedPenalty = 7;
 
 bool hasId(const std::vector<int>& ids, int id) {
@@ -114,8 +115,8 @@ bool clearOfAll(const Vec2& p, const std::vector<Vec2>& taken, double r) {
                      [&](const Vec2& c) { return (c - p).norm() >= 2.0 * r; });
 }
 
-/// Section 3, 7: a colour's own spot; else the highest-valued free spot; else the nearest free
-/// point from its own spot toward the top cushion; else toward baulk.
+/// Section 3, "Spotting Colours": a colour's own spot; else the highest-valued free spot; else the
+/// nearest free point from its own spot toward the top cushion; else toward baulk.
 Vec2 respotColour(int colour, const std::vector<Vec2>& taken, const TableContext& table) {
   const double r = table.ball_radius;
   const Vec2 own = *table::snookerSpotOf(table.spec, colour);
@@ -189,7 +190,7 @@ std::vector<int> touchingCueBall(const std::vector<physics::Ball>& before, doubl
   return ids;
 }
 
-/// Section 3, 18(d): a touching ball the stroke moved (the cue ball meets it at once).
+/// Section 3, "Touching Ball": a touching ball the stroke moved (the cue ball meets it at once).
 bool touchingBallPushed(const Shot& shot, const std::vector<int>& touching) {
   constexpr double kAtOnce = 0.01;  // s: a contact this soon after the strike is the stroke's own
   for (const auto& e : shot.events) {
@@ -346,7 +347,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   const bool touching_on = std::any_of(touching.begin(), touching.end(),
                                        [&](int id) { return hasId(target.first, id); });
 
-  // Fouls, and the values they are measured from (Section 3, 12).
+  // Fouls, and the values they are measured from (Section 3, "Fouls").
   int penalty = target.on_value;
   const auto involve = [&](int id) { penalty = std::max(penalty, snookerValue(id)); };
   bool failed_to_hit = false;
@@ -393,7 +394,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
 
   // Balls back on the table: colours potted while reds were on the table before the stroke, or
   // after the last red, or on a foul, or as a free ball; colours off the table; colours the
-  // watchdog took off. The highest first (Section 3, 7(c)).
+  // watchdog took off. The highest first (Section 3, "Spotting Colours").
   const bool reds_before = redsLeft(shot.before) > 0;
   std::vector<int> back;
   for (int id : potted) {
@@ -433,7 +434,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   if (v.legal()) {
     for (int id : potted) {
       // A free ball scores as the ball on; with the ball on potted too, only the ball on counts
-      // unless the ball on is a red (Section 3, 12(e)-(f)).
+      // unless the ball on is a red (Section 3, "Snookered after a Foul").
       if (id == target.free_ball) {
         const bool with_on = std::any_of(potted.begin(), potted.end(), [&](int p) {
           return p != target.free_ball && legalPot(p);
@@ -447,8 +448,8 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   } else {
     v.penalty = penalty;
     next.points[static_cast<std::size_t>(opponent)] += penalty;
-    // Section 3, 14: a foul that does not first hit a ball on is a miss, unless only the black is
-    // left or either player needed snookers before or after the stroke.
+    // Section 3, "Foul and a Miss": a foul that does not first hit a ball on is a miss, unless only
+    // the black is left or either player needed snookers before or after the stroke.
     GameState scored_after = next;
     const bool snookers_needed = snookersRequired(state, shot.before, 0) > 0 ||
                                  snookersRequired(state, shot.before, 1) > 0 ||
@@ -478,7 +479,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   }
   v.turn_continues = scored > 0;
 
-  // The ball on next (Section 3, 4-5).
+  // The ball on next (Section 3, "Play").
   const int reds_after = redsLeft(after);
   if (v.turn_continues && state.ball_on == kOnRed) {
     next.ball_on = kOnColour;
@@ -489,7 +490,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   next.ball_in_hand = v.ball_in_hand;
   next.dry_turns = potted.empty() ? state.dry_turns + 1 : 0;
 
-  // The end of the frame (Section 3, 4(e)-(f)).
+  // The end of the frame (Section 3, "Play").
   const int p0 = next.points[0], p1 = next.points[1];
   if (next.misses[static_cast<std::size_t>(shooter)] >= 3) {
     endTheFrame(next, v, opponent, GameEnd::ThreeMisses);

@@ -61,8 +61,8 @@ std::vector<Vec2> pathPx(const SvgView& view, const physics::Ball& start,
   return out;
 }
 
-std::string drawPath(const std::vector<Vec2>& pts, int id) {
-  const BallStyle style = ballStyle(id);
+std::string drawPath(const std::vector<Vec2>& pts, int id, const table::TableSpec& spec) {
+  const BallStyle style = ballStyle(id, spec);
   const std::string dash = style.striped ? " stroke-dasharray=\"7 4\"" : "";
   const std::string common = "fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
   // A dark underlay keeps light paths (the cue ball's, the yellow) visible on the cloth.
@@ -73,8 +73,9 @@ std::string drawPath(const std::vector<Vec2>& pts, int id) {
 }
 
 // A ball seen from above, radius R to scale, with its number on a white disc.
-std::string drawBall(const SvgView& view, const Vec2& at, int id, double radius) {
-  const BallStyle style = ballStyle(id);
+std::string drawBall(const SvgView& view, const Vec2& at, int id, double radius,
+                     const table::TableSpec& spec) {
+  const BallStyle style = ballStyle(id, spec);
   const Vec2 c = view.toPx(at);
   const double r = radius * view.scale;
   if (style.cue) return svgCircle(c, r, "fill=\"#ffffff\" stroke=\"#222222\" stroke-width=\"1.5\"");
@@ -126,12 +127,12 @@ std::string plotSvg(const Scenario& scenario, const physics::ShotOutcome& outcom
   std::string starts, paths, ends, pocketed, events;
   for (const auto& ball : scenario.balls) {
     const std::vector<Vec2> pts = pathPx(view, ball, outcome);
-    starts += drawBall(view, ball.pos.head<2>(), ball.id, r);
-    if (pts.size() > 1) paths += drawPath(pts, ball.id);
+    starts += drawBall(view, ball.pos.head<2>(), ball.id, r, scenario.spec);
+    if (pts.size() > 1) paths += drawPath(pts, ball.id, scenario.spec);
     const physics::Ball* last = findBall(outcome.balls, ball.id);
     const bool on_table = last == nullptr || physics::onTable(last->state);
     (on_table ? ends : pocketed) +=
-        drawBall(view, endPoint(ball.id, ball.pos.head<2>(), outcome), ball.id, r);
+        drawBall(view, endPoint(ball.id, ball.pos.head<2>(), outcome), ball.id, r, scenario.spec);
   }
   for (const auto& e : outcome.events) events += drawEvent(view, e);
   return svgHeader(view, scenario.spec.name) + drawTable(view, scenario.spec, scenario.geometry) +

@@ -60,15 +60,16 @@ inline constexpr int kSnookerBlue = 19;
 inline constexpr int kSnookerPink = 20;
 inline constexpr int kSnookerBlack = 21;
 
-/// The gap between the pink and the apex red, m. Official Rules of Snooker, Section 2, 2(a): the
-/// apex red "as near to the pink as possible without touching it"; a millimetre is the least a
-/// racking by hand reliably leaves.
+/// The gap between the pink and the apex red, m. Official Rules of Snooker, Section 2, "Position of
+/// Balls": the apex red "as near to the pink as possible without touching it"; a millimetre is the
+/// least a racking by hand reliably leaves.
 inline constexpr double kSnookerApexGap = 1e-3;
 
-/// Snooker's rack (Section 2, 2(a)): the reds in a triangle of five rows, its apex kSnookerApexGap
-/// behind the pink spot on the long string and its base toward the top cushion; the colours on
-/// their spots; the cue ball in the D halfway between the brown and the yellow spots (the breaker
-/// places it). Empty for a spec without snooker marks. Neighbouring reds are `gap` apart.
+/// Snooker's rack (Section 2, "Position of Balls"): the reds in a triangle of five rows, its apex
+/// kSnookerApexGap behind the pink spot on the long string and its base toward the top cushion; the
+/// colours on their spots; the cue ball in the D halfway between the brown and the yellow spots
+/// (the breaker places it). Empty for a spec without snooker marks. Neighbouring reds are `gap`
+/// apart.
 std::vector<BallPlacement> snookerRack(const TableSpec& spec, double ball_radius, double gap = 0.0);
 
 /// The spot of a snooker colour (16–21), for a spec with snooker marks.

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "bad_scenarios.h"
+#include "scenario/ball_style.h"
 #include "scenario/scenario.h"
 #include "svg_check.h"
 
@@ -96,6 +97,24 @@ TEST(PlotSvg, StripesAreDashedAndColoursFollowTheBalls) {
 TEST(PlotSvg, SameOutcomeSameBytes) {
   const Scenario s = twoBalls();
   EXPECT_EQ(plotSvg(s, madeUpOutcome(s)), plotSvg(s, madeUpOutcome(s)));
+}
+
+// A table's own set: the snooker black drawn black (a pool set would draw id 21 grey), the carom
+// red (id 2, blue in a pool set) red.
+TEST(PlotSvg, SnookerAndCaromTablesDrawTheirOwnBalls) {
+  auto snooker = loadScenario("snooker_black");
+  ASSERT_TRUE(snooker) << snooker.error();
+  EXPECT_EQ(ballStyle(21, snooker->spec).colour, "#111111");
+  EXPECT_EQ(ballStyle(7, snooker->spec).colour, ballStyle(1, snooker->spec).colour);  // reds
+  const std::string svg = plotSvg(*snooker, runScenario(*snooker).value());
+  EXPECT_NE(svg.find("data-ball=\"21\" fill=\"none\""), std::string::npos);
+  EXPECT_NE(svg.find("stroke=\"#111111\""), std::string::npos);
+  EXPECT_EQ(svg.find("#888888"), std::string::npos);
+  auto carom = loadScenario("three_cushion");
+  ASSERT_TRUE(carom) << carom.error();
+  EXPECT_EQ(ballStyle(2, carom->spec).colour, "#d42222");
+  EXPECT_EQ(ballStyle(1, carom->spec).colour, "#f2c200");
+  EXPECT_NE(ballStyle(2, carom->spec).colour, ballStyle(2).colour);
 }
 
 }  // namespace
