@@ -90,5 +90,53 @@ TEST(Cloth, FollowAndDrawRollSpeedsAndTimes) {
   }
 }
 
+// The same closed forms on each table's own ball and cloth (docs/PHYSICS.md; Alciatore's strike
+// and Leckie & Greenspan's cloth): a strike at cue speed c and tip offset b (fraction of R) gives
+// v0 = 2c / (1 + m/M + 5b²/2) and ω0 = 5 v0 b / (2R); the ball slides until |v − ωR| is gone,
+// taking 2|v0 − ω0R| / (7 u_s g), and rolls on at (5 v0 + 2 ω0 R) / 7. The snooker ball (52.5 mm,
+// 142 g) and the carom ball (61.5 mm, 210 g) differ from the pool ball in size and mass, so in
+// v0 and ω0; the cloth comes from each table's spec. Tolerance: 1e-6 relative for the analytic
+// event time, 1e-5 for speeds read from samples. At b = 2/5 (2/5 of each ball's own radius) the
+// ball rolls from the strike: no slide at all.
+TEST(Cloth, EachTablesBallFollowsTheClosedFormsWithItsOwnSizeMassAndCloth) {
+  for (const char* name : {"wpa-9ft", "snooker-12ft", "carom-match"}) {
+    auto table = table::loadTableSpec(name);
+    ASSERT_TRUE(table) << table.error();
+    table::TableSpec spec = openSpec();
+    spec.params = table->params;
+    const double R = spec.params.ball_radius, m = spec.params.ball_mass;
+    const double M = spec.params.cue_mass, us = spec.params.u_s, ur = spec.params.u_r;
+    for (const double b : {0.0, 0.4, 0.5, -0.3}) {
+      CueShot shot;
+      shot.speed = 2.0;
+      shot.tip_height = b;
+      SimOptions opt;
+      opt.sample_hz = 1000.0;
+      const auto out = shootOpen(spec, {ballAt(0, -30.0, 0.0, R)}, shot, opt);
+      ASSERT_GT(out.trajectory.size(), 2u) << name;
+      const double v0 = 2.0 * 2.0 / (1.0 + m / M + 2.5 * b * b);
+      const double w0 = 5.0 * v0 * b / (2.0 * R);
+      const Ball& first = out.trajectory[0].balls[0];
+      EXPECT_NEAR(first.vel.x(), v0, 1e-6 * v0) << name << ", b = " << b;
+      EXPECT_NEAR(first.ang_vel.y(), w0, 1e-6 * std::max(1.0, std::abs(w0)))
+          << name << ", b = " << b;
+      const auto roll = eventsOf(out, EventType::SlideToRoll, 0);
+      if (b == 0.4) {
+        EXPECT_NEAR(w0 * R, v0, 1e-12) << name;  // natural roll
+        EXPECT_TRUE(roll.empty() || roll[0].t < 1e-9) << name << ": slid for " << roll[0].t;
+        continue;
+      }
+      ASSERT_EQ(roll.size(), 1u) << name << ", b = " << b;
+      const double slide = 2.0 * std::abs(v0 - w0 * R) / (7.0 * us * g);
+      EXPECT_NEAR(roll[0].t, slide, 1e-6 * slide) << name << ", b = " << b;
+      const Sample* s = sampleFrom(out, roll[0].t);
+      ASSERT_NE(s, nullptr) << name;
+      const double rolling = (5.0 * v0 + 2.0 * w0 * R) / 7.0;
+      const double v = s->balls[0].vel.x() + ur * g * (s->t - roll[0].t);
+      EXPECT_NEAR(v, rolling, 1e-5 * rolling) << name << ", b = " << b;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pool::physics::test
