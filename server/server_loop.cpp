@@ -4,9 +4,11 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/text.h"
 #include "server/match_publish.h"
+#include "server/store/rating_book.h"
 
 namespace pool::server {
 
@@ -481,7 +483,18 @@ void ServerLoop::publishChanges(double now) {
     published.spectators = m->spectators();
     published.info_at = now;
     published.entry = lobbyEntryOf(*m, registry_.serverId());
+    addRatings(*m, *published.entry);
     warnIfFailed(transport_.publish(*published.entry), "match info");
+  }
+}
+
+void ServerLoop::addRatings(const Match& match, protocol::LobbyEntry& entry) {
+  if (!store_) return;
+  for (std::size_t s = 0; s < 2; ++s) {
+    const auto& key = match.seats()[s].public_key;
+    if (!match.seats()[s].taken() || key.empty()) continue;
+    const double r = store::ratingOf(store_->database(), key, match.settings().game).rating;
+    entry.ratings[s] = static_cast<int>(std::lround(r));
   }
 }
 

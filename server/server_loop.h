@@ -122,6 +122,8 @@ class ServerLoop {
   /// Publishes the state and lobby entry of every match that changed, and the lobby entry of
   /// one whose spectators changed (at most once a kSpectatorCountPeriod).
   void publishChanges(double now);
+  /// Each seated player's rating in the match's game, from the store, into its lobby entry.
+  void addRatings(const Match& match, protocol::LobbyEntry& entry);
   void storeShot(const CommandAnswer& answer, const std::string& match);
   void stepReplay(double now);
   void storeChanges(const std::vector<std::string>& closed);

@@ -165,6 +165,7 @@ Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
   if (!settings) return fail<LobbyEntry>("match info " + entry.match, settings.error());
   entry.settings = *settings;
   entry.racks_won = {info.racks_won[0], info.racks_won[1]};
+  entry.ratings = {info.ratings[0], info.ratings[1]};
   entry.standard_physics = info.standard_physics;
   entry.protocol_version = info.protocol_version;
   return Result<LobbyEntry>::ok(std::move(entry));
@@ -367,6 +368,7 @@ Sample<pool_MatchInfo> toWire(const LobbyEntry& entry) {
   info.standard_physics = entry.standard_physics;
   for (std::size_t s = 0; s < 2; ++s) {
     info.racks_won[s] = static_cast<std::uint16_t>(entry.racks_won[s]);
+    info.ratings[s] = static_cast<std::uint16_t>(std::clamp(entry.ratings[s], 0, 65535));
   }
   return sample;
 }

@@ -35,7 +35,9 @@ struct LobbyEntry {
   std::uint32_t protocol_version = 0;
   MatchSettings settings;              ///< game, race, breaks, shot clock, practice
   std::array<int, 2> racks_won{0, 0};  ///< the score of the race
-  bool standard_physics = true;        ///< false: a practice table's coefficients were changed
+  /// Each seated player's rating in the table's game, rounded (0: a free or unsigned seat).
+  std::array<int, 2> ratings{0, 0};
+  bool standard_physics = true;  ///< false: a practice table's coefficients were changed
 };
 
 /// The answer to a join request (JoinReply).

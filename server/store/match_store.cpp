@@ -7,6 +7,7 @@
 
 #include "rules/game_rules.h"
 #include "server/store/online_backup.h"
+#include "server/store/rating_book.h"
 #include "server/store/record_json.h"
 #include "server/store/schema.h"
 
@@ -179,6 +180,8 @@ void MatchStore::writeMatch(const server::MatchSnapshot& m) {
         .run();
     seat.reset();
   }
+  // A decided match is rated with the write that stores its decision (once: rateDecided).
+  rateDecided(db_, m);
 }
 
 void MatchStore::saveMatches(const std::string& server_id, std::uint64_t opened,

@@ -1,5 +1,5 @@
 // Schema version 1 (matches, seats, shots), 2 (seats' public keys), 3 (banned keys), 4 (the
-// server's own key), 5 (match settings) and 6 (rack generators), and the refusals.
+// server's own key), 5 (match settings), 6 (rack generators) and 7 (ratings), and the refusals.
 #include "server/store/schema.h"
 
 #include <array>
@@ -58,8 +58,23 @@ constexpr const char* kVersion6 = R"sql(
 ALTER TABLE matches ADD COLUMN rack_generator INTEGER NOT NULL DEFAULT 0;
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3,
-                                                         kVersion4, kVersion5, kVersion6};
+// Ratings: each player's Glicko-2 rating per game (the key it signs with), and every rated
+// result with the ratings before and after it (one row per decided match: its id, and the rack
+// and shot it was decided at, which a rematch moves on).
+constexpr const char* kVersion7 = R"sql(
+CREATE TABLE ratings(
+  public_key BLOB NOT NULL, game INTEGER NOT NULL, rating REAL NOT NULL, deviation REAL NOT NULL,
+  volatility REAL NOT NULL, matches INTEGER NOT NULL, PRIMARY KEY(public_key, game));
+CREATE TABLE rated_results(
+  match TEXT NOT NULL, rack INTEGER NOT NULL, shot_number INTEGER NOT NULL, game INTEGER NOT NULL,
+  winner_key BLOB NOT NULL, loser_key BLOB NOT NULL,
+  winner_before REAL NOT NULL, winner_after REAL NOT NULL,
+  loser_before REAL NOT NULL, loser_after REAL NOT NULL,
+  PRIMARY KEY(match, rack, shot_number));
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3, kVersion4,
+                                                         kVersion5, kVersion6, kVersion7};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

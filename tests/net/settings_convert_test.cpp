@@ -23,6 +23,7 @@ TEST(SettingsConvert, LobbyEntryKeepsSettingsAndScore) {
   entry.match = "srv-1";
   entry.settings = tenBall();
   entry.racks_won = {2, 4};
+  entry.ratings = {1662, 1338};
   const auto sample = toWire(entry);  // owns the sequences the wire sample points into
   const pool_MatchInfo& wire = *sample;
   EXPECT_EQ(wire.game, 10);
@@ -30,6 +31,38 @@ TEST(SettingsConvert, LobbyEntryKeepsSettingsAndScore) {
   ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(back->settings, tenBall());
   EXPECT_EQ(back->racks_won, (std::array<int, 2>{2, 4}));
+  EXPECT_EQ(back->ratings, (std::array<int, 2>{1662, 1338}));
+}
+
+TEST(SettingsConvert, MatchStateKeepsSnookersBallOnFreeBallAndMisses) {
+  protocol::MatchView view;
+  view.match = "srv-1";
+  view.settings.game = rules::Game::Snooker;
+  view.phase = protocol::MatchPhase::Open;
+  view.ball_on = 20;  // the pink
+  view.free_ball = true;
+  view.ball_in_hand = rules::BallInHand::InTheD;
+  view.options = {rules::Choice::PlayOn, rules::Choice::FreeBall, rules::Choice::PassBack,
+                  rules::Choice::Replace};
+  view.seats[1].misses = 2;
+  view.seats[0].points = 47;
+  view.run = 12;
+  const auto sample = toWire(view);
+  EXPECT_EQ(sample->game, 22);
+  const auto back = fromWire(*sample);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(back->settings.game, rules::Game::Snooker);
+  EXPECT_EQ(back->ball_on, 20);
+  EXPECT_TRUE(back->free_ball);
+  EXPECT_EQ(back->ball_in_hand, rules::BallInHand::InTheD);
+  EXPECT_EQ(back->options, view.options);
+  EXPECT_EQ(back->seats[1].misses, 2);
+  EXPECT_EQ(back->seats[0].points, 47);
+  EXPECT_EQ(back->run, 12);
+  // A ball on past the last ball id is refused.
+  auto bad = toWire(view);
+  bad->ball_on = 22;
+  EXPECT_FALSE(fromWire(*bad));
 }
 
 TEST(SettingsConvert, MatchStateKeepsSettingsClockAndFouls) {

@@ -11,6 +11,7 @@
 #include "game/loaded_table.h"
 #include "server/store/match_audit.h"
 #include "server/store/match_store.h"
+#include "server/store/rating_book.h"
 #include "support/child_process.h"
 #include "support/match_recorder.h"
 
@@ -18,7 +19,9 @@ namespace pool::client::test {
 
 /// Checks that `recorder` saw frames of every shot of `last`, stops `server` (SIGTERM), and judges
 /// `match`'s stored shots again from the database `db` on `table`: no problem, as many shots and
-/// the same winner as `last`, and the match stored on that table.
+/// the same winner as `last`, and the match stored on that table; the two players (bots, each
+/// with a key of its own) rated once, the winner up and the loser down, in the store and the
+/// lobby.
 inline void expectStoredMatchAgrees(MatchRecorder& recorder, ChildProcess& server,
                                     const std::string& db, const std::string& match,
                                     const std::string& table, const MatchView& last) {
@@ -26,6 +29,14 @@ inline void expectStoredMatchAgrees(MatchRecorder& recorder, ChildProcess& serve
   for (std::uint32_t shot = 1; shot <= last.shot_number; ++shot) {
     EXPECT_FALSE(recorder.frames(match, shot).empty()) << "no frame of shot " << shot;
   }
+  // The lobby shows the players' new ratings: the winner above a new player's 1500, the loser
+  // below.
+  const auto w = static_cast<std::size_t>(last.winner);
+  const bool shown = recorder.pump(10s, [&] {
+    const LobbyEntry* e = recorder.client().lobby().find(match);
+    return e && e->ratings[w] > 1500 && e->ratings[1 - w] > 0 && e->ratings[1 - w] < 1500;
+  });
+  EXPECT_TRUE(shown) << "the lobby never showed the players' ratings";
   server.kill(SIGTERM);
   ASSERT_TRUE(server.waitExit(20s)) << "the server did not stop";
   auto store = store::MatchStore::open(db);
@@ -37,6 +48,10 @@ inline void expectStoredMatchAgrees(MatchRecorder& recorder, ChildProcess& serve
   for (const auto& problem : audit.problems) ADD_FAILURE() << match << ": " << problem;
   EXPECT_EQ(audit.shots, last.shot_number);
   EXPECT_EQ(audit.winner, last.winner);
+  const auto rated = store::ratedResults((*store)->database(), match);
+  ASSERT_EQ(rated.size(), 1u) << "the decided match was not rated once";
+  EXPECT_GT(rated[0].winner_after, rated[0].winner_before);
+  EXPECT_LT(rated[0].loser_after, rated[0].loser_before);
 }
 
 }  // namespace pool::client::test
