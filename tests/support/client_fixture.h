@@ -50,6 +50,7 @@ enum Domain : std::uint32_t {
   kThreeCushionGame = 130,
   kWindowThreeCushion = 131,
   kSnookerFrame = 132,
+  kWindowSnooker = 133,
   kWebPage = 40,  ///< 40–59: the web spectator's tests and benchmark
   kWebGateway = 41,
   kWebSlowBrowser = 43,  ///< (42: web_bench)
@@ -58,6 +59,8 @@ enum Domain : std::uint32_t {
   kWebLobbyFlood = 46,
   kWebPinFlood = 47,
   kWebSnookerPage = 48,
+  kWebSnookerScore = 49,
+  kWebSnookerLive = 50,
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,
