@@ -23,7 +23,7 @@ CommandCheck fail(CommandProblem problem, std::string text) {
 bool shoots(const pool_ShotOption& option) {
   const std::int32_t value = rawValue(option);
   return value != pool_OPTION_REBREAK && value != pool_OPTION_OPPONENT_REBREAKS &&
-         value != pool_OPTION_PASS_BACK;
+         value != pool_OPTION_PASS_BACK && value != pool_OPTION_REPLACE;
 }
 
 /// Printable ASCII without spaces; empty passes (an empty pocket name means none).
@@ -55,7 +55,7 @@ Check checkFinite(const pool_ShotCommand& c) {
 Check checkOption(const pool_ShotCommand& c) {
   // The enum arrives as an integer: anything outside the declared values is malformed.
   const std::int32_t value = rawValue(c.option);
-  if (value < pool_OPTION_NONE || value > pool_OPTION_PASS_BACK) {
+  if (value < pool_OPTION_NONE || value > pool_OPTION_REPLACE) {
     return fail(CommandProblem::BadOption, "option: not a known shot option");
   }
   return std::nullopt;

@@ -9,6 +9,7 @@
 #include "broken_promise.h"
 #include "net/shot_command_check.h"
 #include "net/wire_fields.h"
+#include "physics/ball.h"
 
 namespace pool::fuzz {
 
@@ -35,12 +36,13 @@ inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& che
     if (!std::isfinite(v)) violated("accepted a non-finite number", check);
   }
   const std::int32_t option = net::rawValue(c.option);
-  if (option < pool_OPTION_NONE || option > pool_OPTION_PASS_BACK) {
+  if (option < pool_OPTION_NONE || option > pool_OPTION_REPLACE) {
     violated("accepted an unknown option", check);
   }
-  // Re-racks and passing the table back are choices without a shot: no cue to check.
+  // Re-racks, passing the table back and snooker's balls put back are choices without a shot:
+  // no cue to check.
   const bool shoots = option != pool_OPTION_REBREAK && option != pool_OPTION_OPPONENT_REBREAKS &&
-                      option != pool_OPTION_PASS_BACK;
+                      option != pool_OPTION_PASS_BACK && option != pool_OPTION_REPLACE;
   constexpr double tol = physics::kRangeTolerance;  // exactly a limit is legal, give or take this
   if (shoots &&
       (c.speed <= 0.0 || c.speed > limits.max_speed || c.elevation < 0.0 ||
@@ -49,8 +51,11 @@ inline void checkVerdict(const pool_ShotCommand& c, const net::CommandCheck& che
     violated("accepted a shot out of range", check);
   }
   const bool has_ball = c.called_ball != -1;
-  if (has_ball && (c.called_ball < 1 || c.called_ball > 15)) violated("accepted a bad ball", check);
-  if (!net::terminated(c.called_pocket) || has_ball == net::textOf(c.called_pocket).empty()) {
+  if (has_ball && (c.called_ball < 1 || c.called_ball > physics::kMaxBallId)) {
+    violated("accepted a bad ball", check);
+  }
+  // A ball alone is snooker's nomination; a pocket needs a ball.
+  if (!net::terminated(c.called_pocket) || (!has_ball && !net::textOf(c.called_pocket).empty())) {
     violated("accepted a bad call", check);
   }
   if (c.has_cue_ball_placement &&

@@ -115,6 +115,20 @@ TEST(ShotCommandCheck, ChoicesWithoutAShotSkipTheCueRanges) {
   EXPECT_EQ(validateShotCommand(*c).code(), CommandProblem::NonFinite);
 }
 
+// Snooker's options are known on the wire: a free ball carries its stroke; the balls put back
+// carry none (the window sends a harmless placeholder, as for a re-rack). Past them, unknown.
+TEST(ShotCommandCheck, SnookersOptionsAreKnown) {
+  auto c = goodCommand();
+  c->option = pool_OPTION_FREE_BALL;
+  EXPECT_TRUE(validateShotCommand(*c).ok()) << validateShotCommand(*c).error();
+  c->speed = 0.0;
+  EXPECT_EQ(validateShotCommand(*c).code(), CommandProblem::SpeedOutOfRange);
+  c->option = pool_OPTION_REPLACE;
+  EXPECT_TRUE(validateShotCommand(*c).ok()) << validateShotCommand(*c).error();
+  setRawValue(c->option, pool_OPTION_REPLACE + 1);
+  EXPECT_EQ(validateShotCommand(*c).code(), CommandProblem::BadOption);
+}
+
 TEST(ShotCommandCheck, LimitsComeFromTheCaller) {
   auto c = goodCommand();
   c->speed = 5.0;
