@@ -246,6 +246,9 @@ void BotPlayer::onReport(const client::ShotReport& report, double now) {
   if (report.accepted) {
     rejections_ = 0;
     wait_for_shot_ = report.shot_number;
+    // A choice without a stroke keeps the shot number: the next turn is on a newer state only
+    // (acting again on the state it answered sent the choice twice, the second refused).
+    blocked_revision_ = shot_revision_;
     return;
   }
   ++rejections_;
