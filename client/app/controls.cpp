@@ -111,6 +111,15 @@ void Controls::followCue() {
 }
 
 void Controls::placeCueBall(const Eigen::Vector2d& at) {
+  if (in_hand_ == rules::BallInHand::InTheD && area_.d_radius > 0.0) {
+    // In the D: not past the baulk line, and within the arc (a hair inside its line).
+    Eigen::Vector2d in_d(std::min(at.x(), area_.d_centre.x()), at.y());
+    const Eigen::Vector2d off = in_d - area_.d_centre;
+    const double most = area_.d_radius * (1.0 - 1e-9);
+    if (off.norm() > most) in_d = area_.d_centre + off * (most / off.norm());
+    aim_.cue_ball_at = in_d;
+    return;
+  }
   const double r = area_.ball_radius;
   double max_x = area_.half_length - r;
   if (in_hand_ == rules::BallInHand::BehindHeadString) {
@@ -168,6 +177,10 @@ void Controls::keyDown(Key key, Mods mods) {
     case Key::F5:
     case Key::F6:
     case Key::F7:
+    case Key::Num1:
+    case Key::Num2:
+    case Key::Num3:
+    case Key::Num4:
       requests_.push_back(key);
       break;
     case Key::Space:

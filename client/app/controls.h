@@ -53,6 +53,10 @@ struct PlacementArea {
   double half_width = 0.635;      ///< playing surface half extent in y
   double head_string_x = -0.635;  ///< behind the head string: x < this
   double ball_radius = 0.028575;
+  /// Snooker's D (rules::BallInHand::InTheD): the centre of its arc (the brown spot, on the
+  /// baulk line) and its radius; 0: the table has no D.
+  Eigen::Vector2d d_centre = Eigen::Vector2d::Zero();
+  double d_radius = 0.0;
 };
 
 /// Drawing and overlay switches the keys toggle.

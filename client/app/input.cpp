@@ -1,4 +1,4 @@
-// Key names for input scripts.
+// Key names for input scripts, and the choice a number key picks.
 #include "client/app/input.h"
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 namespace pool::app {
 
 std::optional<Key> keyFromName(std::string_view name) {
-  static constexpr std::array<std::pair<std::string_view, Key>, 40> kNames{{
+  static constexpr std::array<std::pair<std::string_view, Key>, 44> kNames{{
       {"LEFT", Key::Left},   {"RIGHT", Key::Right},   {"UP", Key::Up},
       {"DOWN", Key::Down},   {"SPACE", Key::Space},   {"A", Key::A},
       {"Z", Key::Z},         {"S", Key::S},           {"X", Key::X},
@@ -24,7 +24,8 @@ std::optional<Key> keyFromName(std::string_view name) {
       {"9", Key::Num9},      {"0", Key::Num0},        {"BACKSPACE", Key::Backspace},
       {"F5", Key::F5},       {"F6", Key::F6},         {"F7", Key::F7},
       {"TAB", Key::Tab},     {"MINUS", Key::Minus},   {"EQUAL", Key::Equal},
-      {"ENTER", Key::Enter},
+      {"ENTER", Key::Enter}, {"1", Key::Num1},        {"2", Key::Num2},
+      {"3", Key::Num3},      {"4", Key::Num4},
   }};
   std::string upper(name);
   std::transform(upper.begin(), upper.end(), upper.begin(),
@@ -33,6 +34,21 @@ std::optional<Key> keyFromName(std::string_view name) {
     if (text == upper) return key;
   }
   return std::nullopt;
+}
+
+std::optional<int> choiceIndexOf(Key key) {
+  switch (key) {
+    case Key::Num1:
+      return 0;
+    case Key::Num2:
+      return 1;
+    case Key::Num3:
+      return 2;
+    case Key::Num4:
+      return 3;
+    default:
+      return std::nullopt;
+  }
 }
 
 }  // namespace pool::app

@@ -50,7 +50,15 @@ enum class Key : std::uint8_t {
   Minus,      ///< power down a step (0.05 m/s; with Shift 0.5)
   Equal,      ///< power up a step (the '=' / '+' key)
   Enter,      ///< shoot at the power set
+  // The rules' choice (the Your choice pane's numbers).
+  Num1,  ///< the first choice offered
+  Num2,  ///< the second
+  Num3,  ///< the third
+  Num4,  ///< the fourth
 };
+
+/// The index of the choice a number key picks (Num1: 0 ... Num4: 3); none for other keys.
+std::optional<int> choiceIndexOf(Key key);
 
 /// Modifier keys held with a key.
 struct Mods {

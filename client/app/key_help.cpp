@@ -17,6 +17,9 @@ const std::vector<KeyHelp>& keyHelp() {
        "stroke the cue: it strikes at the mouse's speed (let go or Esc: no shot)"},
       {"aiming", "C / K", "call the next pocket / declare a safety"},
       {"ball in hand", "drag the cue ball", "place it where the rules allow"},
+      {"a choice", "1 / 2 / 3 / 4",
+       "answer the rules' choice (after a foul: play from here, a free ball, play again, the "
+       "balls put back): the option of that number in the Your choice pane"},
       {"always", "B", "back behind the cue ball (watching: the whole table)"},
       {"always", "O", "the table from overhead, clear of the panes, on and off"},
       {"overhead", "S / X, wheel; right drag, Shift + arrows",

@@ -17,7 +17,8 @@ json seatJson(const SeatView& seat) {
           {"racks_won", seat.racks_won},
           {"points", seat.points},
           {"innings", seat.innings},
-          {"high_run", seat.high_run}};
+          {"high_run", seat.high_run},
+          {"misses", seat.misses}};
 }
 
 json choicesJson(const std::vector<rules::Choice>& choices) {
@@ -62,8 +63,11 @@ std::string matchStateLine(const MatchView& view) {
               {"on_table", on_table},
               {"game", rules::toString(view.settings.game)},
               {"points_to", view.settings.points},
+              {"race_to", view.settings.race_to},
               {"run", view.run},
               {"cue_ball", view.cue_ball},
+              {"ball_on", view.ball_on},
+              {"free_ball", view.free_ball},
               {"last_verdict", view.last_verdict}}
       .dump();
 }

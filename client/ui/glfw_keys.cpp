@@ -72,6 +72,14 @@ std::optional<app::Key> keyOf(int glfw_key) {
       return Key::Num9;
     case GLFW_KEY_0:
       return Key::Num0;
+    case GLFW_KEY_1:
+      return Key::Num1;
+    case GLFW_KEY_2:
+      return Key::Num2;
+    case GLFW_KEY_3:
+      return Key::Num3;
+    case GLFW_KEY_4:
+      return Key::Num4;
     case GLFW_KEY_BACKSPACE:
       return Key::Backspace;
     case GLFW_KEY_F5:

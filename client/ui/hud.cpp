@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "client/app/key_help.h"
+#include "client/app/scoreboard.h"
 #include "client/app/shot_story.h"
 #include "client/app/spoken.h"
 #include "rules/rotation.h"
@@ -161,6 +162,10 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
       say.wrapped(detail);
       continue;
     }
+    if (view.settings.game == rules::Game::Snooker) {
+      say.wrapped(detail + app::snookerSeatLine(seat));
+      continue;
+    }
     // Groups and balls left are 8-ball's; in 9- and 10-ball both players shoot the lowest ball.
     if (view.settings.game == rules::Game::EightBall) {
       detail += seat.group == rules::Group::None ? "no group yet"
@@ -171,7 +176,9 @@ void seatLines(Say& say, const client::MatchView& view, const HudInput& in,
               std::to_string(seat.racks_won) + (seat.racks_won == 1 ? " rack won" : " racks won");
     say.wrapped(detail);
   }
-  if (view.settings.game == rules::Game::ThreeCushion && client::inPlay(view.phase)) {
+  if (view.settings.game == rules::Game::Snooker) {
+    for (const std::string& line : app::snookerLines(view, names)) say.wrapped("  " + line);
+  } else if (view.settings.game == rules::Game::ThreeCushion && client::inPlay(view.phase)) {
     say.text(std::string("  ") + (view.cue_ball == 1 ? "the yellow" : "the white") + " to strike" +
              (view.run > 0 ? ", run " + std::to_string(view.run) : ""));
   } else if (view.settings.game != rules::Game::EightBall && client::inPlay(view.phase)) {
@@ -210,8 +217,7 @@ void matchPanel(Say& say, const HudInput& in) {
   }
   const auto& v = *in.view;
   const app::SeatNames names = namesOf(in);
-  say.text(app::spoken(client::toString(v.phase)) + ", rack " + std::to_string(v.rack) + ", shot " +
-           std::to_string(v.shot_number));
+  say.text(app::phaseLine(v));
   seatLines(say, v, in, names);
   if (client::inPlay(v.phase) && v.shooter >= 0) {
     const std::string& who = names[static_cast<std::size_t>(v.shooter)];
@@ -226,13 +232,8 @@ void matchPanel(Say& say, const HudInput& in) {
     if (!v.standard_physics) {
       say.coloured(kBannerFoul, "not a standard table: its coefficients were changed (F7)");
     }
-  } else if (v.settings.game == rules::Game::ThreeCushion) {
-    say.text("three-cushion to " + std::to_string(v.settings.points) + ": " +
-             std::to_string(v.seats[0].points) + "-" + std::to_string(v.seats[1].points));
   } else {
-    say.text(app::spoken(rules::toString(v.settings.game)) + ", race to " +
-             std::to_string(v.settings.race_to) + ": " + std::to_string(v.seats[0].racks_won) +
-             "-" + std::to_string(v.seats[1].racks_won));
+    say.wrapped(app::raceLine(v));
   }
   if (v.shot_clock >= 0) {
     say.out().texts.push_back("shot clock: " + fixed(v.shot_clock, 0) + " s");
@@ -246,7 +247,8 @@ void matchPanel(Say& say, const HudInput& in) {
     ImGui::SameLine();
     if (say.button("Slow")) say.out().replay = 0.4;
   }
-  if (in.can_concede && !in.concede_asked && say.button("Concede the rack (Q)")) {
+  if (in.can_concede && !in.concede_asked &&
+      say.button("Concede the " + app::rackWord(v.settings.game) + " (Q)")) {
     say.out().concede = true;
   }
   if (ImGui::SmallButton("Leave to the lobby")) say.out().leave = true;
@@ -272,13 +274,20 @@ void choicePanel(Say& say, const HudInput& in) {
   say.wrapped(names[static_cast<std::size_t>(in.local_shooter)] +
               ", the rules let you choose before you shoot:");
   const auto chosen = in.controls->aim().option;
+  const rules::Game game = in.view->settings.game;
+  int number = 0;
   for (const rules::Choice c : in.view->options) {
     const protocol::ShotOption option = protocol::optionOf(c);
-    if (say.radio(app::choiceSentence(c, other), chosen == option)) say.out().option = option;
+    const std::string label = std::to_string(++number) + ": " + app::choiceSentence(c, other, game);
+    if (say.radio(label, chosen == option)) say.out().option = option;
   }
-  say.wrapped(
-      "Playing on or taking the cue ball goes with your next shot; a new rack is sent at "
-      "once.");
+  const std::string keys =
+      number == 1 ? "Key 1 chooses too. " : "Keys 1 to " + std::to_string(number) + " choose too. ";
+  say.wrapped(keys + (game == rules::Game::Snooker
+                          ? "Playing from here or a free ball goes with your next shot; making " +
+                                other + " play again (the balls put back or not) is sent at once."
+                          : "Playing on or taking the cue ball goes with your next shot; a new "
+                            "rack is sent at once."));
   ImGui::End();
 }
 
@@ -299,6 +308,8 @@ void callLine(Say& say, const app::Controls& c, const client::MatchView* v) {
     say.text("call: none needed on the break");
   } else if (v->settings.game == rules::Game::NineBall) {
     say.text("call: none needed in 9-ball");
+  } else if (v->settings.game == rules::Game::Snooker) {
+    say.wrapped("call: no pocket in snooker (a colour or a free ball: the one hit first)");
   } else {
     say.wrapped("call: none yet (aim at a ball, or click a ball and then a pocket)");
   }
@@ -416,10 +427,12 @@ void concedePanel(Say& say, const HudInput& in) {
   int mine = in.local_seats.size() == 1 ? in.local_seats.front() : in.view->shooter;
   if (mine != 0 && mine != 1) return;
   const std::string& other = names[static_cast<std::size_t>(1 - mine)];
+  const std::string rack = app::rackWord(in.view->settings.game);
   anchor(ImVec2(0.5f, 0.5f), 0.5f, 0.4f, std::min(screenSize().x * 0.45f, px(480.0f)));
   ImGui::Begin("Concede the rack?", nullptr, kPane);
-  say.wrapped(names[static_cast<std::size_t>(mine)] + ", concede this rack to " + other + "? " +
-              other + " wins it; the race goes on, or ends if that was the last rack.");
+  say.wrapped(names[static_cast<std::size_t>(mine)] + ", concede this " + rack + " to " + other +
+              "? " + other + " wins it; the race goes on, or ends if that was the last " + rack +
+              ".");
   if (say.button("Yes, concede (Y)")) say.out().concede_answer = true;
   ImGui::SameLine();
   if (say.button("No, play on (Esc)")) say.out().concede_answer = false;
@@ -439,8 +452,9 @@ void gameOverPanel(Say& say, const HudInput& in) {
   } else {
     say.wrapped("The game is over.");
   }
-  say.text("Racks: " + names[0] + " " + std::to_string(v.seats[0].racks_won) + ", " + names[1] +
-           " " + std::to_string(v.seats[1].racks_won));
+  say.text((v.settings.game == rules::Game::Snooker ? "Frames: " : "Racks: ") + names[0] + " " +
+           std::to_string(v.seats[0].racks_won) + ", " + names[1] + " " +
+           std::to_string(v.seats[1].racks_won));
   if (!in.local_seats.empty()) {
     // A rematch needs both players; one who left cannot accept it.
     int gone = -1;

@@ -26,8 +26,11 @@ void tableOptions(TableOptions& options) {
     ImGui::SetNextItemWidth(160);
     ImGui::SliderInt("points", &options.points, 1, 50);
   }
+  // Snooker's race is in frames; a pool race in racks (three-cushion's in games).
+  const bool snooker = options.game == rules::gameNumber(rules::Game::Snooker);
   ImGui::SetNextItemWidth(160);
-  ImGui::SliderInt("race to", &options.race_to, 1, protocol::kMaxRace);
+  ImGui::SliderInt(snooker ? "race to (frames)" : "race to", &options.race_to, 1,
+                   protocol::kMaxRace);
   ImGui::SameLine();
   ImGui::Checkbox("winner breaks", &options.winner_breaks);
   ImGui::SetNextItemWidth(160);
@@ -43,8 +46,9 @@ protocol::MatchSettings TableOptions::settings() const {
   protocol::MatchSettings s;
   s.game = rules::gameOfNumber(game).value_or(rules::Game::EightBall);
   s.practice = practice;
-  // A practice table racks a pool game (three-cushion's opening needs no practice table).
-  if (practice && s.game == rules::Game::ThreeCushion) s.game = rules::Game::EightBall;
+  // A practice table racks a pool game: the server refuses one for three-cushion (its opening
+  // needs none) and for snooker.
+  if (practice && !rules::isPool(s.game)) s.game = rules::Game::EightBall;
   if (practice) return s;  // a practice table has no race and no clock
   if (s.game == rules::Game::ThreeCushion) s.points = points;
   s.race_to = race_to;
@@ -72,7 +76,11 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
       choice = LobbyChoice{LobbyChoice::Kind::Play, ""};
     }
     ImGui::SameLine();
-    if (ImGui::Button("Practice at a table of my own")) {
+    // A practice table racks a pool game: with three-cushion or snooker picked it racks 8-ball.
+    const bool pool_game =
+        rules::isPool(rules::gameOfNumber(options.game).value_or(rules::Game::EightBall));
+    if (ImGui::Button(pool_game ? "Practice at a table of my own"
+                                : "Practice at a table of my own (8-ball)")) {
       options.practice = true;
       choice = LobbyChoice{LobbyChoice::Kind::Play, "new"};
     }

@@ -21,15 +21,16 @@ struct LobbyChoice {
 /// How a fresh table is to be played, as the lobby's options set it: game, race, breaks, shot
 /// clock (0: off), or a practice table. Kept by the window between frames.
 struct TableOptions {
-  int game = 8;  ///< 8, 9, 10 or 3 (three-cushion): rules::gameOfNumber
-  int race_to = 1;
+  int game = 8;     ///< 8, 9, 10, 3 (three-cushion) or 22 (snooker): rules::gameOfNumber
+  int race_to = 1;  ///< racks (snooker: frames; three-cushion: games)
   int points = protocol::kDefaultPoints;  ///< three-cushion: points that win a game
   bool winner_breaks = false;
   int shot_clock = 0;  ///< s; 0: off
   bool practice = false;
   int bot_level = 1;  ///< "Play the bot": 0 beginner, 1 club (pool-bot's default), 2 league, 3 pro
 
-  /// As the match settings a seat request carries (checked by protocol::checkSettings).
+  /// As the match settings a seat request carries (checked by protocol::checkSettings); a
+  /// practice table racks a pool game (8-ball in place of three-cushion or snooker).
   protocol::MatchSettings settings() const;
 };
 

@@ -44,7 +44,16 @@ protocol::CommandLimits limitsOf(const game::LoadedTable& view) {
 }
 
 app::PlacementArea areaOf(const game::LoadedTable& view) {
-  return {view.halfLength(), view.halfWidth(), view.headStringX(), view.radius()};
+  app::PlacementArea area;
+  area.half_length = view.halfLength();
+  area.half_width = view.halfWidth();
+  area.head_string_x = view.headStringX();
+  area.ball_radius = view.radius();
+  if (const auto& marks = view.context.snooker) {
+    area.d_centre = marks->brown;
+    area.d_radius = marks->d_radius;
+  }
+  return area;
 }
 
 class WindowApp {

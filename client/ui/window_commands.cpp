@@ -14,6 +14,14 @@ void practiceKey(const WindowParts& w, app::Key key) {
   }
 }
 
+/// A number key answers the rules' choice for the seat aiming here: the option it numbers in the
+/// Your choice pane (a choice that shoots goes with the next shot, one that does not at once).
+void chooseByKey(const WindowParts& w, int index) {
+  const client::MatchView* v = w.session.view();
+  if (!v || w.turn.aimingSeat() < 0 || index >= static_cast<int>(v->options.size())) return;
+  w.turn.chooseOption(protocol::optionOf(v->options[static_cast<std::size_t>(index)]));
+}
+
 /// The settings pane's choices: the aim aids, the stroke, the window, the quality.
 void chooseSettings(const WindowParts& w, const app::Settings& chosen) {
   w.controls.setAimAids(chosen.aim_line, chosen.vectors);
@@ -43,6 +51,7 @@ void handleKeys(const WindowParts& w, double now) {
       w.desk.answerConcede(key == app::Key::Y);
       continue;  // the answer to the question, nothing else
     }
+    if (const auto index = app::choiceIndexOf(key)) chooseByKey(w, *index);
     if (w.session.stage() == app::SessionStage::Playing) practiceKey(w, key);
     if (!over) continue;
     if (key == app::Key::N) {

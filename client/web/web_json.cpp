@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "client/app/scoreboard.h"
 #include "client/app/spoken.h"
 #include "client/render/chalk_marks.h"
 #include "client/render/lamps.h"
@@ -26,6 +27,19 @@ json rgb(const glm::vec3& c) {
 
 json vec2(const Eigen::Vector2d& v) {
   return json::array({v.x(), v.y()});
+}
+
+/// A snooker frame's facts the page shows as the window's HUD does (client/app/scoreboard.h):
+/// the ball on in words, reds left, points remaining, each seat's snookers required; null for
+/// other games.
+json snookerJson(const client::MatchView& view) {
+  if (view.settings.game != rules::Game::Snooker) return nullptr;
+  const app::SnookerBoard board = app::snookerBoard(view);
+  return {{"ball_on", app::ballOnWords(view.ball_on, view.free_ball)},
+          {"free_ball", view.free_ball},
+          {"reds_left", board.reds_left},
+          {"points_remaining", board.points_remaining},
+          {"snookers_required", board.snookers_required}};
 }
 
 /// One ball as a compact array: id, position (m), orientation (w, x, y, z), on the table (1/0).
@@ -160,10 +174,11 @@ Result<std::string> tableJson(const std::string& table_name) {
 
 std::string stateJson(const client::MatchView& view) {
   return fmt::format(
-      R"({{"type":"state","match":{},"state":{},"balls":{},"settings":{},"verdict_words":{}}})",
+      R"({{"type":"state","match":{},"state":{},"balls":{},"settings":{},"verdict_words":{},)"
+      R"("snooker":{}}})",
       json(view.match).dump(), client::matchStateLine(view), ballsArray(view.balls),
       json(protocol::describe(view.settings)).dump(),
-      json(app::spokenText(view.last_verdict)).dump());
+      json(app::spokenText(view.last_verdict)).dump(), snookerJson(view).dump());
 }
 
 std::string resultJson(const client::ShotReport& report) {

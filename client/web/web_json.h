@@ -29,7 +29,9 @@ std::string lobbyJson(const std::vector<const std::string*>& entries);
 Result<std::string> tableJson(const std::string& table_name);
 
 /// {"type":"state","match":...,"state":{the spectator's match_state line},"balls":[...],
-/// "settings":"8-ball, race to 1, ...","verdict_words":the last verdict as the HUD says it}.
+/// "settings":"8-ball, race to 1, ...","verdict_words":the last verdict as the HUD says it,
+/// "snooker":null, or in a snooker match {"ball_on":"on a red","free_ball","reds_left",
+/// "points_remaining","snookers_required":[seat 0, seat 1]} (client/app/scoreboard.h)}.
 std::string stateJson(const client::MatchView& view);
 
 /// {"type":"result","match":...,"result":{the spectator's shot_result line},"verdict_words":...}.

@@ -29,6 +29,8 @@ Result<Verdict> applyChoice(const GameState& state, Choice choice,
       break;
     case Choice::PushOut:
     case Choice::PassBack:
+    case Choice::FreeBall:
+    case Choice::Replace:
       return Result<Verdict>::fail(std::string("choice ") + toString(choice) +
                                    " is not part of 8-ball");
   }

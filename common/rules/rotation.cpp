@@ -166,6 +166,8 @@ Result<Verdict> applyRotationChoice(const GameState& state, Choice choice) {
       return Result<Verdict>::ok(detail::rerackVerdict(opponentOf(state.shooter)));
     case Choice::BallInHand:
     case Choice::RespotEight:
+    case Choice::FreeBall:
+    case Choice::Replace:
       break;
   }
   return Result<Verdict>::fail(std::string("choice ") + toString(choice) +

@@ -7,6 +7,8 @@
 #include <numbers>
 
 #include "app_fixture.h"
+#include "rules/placement.h"
+#include "table/snooker_spots.h"
 
 namespace pool::app::test {
 namespace {
@@ -354,6 +356,48 @@ TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {
   ASSERT_TRUE(controls.aim().cue_ball_at);
   EXPECT_LT(controls.aim().cue_ball_at->x(), PlacementArea{}.head_string_x);
   EXPECT_GT(controls.aim().cue_ball_at->x(), PlacementArea{}.head_string_x - 0.02);
+}
+
+// Snooker's cue ball in hand goes in the D (Section 3, 9): a drag out past its arc or over the
+// baulk line stops on the arc, where the rules accept it.
+TEST_F(BallInHandTest, InTheDTheDragStaysInTheD) {
+  auto loaded = game::loadTable("snooker-12ft");
+  ASSERT_TRUE(loaded) << loaded.error();
+  ASSERT_TRUE(loaded->context.snooker);
+  const table::SnookerSpots marks = *loaded->context.snooker;
+  PlacementArea area;
+  area.half_length = loaded->halfLength();
+  area.half_width = loaded->halfWidth();
+  area.ball_radius = loaded->radius();
+  area.d_centre = marks.brown;
+  area.d_radius = marks.d_radius;
+  controls.setTable(protocol::CommandLimits{}, area,
+                    CameraRig(loaded->spec.length, loaded->spec.width, 1280.0 / 720.0));
+  controls.setViewport(1280, 720);
+  // Each target's nearest point of the D: over the baulk line, the line beside it; beyond the
+  // arc, the arc toward it.
+  const Eigen::Vector2d beyond(marks.baulk_x - 0.6, -0.5);
+  const Eigen::Vector2d on_arc = marks.brown + (beyond - marks.brown).normalized() * marks.d_radius;
+  for (const auto& [target, nearest] :
+       {std::pair{Eigen::Vector2d(marks.baulk_x + 0.4, 0.1), Eigen::Vector2d(marks.baulk_x, 0.1)},
+        std::pair{beyond, on_arc}}) {
+    controls.startTurn(Eigen::Vector3d(marks.brown.x(), marks.brown.y(), area.ball_radius),
+                       rules::BallInHand::InTheD);
+    drag(marks.brown, target);
+    ASSERT_TRUE(controls.aim().cue_ball_at);
+    const Eigen::Vector2d at = *controls.aim().cue_ball_at;
+    EXPECT_TRUE(table::inTheD(marks, at)) << at.transpose();
+    EXPECT_TRUE(
+        rules::checkCueBallPlacement(rules::BallInHand::InTheD, at, {}, loaded->context).ok());
+    EXPECT_LT((at - nearest).norm(), 0.01) << at.transpose() << " for " << target.transpose();
+  }
+  // Inside the D it goes where the mouse puts it.
+  const Eigen::Vector2d inside(marks.baulk_x - 0.1, 0.12);
+  controls.startTurn(Eigen::Vector3d(marks.brown.x(), marks.brown.y(), area.ball_radius),
+                     rules::BallInHand::InTheD);
+  drag(marks.brown, inside);
+  ASSERT_TRUE(controls.aim().cue_ball_at);
+  EXPECT_LT((*controls.aim().cue_ball_at - inside).norm(), 0.005);
 }
 
 TEST_F(BallInHandTest, WithoutBallInHandAPressOnTheCueBallTurnsTheCue) {

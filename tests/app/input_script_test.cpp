@@ -122,17 +122,27 @@ namespace {
 TEST(KeyNamesTest, EveryKeyHasOneNameAndNoNameIsEmpty) {
   std::set<Key> seen;
   for (const char* name :
-       {"LEFT", "RIGHT", "UP", "DOWN",   "SPACE", "A",     "Z",    "S",  "X", "G", "V",
-        "C",    "K",     "P",  "T",      "L",     "B",     "O",    "F1", "R", "N", "F11",
-        "Q",    "Y",     "I",  "ESCAPE", "U",     "J",     "H",    "8",  "9", "0", "BACKSPACE",
-        "F5",   "F6",    "F7", "TAB",    "MINUS", "EQUAL", "ENTER"}) {
+       {"LEFT", "RIGHT", "UP", "DOWN",   "SPACE", "A",     "Z",     "S",  "X", "G", "V",
+        "C",    "K",     "P",  "T",      "L",     "B",     "O",     "F1", "R", "N", "F11",
+        "Q",    "Y",     "I",  "ESCAPE", "U",     "J",     "H",     "8",  "9", "0", "BACKSPACE",
+        "F5",   "F6",    "F7", "TAB",    "MINUS", "EQUAL", "ENTER", "1",  "2", "3", "4"}) {
     const auto key = keyFromName(name);
     ASSERT_TRUE(key) << name;
     EXPECT_TRUE(seen.insert(*key).second) << name;
   }
-  EXPECT_EQ(seen.size(), static_cast<std::size_t>(Key::Enter) + 1) << "a key with no name";
+  EXPECT_EQ(seen.size(), static_cast<std::size_t>(Key::Num4) + 1) << "a key with no name";
   EXPECT_FALSE(keyFromName(""));
   EXPECT_EQ(keyFromName("f1"), Key::F1);
+}
+
+// The number keys pick the rules' choices in the order the Your choice pane numbers them.
+TEST(KeyNamesTest, NumberKeysPickTheChoices) {
+  EXPECT_EQ(choiceIndexOf(Key::Num1), 0);
+  EXPECT_EQ(choiceIndexOf(Key::Num2), 1);
+  EXPECT_EQ(choiceIndexOf(Key::Num3), 2);
+  EXPECT_EQ(choiceIndexOf(Key::Num4), 3);
+  EXPECT_FALSE(choiceIndexOf(Key::Num8));
+  EXPECT_FALSE(choiceIndexOf(Key::Enter));
 }
 
 }  // namespace

@@ -394,6 +394,88 @@ TEST_F(WindowClientTest, HotseatThreeCushionStrikesEachPlayersOwnBallOnTheCaromT
   EXPECT_TRUE(score) << "the HUD never gave the three-cushion score";
 }
 
+// Snooker in the window, two players at one screen (WPBSA Rules, Section 3): the window moves
+// onto the snooker table; the breaker's touch from the D (the slowest stroke, 0.30 m/s) reaches
+// no ball: a foul and a miss, 4 away (Section 3, 12(a) and 14); the other player is offered to
+// play from here, to make the offender play again, or to have the balls put back (no free ball:
+// the fifteen reds are in plain view), and key 3 puts them back: sent with no stroke, the breaker
+// plays again from the D. The HUD keeps the frame score and says the ball on.
+TEST_F(WindowClientTest, HotseatSnookerFoulAMissAndTheBallsPutBack) {
+  open(kWindowSnooker, "window-snooker");
+  MatchRecorder recorder(kWindowSnooker);
+  startServer({"--fast", "--game", "snooker"});
+  std::string slowest;
+  for (int i = 0; i < 30; ++i) slowest += "down MINUS shift\nup MINUS\n";
+  startWindow({"--hotseat", "--play"}, "wait aiming\nframes 5\n" + slowest +
+                                           "down ENTER\nup ENTER\n"
+                                           "wait aiming\nframes 10\ndown 3\nup 3\n"
+                                           "wait aiming\nframes 20\nquit\n");
+  std::string match;
+  const bool answered = recorder.pump(120s, [&] {
+    match = recorder.firstMatch();
+    const MatchView* v = recorder.latest(match);
+    return v && v->breaker >= 0 && recorder.nthCommand(match, 1 - v->breaker, 1) &&
+           v->shot_number >= 1 && v->options.empty() && v->shooter == v->breaker;
+  });
+  const int status = windowExit(recorder);
+  ASSERT_TRUE(answered) << "no foul answered from the window\n" << windowErr() << logs();
+  EXPECT_EQ(status, 0) << windowErr();
+  EXPECT_TRUE(recorder.rejections().empty()) << recorder.rejections().front().reject_text;
+  const MatchView last = *recorder.latest(match);
+  ASSERT_EQ(last.settings.game, rules::Game::Snooker);
+  const int breaker = last.breaker, other = 1 - breaker;
+
+  // The touch from the D: a stroke with no choice; the answer: Replace, with no stroke.
+  const protocol::ShotRequest* touch = recorder.nthCommand(match, breaker, 1);
+  const protocol::ShotRequest* answer = recorder.nthCommand(match, other, 1);
+  ASSERT_TRUE(touch && answer);
+  EXPECT_EQ(touch->option, protocol::ShotOption::None);
+  EXPECT_NEAR(touch->cue.speed, 0.30, 1e-9);
+  ASSERT_TRUE(touch->cue_ball_at) << "in hand in the D";
+  EXPECT_EQ(answer->option, protocol::ShotOption::Replace);
+  EXPECT_FALSE(protocol::optionShoots(answer->option));
+
+  // The stroke's final report (the choice's report, without a stroke, counts the same shot).
+  const protocol::ShotReport* stroke = nullptr;
+  for (const auto& r : recorder.reports()) {
+    if (r.match == match && r.final() && r.shot_number == 1 && !r.events.empty()) stroke = &r;
+  }
+  ASSERT_NE(stroke, nullptr);
+  const protocol::ShotReport& foul = *stroke;
+  EXPECT_EQ(foul.fouls, std::vector<rules::Foul>{rules::Foul::NoBallHit});
+  EXPECT_EQ(foul.options,
+            (std::vector<rules::Choice>{rules::Choice::PlayOn, rules::Choice::PassBack,
+                                        rules::Choice::Replace}));
+  // 4 away to the other player, nothing to the breaker; the breaker in hand in the D again.
+  EXPECT_EQ(last.seats[static_cast<std::size_t>(other)].points, 4);
+  EXPECT_EQ(last.seats[static_cast<std::size_t>(breaker)].points, 0);
+  EXPECT_EQ(last.ball_in_hand, rules::BallInHand::InTheD);
+  EXPECT_EQ(last.ball_on, rules::kOnRed);
+
+  const std::string& name = last.seats[static_cast<std::size_t>(breaker)].name;
+  const std::string& other_name = last.seats[static_cast<std::size_t>(other)].name;
+  const std::string score = breaker == 0 ? "0-4" : "4-0";
+  bool frame_score = false, on_a_red = false, put_back = false, story = false, title = false;
+  for (const auto& hud : windowLines("hud")) {
+    for (const auto& t : hud["texts"]) {
+      const std::string text = t.get<std::string>();
+      frame_score = frame_score || text == "snooker, race to 1 frame: 0-0, this frame " + score;
+      on_a_red = on_a_red || text == "  " + name + " on a red";
+      title = title || text.rfind("break, frame 1, shot 0", 0) == 0;
+      put_back = put_back || text == "3: Put the balls back as they were before the miss, and " +
+                                         name + " plays again.";
+      story = story || text.rfind("Foul and a miss by " + name +
+                                      ": the cue ball hit no ball; 4 away to " + other_name + ".",
+                                  0) == 0;
+    }
+  }
+  EXPECT_TRUE(frame_score) << "the HUD never gave the frame score " << score;
+  EXPECT_TRUE(on_a_red) << "the HUD never said " << name << " is on a red";
+  EXPECT_TRUE(title) << "the HUD's title line never said frame 1";
+  EXPECT_TRUE(put_back) << "the choice to put the balls back was never offered";
+  EXPECT_TRUE(story) << "the story never told the foul and the miss";
+}
+
 // Against pool-bot --stay (the main job's bot): the player concedes the only rack of the race
 // (Q, then Y), and at game over R asks for a rematch, which the bot plays: a second game starts
 // at the table with both in their seats.

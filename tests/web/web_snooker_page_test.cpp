@@ -47,6 +47,21 @@ struct Placed {
 
 using WebSnookerPageTest = ClientIntegrationTest;
 
+/// Opens the page on `match` from pool-web at `port` and waits until it is connected and watching
+/// it (the gateway knows no such match: nothing of it comes on the wire).
+bool openWatching(ChromiumPage& page, std::uint16_t port, const std::string& match) {
+  if (!page.started()) return false;
+  const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?match=" + match;
+  if (!page.open(url, std::chrono::seconds(20))) return false;
+  for (int i = 0; i < 100; ++i) {
+    const auto s =
+        page.evaluate("window.poolTest && window.poolTest.status()", std::chrono::seconds(5));
+    if (s && s->is_object() && (*s)["connected"] == true && (*s)["match"] == match) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return false;
+}
+
 TEST_F(WebSnookerPageTest, ThePageDrawsTheSnookerColoursAndTheBaulkLine) {
   if (chromiumPath().empty()) POOL_NO_DISPLAY("no chromium (Debian's chromium package)");
   open(kWebSnookerPage, "web-snooker-page");
@@ -81,19 +96,8 @@ TEST_F(WebSnookerPageTest, ThePageDrawsTheSnookerColoursAndTheBaulkLine) {
   ASSERT_TRUE(table) << table.error();
 
   ChromiumPage page(file("chromium"), 1100, 700);
-  ASSERT_TRUE(page.started());
-  const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/?match=" + view.match;
-  ASSERT_TRUE(page.open(url, std::chrono::seconds(20))) << page.lastError();
+  ASSERT_TRUE(openWatching(page, port, view.match)) << page.lastError() << logs();
   ASSERT_TRUE(page.setViewport(1100, 700, false, std::chrono::seconds(20))) << page.lastError();
-  // Connected and watching (the gateway knows no such match: nothing of it comes on the wire).
-  bool watching = false;
-  for (int i = 0; i < 100 && !watching; ++i) {
-    const auto s =
-        page.evaluate("window.poolTest && window.poolTest.status()", std::chrono::seconds(5));
-    watching = s && s->is_object() && (*s)["connected"] == true && (*s)["match"] == view.match;
-    if (!watching) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  ASSERT_TRUE(watching) << page.lastError() << logs();
   const std::string feed = "(() => { try { window.poolTest.receive(" + *table +
                            "); window.poolTest.receive(" + web::stateJson(view) +
                            "); return 'ok'; } catch (e) { return String(e); } })()";
@@ -165,6 +169,83 @@ TEST_F(WebSnookerPageTest, ThePageDrawsTheSnookerColoursAndTheBaulkLine) {
   }
   // The blue spot at the centre.
   EXPECT_GT(peak(0.0, 0.0), 1.08 * peak(0.02, 0.0)) << "blue spot";
+}
+
+// The page's snooker scoreboard: a frame's state message (web_json's stateJson of the match
+// view) shows the frame score, the frames won and the race in frames, the break and each
+// player's highest, the ball on, the reds left and the points remaining, and the snookers one
+// player needs (Section 1: on a colour after a red, 2 reds left and all six colours: 7 + 2 × 8 +
+// 27 = 50 on the table; bea 55 ahead of ann: ann 5 short).
+TEST_F(WebSnookerPageTest, TheScoreboardShowsTheFrameTheBreakAndTheBallOn) {
+  if (chromiumPath().empty()) POOL_NO_DISPLAY("no chromium (Debian's chromium package)");
+  open(kWebSnookerScore, "web-snooker-score");
+  ChildProcess& web = start("pool-web", webArgs(domain_), "web");
+  const std::uint16_t port = webPort(web);
+  ASSERT_NE(port, 0) << logs();
+  const auto spec = table::loadTableSpec("snooker-12ft");
+  ASSERT_TRUE(spec) << spec.error();
+  const double r = spec->params.ball_radius;
+
+  protocol::MatchView view;
+  view.match = "snooker-score";
+  view.revision = 7;
+  view.phase = protocol::MatchPhase::Open;
+  view.rack = 2;
+  view.settings.game = rules::Game::Snooker;
+  view.settings.race_to = 3;
+  view.seats[0].name = "ann";
+  view.seats[1].name = "bea";
+  view.seats[0].points = 8;
+  view.seats[1].points = 63;
+  view.seats[0].high_run = 8;
+  view.seats[1].high_run = 41;
+  view.seats[0].racks_won = 1;
+  view.shooter = 1;
+  view.run = 17;
+  view.ball_on = rules::kOnColour;
+  const auto put = [&](int id, double x, double y) {
+    physics::Ball ball;
+    ball.id = id;
+    ball.pos = Eigen::Vector3d(x, y, r);
+    view.balls.push_back(ball);
+  };
+  put(0, 0.5, 0.2);
+  put(3, 0.9, 0.1);
+  put(9, 1.1, -0.2);
+  for (int id = 16; id <= 21; ++id) put(id, -1.0 + 0.3 * (id - 16), -0.5);
+  const auto table = web::tableJson("snooker-12ft");
+  ASSERT_TRUE(table) << table.error();
+
+  ChromiumPage page(file("chromium"), 1100, 700);
+  ASSERT_TRUE(openWatching(page, port, view.match)) << page.lastError() << logs();
+  const std::string feed = "(() => { try { window.poolTest.receive(" + *table +
+                           "); window.poolTest.receive(" + web::stateJson(view) +
+                           "); return document.getElementById('facts').innerText; } catch (e) "
+                           "{ return 'error: ' + String(e); } })()";
+  const auto facts = page.evaluate(feed, std::chrono::seconds(10));
+  ASSERT_TRUE(facts && facts->is_string()) << page.lastError();
+  const std::string text = facts->get<std::string>();
+  for (const char* said :
+       {"Frame 2: ann 8, bea 63.", "Frames won: ann 1, bea 0", "(race to 3 frames)",
+        "bea's break: 17.", "Highest breaks: ann 8, bea 41.", "bea to play, on a colour.",
+        "2 reds left, 50 points remaining.", "ann needs snookers: 5 points short."}) {
+    EXPECT_NE(text.find(said), std::string::npos) << "no \"" << said << "\" in:\n" << text;
+  }
+  EXPECT_EQ(text.find("Open table"), std::string::npos) << "no pool groups in snooker:\n" << text;
+  // A free ball, in hand in the D.
+  view.revision = 8;
+  view.free_ball = true;
+  view.ball_on = rules::kOnRed;
+  view.run = 0;
+  view.ball_in_hand = rules::BallInHand::InTheD;
+  const auto again = page.evaluate("(() => { window.poolTest.receive(" + web::stateJson(view) +
+                                       "); return document.getElementById('facts').innerText; })()",
+                                   std::chrono::seconds(10));
+  ASSERT_TRUE(again && again->is_string()) << page.lastError();
+  EXPECT_NE(again->get<std::string>().find(
+                "bea to play, free ball, on a red, with the cue ball in hand in the D."),
+            std::string::npos)
+      << again->get<std::string>();
 }
 
 }  // namespace

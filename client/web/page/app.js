@@ -91,6 +91,7 @@ function receive(m) {
       if (m.match !== app.match) return;
       app.state = m;
       app.state.state.words = m.verdict_words;
+      app.state.state.snooker = m.snooker;
       break;
     case 'result':
       if (m.match !== app.match) return;
@@ -146,8 +147,8 @@ function render() {
   }
   const facts = describe(app.state.state, app.state.settings, app.result, lobbyEntry(app.match));
   ui.title.textContent = facts.title;
-  ui.facts.replaceChildren(...[facts.players, facts.score, facts.turn, facts.groups, facts.last]
-    .filter((t) => t).map(line));
+  ui.facts.replaceChildren(...[facts.players, facts.score, facts.breaks, facts.turn, facts.groups,
+    facts.last].filter((t) => t).map(line));
 }
 
 function line(text) {

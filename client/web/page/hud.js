@@ -1,5 +1,5 @@
-// The HUD's facts in plain words: the players, whose turn, groups, the score of the race and
-// what happened on the last shot, from the gateway's state, result and lobby messages.
+// The HUD's facts in plain words: the players, whose turn, groups, the score of the race (a
+// snooker frame's scoreboard), what happened on the last shot, from the gateway's messages.
 
 const GROUP = { solids: 'solids', stripes: 'stripes' };
 
@@ -14,11 +14,47 @@ function sentence(text) {
   return /[.!?]$/.test(t) ? t : `${t}.`;
 }
 
+function plural(n, one, many) {
+  return `${n} ${n === 1 ? one : many}`;
+}
+
 /**
- * The facts of a match: {title, players, score, turn, groups, last}. `state` is the spectator's
- * match_state object, `settings` its one-line settings, `result` the latest final shot result (or
- * null), `entry` the lobby entry (or null). `state.words` and `result.words`: their verdicts in
- * words.
+ * A snooker frame's scoreboard: the frame score and the frames won in the race, the break and
+ * each player's highest, the ball on, reds left and points remaining, and who needs snookers.
+ * `state.snooker` is the gateway's snooker object (web_json's stateJson: ball_on in words,
+ * reds_left, points_remaining, snookers_required per seat, from the rules).
+ */
+function snookerFacts(state, facts) {
+  const a = nameOf(state, 0);
+  const b = nameOf(state, 1);
+  const seats = state.seats;
+  const board = state.snooker || {};
+  facts.score = `Frame ${state.rack}: ${a} ${seats[0].points}, ${b} ${seats[1].points}.` +
+    ` Frames won: ${a} ${seats[0].racks_won}, ${b} ${seats[1].racks_won}` +
+    ` (race to ${plural(state.race_to, 'frame', 'frames')}).`;
+  const shooter = state.shooter >= 0 ? nameOf(state, state.shooter) : null;
+  const inPlay = ['break', 'open', 'assigned'].includes(state.phase);
+  facts.breaks = (inPlay && shooter && state.run > 0 ? `${shooter}'s break: ${state.run}. ` : '') +
+    `Highest breaks: ${a} ${seats[0].high_run}, ${b} ${seats[1].high_run}.`;
+  if (inPlay && shooter) {
+    const hand = state.ball_in_hand === 'in_the_d' ? ', with the cue ball in hand in the D' : '';
+    facts.turn = `${shooter} to play, ${board.ball_on || 'on a red'}${hand}.`;
+  }
+  if (inPlay && typeof board.reds_left === 'number') {
+    const needs = (board.snookers_required || []).map((n, i) => (n > 0
+      ? ` ${nameOf(state, i)} needs snookers: ${plural(n, 'point', 'points')} short.` : ''));
+    facts.groups = `${plural(board.reds_left, 'red', 'reds')} left,` +
+      ` ${board.points_remaining} points remaining.${needs.join('')}`;
+  } else {
+    facts.groups = '';
+  }
+}
+
+/**
+ * The facts of a match: {title, players, score, breaks, turn, groups, last}. `state` is the
+ * spectator's match_state object (with `snooker`, the gateway's snooker facts, in a snooker
+ * match), `settings` its one-line settings, `result` the latest final shot result (or null),
+ * `entry` the lobby entry (or null). `state.words` and `result.words`: their verdicts in words.
  */
 export function describe(state, settings, result, entry) {
   const a = nameOf(state, 0);
@@ -77,6 +113,7 @@ export function describe(state, settings, result, entry) {
     ? (state.phase === 'open' || state.phase === 'break' ? 'Open table: no groups yet.' : '')
     : `${groups.filter((g) => g).join('; ')}.`;
   // The verdict as the game's HUD words it, each "seat N" named.
+  if (state.game === 'snooker') snookerFacts(state, facts);
   const words = state.words || (result ? result.words : '');
   const named = (words || '').replace(/\bseat ([01])\b/g, (_, n) => nameOf(state, Number(n)));
   facts.last = named ? `Last shot: ${sentence(named)}` : 'No shot played yet.';
