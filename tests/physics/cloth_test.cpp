@@ -104,7 +104,7 @@ TEST(Cloth, EachTablesBallFollowsTheClosedFormsWithItsOwnSizeMassAndCloth) {
     ASSERT_TRUE(table) << table.error();
     table::TableSpec spec = openSpec();
     spec.params = table->params;
-    const double R = spec.params.ball_radius, m = spec.params.ball_mass;
+    const double radius = spec.params.ball_radius, m = spec.params.ball_mass;
     const double M = spec.params.cue_mass, us = spec.params.u_s, ur = spec.params.u_r;
     for (const double b : {0.0, 0.4, 0.5, -0.3}) {
       CueShot shot;
@@ -112,26 +112,26 @@ TEST(Cloth, EachTablesBallFollowsTheClosedFormsWithItsOwnSizeMassAndCloth) {
       shot.tip_height = b;
       SimOptions opt;
       opt.sample_hz = 1000.0;
-      const auto out = shootOpen(spec, {ballAt(0, -30.0, 0.0, R)}, shot, opt);
+      const auto out = shootOpen(spec, {ballAt(0, -30.0, 0.0, radius)}, shot, opt);
       ASSERT_GT(out.trajectory.size(), 2u) << name;
       const double v0 = 2.0 * 2.0 / (1.0 + m / M + 2.5 * b * b);
-      const double w0 = 5.0 * v0 * b / (2.0 * R);
+      const double w0 = 5.0 * v0 * b / (2.0 * radius);
       const Ball& first = out.trajectory[0].balls[0];
       EXPECT_NEAR(first.vel.x(), v0, 1e-6 * v0) << name << ", b = " << b;
       EXPECT_NEAR(first.ang_vel.y(), w0, 1e-6 * std::max(1.0, std::abs(w0)))
           << name << ", b = " << b;
       const auto roll = eventsOf(out, EventType::SlideToRoll, 0);
       if (b == 0.4) {
-        EXPECT_NEAR(w0 * R, v0, 1e-12) << name;  // natural roll
+        EXPECT_NEAR(w0 * radius, v0, 1e-12) << name;  // natural roll
         EXPECT_TRUE(roll.empty() || roll[0].t < 1e-9) << name << ": slid for " << roll[0].t;
         continue;
       }
       ASSERT_EQ(roll.size(), 1u) << name << ", b = " << b;
-      const double slide = 2.0 * std::abs(v0 - w0 * R) / (7.0 * us * g);
+      const double slide = 2.0 * std::abs(v0 - w0 * radius) / (7.0 * us * g);
       EXPECT_NEAR(roll[0].t, slide, 1e-6 * slide) << name << ", b = " << b;
       const Sample* s = sampleFrom(out, roll[0].t);
       ASSERT_NE(s, nullptr) << name;
-      const double rolling = (5.0 * v0 + 2.0 * w0 * R) / 7.0;
+      const double rolling = (5.0 * v0 + 2.0 * w0 * radius) / 7.0;
       const double v = s->balls[0].vel.x() + ur * g * (s->t - roll[0].t);
       EXPECT_NEAR(v, rolling, 1e-5 * rolling) << name << ", b = " << b;
     }
