@@ -72,8 +72,9 @@ TEST_F(SnookerMatchTest, TwoBotsPlayAFrameToTheEnd) {
     // black ends the frame too) and the winner has more points.
     EXPECT_GT(last->seats[w].points, last->seats[1 - w].points);
     for (const auto& b : last->balls) {
-      if (b.id != 0 && b.id != 21)
+      if (b.id != 0 && b.id != 21) {
         EXPECT_FALSE(physics::onTable(b.state)) << "ball " << b.id << " still up";
+      }
     }
   } else {
     EXPECT_EQ(last->end, rules::GameEnd::ThreeMisses);
@@ -81,7 +82,9 @@ TEST_F(SnookerMatchTest, TwoBotsPlayAFrameToTheEnd) {
   // The most a frame can hold without fouls is 147; fouls add to it.
   const int total = last->seats[0].points + last->seats[1].points;
   EXPECT_GT(total, 0);
-  if (!saw_foul_points) EXPECT_LE(total, 147);
+  if (!saw_foul_points) {
+    EXPECT_LE(total, 147);
+  }
   // The spectator saw every shot in motion; the store agrees.
   expectStoredMatchAgrees(recorder, server, scratch_->file("pool.db"), match, "snooker-12ft",
                           *last);

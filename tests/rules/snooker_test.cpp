@@ -98,7 +98,9 @@ TEST(SnookerRack, RedsBehindThePinkAndColoursOnTheirSpots) {
   double apex_x = 1e9;
   for (const auto& b : rack) {
     if (isRed(b.id)) apex_x = std::min(apex_x, b.pos.x());
-    if (isColour(b.id)) EXPECT_EQ(b.pos, colourSpot(b.id)) << b.id;
+    if (isColour(b.id)) {
+      EXPECT_EQ(b.pos, colourSpot(b.id)) << b.id;
+    }
   }
   // "the apex red as near to the Pink as possible without touching it": 1 mm, to 1e-12 m.
   EXPECT_NEAR(apex_x - colourSpot(kSnookerPink).x(), 2.0 * kSnookerR + table::kSnookerApexGap,
