@@ -104,7 +104,7 @@ struct GameState {
   /// Snooker: `points` is the frame score, `run` the current break, `high_run` each seat's
   /// highest break. The ball on (rules/snooker.h: kOnRed, kOnColour or a colour's id), whether
   /// the shooter plays a free ball, each seat's misses in a row with a ball on in plain view, and
-  /// the layout (with its ball in hand and ball on) before the last foul and a miss, for
+  /// the layout (with its ball in hand, ball on and free ball) before the last foul and a miss, for
   /// Choice::Replace.
   int ball_on = 0;
   bool free_ball = false;
@@ -112,6 +112,7 @@ struct GameState {
   std::vector<BallAt> before_miss;
   BallInHand before_miss_in_hand = BallInHand::None;
   int before_miss_on = 0;
+  bool before_miss_free_ball = false;
 };
 
 /// A fresh rack: the breaker to break with the cue ball in hand behind the head string.

@@ -216,6 +216,7 @@ void forgetMiss(GameState& state) {
   state.before_miss.clear();
   state.before_miss_in_hand = BallInHand::None;
   state.before_miss_on = kOnRed;
+  state.before_miss_free_ball = false;
 }
 
 void endTheFrame(GameState& next, Verdict& v, int winner, GameEnd end) {
@@ -414,7 +415,19 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   for (const auto& b : shot.after) {
     if (physics::onTable(b.state) && !hasId(back, b.id)) taken.push_back(b.pos.head<2>());
   }
+  // Every colour whose own spot is free goes there first; then the others, the highest first,
+  // onto what is left.
+  std::vector<int> elsewhere;
   for (int id : back) {
+    const Vec2 own = *table::snookerSpotOf(table.spec, id);
+    if (!clearOfAll(own, taken, r)) {
+      elsewhere.push_back(id);
+      continue;
+    }
+    v.respots.push_back({id, own});
+    taken.push_back(own);
+  }
+  for (int id : elsewhere) {
     const Vec2 at = respotColour(id, taken, table);
     v.respots.push_back({id, at});
     taken.push_back(at);
@@ -426,7 +439,9 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   next.options.clear();
   next.free_ball = false;
   forgetMiss(next);
-  const bool cue_lost = no_stroke ? false : facts.cueBallLost() || facts.isRemoved(0);
+  // A clock run out before the stroke leaves a cue ball in hand in hand.
+  const bool cue_lost = no_stroke ? state.ball_in_hand != BallInHand::None
+                                  : facts.cueBallLost() || facts.isRemoved(0);
   v.ball_in_hand = cue_lost ? BallInHand::InTheD : BallInHand::None;
   const std::vector<int> before_on = objectIdsOn(shot.before);
   const bool black_alone = before_on.size() == 1 && before_on[0] == table::kSnookerBlack;
@@ -451,6 +466,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
     // Section 3, "Foul and a Miss": a foul that does not first hit a ball on is a miss, unless only
     // the black is left or either player needed snookers before or after the stroke.
     GameState scored_after = next;
+    scored_after.ball_on = redsLeft(after) > 0 ? kOnRed : lowestColourOn(after);
     const bool snookers_needed = snookersRequired(state, shot.before, 0) > 0 ||
                                  snookersRequired(state, shot.before, 1) > 0 ||
                                  snookersRequired(scored_after, after, 0) > 0 ||
@@ -463,6 +479,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
       next.before_miss = standingLayout(shot.before);
       next.before_miss_in_hand = state.ball_in_hand;
       next.before_miss_on = state.ball_on;
+      next.before_miss_free_ball = state.free_ball;
     }
   }
   v.scored = scored;
@@ -491,6 +508,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   next.dry_turns = potted.empty() ? state.dry_turns + 1 : 0;
 
   // The end of the frame (Section 3, "Play").
+  bool respotted_black = false;
   const int p0 = next.points[0], p1 = next.points[1];
   if (next.misses[static_cast<std::size_t>(shooter)] >= 3) {
     endTheFrame(next, v, opponent, GameEnd::ThreeMisses);
@@ -498,15 +516,11 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
     if (p0 != p1) {
       endTheFrame(next, v, p0 > p1 ? 0 : 1, GameEnd::FrameOver);
     } else {
-      // A tie: the black goes back on its spot and the non-breaker plays at it from the D.
-      if (!detail::ballOnTable(table::kSnookerBlack, after)) {
-        std::vector<Vec2> others;
-        for (const auto& b : after) {
-          if (physics::onTable(b.state)) others.push_back(b.pos.head<2>());
-        }
-        v.respots.push_back(
-            {table::kSnookerBlack, respotColour(table::kSnookerBlack, others, table)});
-      }
+      // A tie: the black goes back on its spot (potted or not) and the non-breaker plays at it
+      // from the D, the cue ball in hand; nothing is left to choose.
+      std::erase_if(v.respots, [](const Respot& s) { return s.id == table::kSnookerBlack; });
+      v.respots.push_back({table::kSnookerBlack, respotColour(table::kSnookerBlack, {}, table)});
+      respotted_black = true;
       v.turn_continues = false;
       v.next_shooter = opponentOf(state.breaker);
       v.ball_in_hand = BallInHand::InTheD;
@@ -516,7 +530,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
       next.run = 0;
     }
   }
-  if (!v.game_over && !v.legal() && v.next_shooter == opponent) {
+  if (!v.game_over && !respotted_black && !v.legal() && v.next_shooter == opponent) {
     // The incoming player answers the foul first.
     v.options = {Choice::PlayOn};
     if (!cue_lost && isSnookered(after, snookerBallsOn(next, after), r))
@@ -562,6 +576,7 @@ Result<Verdict> applySnookerChoice(const GameState& state, Choice choice) {
       next.shooter = offender;
       next.ball_in_hand = state.before_miss_in_hand;
       next.ball_on = state.before_miss_on;
+      next.free_ball = state.before_miss_free_ball;
       forgetMiss(next);
       break;
     default:

@@ -117,7 +117,7 @@ Json gameOf(const rules::GameState& s) {
   // them (a red on and nothing else pending writes nothing: the default).
   if (s.ball_on != 0 || s.free_ball || s.misses != std::array<int, 2>{0, 0} ||
       !s.before_miss.empty() || s.before_miss_in_hand != rules::BallInHand::None ||
-      s.before_miss_on != 0) {
+      s.before_miss_on != 0 || s.before_miss_free_ball) {
     Json layout = Json::array();
     for (const auto& b : s.before_miss) layout.push_back({b.id, b.x, b.y});
     out["snooker"] = {{"ball_on", s.ball_on},
@@ -125,7 +125,8 @@ Json gameOf(const rules::GameState& s) {
                       {"misses", pair(s.misses)},
                       {"before_miss", layout},
                       {"before_miss_in_hand", num(s.before_miss_in_hand)},
-                      {"before_miss_on", s.before_miss_on}};
+                      {"before_miss_on", s.before_miss_on},
+                      {"before_miss_free_ball", s.before_miss_free_ball}};
   }
   return out;
 }
@@ -164,6 +165,7 @@ rules::GameState gameAt(const Json& j) {
     }
     s.before_miss_in_hand = enumAt<rules::BallInHand>(k, "before_miss_in_hand");
     s.before_miss_on = k.at("before_miss_on").get<int>();
+    s.before_miss_free_ball = k.value("before_miss_free_ball", false);
   }
   return s;
 }
@@ -235,12 +237,14 @@ std::string verdictJson(const rules::Verdict& v) {
                     {"winner", v.winner},
                     {"end", num(v.end)},
                     {"next", gameOf(v.next)}};
-  if (v.scored != 0) {
-    Json with_score = out;
-    with_score["scored"] = v.scored;
-    return with_score.dump();
-  }
-  return out.dump();
+  // A score, a snooker penalty and a miss, written where a verdict has them (a pool shot's record
+  // is as before).
+  if (v.scored == 0 && v.penalty == 0 && !v.miss) return out.dump();
+  Json with_score = out;
+  if (v.scored != 0) with_score["scored"] = v.scored;
+  if (v.penalty != 0) with_score["penalty"] = v.penalty;
+  if (v.miss) with_score["miss"] = true;
+  return with_score.dump();
 }
 
 rules::Verdict verdictFrom(const std::string& text) {
@@ -264,6 +268,8 @@ rules::Verdict verdictFrom(const std::string& text) {
     v.end = enumAt<rules::GameEnd>(j, "end");
     v.next = gameAt(j.at("next"));
     if (j.contains("scored")) v.scored = j.at("scored").get<int>();
+    if (j.contains("penalty")) v.penalty = j.at("penalty").get<int>();
+    if (j.contains("miss")) v.miss = j.at("miss").get<bool>();
     return v;
   });
 }

@@ -83,6 +83,25 @@ TEST(SnookerPlanner, ItTakesAFreeBallWhenOffered) {
   EXPECT_EQ(chooseOption({rules::Choice::PlayOn, rules::Choice::FreeBall, rules::Choice::PassBack,
                           rules::Choice::Replace}),
             rules::Choice::FreeBall);
+  // Snookered behind the green with the last red far away: no pot as the table lies, yet the
+  // planner takes the free ball rather than handing the table back.
+  const TableView& v = snookerView();
+  const double r = v.radius();
+  const Eigen::Vector2d green = *table::snookerSpotOf(v.spec, table::kSnookerGreen);
+  std::vector<physics::Ball> balls{physics::restingBall(0, green - Eigen::Vector2d(0.1, 0.0), r),
+                                   physics::restingBall(1, {1.5, green.y()}, r)};
+  for (int c = table::kSnookerYellow; c <= table::kSnookerBlack; ++c) {
+    balls.push_back(physics::restingBall(c, *table::snookerSpotOf(v.spec, c), r));
+  }
+  rules::GameState state = rules::newRackOf(rules::Game::Snooker, 0);
+  state.phase = rules::Phase::Open;
+  state.ball_in_hand = rules::BallInHand::None;
+  state.options = {rules::Choice::PlayOn, rules::Choice::FreeBall, rules::Choice::PassBack};
+  ShotPlanner planner(v, PlannerOptions{});
+  const PlannedShot shot = planner.plan(balls, state);
+  ASSERT_TRUE(shot.choice) << describe(shot);
+  EXPECT_EQ(*shot.choice, rules::Choice::FreeBall) << describe(shot);
+  EXPECT_TRUE(shoots(shot));
 }
 
 }  // namespace

@@ -541,5 +541,89 @@ TEST(SnookerGame, TheGameKitKnowsSnooker) {
             (std::vector<int>{kSnookerPink}));
 }
 
+// ---- Found on reading the rules again.
+
+TEST(SnookerClock, TheClockRunOutWithTheCueBallInHandLeavesItInHand) {
+  // The cue ball potted on the last stroke: the shooter has it in hand in the D and lets the
+  // clock run out. A foul (4 away); the opponent, too, has the cue ball in hand in the D.
+  auto balls = snookerLayout(3);
+  balls[0].state = physics::MotionState::Pocketed;
+  GameState s = snookerInPlay(1);
+  s.ball_in_hand = BallInHand::InTheD;
+  Shot shot;
+  shot.before = balls;
+  shot.after = balls;
+  shot.clock_expired = true;
+  const Verdict v = snookerJudged(s, shot);
+  EXPECT_TRUE(v.hasFoul(Foul::ShotClockExpired)) << describe(v);
+  EXPECT_EQ(v.penalty, 4);
+  EXPECT_EQ(v.next.ball_in_hand, BallInHand::InTheD);
+}
+
+TEST(SnookerEnd, ATieByAFoulOnTheLastBlackRespotsItAndOffersNoChoice) {
+  // Only the black, away from its spot; the breaker (seat 0) leads 67-60 and goes in-off it: 7
+  // away, 67-67. The black goes back on its spot and the non-breaker plays from the D.
+  std::vector<physics::Ball> balls{snookerBall(0, 0.8, 0.3), snookerBall(kSnookerBlack, 1.2, 0.4)};
+  GameState s = snookerInPlay(0, kSnookerBlack);
+  s.points = {67, 60};
+  const Verdict v =
+      snookerJudged(s, makeShot(balls, Intent::none(),
+                                LogBuilder().hit(0, kSnookerBlack).pocket(0, "foot_left_corner")));
+  EXPECT_FALSE(v.game_over) << describe(v);
+  EXPECT_EQ(v.next.points, (std::array<int, 2>{67, 67}));
+  EXPECT_EQ(respotPos(v, kSnookerBlack), colourSpot(kSnookerBlack));
+  EXPECT_TRUE(v.options.empty());
+  EXPECT_TRUE(v.next.options.empty());
+  EXPECT_EQ(v.next.shooter, 1);
+  EXPECT_EQ(v.next.ball_in_hand, BallInHand::InTheD);
+  EXPECT_EQ(v.next.ball_on, kSnookerBlack);
+}
+
+TEST(SnookerRespot, ColoursWhoseOwnSpotsAreFreeGoThereFirst) {
+  // A red on the black's spot, the blue played off its own; the pink and the black potted on a
+  // foul. The pink takes its own spot; the black the highest spot left, the blue's.
+  auto balls = snookerLayout(3);
+  balls[1].pos = physics::Vec3(colourSpot(kSnookerBlack).x(), 0.0, kSnookerR);
+  for (auto& b : balls) {
+    if (b.id == kSnookerBlue) b.pos = physics::Vec3(-0.3, -0.6, kSnookerR);
+  }
+  const Verdict v =
+      snookerJudged(snookerInPlay(0), makeShot(balls, Intent::none(),
+                                               LogBuilder()
+                                                   .hit(0, 2)
+                                                   .hit(2, kSnookerPink)
+                                                   .hit(kSnookerPink, kSnookerBlack)
+                                                   .pocket(kSnookerPink, "foot_left_corner")
+                                                   .pocket(kSnookerBlack, "foot_right_corner")));
+  EXPECT_EQ(respotPos(v, kSnookerPink), colourSpot(kSnookerPink)) << describe(v);
+  EXPECT_EQ(respotPos(v, kSnookerBlack), colourSpot(kSnookerBlue)) << describe(v);
+}
+
+TEST(SnookerMiss, ReplacingAMissedFreeBallGivesTheFreeBallBack) {
+  GameState s = snookerInPlay(0);
+  s.free_ball = true;
+  const Verdict v =
+      snookerJudged(s, makeShot(snookerLayout(3), Intent::none(), LogBuilder().cushion(0, "head")));
+  ASSERT_TRUE(v.miss) << describe(v);
+  auto replaced = applySnookerChoice(v.next, Choice::Replace);
+  ASSERT_TRUE(replaced) << replaced.error();
+  EXPECT_TRUE(replaced->next.free_ball);
+  EXPECT_EQ(replaced->next.shooter, 0);
+}
+
+TEST(SnookerMiss, SnookersNeededAfterAFoulOnTheLastRedsColourAreCountedFromTheYellow) {
+  // After the last red, on a colour, 25 behind: the stroke hits nothing (7 away, 32 behind).
+  // Before it 34 were on the table (the colour due, then 27); after it the yellow is on and 27
+  // are left: snookers are needed, so no miss is called.
+  GameState s = snookerInPlay(0, kOnColour);
+  s.points = {0, 25};
+  const Verdict v =
+      snookerJudged(s, makeShot(snookerLayout(0), Intent::none(), LogBuilder().cushion(0, "head")));
+  EXPECT_EQ(v.penalty, 7);
+  EXPECT_EQ(v.next.ball_on, kSnookerYellow);
+  EXPECT_EQ(snookersRequired(v.next, snookerLayout(0), 0), 5);
+  EXPECT_FALSE(v.miss) << describe(v);
+}
+
 }  // namespace
 }  // namespace pool::rules

@@ -93,6 +93,25 @@ TEST(MatchStoreTest, AStoredShotAndMatchReadBackBitForBit) {
   }
 }
 
+TEST(MatchStoreTest, ASnookerVerdictKeepsItsPenaltyAndMiss) {
+  rules::Verdict v;
+  v.fouls = {rules::Foul::NoBallHit};
+  v.penalty = 7;
+  v.miss = true;
+  v.next.ball_on = 20;
+  v.next.before_miss_free_ball = true;
+  v.next.before_miss = {{0, -1.0, 0.1}, {21, 1.4605, 0.0}};
+  const rules::Verdict back = verdictFrom(verdictJson(v));
+  EXPECT_EQ(back.penalty, 7);
+  EXPECT_TRUE(back.miss);
+  EXPECT_EQ(back.next.ball_on, 20);
+  EXPECT_TRUE(back.next.before_miss_free_ball);
+  ASSERT_EQ(back.next.before_miss.size(), 2u);
+  EXPECT_EQ(back.next.before_miss[1].x, 1.4605);
+  EXPECT_EQ(rules::describe(back), rules::describe(v));
+  EXPECT_EQ(verdictJson(back), verdictJson(v));
+}
+
 TEST(MatchStoreTest, AResumedMatchGoesOnFromItsStoredShotWithItsPlayersAway) {
   Scratch scratch;
   auto store = MatchStore::open(scratch.file("pool.db"));

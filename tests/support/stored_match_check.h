@@ -17,18 +17,27 @@
 
 namespace pool::client::test {
 
-/// Checks that `recorder` saw frames of every shot of `last`, stops `server` (SIGTERM), and judges
-/// `match`'s stored shots again from the database `db` on `table`: no problem, as many shots and
-/// the same winner as `last`, and the match stored on that table; the two players (bots, each
-/// with a key of its own) rated once, the winner up and the loser down, in the store and the
-/// lobby.
+/// Checks that `recorder` saw frames of the shots of `last` (all but one in twenty at most, the
+/// last among them), stops `server` (SIGTERM), and judges `match`'s stored shots again from the
+/// database `db` on `table`: no problem, as many shots and the same winner as `last`, and the match
+/// stored on that table; the two players (bots, each with a key of its own) rated once, the winner
+/// up and the loser down, in the store and the lobby.
 inline void expectStoredMatchAgrees(MatchRecorder& recorder, ChildProcess& server,
                                     const std::string& db, const std::string& match,
                                     const std::string& table, const MatchView& last) {
   using namespace std::chrono_literals;
+  // Frames are best-effort, keep-last 1 (qos_profiles.h: a lost frame is replaced by the next
+  // one), so a loaded machine can lose every frame of a very short stroke: of a long match, up to
+  // one shot in twenty may go unseen, never the last.
+  std::string unseen;
+  std::uint32_t missing = 0;
   for (std::uint32_t shot = 1; shot <= last.shot_number; ++shot) {
-    EXPECT_FALSE(recorder.frames(match, shot).empty()) << "no frame of shot " << shot;
+    if (!recorder.frames(match, shot).empty()) continue;
+    ++missing;
+    unseen += " " + std::to_string(shot);
   }
+  EXPECT_LE(20 * missing, last.shot_number) << "no frame of shots" << unseen;
+  EXPECT_FALSE(recorder.frames(match, last.shot_number).empty()) << "no frame of the last shot";
   // The lobby shows the players' new ratings: the winner above a new player's 1500, the loser
   // below.
   const auto w = static_cast<std::size_t>(last.winner);

@@ -84,7 +84,11 @@ PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
                      {std::max(options_.max_runs, kCaromTrials), options_.noise, options_.samples});
   }
   auto choice = chooseOption(state.options);
-  if (auto rotation = rotationChoice(balls, state, view_)) choice = rotation;
+  // A free ball is taken whenever offered (it only adds a ball to play at); otherwise a table
+  // without a pot is handed back.
+  if (choice != rules::Choice::FreeBall) {
+    if (auto rotation = rotationChoice(balls, state, view_)) choice = rotation;
+  }
   PlanContext context{view_,
                       verifier_,
                       balls,
