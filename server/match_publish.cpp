@@ -65,6 +65,9 @@ protocol::LobbyEntry lobbyEntryOf(const Match& match, const std::string& server_
   info.protocol_version = protocol::kProtocolVersion;
   info.settings = match.settings();
   info.racks_won = {match.seats()[0].racks_won, match.seats()[1].racks_won};
+  info.rack = match.phase() == MatchPhase::Lobby ? 0 : match.rack();
+  info.shot_number = match.shotNumber();
+  info.rack_points = {match.game().points[0], match.game().points[1]};
   info.standard_physics = match.standardPhysics();
   return info;
 }
@@ -95,7 +98,7 @@ protocol::MatchView matchViewOf(const Match& match, std::optional<double> now) {
   st.last_verdict = match.lastVerdict();
   st.balls = match.balls();
   st.run = game.run;
-  st.cue_ball = rules::cueBallFor(match.rules(), game);
+  st.cue_ball = match.cueBallFor(game);
   st.ball_on = game.ball_on;
   st.free_ball = game.free_ball;
   return st;
@@ -164,6 +167,18 @@ protocol::CommandLimits commandLimits(const table::TableSpec& spec) {
   limits.miscue_limit = spec.params.miscue_limit;
   limits.half_length = spec.length / 2;
   limits.half_width = spec.width / 2;
+  return limits;
+}
+
+protocol::CommandLimits serverLimits(const table::TableSpec& pool_table) {
+  protocol::CommandLimits limits = commandLimits(pool_table);
+  for (const rules::GameInfo& game : rules::allGames()) {
+    if (!game.table) continue;  // played on the pool table
+    const auto spec = table::loadTableSpec(game.table);
+    if (!spec) continue;
+    limits.half_length = std::max(limits.half_length, spec->length / 2);
+    limits.half_width = std::max(limits.half_width, spec->width / 2);
+  }
   return limits;
 }
 

@@ -40,5 +40,10 @@ protocol::JoinAnswer replyTo(const JoinCommand& command, const JoinAnswer& answe
 
 /// The wire limits of a command on `spec`'s table (speed, elevation, miscue, playing surface).
 protocol::CommandLimits commandLimits(const table::TableSpec& spec);
+/// The wire limits of a command at a server whose pool table is `pool_table`: that table's,
+/// with the playing surface of the largest table a game is played on (snooker's, the carom
+/// table), since one check reads every command before it reaches its match (which checks a spot
+/// on its own table). A table whose spec cannot load is left out: its games cannot start here.
+protocol::CommandLimits serverLimits(const table::TableSpec& pool_table);
 
 }  // namespace pool::server

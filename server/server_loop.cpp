@@ -17,8 +17,9 @@ ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry,
     : config_(config),
       registry_(registry),
       transport_(transport),
-      limits_(commandLimits(registry.table().spec)),
+      limits_(serverLimits(registry.table().spec)),
       store_(store),
+      players_(transport, registry.serverId()),
       epoch_(std::chrono::steady_clock::now()) {}
 
 double ServerLoop::now() const {
@@ -28,6 +29,10 @@ double ServerLoop::now() const {
 void ServerLoop::run(const std::atomic<bool>& stop) {
   storeChanges({});
   publishChanges(now());
+  if (store_) {
+    for (const auto& error : players_.publishRecent(*store_, kPlayersAtStart))
+      warnIfFailed(error, "player stats");
+  }
   while (!stop.load()) {
     transport_.wait(waitTimeout(now()));
     step(now());
@@ -466,6 +471,11 @@ void ServerLoop::publishFrames(double now) {
     if (auto report = m->finishShot()) {
       spdlog::info("shot {} of {} done: {}", report->shot_number, m->id(), m->lastVerdict());
       warnIfFailed(transport_.publish(finalReport(m->id(), *report)), "shot result");
+      // The players' records once the stroke is seen through (stored with it, shown after it).
+      if (store_ && !m->practice()) {
+        for (const auto& error : players_.publishSeats(*store_, *m))
+          warnIfFailed(error, "player stats");
+      }
     }
   }
 }

@@ -21,6 +21,7 @@
 #include "server/match/join_rate_limit.h"
 #include "server/match/match_registry.h"
 #include "server/match/match_replay.h"
+#include "server/player_publish.h"
 #include "server/presence.h"
 #include "server/rejection_tally.h"
 #include "server/server_config.h"
@@ -142,6 +143,7 @@ class ServerLoop {
   net::ServerTransport& transport_;
   protocol::CommandLimits limits_;
   store::MatchStore* store_;
+  PlayerPublisher players_;  ///< the players' records (PlayerStats)
   MatchReplay* replay_ = nullptr;
   bool replay_reported_ = false;
   bool replay_started_ = false;  ///< a spectator has been seen: the replay runs
@@ -187,6 +189,8 @@ class ServerLoop {
   static constexpr double kStall = 1.0;
   /// A lobby entry whose only change is its spectator count goes out at most this often, s.
   static constexpr double kSpectatorCountPeriod = 1.0;
+  /// Players' records published at start: the most recently counted.
+  static constexpr std::size_t kPlayersAtStart = 64;
 };
 
 }  // namespace pool::server

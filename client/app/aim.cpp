@@ -40,7 +40,8 @@ protocol::ShotRequest requestOf(const AimState& aim, const protocol::CommandLimi
   request.cue.speed = cueSpeedOf(clamped.power, limits);
   request.cue.speed_is_ball = false;
   request.safety = clamped.call.safety;
-  if (!clamped.call.safety && clamped.call.ball && !clamped.call.pocket.empty()) {
+  // A ball and its pocket; a ball alone is snooker's nominated ball (no pocket to call).
+  if (!clamped.call.safety && clamped.call.ball) {
     request.called_ball = clamped.call.ball;
     request.called_pocket = clamped.call.pocket;
   }

@@ -11,10 +11,11 @@
 
 namespace pool::app {
 
-/// The call that goes with a shot: a ball and a pocket, or a safety.
+/// The call that goes with a shot: a ball and a pocket, snooker's nominated ball alone, or a
+/// safety.
 struct ShotCall {
   std::optional<int> ball;  ///< 1–21
-  std::string pocket;       ///< a pocket name (rules::pocketNames); with `ball`
+  std::string pocket;       ///< a pocket name (rules::pocketNames); with `ball`; snooker: empty
   bool safety = false;      ///< a declared safety (no ball, no pocket)
   bool by_player = false;   ///< chosen by the player: the automatic call leaves it alone
 
@@ -48,7 +49,8 @@ double cueSpeedOf(double power, const protocol::CommandLimits& limits);
 double powerOfSpeed(double speed, const protocol::CommandLimits& limits);
 
 /// The command for `aim` (match, seat, token and sequence are the client's to fill in): the cue's
-/// speed from the power, the call (none with a safety), the placement and the option.
+/// speed from the power, the call (none with a safety; a ball without a pocket is snooker's
+/// nomination), the placement and the option.
 protocol::ShotRequest requestOf(const AimState& aim, const protocol::CommandLimits& limits);
 
 }  // namespace pool::app

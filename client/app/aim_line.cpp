@@ -1,4 +1,4 @@
-// First-contact prediction along the cue line and the call it suggests.
+// First-contact prediction along the cue line, the call it suggests and what a click may call.
 #include "client/app/aim_line.h"
 
 #include <algorithm>
@@ -9,17 +9,6 @@
 
 namespace pool::app {
 namespace {
-
-// Distance along unit `dir` from `from` to where a point comes within `reach` of `centre`;
-// infinity when it never does ahead.
-double sweep(const Eigen::Vector2d& from, const Eigen::Vector2d& dir, const Eigen::Vector2d& centre,
-             double reach) {
-  const Eigen::Vector2d rel = centre - from;
-  const double along = rel.dot(dir);
-  const double miss2 = rel.squaredNorm() - along * along;
-  if (along <= 0 || miss2 >= reach * reach) return std::numeric_limits<double>::infinity();
-  return along - std::sqrt(reach * reach - miss2);
-}
 
 // Distance along unit `dir` to the box |x| <= hx, |y| <= hy from inside it.
 double toCushion(const Eigen::Vector2d& from, const Eigen::Vector2d& dir, double hx, double hy) {
@@ -48,6 +37,15 @@ int closestPocket(const Eigen::Vector2d& at, const Eigen::Vector2d& heading,
 }
 
 }  // namespace
+
+double sweep(const Eigen::Vector2d& from, const Eigen::Vector2d& dir, const Eigen::Vector2d& centre,
+             double reach) {
+  const Eigen::Vector2d rel = centre - from;
+  const double along = rel.dot(dir);
+  const double miss2 = rel.squaredNorm() - along * along;
+  if (along <= 0 || miss2 >= reach * reach) return std::numeric_limits<double>::infinity();
+  return along - std::sqrt(reach * reach - miss2);
+}
 
 AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
                          const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
@@ -97,6 +95,33 @@ ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
   call.ball = aim.ball;
   call.pocket = view.pockets[static_cast<std::size_t>(aim.pocket)].name;
   return call;
+}
+
+ClickTargets clickTargetsFor(rules::Game game, const std::vector<physics::Ball>& balls, int struck,
+                             const game::LoadedTable& view) {
+  ClickTargets targets;
+  for (const auto& b : balls) {
+    if (b.id != struck && physics::onTable(b.state))
+      targets.balls.emplace_back(b.id, b.pos.head<2>());
+  }
+  if (game != rules::Game::Snooker) {
+    for (const auto& p : view.pockets) targets.pockets.emplace_back(p.name, p.mouth);
+  }
+  return targets;
+}
+
+std::optional<std::vector<int>> nominableFor(rules::Game game, const rules::GameState& state,
+                                             const std::vector<physics::Ball>& balls) {
+  if (game != rules::Game::Snooker) return std::nullopt;
+  const rules::GameRules played{game, {}, {}};
+  std::vector<int> out;
+  for (const auto& b : balls) {
+    if (b.id == physics::kCueBall || !physics::onTable(b.state)) continue;
+    rules::Intent nominated;
+    nominated.ball = b.id;
+    if (rules::checkIntentFor(played, state, nominated, balls).ok()) out.push_back(b.id);
+  }
+  return out;
 }
 
 }  // namespace pool::app

@@ -1,5 +1,5 @@
 // The aim line: where the cue ball, sent straight along the cue, first touches a ball or a
-// cushion, where that ball heads, and the call that follows from it.
+// cushion, where that ball heads, and the call that follows from it; what a click may call.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "client/app/aim.h"
+#include "client/app/controls.h"
 #include "game/loaded_table.h"
 #include "physics/ball.h"
 #include "rules/game_rules.h"
@@ -24,6 +25,11 @@ struct AimPrediction {
   int pocket = -1;  ///< index into LoadedTable::pockets the ball heads closest to; -1: none
 };
 
+/// Distance along unit `dir` from `from` to where a point comes within `reach` of `centre`;
+/// infinity when it never does ahead (a ball's centre sweeping toward another's: reach 2R).
+double sweep(const Eigen::Vector2d& from, const Eigen::Vector2d& dir, const Eigen::Vector2d& centre,
+             double reach);
+
 /// Where the cue ball at `cue` (m) heading along `yaw` (rad) first touches another ball on the
 /// table in `balls` (centres 2R apart) or a cushion (its centre R inside the playing surface).
 /// `struck`: the ball at `cue` (the cue ball; in three-cushion the shooter's own).
@@ -38,5 +44,16 @@ AimPrediction predictAim(const Eigen::Vector2d& cue, double yaw,
 ShotCall autoCall(const AimPrediction& aim, const rules::GameState& state,
                   const std::vector<physics::Ball>& balls, const game::LoadedTable& view,
                   rules::Game game);
+
+/// What a click may call at `game`: every object ball on the table but `struck` (a practice table
+/// drags them too) and every pocket's mouth; snooker's no pocket (it calls none).
+ClickTargets clickTargetsFor(rules::Game game, const std::vector<physics::Ball>& balls, int struck,
+                             const game::LoadedTable& view);
+
+/// Snooker's nomination from `state`: the balls on the table the rules let the shooter nominate
+/// (rules::checkIntentFor: a colour when on one, any object ball with a free ball, none
+/// otherwise); empty for the other games, which call a ball in a pocket.
+std::optional<std::vector<int>> nominableFor(rules::Game game, const rules::GameState& state,
+                                             const std::vector<physics::Ball>& balls);
 
 }  // namespace pool::app

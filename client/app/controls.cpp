@@ -212,7 +212,7 @@ void Controls::keyDown(Key key, Mods mods) {
       if (aiming) cyclePocket();
       break;
     case Key::K:
-      if (aiming) {
+      if (aiming && !nominable_) {
         aim_.call.safety = !aim_.call.safety;
         aim_.call.by_player = true;
       }
@@ -292,6 +292,7 @@ void Controls::toggle(Key key) {
 void Controls::cyclePocket() {
   // A ball clicked and not yet given a pocket is the one C calls; with no ball called (a safety,
   // or nothing yet) there is no pocket to move on.
+  if (nominable_) return;  // snooker calls no pocket
   if (picked_ball_) {
     aim_.call.ball = picked_ball_;
     picked_ball_.reset();
@@ -523,6 +524,14 @@ std::optional<ClickTarget> Controls::hovered() const {
 void Controls::click(double x, double y) {
   const auto target = targetAt(x, y);
   if (!target) return;
+  if (target->ball && nominable_) {
+    // Snooker: the ball alone is the call; the nominated ball clicked again drops it.
+    const auto& allowed = *nominable_;
+    if (std::find(allowed.begin(), allowed.end(), *target->ball) == allowed.end()) return;
+    const bool again = aim_.call.ball == target->ball;
+    aim_.call = ShotCall{again ? std::nullopt : target->ball, {}, false, true};
+    return;
+  }
   if (target->ball) {
     picked_ball_ = target->ball;
     return;

@@ -146,6 +146,10 @@ class Controls {
   /// The balls and pockets a click may call this frame: a click (a press and release that does
   /// not move) on an object ball picks it, then a click at a pocket calls it there.
   void setClickTargets(ClickTargets targets) { targets_ = std::move(targets); }
+  /// Snooker's nomination this frame: a click on one of `balls` nominates it alone, with no pocket
+  /// (a click on it again drops it), C calls no pocket and K declares no safety (snooker has
+  /// neither); empty: the game calls a ball in a pocket.
+  void setNominable(std::optional<std::vector<int>> balls) { nominable_ = std::move(balls); }
   /// The ball clicked, waiting for its pocket.
   std::optional<int> pickedBall() const { return picked_ball_; }
   /// What a click at the cursor would pick or call now (nothing while dragging): the window rings
@@ -242,6 +246,7 @@ class Controls {
   void click(double x, double y);
   std::optional<ClickTarget> targetAt(double x, double y) const;
   ClickTargets targets_;
+  std::optional<std::vector<int>> nominable_;  ///< snooker: the balls a click nominates
   std::optional<int> picked_ball_;
   bool ball_dragging_ = false;
   std::pair<int, Eigen::Vector2d> dragged_{0, Eigen::Vector2d::Zero()};  ///< with Drag::Ball

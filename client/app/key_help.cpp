@@ -16,6 +16,8 @@ const std::vector<KeyHelp>& keyHelp() {
       {"aiming", "Ctrl + drag down, then up",
        "stroke the cue: it strikes at the mouse's speed (let go or Esc: no shot)"},
       {"aiming", "C / K", "call the next pocket / declare a safety"},
+      {"snooker", "click a ball",
+       "nominate it (a colour when on one, any ball with a free ball; again: drop it)"},
       {"ball in hand", "drag the cue ball", "place it where the rules allow"},
       {"a choice", "1 / 2 / 3 / 4",
        "answer the rules' choice (after a foul: play from here, a free ball, play again, the "
@@ -37,7 +39,8 @@ const std::vector<KeyHelp>& keyHelp() {
       {"practice", "U", "undo the last change (a shot, a layout, a rack)"},
       {"practice", "Y / J", "the last shot again from its table / from the table as it is"},
       {"practice", "H", "ask the bot what it would play (the cue turns to its aim)"},
-      {"practice", "8 / 9 / 0, Backspace", "re-rack 8-, 9- or 10-ball / clear the table"},
+      {"practice", "8 / 9 / 0, Backspace",
+       "re-rack 8-, 9- or 10-ball (at a snooker or carom table: its own game) / clear the table"},
       {"practice", "F5 / F6", "save the table and the last shot as a scenario / load one"},
       {"practice", "F7", "the physics pane: this table's coefficients"},
       {"always", "F11", "full screen, on and off"},

@@ -57,6 +57,10 @@ const client::Lobby& MatchSession::lobby() const {
   return clients_.front()->lobby();
 }
 
+const client::PlayerBook& MatchSession::players() const {
+  return clients_.front()->players();
+}
+
 void MatchSession::note(std::string text, bool problem) {
   notes_.push_back({std::move(text), problem});
 }

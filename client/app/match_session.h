@@ -80,6 +80,8 @@ class MatchSession {
 
   SessionStage stage() const { return stage_; }
   const client::Lobby& lobby() const;
+  /// The players' ratings and statistics received (the lobby's Players table).
+  const client::PlayerBook& players() const;
   const std::string& match() const { return match_; }
   /// The latest state of the match followed, if any.
   const client::MatchView* view() const;

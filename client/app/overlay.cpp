@@ -9,6 +9,7 @@ namespace {
 
 const Eigen::Vector3d kAimColour(1.0, 1.0, 1.0);
 const Eigen::Vector3d kObjectColour(1.0, 0.85, 0.2);
+const Eigen::Vector3d kBankColour(0.55, 0.8, 1.0);
 const Eigen::Vector3d kCueColour(0.75, 0.55, 0.3);
 const Eigen::Vector3d kVelocityColour(0.2, 0.9, 1.0);
 const Eigen::Vector3d kSpinColour(1.0, 0.3, 0.8);
@@ -30,6 +31,15 @@ std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, double radius) 
     const Eigen::Vector2d object = aim.contact + 2 * radius * aim.object_dir;
     out.push_back(
         {at(object, radius), at(object + kObjectLine * aim.object_dir, radius), kObjectColour});
+  }
+  return out;
+}
+
+std::vector<OverlaySegment> bankOverlay(const BankPath& path, double radius) {
+  std::vector<OverlaySegment> out;
+  // The first leg is the aim line's own (aimOverlay draws it).
+  for (std::size_t i = 2; i < path.points.size(); ++i) {
+    out.push_back({at(path.points[i - 1], radius), at(path.points[i], radius), kBankColour});
   }
   return out;
 }

@@ -7,6 +7,7 @@
 
 #include "client/app/aim.h"
 #include "client/app/aim_line.h"
+#include "client/app/bank_path.h"
 #include "physics/ball.h"
 
 namespace pool::app {
@@ -21,6 +22,10 @@ struct OverlaySegment {
 /// The aim line (cue ball to its first contact, then the object ball's heading) at ball-centre
 /// height `radius`. The cue is drawn by the renderer (render::Renderer::setCue).
 std::vector<OverlaySegment> aimOverlay(const AimPrediction& aim, double radius);
+
+/// The bank aim aid (bank_path.h) after the aim line's first cushion, dimmer than the aim line, at
+/// ball-centre height `radius`: one segment a leg.
+std::vector<OverlaySegment> bankOverlay(const BankPath& path, double radius);
 
 /// For each ball on the table that moves: its velocity (0.25 s of travel) and its spin axis
 /// (length ∝ |ω|).

@@ -1,4 +1,4 @@
-// The layout a practice table's drag sends, with a lost cue ball put back.
+// The layout a practice table's drag sends, with a lost cue ball put back, and its re-racks.
 #include "client/app/practice_layout.h"
 
 #include "client/app/placement_search.h"
@@ -28,6 +28,10 @@ std::vector<protocol::BallSpot> layoutWithMove(const std::vector<physics::Ball>&
     }
   }
   return out;
+}
+
+int practiceRack(rules::Game table_game, int asked) {
+  return rules::isPool(table_game) ? asked : rules::gameNumber(table_game);
 }
 
 }  // namespace pool::app

@@ -1,4 +1,5 @@
-// A practice table's layout after the player drags a ball: what the table's Layout command sends.
+// A practice table's changes from the window: the layout a dragged ball's Layout command sends,
+// and the rack a re-rack key asks for.
 #pragma once
 
 #include <Eigen/Core>
@@ -6,6 +7,7 @@
 
 #include "physics/ball.h"
 #include "protocol/practice_request.h"
+#include "rules/game_rules.h"
 #include "rules/table_context.h"
 
 namespace pool::app {
@@ -16,5 +18,11 @@ namespace pool::app {
 std::vector<protocol::BallSpot> layoutWithMove(const std::vector<physics::Ball>& balls, int id,
                                                const Eigen::Vector2d& at,
                                                const rules::TableContext& table);
+
+/// The rack (a game's number, the Rack command's) that a re-rack key asking for `asked` (8, 9 or
+/// 10: keys 8, 9, 0) racks at a practice table of `table_game`: `asked` at a pool table; at a
+/// table of a game of its own (snooker, three-cushion) that game, whichever key (the server racks
+/// only the games of the table it is).
+int practiceRack(rules::Game table_game, int asked);
 
 }  // namespace pool::app

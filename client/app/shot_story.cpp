@@ -74,6 +74,10 @@ std::string foulReason(rules::Foul foul, rules::Game game) {
       return "a ball not on fell";
     case rules::Foul::PushStroke:
       return "a push stroke: a ball touching the cue ball moved with it";
+    case rules::Foul::JumpShot:
+      return "a jump shot: the cue ball jumped over a ball";
+    case rules::Foul::FreeBallSnookers:
+      return "the free ball snookers the next player";
   }
   return "a foul";
 }

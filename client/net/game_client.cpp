@@ -224,6 +224,7 @@ void GameClient::wait(std::chrono::nanoseconds timeout) const {
 std::vector<ClientEvent> GameClient::poll() {
   std::vector<ClientEvent> out;
   pollLobby(out);
+  pollPlayers(out);
   pollReplies(out);
   pollStates(out);
   pollResults(out);
@@ -251,6 +252,17 @@ void GameClient::pollLobby(std::vector<ClientEvent>& out) {
     const auto& entry = std::get<LobbyEntry>(*event);
     lobby_.update(entry);
     out.emplace_back(entry);
+  }
+}
+
+void GameClient::pollPlayers(std::vector<ClientEvent>& out) {
+  for (auto& stats : transport_->takePlayerStats()) {
+    if (!stats) {
+      problem(stats.error());
+      continue;
+    }
+    players_.update(*stats);
+    out.emplace_back(std::move(*stats));
   }
 }
 

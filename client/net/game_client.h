@@ -17,6 +17,7 @@
 
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
+#include "client/net/player_book.h"
 #include "client/net/server_pins.h"
 #include "core/check.h"
 #include "core/result.h"
@@ -33,7 +34,7 @@ namespace pool::client {
 /// A shooter's live aim (protocol::AimSample) reaches poll() only once it passed the checks of
 /// GameClient::pollAims.
 using ClientEvent = std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport,
-                                 TableFrame, protocol::AimSample>;
+                                 TableFrame, protocol::AimSample, protocol::PlayerStats>;
 
 /// The seat this client holds in a match.
 struct SeatHolding {
@@ -129,6 +130,8 @@ class GameClient {
   std::vector<ClientEvent> poll();
 
   const Lobby& lobby() const { return lobby_; }
+  /// The players' statistics and ratings received (PlayerStats), bounded.
+  const PlayerBook& players() const { return players_; }
   /// The matches whose states, results and frames this client receives (each travels in its own
   /// DDS partition): the one it sits in, the one it watches and those its unanswered requests
   /// name. Following changes as requests go out and answers come in.
@@ -155,6 +158,7 @@ class GameClient {
   template <class Message, class Sign>
   Result<std::uint32_t> sendSigned(Message message, std::uint32_t seq, Sign sign, const char* what);
   void pollLobby(std::vector<ClientEvent>& out);
+  void pollPlayers(std::vector<ClientEvent>& out);
   void pollReplies(std::vector<ClientEvent>& out);
   void pollStates(std::vector<ClientEvent>& out);
   void pollResults(std::vector<ClientEvent>& out);
@@ -199,6 +203,7 @@ class GameClient {
   std::uint32_t last_seq_ = 0;  ///< the last seq our key used (shots and seat requests alike)
   std::map<std::pair<std::string, int>, std::uint32_t> seen_seq_;  ///< highest seq per seat seen
   Lobby lobby_;
+  PlayerBook players_;
   std::map<std::string, MatchView> states_;
   std::uint64_t unreadable_ = 0;
   std::uint64_t stale_ = 0;

@@ -296,8 +296,12 @@ void callLine(Say& say, const app::Controls& c, const client::MatchView* v) {
   if (c.pickedBall()) {
     say.text("the " + std::to_string(*c.pickedBall()) + " picked: click the pocket to call");
   }
+  const bool snooker = v && v->settings.game == rules::Game::Snooker;
   if (aim.call.safety) {
     say.text("call: a safety (K drops it)");
+  } else if (snooker && aim.call.ball) {
+    say.wrapped("nominated: the " + app::snookerBallName(*aim.call.ball) +
+                " (a click on it again drops it)");
   } else if (aim.call.ball) {
     std::string line = "call: the " + std::to_string(*aim.call.ball) + " in the " +
                        app::spoken(aim.call.pocket) +
@@ -308,8 +312,10 @@ void callLine(Say& say, const app::Controls& c, const client::MatchView* v) {
     say.text("call: none needed on the break");
   } else if (v->settings.game == rules::Game::NineBall) {
     say.text("call: none needed in 9-ball");
-  } else if (v->settings.game == rules::Game::Snooker) {
-    say.wrapped("call: no pocket in snooker (a colour or a free ball: the one hit first)");
+  } else if (snooker) {
+    say.wrapped(
+        "call: no pocket in snooker (a colour or a free ball: click it to nominate it, else the "
+        "one hit first)");
   } else {
     say.wrapped("call: none yet (aim at a ball, or click a ball and then a pocket)");
   }

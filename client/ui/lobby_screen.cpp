@@ -3,17 +3,13 @@
 
 #include <imgui.h>
 
+#include "client/app/lobby_line.h"
+#include "client/app/player_columns.h"
 #include "client/app/spoken.h"
 #include "client/bot/ai/bot_level.h"
 
 namespace pool::ui {
 namespace {
-
-std::string playersOf(const client::LobbyEntry& e) {
-  std::string text;
-  for (const auto& p : e.players) text += (text.empty() ? "" : " vs ") + (p.empty() ? "-" : p);
-  return text;
-}
 
 void tableOptions(TableOptions& options) {
   ImGui::TextUnformatted("A fresh table:");
@@ -40,16 +36,36 @@ void tableOptions(TableOptions& options) {
   }
 }
 
+/// Every player's rating and statistics, a row per player and game (app::playerColumns).
+void drawPlayers(const client::PlayerBook& players) {
+  if (players.size() == 0) return;
+  if (!ImGui::CollapsingHeader("Players: ratings and statistics", ImGuiTreeNodeFlags_DefaultOpen))
+    return;
+  const auto& headers = app::playerHeaders();
+  if (!ImGui::BeginTable("players", static_cast<int>(headers.size()),
+                         ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    return;
+  }
+  for (const char* h : headers) ImGui::TableSetupColumn(h);
+  ImGui::TableHeadersRow();
+  for (const protocol::PlayerStats* s : players.records()) {
+    ImGui::TableNextRow();
+    for (const std::string& text : app::playerColumns(*s)) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(text.c_str());
+    }
+  }
+  ImGui::EndTable();
+}
+
 }  // namespace
 
 protocol::MatchSettings TableOptions::settings() const {
   protocol::MatchSettings s;
   s.game = rules::gameOfNumber(game).value_or(rules::Game::EightBall);
   s.practice = practice;
-  // A practice table racks a pool game: the server refuses one for three-cushion (its opening
-  // needs none) and for snooker.
-  if (practice && !rules::isPool(s.game)) s.game = rules::Game::EightBall;
-  if (practice) return s;  // a practice table has no race and no clock
+  // A practice table of any game, on that game's table; it has no race and no clock.
+  if (practice) return s;
   if (s.game == rules::Game::ThreeCushion) s.points = points;
   s.race_to = race_to;
   s.breaks = winner_breaks ? protocol::BreakOrder::Winner : protocol::BreakOrder::Alternate;
@@ -57,8 +73,8 @@ protocol::MatchSettings TableOptions::settings() const {
   return s;
 }
 
-std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, bool hotseat,
-                                     TableOptions& options) {
+std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, const client::PlayerBook& players,
+                                     bool joining, bool hotseat, TableOptions& options) {
   std::optional<LobbyChoice> choice;
   const ImGuiViewport* screen = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(screen->WorkSize.x * 0.5f, screen->WorkSize.y * 0.5f),
@@ -76,11 +92,8 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
       choice = LobbyChoice{LobbyChoice::Kind::Play, ""};
     }
     ImGui::SameLine();
-    // A practice table racks a pool game: with three-cushion or snooker picked it racks 8-ball.
-    const bool pool_game =
-        rules::isPool(rules::gameOfNumber(options.game).value_or(rules::Game::EightBall));
-    if (ImGui::Button(pool_game ? "Practice at a table of my own"
-                                : "Practice at a table of my own (8-ball)")) {
+    // At the game picked below: its rack on its table (snooker's, the carom table).
+    if (ImGui::Button("Practice at a table of my own")) {
       options.practice = true;
       choice = LobbyChoice{LobbyChoice::Kind::Play, "new"};
     }
@@ -102,8 +115,8 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
   }
   ImGui::Separator();
   if (lobby.empty()) ImGui::TextUnformatted("no server found yet (is pool-server running?)");
-  if (ImGui::BeginTable("matches", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    for (const char* h : {"match", "table", "phase", "players", "watching", ""}) {
+  if (ImGui::BeginTable("matches", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    for (const char* h : {"match", "table", "phase", "players (rating)", "score", "watching", ""}) {
       ImGui::TableSetupColumn(h);
     }
     ImGui::TableHeadersRow();
@@ -116,7 +129,9 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(app::spoken(client::toString(e->phase)).c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(playersOf(*e).c_str());
+      ImGui::TextUnformatted(app::lobbyPlayers(*e).c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(app::lobbyProgress(*e).c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%u", e->spectators);
       ImGui::TableNextColumn();
@@ -131,6 +146,7 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, b
     }
     ImGui::EndTable();
   }
+  drawPlayers(players);
   ImGui::End();
   return choice;
 }

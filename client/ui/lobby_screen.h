@@ -5,6 +5,7 @@
 #include <string>
 
 #include "client/net/lobby.h"
+#include "client/net/player_book.h"
 #include "protocol/match_settings.h"
 
 namespace pool::ui {
@@ -30,14 +31,15 @@ struct TableOptions {
   int bot_level = 1;  ///< "Play the bot": 0 beginner, 1 club (pool-bot's default), 2 league, 3 pro
 
   /// As the match settings a seat request carries (checked by protocol::checkSettings); a
-  /// practice table racks a pool game (8-ball in place of three-cushion or snooker).
+  /// practice table racks the game picked (without race or clock).
   protocol::MatchSettings settings() const;
 };
 
 /// Draws the lobby for this frame; `joining` greys the buttons while answers are pending. The
 /// options of a fresh table are edited in `options`; "Practice" sets its `practice` and plays at a
 /// new table, "New game" clears it.
-std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, bool joining, bool hotseat,
-                                     TableOptions& options);
+/// Below the matches, every player's rating and statistics per game (`players`).
+std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, const client::PlayerBook& players,
+                                     bool joining, bool hotseat, TableOptions& options);
 
 }  // namespace pool::ui

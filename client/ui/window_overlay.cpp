@@ -6,6 +6,9 @@
 namespace pool::ui {
 namespace {
 
+/// How far the bank aim aid goes on past its last cushion, m.
+constexpr double kBankTail = 0.4;
+
 void append(std::vector<app::OverlaySegment>& lines, const std::vector<app::OverlaySegment>& more) {
   lines.insert(lines.end(), more.begin(), more.end());
 }
@@ -16,8 +19,8 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   const app::Toggles& t = controls.toggles();
   const auto prediction = app::predictAim(controls.cueBall().head<2>(), controls.aim().yaw, balls,
                                           view, match.cue_ball);
-  controls.suggestCall(
-      app::autoCall(prediction, client::gameStateOf(match), balls, view, match.settings.game));
+  const rules::GameState state = client::gameStateOf(match);
+  controls.suggestCall(app::autoCall(prediction, state, balls, view, match.settings.game));
   std::vector<Eigen::Vector3d> ahead;  // the object ball and the pocket it heads for
   if (prediction.ball) {
     for (const auto& b : balls) {
@@ -30,15 +33,19 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
   }
   controls.setContact({prediction.contact.x(), prediction.contact.y(), view.radius()},
                       std::move(ahead));
-  app::ClickTargets targets;
-  for (const auto& b : balls) {
-    if (b.id != match.cue_ball && physics::onTable(b.state)) {
-      targets.balls.emplace_back(b.id, b.pos.head<2>());
+  controls.setClickTargets(app::clickTargetsFor(match.settings.game, balls, match.cue_ball, view));
+  controls.setNominable(app::nominableFor(match.settings.game, state, balls));
+  if (t.aim_line) {
+    append(out.lines, app::aimOverlay(prediction, view.radius()));
+    // Off the cushions: three-cushion's route always, a kick's when a cushion comes first.
+    const bool carom = match.settings.game == rules::Game::ThreeCushion;
+    if (carom || !prediction.ball) {
+      const auto bank = app::bankPath(
+          controls.cueBall().head<2>(), controls.aim().yaw, balls, view, match.cue_ball,
+          carom ? app::kCaromBankCushions : app::kKickBankCushions, kBankTail);
+      append(out.lines, app::bankOverlay(bank, view.radius()));
     }
   }
-  for (const auto& p : view.pockets) targets.pockets.emplace_back(p.name, p.mouth);
-  controls.setClickTargets(std::move(targets));
-  if (t.aim_line) append(out.lines, app::aimOverlay(prediction, view.radius()));
   // What a click would pick (a ball: a yellow ring) or call (a pocket: green round its mouth).
   if (const auto target = controls.hovered()) {
     append(out.lines,

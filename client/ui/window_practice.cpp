@@ -56,6 +56,8 @@ PracticeOutcome PracticeDesk::key(app::Key key, app::MatchSession& session,
                                   app::Controls& controls) {
   PracticeOutcome out;
   if (!session.practiceTable()) return out;
+  // At snooker's or the carom table every rack key racks that table's game.
+  const rules::Game game = session.view()->settings.game;
   switch (key) {
     case app::Key::U:
       queue(command(PracticeAction::Undo));
@@ -75,13 +77,13 @@ PracticeOutcome PracticeDesk::key(app::Key key, app::MatchSession& session,
       out.note = advise(session, controls);
       break;
     case app::Key::Num8:
-      queue(rack(8));
+      queue(rack(app::practiceRack(game, 8)));
       break;
     case app::Key::Num9:
-      queue(rack(9));
+      queue(rack(app::practiceRack(game, 9)));
       break;
     case app::Key::Num0:
-      queue(rack(10));
+      queue(rack(app::practiceRack(game, 10)));
       break;
     case app::Key::Backspace:
       queue(rack(0));

@@ -30,9 +30,19 @@ const Message& Gateway::lobbyMessage() {
   return lobby_;
 }
 
+const Message& Gateway::playersMessage() {
+  if (!players_ || players_stale_) {
+    players_ = share(playersJson(client_.players().records(), kPagePlayers));
+    players_stale_ = false;
+    ++stats_.messages;
+  }
+  return players_;
+}
+
 void Gateway::attach(std::uint64_t browser, Sink sink) {
   browsers_[browser] = Browser{std::move(sink), {}};
   sendTo(browser, lobbyMessage());
+  if (client_.players().size() > 0) sendTo(browser, playersMessage());
   dropSlow();
 }
 
@@ -124,6 +134,12 @@ void Gateway::step(double now) {
     lobby_sent_at_ = now;
     sendLobby();
   }
+  if (players_changed_ && now - players_sent_at_ >= kLobbyEvery) {
+    players_sent_at_ = now;
+    players_changed_ = false;
+    const Message message = playersMessage();
+    for (const auto& [id, browser] : browsers_) sendTo(id, message);
+  }
   dropSlow();
 }
 
@@ -165,6 +181,8 @@ void Gateway::handle(const client::ClientEvent& event) {
     Message message = share(resultJson(*report));
     if (report->final()) w->second.last_result = message;
     fanOut(report->match, message);
+  } else if (std::holds_alternative<protocol::PlayerStats>(event)) {
+    players_changed_ = players_stale_ = true;
   } else if (const auto* frame = std::get_if<client::TableFrame>(&event)) {
     if (watched_.count(frame->match)) fanOut(frame->match, share(frameJson(*frame)));
   }

@@ -20,6 +20,8 @@ inline constexpr double kLeaveAfter = 10.0;
 /// The least time between two lobby messages to every browser, s: a flood of lobby entries
 /// costs a browser at most one lobby (bounded by LobbyLimits) this often.
 inline constexpr double kLobbyEvery = 0.5;
+/// The most players' records a players message carries (the best rated), as often as the lobby.
+inline constexpr std::size_t kPagePlayers = 128;
 
 /// Counters for the log and the benchmark.
 struct GatewayStats {
@@ -40,7 +42,7 @@ class Gateway {
   explicit Gateway(client::GameClient& client, double join_retry = 1.0,
                    LobbyLimits lobby_limits = {});
 
-  /// A browser connected: it gets the lobby at once.
+  /// A browser connected: it gets the lobby at once (and the players' records, if any).
   void attach(std::uint64_t browser, Sink sink);
   void detach(std::uint64_t browser);
   /// The browser watches `match` (empty: none). It gets the table, the latest state and the last
@@ -83,6 +85,8 @@ class Gateway {
   void sendLobby();
   /// The lobby message, made again when an entry changed since.
   const Message& lobbyMessage();
+  /// The players message (the best rated kPagePlayers records), made again when one changed.
+  const Message& playersMessage();
   /// The table message of `match` from its lobby entry (cached by table name).
   Message tableOf(const std::string& match);
   void dropSlow();
@@ -98,6 +102,10 @@ class Gateway {
   bool lobby_stale_ = true;    ///< lobby_ must be made again
   bool lobby_changed_ = true;  ///< the browsers have not been sent the lobby as it is
   double lobby_sent_at_ = -1e9;
+  Message players_;
+  bool players_stale_ = true;
+  bool players_changed_ = false;
+  double players_sent_at_ = -1e9;
   std::set<std::uint64_t> slow_;  ///< browsers whose sink refused a message this pass
   GatewayStats stats_;
 };

@@ -11,6 +11,7 @@
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/spectate/json_lines.h"
+#include "core/hex.h"
 #include "protocol/match_settings.h"
 #include "table/snooker_spots.h"
 #include "table/table_geometry.h"
@@ -79,7 +80,13 @@ std::string lobbyEntryJson(const client::LobbyEntry& e) {
               {"phase", toString(e.phase)},
               {"in_play", protocol::inPlay(e.phase)},
               {"players", json::array({e.players[0], e.players[1]})},
+              {"ratings", json::array({e.ratings[0], e.ratings[1]})},
+              {"game", rules::toString(e.settings.game)},
+              {"practice", e.settings.practice},
               {"racks_won", json::array({e.racks_won[0], e.racks_won[1]})},
+              {"rack", e.rack},
+              {"shot_number", e.shot_number},
+              {"rack_points", json::array({e.rack_points[0], e.rack_points[1]})},
               {"race_to", e.settings.race_to},
               {"settings", protocol::describe(e.settings)},
               {"spectators", e.spectators}}
@@ -94,6 +101,34 @@ std::string lobbyJson(const std::vector<const std::string*>& entries) {
   }
   out += "]}";
   return out;
+}
+
+std::string playersJson(const std::vector<const protocol::PlayerStats*>& players,
+                        std::size_t limit) {
+  json list = json::array();
+  for (const protocol::PlayerStats* s : players) {
+    if (list.size() >= limit) break;
+    list.push_back({{"server", s->server},
+                    {"player", hexOf(s->key)},
+                    {"name", s->name},
+                    {"game", rules::toString(s->game)},
+                    {"rating", s->rating},
+                    {"rating_deviation", s->rating_deviation},
+                    {"matches", s->matches},
+                    {"matches_won", s->matches_won},
+                    {"racks", s->racks},
+                    {"racks_won", s->racks_won},
+                    {"strokes", s->strokes},
+                    {"attempts", s->attempts},
+                    {"pots", s->pots},
+                    {"breaks", s->breaks},
+                    {"break_pots", s->break_pots},
+                    {"break_and_runs", s->break_and_runs},
+                    {"fouls", s->fouls},
+                    {"safeties", s->safeties},
+                    {"high_run", s->high_run}});
+  }
+  return json{{"type", "players"}, {"players", std::move(list)}}.dump();
 }
 
 namespace {

@@ -8,6 +8,7 @@
 #include "client/net/lobby.h"
 #include "client/net/match_types.h"
 #include "core/result.h"
+#include "protocol/player_stats.h"
 
 namespace pool::web {
 
@@ -21,6 +22,13 @@ std::string lobbyEntryJson(const client::LobbyEntry& entry);
 
 /// {"type":"lobby","matches":[entries...]} of entries made by lobbyEntryJson, in their order.
 std::string lobbyJson(const std::vector<const std::string*>& entries);
+
+/// The players' records for the page's player pages: {"type":"players","players":[{server,
+/// player (the key in hex), name, game, rating, rating_deviation, matches, matches_won, racks,
+/// racks_won, strokes, attempts, pots, breaks, break_pots, break_and_runs, fouls, safeties,
+/// high_run}, ...]}, at most `limit` of them in the order given.
+std::string playersJson(const std::vector<const protocol::PlayerStats*>& players,
+                        std::size_t limit);
 
 /// {"type":"table","name":...,"length","width","cushion_width","rail_width","nose_height",
 /// "ball_radius","noses":[{a,b,normal}],"holes":[{name,centre,radius}],"lamps":{...},

@@ -9,6 +9,7 @@
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
+#include "net/player_stats_convert.h"
 #include "net/practice_convert.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
@@ -57,6 +58,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
       : ProtocolTopics(domain),
         check(server_check ? std::move(server_check) : ServerCheck(protocol::checkSeal)),
         match_info(participant, match_info_topic, qos::lobby()),
+        player_stats(participant, player_stats_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         stray_results(participant, result_topic, deeper(qos::strayResult())),
         join_requests(participant, join_request_topic, qos::joinRequest()),
@@ -65,6 +67,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         aim_commands(participant, aim_command_topic, qos::aim()),
         waitset(participant) {
     waitset.attachData(match_info, kLobby);
+    waitset.attachData(player_stats, kLobby);
     waitset.attachData(join_replies, kReplies);
     waitset.attachData(stray_results, kResults);
   }
@@ -127,6 +130,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
 
   ServerCheck check;
   Reader<pool_MatchInfo> match_info;
+  Reader<pool_PlayerStats> player_stats;
   Reader<pool_JoinReply> join_replies;
   /// Answers to commands naming no match or seat of the server (in the default partition).
   Reader<pool_ShotResult> stray_results;
@@ -213,6 +217,10 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
     }
   }
   return out;
+}
+
+std::vector<Result<protocol::PlayerStats>> ClientTransport::takePlayerStats() {
+  return e_->readAll<protocol::PlayerStats>(e_->player_stats.take());
 }
 
 std::vector<Result<protocol::JoinAnswer>> ClientTransport::takeReplies() {

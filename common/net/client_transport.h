@@ -14,6 +14,7 @@
 #include "core/result.h"
 #include "protocol/aim_sample.h"
 #include "protocol/match_messages.h"
+#include "protocol/player_stats.h"
 #include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
 #include "protocol/server_signature.h"
@@ -68,6 +69,9 @@ class ClientTransport {
   /// match id that names no partition, or past kMaxFollowed, is not followed: the first such
   /// reason is returned (empty: all followed).
   std::string follow(const std::set<std::string>& matches);
+  /// Players' statistics and ratings since the last take (PlayerStats), each checked as the lobby
+  /// is.
+  std::vector<Result<protocol::PlayerStats>> takePlayerStats();
   std::set<std::string> followed() const;
   /// Follows the followed `match` afresh (its readers made again, what was not taken dropped):
   /// its latest state and results come again from the writers' histories, as when first

@@ -38,7 +38,7 @@ static_assert(pool_END_POINTS_REACHED == static_cast<int>(rules::GameEnd::Points
 static_assert(pool_END_THREE_MISSES == static_cast<int>(rules::GameEnd::ThreeMisses));
 static_assert(pool_IN_HAND_IN_THE_D == static_cast<int>(rules::BallInHand::InTheD));
 static_assert(pool_GROUP_STRIPES == static_cast<int>(rules::Group::Stripes));
-static_assert(pool_FOUL_PUSH_STROKE == static_cast<int>(rules::Foul::PushStroke));
+static_assert(pool_FOUL_FREE_BALL_SNOOKERS == static_cast<int>(rules::Foul::FreeBallSnookers));
 static_assert(pool_OPTION_REPLACE - pool_OPTION_PLAY_ON ==
               static_cast<int>(rules::Choice::Replace));
 
@@ -100,7 +100,7 @@ Result<std::vector<rules::Choice>> choicesOf(const dds_sequence_pool_ShotOption&
 Result<std::vector<rules::Foul>> foulsOf(const dds_sequence_pool_FoulCode& seq) {
   std::vector<rules::Foul> out;
   for (const auto& code : elementsOf(seq)) {
-    const auto foul = enumOf<rules::Foul>(code, pool_FOUL_PUSH_STROKE + 1);
+    const auto foul = enumOf<rules::Foul>(code, pool_FOUL_FREE_BALL_SNOOKERS + 1);
     if (!foul) return Result<std::vector<rules::Foul>>::fail("unknown foul");
     out.push_back(*foul);
   }
@@ -166,6 +166,9 @@ Result<LobbyEntry> fromWire(const pool_MatchInfo& info) {
   entry.settings = *settings;
   entry.racks_won = {info.racks_won[0], info.racks_won[1]};
   entry.ratings = {info.ratings[0], info.ratings[1]};
+  entry.rack = info.rack;
+  entry.shot_number = info.shot_number;
+  entry.rack_points = {info.rack_points[0], info.rack_points[1]};
   entry.standard_physics = info.standard_physics;
   entry.protocol_version = info.protocol_version;
   return Result<LobbyEntry>::ok(std::move(entry));
@@ -369,7 +372,10 @@ Sample<pool_MatchInfo> toWire(const LobbyEntry& entry) {
   for (std::size_t s = 0; s < 2; ++s) {
     info.racks_won[s] = static_cast<std::uint16_t>(entry.racks_won[s]);
     info.ratings[s] = static_cast<std::uint16_t>(std::clamp(entry.ratings[s], 0, 65535));
+    info.rack_points[s] = static_cast<std::uint16_t>(std::clamp(entry.rack_points[s], 0, 65535));
   }
+  info.rack = entry.rack;
+  info.shot_number = entry.shot_number;
   return sample;
 }
 

@@ -31,6 +31,7 @@ POOL_NET_MESSAGE(pool_MatchState, topics::kMatchState);
 POOL_NET_MESSAGE(pool_PracticeCommand, topics::kPracticeCommand);
 POOL_NET_MESSAGE(pool_AimCommand, topics::kAimCommand);
 POOL_NET_MESSAGE(pool_CueAim, topics::kCueAim);
+POOL_NET_MESSAGE(pool_PlayerStats, topics::kPlayerStats);
 
 #undef POOL_NET_MESSAGE
 

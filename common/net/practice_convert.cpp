@@ -17,6 +17,7 @@ static_assert(pool_PRACTICE_AGAIN == static_cast<int>(protocol::PracticeAction::
 static_assert(pool_PRACTICE_PHYSICS == static_cast<int>(protocol::PracticeAction::Physics));
 static_assert(sizeof(pool_PracticeCommand::coefficients) / sizeof(double) ==
               protocol::kPracticeCoefficients.size());
+static_assert(pool_MAX_BALLS == protocol::kPracticeMaxBalls);  // a layout's balls fit the sequence
 
 }  // namespace
 
@@ -28,7 +29,7 @@ Sample<pool_PracticeCommand> toWire(const protocol::PracticeRequest& r) {
   c.seat_token = r.seat_token;
   c.seq = r.seq;
   setRawValue(c.action, static_cast<std::int32_t>(r.action));
-  const auto n = static_cast<std::uint32_t>(std::min<std::size_t>(r.balls.size(), 16));
+  const auto n = static_cast<std::uint32_t>(std::min(r.balls.size(), protocol::kPracticeMaxBalls));
   auto balls = resizeSequence(c.balls, n);
   for (std::uint32_t i = 0; i < n; ++i) {
     balls[i].id = static_cast<std::uint8_t>(r.balls[i].id);
@@ -57,7 +58,9 @@ IncomingPractice readPractice(const pool_PracticeCommand& c,
     return fail("action: not a known practice action");
   }
   const auto balls = elementsOf(c.balls);
-  if (balls.size() > 16) return fail("balls: at most 16");
+  if (balls.size() > protocol::kPracticeMaxBalls) {
+    return fail("balls: at most " + std::to_string(protocol::kPracticeMaxBalls));
+  }
   protocol::PracticeRequest r;
   r.match = in.match;
   r.seat = c.seat;

@@ -10,11 +10,12 @@
 
 namespace pool::net {
 
-/// `request` as a PracticeCommand sample (at most 16 balls and a 64-byte signature are kept).
+/// `request` as a PracticeCommand sample (at most protocol::kPracticeMaxBalls balls, 22, and a
+/// 64-byte signature are kept).
 Sample<pool_PracticeCommand> toWire(const protocol::PracticeRequest& request);
 
-/// Reads `command`: match id and seat, a known action, at most 16 balls, then
-/// protocol::checkPracticeFields against `limits`' table size, then the signature's length.
+/// Reads `command`: match id and seat, a known action, at most protocol::kPracticeMaxBalls balls,
+/// then protocol::checkPracticeFields against `limits`' table size, then the signature's length.
 IncomingPractice readPractice(const pool_PracticeCommand& command,
                               const protocol::CommandLimits& limits = {});
 

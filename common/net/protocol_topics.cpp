@@ -14,6 +14,7 @@ ProtocolTopics::ProtocolTopics(std::uint32_t domain)
       state_topic(participant),
       practice_topic(participant),
       aim_command_topic(participant),
-      cue_aim_topic(participant) {}
+      cue_aim_topic(participant),
+      player_stats_topic(participant) {}
 
 }  // namespace pool::net

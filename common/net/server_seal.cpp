@@ -74,4 +74,8 @@ protocol::SealedSample sealedOf(const pool_CueAim& sample) {
   return ofMatch(sample);
 }
 
+protocol::SealedSample sealedOf(const pool_PlayerStats& sample) {
+  return common(sample, std::string(textOf(sample.server)), {});
+}
+
 }  // namespace pool::net

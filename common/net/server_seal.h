@@ -48,6 +48,11 @@ constexpr protocol::PublishedKind publishedKindOf<pool_CueAim>() {
   return protocol::PublishedKind::CueAim;
 }
 
+template <>
+constexpr protocol::PublishedKind publishedKindOf<pool_PlayerStats>() {
+  return protocol::PublishedKind::PlayerStats;
+}
+
 /// What the server's signature covers: every field of `sample`, in its wire encoding, with the
 /// signature empty. Generic over the type, so fields added to a message later are covered too.
 template <class T>
@@ -76,5 +81,6 @@ protocol::SealedSample sealedOf(const pool_MatchState& sample);
 protocol::SealedSample sealedOf(const pool_ShotResult& sample);
 protocol::SealedSample sealedOf(const pool_TableSnapshot& sample);
 protocol::SealedSample sealedOf(const pool_CueAim& sample);
+protocol::SealedSample sealedOf(const pool_PlayerStats& sample);
 
 }  // namespace pool::net

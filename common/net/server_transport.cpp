@@ -12,6 +12,7 @@
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
+#include "net/player_stats_convert.h"
 #include "net/practice_convert.h"
 #include "net/protocol_topics.h"
 #include "net/qos_profiles.h"
@@ -56,6 +57,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         commands(participant, command_topic, qos::command()),
         practice(participant, practice_topic, qos::command()),
         match_info(participant, match_info_topic, qos::lobby()),
+        player_stats(participant, player_stats_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         stray_results(participant, result_topic, qos::strayResult()),
         aim_commands(participant, aim_command_topic, qos::aimReader()),
@@ -86,6 +88,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   Reader<pool_ShotCommand> commands;
   Reader<pool_PracticeCommand> practice;
   Writer<pool_MatchInfo> match_info;
+  Writer<pool_PlayerStats> player_stats;
   Writer<pool_JoinReply> join_replies;
   /// Answers to commands naming no match or seat of this server, in the default partition.
   Writer<pool_ShotResult> stray_results;
@@ -173,6 +176,14 @@ std::string ServerTransport::publish(const protocol::AimSample& aim) {
 
 std::string ServerTransport::publish(const protocol::LobbyEntry& entry) {
   return e_->sealAndWrite(e_->match_info, *toWire(entry));
+}
+
+std::string ServerTransport::publish(const protocol::PlayerStats& stats) {
+  return e_->sealAndWrite(e_->player_stats, *toWire(stats));
+}
+
+void ServerTransport::withdraw(const protocol::PlayerStats& stats) {
+  e_->player_stats.unregister(*toWire(stats));
 }
 
 std::string ServerTransport::publish(const protocol::MatchView& view) {

@@ -17,6 +17,7 @@
 #include "protocol/command_limits.h"
 #include "protocol/key_pair.h"
 #include "protocol/match_messages.h"
+#include "protocol/player_stats.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
 
@@ -74,6 +75,11 @@ class ServerTransport {
   std::vector<Result<protocol::AimSample>> takeAims();
 
   std::string publish(const protocol::LobbyEntry& entry);
+  /// A player's statistics and rating (kept for late readers, one sample per player and game).
+  std::string publish(const protocol::PlayerStats& stats);
+  /// Stops keeping the statistics of `stats`' player and game (its key fields): the writer's
+  /// history stays bounded.
+  void withdraw(const protocol::PlayerStats& stats);
   std::string publish(const protocol::MatchView& view);
   std::string publish(const protocol::JoinAnswer& answer);
   /// With `keep` false the result is not kept for late readers (a made-up match or seat: the

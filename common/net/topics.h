@@ -15,5 +15,6 @@ inline constexpr std::string_view kMatchState = "pool/MatchState";            //
 inline constexpr std::string_view kPracticeCommand = "pool/PracticeCommand";  ///< no key
 inline constexpr std::string_view kAimCommand = "pool/AimCommand";            ///< no key
 inline constexpr std::string_view kCueAim = "pool/CueAim";                    ///< key match
+inline constexpr std::string_view kPlayerStats = "pool/PlayerStats";  ///< key server, player, game
 
 }  // namespace pool::net::topics

@@ -37,7 +37,11 @@ struct LobbyEntry {
   std::array<int, 2> racks_won{0, 0};  ///< the score of the race
   /// Each seated player's rating in the table's game, rounded (0: a free or unsigned seat).
   std::array<int, 2> ratings{0, 0};
-  bool standard_physics = true;  ///< false: a practice table's coefficients were changed
+  std::uint32_t rack = 0;                ///< the rack (frame, game) in play, from 1; 0: none yet
+  std::uint32_t shot_number = 0;         ///< shots played in the match
+  std::array<int, 2> rack_points{0, 0};  ///< each seat's points in this rack (three-cushion's
+                                         ///< points, snooker's frame score; 0 in pool)
+  bool standard_physics = true;          ///< false: a practice table's coefficients were changed
 };
 
 /// The answer to a join request (JoinReply).

@@ -39,9 +39,6 @@ Check<> checkSettings(const MatchSettings& s) {
     return Check<>::refuse("bad_points",
                            "points: must be 1 to " + std::to_string(kMaxPoints) + " points");
   }
-  if (s.practice && !rules::isPool(s.game)) {
-    return Check<>::refuse("bad_practice", "practice: practice tables rack pool games");
-  }
   if (s.breaks != BreakOrder::Alternate && s.breaks != BreakOrder::Winner) {
     return Check<>::refuse("bad_breaks", "breaks: must be alternate or winner");
   }

@@ -36,8 +36,9 @@ struct MatchSettings {
   BreakOrder breaks = BreakOrder::Alternate;
   double shot_clock = 0.0;  ///< s per shot; 0: no clock; else kMinShotClock..kMaxShotClock
   /// A practice table: its players shoot as they like, ball in hand anywhere, and may lay out,
-  /// re-rack and undo (protocol/practice_request.h); `game` is the rack it starts with, and it
-  /// has no race and no shot clock.
+  /// re-rack and undo (protocol/practice_request.h); `game` is the rack it starts with and puts
+  /// it on that game's table (any game: a pool table re-racks 8-, 9- or 10-ball, snooker's and
+  /// three-cushion's their own game), and it has no race and no shot clock.
   bool practice = false;
 
   bool clockOn() const { return shot_clock > 0.0; }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <set>
 
+#include "rules/game_rules.h"
+
 namespace pool::protocol {
 
 const char* toString(PracticeAction action) {
@@ -23,6 +25,19 @@ const char* toString(PracticeAction action) {
   }
   return "unknown";
 }
+
+namespace {
+
+// "8, 9, 10, 3, 22": every game's number, in the lobby's order.
+std::string rackNumbers() {
+  std::string out;
+  for (const rules::GameInfo& g : rules::allGames()) {
+    out += (out.empty() ? "" : ", ") + std::to_string(g.number);
+  }
+  return out;
+}
+
+}  // namespace
 
 PracticeCoefficients coefficientsOf(const table::PhysicsParams& p) {
   return {p.u_s, p.u_r, p.spin_decel, p.e_b, p.e_c, p.u_c, p.e_slate};
@@ -45,16 +60,19 @@ std::vector<std::uint8_t> signedBytes(const PracticeRequest& r) {
   SignedEncoder e({MessageTag::Practice, r.match, r.seat, r.seat_token, r.seq});
   e.u8(static_cast<std::uint8_t>(r.action));
   e.u8(static_cast<std::uint8_t>(r.rack));
-  const std::size_t count = std::min<std::size_t>(r.balls.size(), 16);
+  const std::size_t count = std::min(r.balls.size(), kPracticeMaxBalls);
   e.u8(static_cast<std::uint8_t>(count));
-  for (std::size_t i = 0; i < 16; ++i) {
+  // The fixed slots, then one for each ball past them: a pool layout encodes as it always did.
+  for (std::size_t i = 0; i < std::max(count, kPracticeFixedSlots); ++i) {
     const BallSpot spot = i < count ? r.balls[i] : BallSpot{};
     e.u8(static_cast<std::uint8_t>(spot.id));
     e.f64(spot.x);
     e.f64(spot.y);
   }
   for (double c : r.coefficients) e.f64(c);
-  assert(e.message().size() == kSignedPracticeBytes);
+  assert(e.message().size() ==
+         kSignedPracticeBytes +
+             (count > kPracticeFixedSlots ? count - kPracticeFixedSlots : 0) * kPracticeSlotBytes);
   return e.message();
 }
 
@@ -69,10 +87,15 @@ SignatureCheck verifyPractice(const PracticeRequest& request,
 }
 
 Check<> checkPracticeFields(const PracticeRequest& r, double half_length, double half_width) {
-  if (r.balls.size() > 16) return Check<>::refuse("too_many_balls", "balls: at most 16");
+  if (r.balls.size() > kPracticeMaxBalls) {
+    return Check<>::refuse("too_many_balls", "balls: at most " + std::to_string(kPracticeMaxBalls));
+  }
   std::set<int> ids;
   for (const BallSpot& b : r.balls) {
-    if (b.id < 0 || b.id > 15) return Check<>::refuse("bad_ball_id", "balls: an id must be 0-15");
+    if (b.id < 0 || b.id > physics::kMaxBallId) {
+      return Check<>::refuse("bad_ball_id",
+                             "balls: an id must be 0-" + std::to_string(physics::kMaxBallId));
+    }
     if (!ids.insert(b.id).second)
       return Check<>::refuse("ball_twice", "balls: ball " + std::to_string(b.id) + " twice");
     if (!std::isfinite(b.x) || !std::isfinite(b.y))
@@ -82,8 +105,9 @@ Check<> checkPracticeFields(const PracticeRequest& r, double half_length, double
                              "balls: ball " + std::to_string(b.id) + " is off the table");
     }
   }
-  if (r.rack != 0 && r.rack != 8 && r.rack != 9 && r.rack != 10) {
-    return Check<>::refuse("bad_rack", "rack: must be 8, 9, 10 or 0 (clear)");
+  if (r.rack != 0 && !rules::gameOfNumber(r.rack)) {
+    return Check<>::refuse("bad_rack",
+                           "rack: must be a game's number (" + rackNumbers() + ") or 0 (clear)");
   }
   for (std::size_t i = 0; i < r.coefficients.size(); ++i) {
     if (!std::isfinite(r.coefficients[i])) {

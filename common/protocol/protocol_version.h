@@ -15,7 +15,9 @@ namespace pool::protocol {
 /// (the game on the wire as 3, its points setting, each seat's points, innings and high run, the
 /// run and the ball the shooter strikes), up to 22 balls a table (a snooker set). 8: snooker
 /// (ball ids to 21, the game as 22, the ball on, free balls, misses, the cue ball in hand in the
-/// D, a ball nominated without a pocket).
-inline constexpr unsigned kProtocolVersion = 8;
+/// D, a ball nominated without a pocket). 9: snooker's jump-shot and free-ball-snookers fouls; the
+/// lobby's rack, shot count and game score (MatchInfo); players' records (PlayerStats); practice
+/// tables of every game (practice commands of up to 22 balls).
+inline constexpr unsigned kProtocolVersion = 9;
 
 }  // namespace pool::protocol

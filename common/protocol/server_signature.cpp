@@ -34,6 +34,8 @@ const char* toString(PublishedKind kind) {
       return "TableSnapshot";
     case PublishedKind::CueAim:
       return "CueAim";
+    case PublishedKind::PlayerStats:
+      return "PlayerStats";
   }
   return "?";
 }

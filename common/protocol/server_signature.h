@@ -23,7 +23,8 @@ enum class PublishedKind : std::uint8_t {
   MatchState = 3,
   ShotResult = 4,
   TableSnapshot = 5,
-  CueAim = 6,  ///< the shooter's aim, relayed
+  CueAim = 6,       ///< the shooter's aim, relayed
+  PlayerStats = 7,  ///< a player's statistics and rating (since protocol version 9)
 };
 
 const char* toString(PublishedKind kind);

@@ -21,6 +21,20 @@ void putBall(std::vector<physics::Ball>& balls, const physics::Ball& moved) {
 
 }  // namespace
 
+int practiceMaxBallId(Game game) {
+  switch (game) {
+    case Game::Snooker:
+      return table::kSnookerBlack;
+    case Game::ThreeCushion:
+      return kCaromRed;
+    case Game::EightBall:
+    case Game::NineBall:
+    case Game::TenBall:
+      break;
+  }
+  return 15;  // a pool set: the cue ball and 15 object balls
+}
+
 GameState practiceState() {
   GameState state;
   state.phase = Phase::Open;
@@ -60,12 +74,14 @@ std::vector<physics::Ball> practiceRack(const TableContext& table, std::uint64_t
 
 Result<std::vector<physics::Ball>> placeBalls(const std::vector<physics::Ball>& balls,
                                               const std::vector<table::BallPlacement>& moves,
-                                              const TableContext& table) {
+                                              const TableContext& table, Game game) {
+  const int max_id = practiceMaxBallId(game);
   std::vector<physics::Ball> placed = balls;
   for (const auto& move : moves) {
     std::string name = "ball " + std::to_string(move.id);
-    if (move.id < 0 || move.id > kPracticeMaxBallId) {
-      return Result<std::vector<physics::Ball>>::fail(name + ": not a ball id (0-15)");
+    if (move.id < 0 || move.id > max_id) {
+      return Result<std::vector<physics::Ball>>::fail(name + ": not a ball id (0-" +
+                                                      std::to_string(max_id) + ")");
     }
     PlacementCheck check = checkBallPlacement(move.id, move.pos, placed, table);
     if (!check.ok()) return Result<std::vector<physics::Ball>>::fail(name + ": " + check.error());

@@ -6,6 +6,7 @@
 
 #include "core/result.h"
 #include "physics/ball.h"
+#include "rules/game_rules.h"
 #include "rules/game_state.h"
 #include "rules/shot.h"
 #include "rules/table_context.h"
@@ -14,8 +15,9 @@
 
 namespace pool::rules {
 
-/// A practice table racks a pool game: its balls are 0–15.
-inline constexpr int kPracticeMaxBallId = 15;
+/// The highest ball id at a practice table of `game`: a pool game's 15, snooker's black
+/// (table::kSnookerBlack, 21), three-cushion's red (kCaromRed, 2).
+int practiceMaxBallId(Game game);
 
 /// The practice state: seat 0 shoots every shot, the cue ball in hand anywhere to start.
 GameState practiceState();
@@ -28,11 +30,12 @@ Result<Verdict> judgePractice(const Shot& shot, const TableContext& table);
 /// A full 8-ball rack (table::rackBalls with `seed`) and the cue ball on the head spot, at rest.
 std::vector<physics::Ball> practiceRack(const TableContext& table, std::uint64_t seed);
 
-/// Puts balls where the player asks, one after another (each in the table plane, at rest on the
-/// slate; a ball not yet listed is added). Refused, with nothing changed, if a position is off the
-/// slate, over a pocket, overlaps a ball, or an id is not 0–15.
+/// Puts balls where the player asks at a practice table of `game`, one after another (each in
+/// the table plane, at rest on the slate; a ball not yet listed is added). Refused, with nothing
+/// changed, if a position is off the slate, over a pocket, overlaps a ball, or an id is not one
+/// of the game's, 0 to practiceMaxBallId ("ball 22: not a ball id (0-21)").
 Result<std::vector<physics::Ball>> placeBalls(const std::vector<physics::Ball>& balls,
                                               const std::vector<table::BallPlacement>& moves,
-                                              const TableContext& table);
+                                              const TableContext& table, Game game);
 
 }  // namespace pool::rules

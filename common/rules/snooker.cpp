@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "rules/jump_shot.h"
 #include "rules/shot_facts.h"
 #include "rules/verdict_steps.h"
 #include "table/rack.h"
@@ -203,6 +204,23 @@ bool touchingBallPushed(const Shot& shot, const std::vector<int>& touching) {
   return false;
 }
 
+/// Whether the free ball, left on the table, snookers the next stroke on `next_on` (0 a red, 1 a
+/// colour, else that colour): snookered with it and not without it. Never with only the pink and
+/// the black left before the stroke.
+bool freeBallSnookers(const Shot& shot, int free_ball, int next_on, double r) {
+  const physics::Ball* ball = ballById(shot.after, free_ball);
+  if (!ball || !physics::onTable(ball->state)) return false;
+  std::vector<int> left = objectIdsOn(shot.before);
+  std::sort(left.begin(), left.end());
+  if (left == std::vector<int>{table::kSnookerPink, table::kSnookerBlack}) return false;
+  GameState following;
+  following.ball_on = next_on;
+  const std::vector<int> on = snookerBallsOn(following, shot.after);
+  std::vector<physics::Ball> without = shot.after;
+  std::erase_if(without, [&](const physics::Ball& b) { return b.id == free_ball; });
+  return isSnookered(shot.after, on, r) && !isSnookered(without, on, r);
+}
+
 std::vector<BallAt> standingLayout(const std::vector<physics::Ball>& balls) {
   std::vector<BallAt> out;
   for (const auto& b : balls) {
@@ -365,6 +383,8 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
       failed_to_hit = true;
     }
     if (touchingBallPushed(shot, touching)) v.fouls.push_back(Foul::PushStroke);
+    // Section 2, "Definitions" ("Jump Shot"), and Section 3, "Fouls".
+    if (jumpedOverABall(shot, r)) v.fouls.push_back(Foul::JumpShot);
   }
   // Which pots are the stroke's own: reds when on a red (a free ball with them), the nominated
   // colour, the one colour on, or the free ball.
@@ -390,6 +410,16 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
     v.off_table.push_back(id);
     if (!v.hasFoul(Foul::ObjectBallOffTable)) v.fouls.push_back(Foul::ObjectBallOffTable);
     involve(id);
+  }
+  // Section 3, "Snookered after a Foul": the free ball may not snooker the next player on all
+  // the reds or the ball on, unless only the pink and the black remain.
+  if (!no_stroke && target.free_ball >= 0) {
+    const bool pots_on = std::any_of(potted.begin(), potted.end(), legalPot);
+    const int next_on = pots_on && state.ball_on == kOnRed
+                            ? kOnColour
+                            : (redsLeft(shot.after) > 0 ? kOnRed : lowestColourOn(shot.after));
+    if (freeBallSnookers(shot, target.free_ball, next_on, r))
+      v.fouls.push_back(Foul::FreeBallSnookers);
   }
   penalty = std::max(penalty, kMinPenalty);
 

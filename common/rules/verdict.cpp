@@ -29,6 +29,10 @@ const char* toString(Foul foul) {
       return "ball_not_on_pocketed";
     case Foul::PushStroke:
       return "push_stroke";
+    case Foul::JumpShot:
+      return "jump_shot";
+    case Foul::FreeBallSnookers:
+      return "free_ball_snookers";
   }
   return "unknown";
 }

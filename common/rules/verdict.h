@@ -27,6 +27,8 @@ enum class Foul : std::uint8_t {
                            ///< crossing first
   BallNotOnPocketed,       ///< snooker: a ball that was not on fell
   PushStroke,              ///< snooker: a ball touching the cue ball moved with the stroke
+  JumpShot,                ///< snooker: the cue ball jumped over an object ball
+  FreeBallSnookers,        ///< snooker: the free ball snookers the next player on the ball on
 };
 
 const char* toString(Foul foul);

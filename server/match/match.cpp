@@ -334,13 +334,17 @@ Result<rules::Verdict> Match::judge(const rules::GameState& state, const rules::
   return verdict;
 }
 
+int Match::cueBallFor(const rules::GameState& state) const {
+  return practice() ? physics::kCueBall : rules::cueBallFor(rules(), state);
+}
+
 CommandAnswer Match::runPlan(const protocol::ShotRequest& command, ShotPlan plan, double now) {
   CommandAnswer answer;
   answer.seat = command.seat;
   answer.seq = command.seq;
   answer.shot_number = shot_number_;
   physics::CueShot cue = command.cue;
-  cue.ball = rules::cueBallFor(rules(), plan.state);  // three-cushion: the shooter's own ball
+  cue.ball = cueBallFor(plan.state);  // three-cushion: the shooter's own ball
   auto outcome = runner_->run(plan.before, cue, options_.snapshot_hz, options_.max_shot_time);
   if (!outcome) {
     answer.rejection = {Reject::Malformed, "the physics refused the shot: " + outcome.error()};

@@ -132,9 +132,10 @@ class Match {
   bool practice() const { return settings_.practice; }
   /// Checks `command` like a shot command (seat, token, unsigned, stale sequence, signature:
   /// from there on its number is used up), then: closed → not a practice table → balls moving →
-  /// the action's own checks (a legal layout with the cue ball, something to undo, a last shot to
-  /// play again, coefficients in their ranges). Refused with nothing changed; accepted, the
-  /// answer is done at once, except Again's, a shot in motion like handleShot's.
+  /// the action's own checks (a legal layout of the game's balls with the cue ball, a rack of a
+  /// game of this table, something to undo, a last shot to play again, coefficients in their
+  /// ranges). Refused with nothing changed; accepted, the answer is done at once, except
+  /// Again's, a shot in motion like handleShot's.
   CommandAnswer handlePractice(const protocol::PracticeRequest& command, double now);
   /// False once a practice table's coefficients were changed.
   bool standardPhysics() const { return !custom_physics_; }
@@ -160,6 +161,10 @@ class Match {
   const protocol::MatchSettings& settings() const { return settings_; }
   /// The rule set this match is judged by.
   rules::GameRules rules() const { return {settings_.game, options_.rules, {settings_.points}}; }
+  /// The ball the shooter strikes from `state`: rules::cueBallFor (three-cushion: the shooter's
+  /// own ball), but at a practice table always the cue ball (three-cushion's white), whichever
+  /// seat shoots, as the practice rules judge it.
+  int cueBallFor(const rules::GameState& state) const;
   /// Increases with every change of the match itself (state, seats, presence), each stored and
   /// published; spectators coming and going are not changes of the match (see spectators()).
   std::uint64_t revision() const { return revision_; }

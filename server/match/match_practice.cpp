@@ -19,6 +19,26 @@ void sortById(std::vector<physics::Ball>& balls) {
   std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
 }
 
+// Whether games `a` and `b` are played on the same table (the pool games share the server's).
+bool sameTable(rules::Game a, rules::Game b) {
+  return rules::tableOf(a, {}) == rules::tableOf(b, {});
+}
+
+// What a practice table of `game` racks, e.g. "this is a pool table; it racks 8, 9, 10 or 0
+// (clear)", "this is a snooker table; it racks 22 (snooker) or 0 (clear)".
+std::string racksAt(rules::Game game) {
+  std::string numbers;
+  int count = 0;
+  for (const rules::GameInfo& g : rules::allGames()) {
+    if (!sameTable(g.game, game)) continue;
+    numbers += (numbers.empty() ? "" : ", ") + std::to_string(g.number);
+    ++count;
+  }
+  if (count == 1) numbers += std::string(" (") + rules::toString(game) + ")";
+  const std::string table = rules::isPool(game) ? "pool" : rules::toString(game);
+  return "this is a " + table + " table; it racks " + numbers + " or 0 (clear)";
+}
+
 }  // namespace
 
 void Match::startPractice() {
@@ -113,7 +133,7 @@ Rejection Match::practiceChange(const protocol::PracticeRequest& command) {
       if (!has_cue) return refuse(Reject::BadPractice, "layout: the cue ball must be on the table");
       std::vector<table::BallPlacement> moves;
       for (const auto& b : command.balls) moves.push_back({b.id, Eigen::Vector2d(b.x, b.y)});
-      auto placed = rules::placeBalls({}, moves, context);
+      auto placed = rules::placeBalls({}, moves, context, settings_.game);
       if (!placed) return refuse(Reject::BadPractice, "layout: " + placed.error());
       rememberStep({}, {});
       balls_ = std::move(*placed);
@@ -124,8 +144,12 @@ Rejection Match::practiceChange(const protocol::PracticeRequest& command) {
     case protocol::PracticeAction::Rack: {
       const auto game = rules::gameOfNumber(command.rack);
       if (command.rack != 0 && !game) {
-        return refuse(Reject::BadPractice, "rack: must be 8, 9, 10 or 0 (clear)");
+        return refuse(Reject::BadPractice, "rack: " + std::to_string(command.rack) +
+                                               " is no game's number; " + racksAt(settings_.game));
       }
+      // Only a game of this table: another game's rack would need another table.
+      if (game && !sameTable(*game, settings_.game))
+        return refuse(Reject::BadPractice, "rack: " + racksAt(settings_.game));
       rememberStep({}, {});
       balls_ = layout(layouts_++, game.value_or(settings_.game));
       if (game) {

@@ -10,6 +10,7 @@
 #include "server/store/rating_book.h"
 #include "server/store/record_json.h"
 #include "server/store/schema.h"
+#include "server/store/stat_book.h"
 
 namespace pool::store {
 
@@ -251,6 +252,7 @@ void MatchStore::recordShot(const server::ShotRecord& r, const std::string& verd
       .bind(12, verdictJson(r.verdict))
       .bind(13, verdict_text)
       .run();
+  countStroke(db_, r, after);
   tx.commit();
   checkStillThere();
 }

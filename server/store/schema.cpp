@@ -73,8 +73,24 @@ CREATE TABLE rated_results(
   PRIMARY KEY(match, rack, shot_number));
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3, kVersion4,
-                                                         kVersion5, kVersion6, kVersion7};
+// Statistics: each player's counts per game (the key it signs with), added to with every stored
+// stroke; `run` and `from_break` follow the player's inning in play (stat_book.h).
+constexpr const char* kVersion8 = R"sql(
+CREATE TABLE player_stats(
+  public_key BLOB NOT NULL, game INTEGER NOT NULL, name TEXT NOT NULL,
+  matches INTEGER NOT NULL DEFAULT 0, matches_won INTEGER NOT NULL DEFAULT 0,
+  racks INTEGER NOT NULL DEFAULT 0, racks_won INTEGER NOT NULL DEFAULT 0,
+  strokes INTEGER NOT NULL DEFAULT 0, attempts INTEGER NOT NULL DEFAULT 0,
+  pots INTEGER NOT NULL DEFAULT 0, breaks INTEGER NOT NULL DEFAULT 0,
+  break_pots INTEGER NOT NULL DEFAULT 0, break_and_runs INTEGER NOT NULL DEFAULT 0,
+  fouls INTEGER NOT NULL DEFAULT 0, safeties INTEGER NOT NULL DEFAULT 0,
+  high_run INTEGER NOT NULL DEFAULT 0, run INTEGER NOT NULL DEFAULT 0,
+  from_break INTEGER NOT NULL DEFAULT 0, updated INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY(public_key, game));
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{
+    kVersion1, kVersion2, kVersion3, kVersion4, kVersion5, kVersion6, kVersion7, kVersion8};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

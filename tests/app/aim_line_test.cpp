@@ -1,4 +1,5 @@
-// The aim line finds the first ball or cushion on the cue line, and the call follows from it.
+// The aim line finds the first ball or cushion on the cue line, the call follows from it, and a
+// click calls what the game lets it.
 #include "client/app/aim_line.h"
 
 #include <gtest/gtest.h>
@@ -6,6 +7,8 @@
 #include <cmath>
 
 #include "app_fixture.h"
+#include "rules/snooker.h"
+#include "table/rack.h"
 
 namespace pool::app::test {
 namespace {
@@ -135,6 +138,38 @@ TEST(AimLineTest, RotationGamesCallByTheirOwnRules) {
   EXPECT_FALSE(seven.ball);
   // In 8-ball with open groups the 7 is the shooter's to call.
   EXPECT_EQ(autoCall(at_seven, state, balls, nineFoot(), rules::Game::EightBall).ball, 7);
+}
+
+TEST(AimLineTest, AClickCallsAPocketInPoolAndNominatesOnlyWhatSnookerAllows) {
+  // Pool: every object ball on the table but the one struck, every pocket, nothing nominated.
+  physics::Ball gone = resting(5, 0.0, 0.0);
+  gone.state = physics::MotionState::Pocketed;
+  const std::vector<physics::Ball> pool{resting(0, -0.6, 0.0), resting(3, 0.3, 0.1), gone};
+  const ClickTargets eight = clickTargetsFor(rules::Game::EightBall, pool, 0, nineFoot());
+  ASSERT_EQ(eight.balls.size(), 1u);
+  EXPECT_EQ(eight.balls[0].first, 3);
+  EXPECT_EQ(eight.pockets.size(), nineFoot().pockets.size());
+  EXPECT_FALSE(nominableFor(rules::Game::EightBall, rules::GameState{}, pool));
+
+  // Snooker: no pocket; every ball may be clicked (a practice table drags them), but a ball is
+  // nominated only as the rules allow (rules::checkSnookerIntent).
+  const std::vector<physics::Ball> snooker{resting(0, -0.6, 0.0), resting(4, 0.3, 0.1),
+                                           resting(table::kSnookerGreen, 0.5, -0.2),
+                                           resting(table::kSnookerBlack, 0.8, 0.0)};
+  const ClickTargets targets = clickTargetsFor(rules::Game::Snooker, snooker, 0, nineFoot());
+  EXPECT_TRUE(targets.pockets.empty());
+  EXPECT_EQ(targets.balls.size(), 3u);
+  rules::GameState state = rules::newFrame(0);
+  state.phase = rules::Phase::Open;
+  EXPECT_EQ(nominableFor(rules::Game::Snooker, state, snooker), std::vector<int>{})
+      << "on a red nothing is nominated";
+  state.ball_on = rules::kOnColour;
+  EXPECT_EQ(nominableFor(rules::Game::Snooker, state, snooker),
+            (std::vector<int>{table::kSnookerGreen, table::kSnookerBlack}));
+  state.ball_on = rules::kOnRed;
+  state.free_ball = true;
+  EXPECT_EQ(nominableFor(rules::Game::Snooker, state, snooker),
+            (std::vector<int>{4, table::kSnookerGreen, table::kSnookerBlack}));
 }
 
 }  // namespace

@@ -350,6 +350,43 @@ TEST_F(BallInHandTest, TheBallThenThePocketUnderTheCursorAreWhatAClickWouldCall)
   EXPECT_FALSE(controls.hovered()) << "nothing to call while watching";
 }
 
+// Snooker nominates a ball and never a pocket (Section 3, "Nominated Ball"); the rules refuse a
+// called pocket in snooker, and a click at a pocket used to send one.
+TEST_F(BallInHandTest, InSnookerAClickNominatesTheBallAloneAndNoPocketIsCalled) {
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::None);
+  // On a colour: the green may be nominated, the red (the 3) may not.
+  controls.setClickTargets(
+      {{{17, Eigen::Vector2d(0.2, 0.1)}, {3, Eigen::Vector2d(0.4, -0.2)}}, {}});
+  controls.setNominable(std::vector<int>{17});
+  for (int i = 0; i < 60; ++i) controls.advance(1.0 / 60);
+  const auto click = [&](const Eigen::Vector2d& at) {
+    const Eigen::Vector2d p = pixelOf(at);
+    controls.mouseButton(MouseButton::Left, true, p.x(), p.y());
+    controls.mouseButton(MouseButton::Left, false, p.x(), p.y());
+  };
+  click({0.4, -0.2});
+  EXPECT_FALSE(controls.aim().call.ball) << "a red is not nominated";
+  EXPECT_FALSE(controls.pickedBall());
+  click({0.2, 0.1});
+  EXPECT_EQ(controls.aim().call.ball, 17);
+  EXPECT_TRUE(controls.aim().call.pocket.empty());
+  EXPECT_FALSE(controls.pickedBall()) << "no pocket to wait for";
+  controls.keyDown(Key::C, {});  // no pocket to call
+  controls.keyDown(Key::K, {});  // no safety to declare
+  EXPECT_TRUE(controls.aim().call.pocket.empty());
+  EXPECT_FALSE(controls.aim().call.safety);
+  // The nomination clicked again is dropped; once more, it is back.
+  click({0.2, 0.1});
+  EXPECT_FALSE(controls.aim().call.ball);
+  click({0.2, 0.1});
+  const auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_EQ(shot->called_ball, 17);
+  EXPECT_TRUE(shot->called_pocket.empty());
+  EXPECT_FALSE(shot->safety);
+  EXPECT_TRUE(wireCheck(*shot).ok()) << wireCheck(*shot).error();
+}
+
 TEST_F(BallInHandTest, BehindTheHeadStringTheDragStopsAtIt) {
   controls.startTurn(Eigen::Vector3d(-0.8, 0.0, kRadius), rules::BallInHand::BehindHeadString);
   drag(Eigen::Vector2d(-0.8, 0.0), Eigen::Vector2d(-0.5, 0.0));

@@ -1,11 +1,13 @@
 // A practice table's drag: the layout it sends keeps every ball and brings back a lost cue ball
-// (every drag was refused with "the cue ball must be on the table" after a scratch).
+// (every drag was refused with "the cue ball must be on the table" after a scratch); its rack
+// keys rack the games of its table.
 #include "client/app/practice_layout.h"
 
 #include <gtest/gtest.h>
 
 #include "app_fixture.h"
 #include "rules/placement.h"
+#include "table/rack.h"
 
 namespace pool::app::test {
 namespace {
@@ -51,6 +53,35 @@ TEST(PracticeLayoutTest, ACueBallThatLeftTheTableComesBackToTheHeadSpot) {
   EXPECT_GE((p - table.spots.head_spot).norm(), 2 * kRadius);
   std::vector<physics::Ball> others{at(3, 0.3, 0.2), at(9, 0.5, -0.3), balls.back()};
   EXPECT_TRUE(rules::checkCueBallPlacement(rules::BallInHand::Anywhere, p, others, table).ok());
+}
+
+TEST(PracticeLayoutTest, TheRackKeysRackTheGamesOfTheTable) {
+  // A pool table: the key's own game. Snooker's and the carom table: their game, whichever key
+  // (the server refuses another table's game).
+  for (const int asked : {8, 9, 10}) {
+    EXPECT_EQ(practiceRack(rules::Game::NineBall, asked), asked);
+    EXPECT_EQ(practiceRack(rules::Game::Snooker, asked), 22);
+    EXPECT_EQ(practiceRack(rules::Game::ThreeCushion, asked), 3);
+  }
+}
+
+TEST(PracticeLayoutTest, ASnookerDragKeepsAllTwentyTwoBalls) {
+  auto loaded = game::loadTable("snooker-12ft");
+  ASSERT_TRUE(loaded) << loaded.error();
+  const auto& table = loaded->context;
+  std::vector<physics::Ball> balls;
+  for (const auto& p : table::snookerRack(loaded->spec, table.ball_radius)) {
+    balls.push_back(physics::restingBall(p.id, p.pos, table.ball_radius));
+  }
+  const auto layout = layoutWithMove(balls, 21, {1.2, 0.5}, table);
+  ASSERT_EQ(layout.size(), 22u);
+  EXPECT_EQ(spotOf(layout, 21)->x, 1.2);
+  EXPECT_EQ(spotOf(layout, 20)->x, balls[20].pos.x());
+  protocol::PracticeRequest command;
+  command.action = protocol::PracticeAction::Layout;
+  command.balls = layout;
+  EXPECT_TRUE(
+      protocol::checkPracticeFields(command, loaded->spec.length / 2, loaded->spec.width / 2).ok());
 }
 
 }  // namespace

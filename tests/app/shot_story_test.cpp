@@ -52,7 +52,7 @@ TEST(ShotStoryTest, APotKeepsTheTurnAndTheEndNamesTheWinner) {
 
 TEST(ShotStoryTest, NoReasonChoiceOrEndHoldsAnIdentifier) {
   for (const rules::Game game : {rules::Game::EightBall, rules::Game::Snooker}) {
-    for (int f = 0; f <= static_cast<int>(rules::Foul::PushStroke); ++f) {
+    for (int f = 0; f <= static_cast<int>(rules::Foul::FreeBallSnookers); ++f) {
       const std::string text = foulReason(static_cast<rules::Foul>(f), game);
       EXPECT_EQ(text.find('_'), std::string::npos) << text;
       EXPECT_NE(text, "a foul");

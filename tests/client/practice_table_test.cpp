@@ -1,6 +1,7 @@
 // A practice table driven by a headless client against a real pool-server over loopback DDS:
 // lay out, shoot, undo (bit-identical), shoot again, save as a pool-sim scenario that gives the
-// same events, load it back; and the commands of strangers, replays and bad coefficients refused.
+// same events, load it back; the commands of strangers, replays and bad coefficients refused; and
+// a snooker practice table's 22 balls laid out over the wire.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "scenario/scenario.h"
 #include "scenario/scenario_write.h"
 #include "support/client_fixture.h"
+#include "table/rack.h"
 
 namespace pool::client::test {
 namespace {
@@ -104,11 +106,13 @@ bool sameBits(double a, double b) {
 
 class PracticeTableTest : public ClientIntegrationTest {
  protected:
-  /// Opens a practice table at the server's free one with `player`; returns its match id.
-  std::string openPractice(Player& player) {
+  /// Opens a practice table of `game` at the server's free one with `player`; returns its match
+  /// id.
+  std::string openPractice(Player& player, rules::Game game = rules::Game::EightBall) {
     EXPECT_TRUE(player.pumpUntil([&] { return !player.client.lobby().empty(); })) << logs();
     protocol::MatchSettings practice;
     practice.practice = true;
+    practice.game = game;
     player.client.setTableSettings(practice);
     player.client.requestSeat("new");
     EXPECT_TRUE(player.pumpUntil([&] {
@@ -430,6 +434,47 @@ TEST_F(PracticeTableTest, ARestartEndsPracticeTablesAndTheServerGoesOn) {
   auto relaid = again.practice(layout());
   ASSERT_TRUE(relaid && relaid->accepted) << logs();
   EXPECT_TRUE(server->running());
+}
+
+TEST_F(PracticeTableTest, ASnookerPracticeTableTakesItsTwentyTwoBallsOverTheWire) {
+  open(kPracticeSnooker, "practice-snooker");
+  startServer({"--fast"});
+  Player ada(kPracticeSnooker, "Ada");
+  const std::string match = openPractice(ada, rules::Game::Snooker);
+  ASSERT_FALSE(match.empty());
+  // The lobby and the table's state may come in either order: both are waited for.
+  ASSERT_TRUE(ada.pumpUntil([&] {
+    const LobbyEntry* entry = ada.client.lobby().find(match);
+    const MatchView* state = ada.state();
+    return entry && entry->table == "snooker-12ft" && state &&
+           state->settings.game == rules::Game::Snooker && state->balls.size() == 22u;
+  })) << "no snooker practice table of 22 balls\n"
+      << logs();
+
+  // Every ball where it lies and the blue dragged to the top cushion's end of the table, 1.6 m
+  // up it (beyond a pool table's end): 22 balls, signed past the 16 fixed slots.
+  PracticeRequest drag = action(PracticeAction::Layout);
+  for (const auto& b : ada.state()->balls) {
+    drag.balls.push_back({b.id, b.pos.x(), b.pos.y()});
+    if (b.id == table::kSnookerBlue) drag.balls.back() = {b.id, 1.6, -0.7};
+  }
+  auto laid = ada.practice(drag);
+  ASSERT_TRUE(laid && laid->accepted) << (laid ? laid->reject_text : "no answer") << logs();
+  ASSERT_TRUE(ada.pumpUntil([&] { return ada.state()->undo_depth == 1; })) << logs();
+  ASSERT_EQ(ada.state()->balls.size(), 22u);
+  EXPECT_EQ(ada.state()->balls[table::kSnookerBlue].pos.x(), 1.6);
+
+  // An 8-ball rack is another table's: refused in one line, nothing changed.
+  PracticeRequest rack = action(PracticeAction::Rack);
+  rack.rack = 8;
+  auto refused = ada.practice(rack);
+  ASSERT_TRUE(refused);
+  EXPECT_FALSE(refused->accepted);
+  EXPECT_EQ(refused->reject_reason, protocol::RejectReason::BadPractice);
+  EXPECT_EQ(refused->reject_text,
+            "rack: this is a snooker table; it racks 22 (snooker) or 0 (clear)");
+  EXPECT_EQ(ada.state()->undo_depth, 1);
+  EXPECT_EQ(ada.state()->settings.game, rules::Game::Snooker);
 }
 
 }  // namespace

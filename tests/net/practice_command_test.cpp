@@ -108,7 +108,7 @@ TEST(PracticeCommand, FieldsThatCannotBeRightAreRefusedWithTheirName) {
   EXPECT_EQ(problem([](auto& c) { setText(c.match, ""); }).rfind("match:", 0), 0u);
   EXPECT_EQ(problem([](auto& c) { c.seat = 2; }).rfind("seat:", 0), 0u);
   EXPECT_EQ(problem([](auto& c) { setRawValue(c.action, 9); }).rfind("action:", 0), 0u);
-  EXPECT_EQ(problem([](auto& c) { c.balls._buffer[1].id = 16; }).rfind("balls:", 0), 0u);
+  EXPECT_EQ(problem([](auto& c) { c.balls._buffer[1].id = 22; }).rfind("balls:", 0), 0u);
   EXPECT_NE(problem([](auto& c) { c.balls._buffer[1].id = 0; }).find("twice"), std::string::npos);
   EXPECT_EQ(problem([](auto& c) {
               c.balls._buffer[0].x = std::numeric_limits<double>::quiet_NaN();
@@ -117,7 +117,69 @@ TEST(PracticeCommand, FieldsThatCannotBeRightAreRefusedWithTheirName) {
   EXPECT_NE(problem([](auto& c) { c.balls._buffer[0].y = 0.7; }).find("off the table"),
             std::string::npos);
   EXPECT_EQ(problem([](auto& c) { c.rack = 7; }).rfind("rack:", 0), 0u);
+  EXPECT_EQ(problem([](auto& c) { resizeSequence(c.balls, 23); }), "balls: at most 22");
   EXPECT_EQ(problem([](auto& c) { c.coefficients[2] = HUGE_VAL; }).rfind("spin_decel:", 0), 0u);
+}
+
+/// A snooker layout: the cue ball and every ball 1-21, each on a spot of its own (m).
+PracticeRequest snookerLayout() {
+  PracticeRequest r = layout();
+  r.balls.clear();
+  for (int id = 0; id <= physics::kMaxBallId; ++id) r.balls.push_back({id, 0.08 * id - 0.8, 0.3});
+  r.balls.back().x = 1.46;  // the black on its spot, beyond a pool table's end
+  return r;
+}
+
+TEST(PracticeCommand, ASnookerLayoutOfTwentyTwoBallsIsSignedWholeAndReadsBack) {
+  // Past the 16 fixed slots, one slot a ball: a pool command encodes as before.
+  const PracticeRequest r = snookerLayout();
+  ASSERT_EQ(r.balls.size(), 22u);
+  EXPECT_EQ(protocol::signedBytes(r).size(),
+            protocol::kSignedPracticeBytes + 6 * protocol::kPracticeSlotBytes);
+  PracticeRequest sixteen = r;
+  sixteen.balls.resize(16);
+  EXPECT_EQ(protocol::signedBytes(sixteen).size(), protocol::kSignedPracticeBytes);
+
+  // Every ball is signed, the last one included.
+  const auto key = protocol::generateKeyPair();
+  PracticeRequest signed_layout = r;
+  protocol::signPractice(signed_layout, key);
+  EXPECT_EQ(protocol::verifyPractice(signed_layout, key.publicKey()),
+            protocol::SignatureCheck::Valid);
+  PracticeRequest moved = signed_layout;
+  moved.balls.back().y += 1e-9;
+  EXPECT_EQ(protocol::verifyPractice(moved, key.publicKey()),
+            protocol::SignatureCheck::BadSignature);
+  PracticeRequest dropped = signed_layout;
+  dropped.balls.pop_back();
+  EXPECT_EQ(protocol::verifyPractice(dropped, key.publicKey()),
+            protocol::SignatureCheck::BadSignature);
+
+  // Through a sample on a snooker table's surface (3.569 x 1.778 m): all 22, as signed.
+  protocol::CommandLimits snooker;
+  snooker.half_length = 3.569 / 2;
+  snooker.half_width = 1.778 / 2;
+  const IncomingPractice in = readPractice(*toWire(signed_layout), snooker);
+  ASSERT_TRUE(in.request) << in.problem;
+  ASSERT_EQ(in.request->balls.size(), 22u);
+  EXPECT_EQ(in.request->balls[21].id, 21);
+  EXPECT_EQ(in.request->balls[21].x, 1.46);
+  EXPECT_EQ(protocol::verifyPractice(*in.request, key.publicKey()),
+            protocol::SignatureCheck::Valid);
+}
+
+TEST(PracticeCommand, ARackIsAGamesNumberOrZero) {
+  PracticeRequest rack = layout();
+  rack.action = PracticeAction::Rack;
+  rack.balls.clear();
+  for (const int game : {0, 8, 9, 10, 3, 22}) {
+    rack.rack = game;
+    EXPECT_TRUE(readPractice(*toWire(rack)).request) << game;
+  }
+  rack.rack = 7;
+  const IncomingPractice seven = readPractice(*toWire(rack));
+  EXPECT_FALSE(seven.request);
+  EXPECT_EQ(seven.problem, "rack: must be a game's number (8, 9, 10, 3, 22) or 0 (clear)");
 }
 
 TEST(PracticeCommand, CoefficientsOutsideTheirRangesAreRefusedByName) {
@@ -152,6 +214,21 @@ TEST(PracticeCommand, ThePracticeSettingIsSignedAndChecked) {
   practice.settings->race_to = 1;
   practice.settings->shot_clock = 30;
   EXPECT_FALSE(protocol::checkSettings(*practice.settings).ok());
+  // Of any game: snooker and three-cushion practise on their own tables, with no race and no
+  // clock either.
+  for (const rules::Game game : {rules::Game::Snooker, rules::Game::ThreeCushion}) {
+    protocol::MatchSettings s;
+    s.game = game;
+    s.practice = true;
+    EXPECT_TRUE(protocol::checkSettings(s).ok()) << rules::toString(game);
+    s.race_to = 2;
+    const auto raced = protocol::checkSettings(s);
+    ASSERT_FALSE(raced.ok());
+    EXPECT_EQ(raced.error(), "practice: a practice table has no race and no shot clock");
+    s.race_to = 1;
+    s.shot_clock = 30;
+    EXPECT_FALSE(protocol::checkSettings(s).ok()) << rules::toString(game);
+  }
 }
 
 }  // namespace

@@ -24,6 +24,9 @@ TEST(SettingsConvert, LobbyEntryKeepsSettingsAndScore) {
   entry.settings = tenBall();
   entry.racks_won = {2, 4};
   entry.ratings = {1662, 1338};
+  entry.rack = 3;
+  entry.shot_number = 41;
+  entry.rack_points = {57, 12};
   const auto sample = toWire(entry);  // owns the sequences the wire sample points into
   const pool_MatchInfo& wire = *sample;
   EXPECT_EQ(wire.game, 10);
@@ -32,6 +35,9 @@ TEST(SettingsConvert, LobbyEntryKeepsSettingsAndScore) {
   EXPECT_EQ(back->settings, tenBall());
   EXPECT_EQ(back->racks_won, (std::array<int, 2>{2, 4}));
   EXPECT_EQ(back->ratings, (std::array<int, 2>{1662, 1338}));
+  EXPECT_EQ(back->rack, 3u);
+  EXPECT_EQ(back->shot_number, 41u);
+  EXPECT_EQ(back->rack_points, (std::array<int, 2>{57, 12}));
 }
 
 TEST(SettingsConvert, MatchStateKeepsSnookersBallOnFreeBallAndMisses) {

@@ -9,6 +9,7 @@
 #include "rules/fixture.h"
 #include "rules/game_rules.h"
 #include "rules/placement.h"
+#include "rules/real_play.h"
 #include "rules/snooker.h"
 #include "table/rack.h"
 
@@ -23,6 +24,7 @@ using table::kSnookerPink;
 using table::kSnookerYellow;
 using test::LogBuilder;
 using test::makeShot;
+using Vec2 = Eigen::Vector2d;
 
 constexpr double kSnookerR = 0.02625;  // a snooker ball's radius (52.5 mm across)
 
@@ -623,6 +625,140 @@ TEST(SnookerMiss, SnookersNeededAfterAFoulOnTheLastRedsColourAreCountedFromTheYe
   EXPECT_EQ(v.next.ball_on, kSnookerYellow);
   EXPECT_EQ(snookersRequired(v.next, snookerLayout(0), 0), 5);
   EXPECT_FALSE(v.miss) << describe(v);
+}
+
+// ---- Section 2, "Definitions" ("Jump Shot"), and Section 3, "Fouls": the jump shot.
+
+/// An event of the cue ball at (x, y) on the cloth's plane (its centre's height is not judged).
+physics::Event cueEvent(physics::EventType type, double t, double x, double y) {
+  physics::Event e;
+  e.t = t;
+  e.type = type;
+  e.ball_a = physics::kCueBall;
+  e.pos = physics::Vec3(x, y, kSnookerR);
+  return e;
+}
+
+/// The cue ball at (0, 0.3), a red 0.15 m ahead of it and another 0.5 m ahead.
+std::vector<physics::Ball> jumpLayout() {
+  return {snookerBall(0, 0.0, 0.3), snookerBall(1, 0.15, 0.3), snookerBall(2, 0.5, 0.3),
+          onItsSpot(kSnookerBlack)};
+}
+
+TEST(SnookerJump, JumpingOverABallBeforeTheFirstContactIsAFoul) {
+  using physics::EventType;
+  // Off the slate at the strike, down again 0.3 m on, beyond the near red, then on to the far one.
+  const Shot over = makeShot(jumpLayout(), Intent::none(),
+                             LogBuilder()
+                                 .raw(cueEvent(EventType::Airborne, 0.01, 0.0, 0.3))
+                                 .raw(cueEvent(EventType::Land, 0.1, 0.3, 0.3))
+                                 .hit(0, 2));
+  const Verdict v = snookerJudged(snookerInPlay(0), over);
+  EXPECT_TRUE(v.hasFoul(Foul::JumpShot)) << describe(v);
+  EXPECT_EQ(v.penalty, 4);  // the value of the ball on (a red), at least 4
+  EXPECT_FALSE(v.miss);     // the red it first hit was on
+  // The same hop landing short of the near red, which it then hits on the cloth: no jump shot.
+  const Shot hop = makeShot(jumpLayout(), Intent::none(),
+                            LogBuilder()
+                                .raw(cueEvent(EventType::Airborne, 0.01, 0.0, 0.3))
+                                .raw(cueEvent(EventType::Land, 0.05, 0.08, 0.3))
+                                .hit(0, 1));
+  EXPECT_TRUE(snookerJudged(snookerInPlay(0), hop).legal());
+}
+
+TEST(SnookerJump, TheRulesExceptionsAreNoFoul) {
+  using physics::EventType;
+  // (i) The cue ball first strikes a ball on the cloth, then jumps over another.
+  const Shot after_contact = makeShot(jumpLayout(), Intent::none(),
+                                      LogBuilder()
+                                          .hit(0, 1)
+                                          .raw(cueEvent(EventType::Airborne, 0.2, 0.12, 0.3))
+                                          .raw(cueEvent(EventType::Land, 0.4, 0.7, 0.3)));
+  EXPECT_TRUE(snookerJudged(snookerInPlay(0), after_contact).legal());
+  // (ii) It jumps, strikes a ball in the air and does not land on the far side of it ...
+  const Shot near_side = makeShot(jumpLayout(), Intent::none(),
+                                  LogBuilder()
+                                      .raw(cueEvent(EventType::Airborne, 0.01, 0.0, 0.3))
+                                      .hit(0, 1)
+                                      .raw(cueEvent(EventType::Land, 0.1, 0.09, 0.3)));
+  EXPECT_TRUE(snookerJudged(snookerInPlay(0), near_side).legal());
+  // ... but landing beyond the ball it struck in the air is a jump shot.
+  const Shot far_side = makeShot(jumpLayout(), Intent::none(),
+                                 LogBuilder()
+                                     .raw(cueEvent(EventType::Airborne, 0.01, 0.0, 0.3))
+                                     .hit(0, 1)
+                                     .raw(cueEvent(EventType::Land, 0.1, 0.25, 0.3)));
+  EXPECT_TRUE(snookerJudged(snookerInPlay(0), far_side).hasFoul(Foul::JumpShot));
+}
+
+TEST(SnookerJump, TheRealPhysicsJumpOverARedIsCalled) {
+  // The physics' own jump (an elevated cue drives the ball into the slate; tests/physics'
+  // Jump.ElevatedCueBouncesOffTheSlateAndClearsABlocker) on the snooker table, over a red 0.15 m
+  // ahead toward another 0.6 m ahead; a level cue hits the near red: no jump shot.
+  const auto scene = [](double elevation) {
+    return test::parsed(R"({
+      "table": "snooker-12ft",
+      "balls": [ {"id": 0, "x": -0.8, "y": 0.5}, {"id": 1, "x": -0.65, "y": 0.5},
+                 {"id": 2, "x": -0.2, "y": 0.5}, {"id": 21, "x": 1.4, "y": 0.0} ],
+      "shot": {"yaw_deg": 0.0, "tip_side": 0.0, "tip_height": 0.0, "elevation_deg": )" +
+                        std::to_string(elevation) + R"(, "speed": 4.0, "speed_is": "cue"}
+    })");
+  };
+  const test::Played jump = test::play(scene(45.0), Intent::none());
+  const auto lands = std::find_if(jump.shot.events.begin(), jump.shot.events.end(), [](auto& e) {
+    return e.type == physics::EventType::Land && e.ball_a == physics::kCueBall;
+  });
+  ASSERT_NE(lands, jump.shot.events.end()) << "the cue ball never left the slate";
+  const Verdict v = snookerJudged(snookerInPlay(0), jump.shot);
+  if (lands->pos.x() > -0.65) {
+    EXPECT_TRUE(v.hasFoul(Foul::JumpShot)) << describe(v);
+  } else {
+    ADD_FAILURE() << "the jump landed short of the red, at x " << lands->pos.x();
+  }
+  const test::Played level = test::play(scene(0.0), Intent::none());
+  const Verdict l = snookerJudged(snookerInPlay(0), level.shot);
+  EXPECT_FALSE(l.hasFoul(Foul::JumpShot)) << describe(l);
+}
+
+// ---- Section 3, "Snookered after a Foul" (the free ball may not snooker the next player).
+
+TEST(SnookerFreeBall, AFreeBallThatSnookersTheNextPlayerIsAFoul) {
+  // One red at the top; the green nominated as the free ball. The stroke hits the green first
+  // and the cue ball comes to rest straight behind it, the red hidden by the green alone.
+  const Vec2 green = colourSpot(kSnookerGreen);
+  std::vector<physics::Ball> balls{snookerBall(0, green.x() - 0.3, green.y() - 0.2),
+                                   snookerBall(1, 1.5, green.y())};
+  for (int c = kSnookerYellow; c <= kSnookerBlack; ++c) balls.push_back(onItsSpot(c));
+  GameState s = snookerInPlay(0);
+  s.free_ball = true;
+  const auto stroke = [&](const Vec2& cue_rests) {
+    Shot shot = makeShot(balls, nominated(kSnookerGreen), LogBuilder().hit(0, kSnookerGreen));
+    shot.after[0].pos.head<2>() = cue_rests;
+    return shot;
+  };
+  const Verdict snookered = snookerJudged(s, stroke(Vec2(green.x() - 0.1, green.y())));
+  EXPECT_TRUE(snookered.hasFoul(Foul::FreeBallSnookers)) << describe(snookered);
+  EXPECT_EQ(snookered.penalty, 4);
+  EXPECT_FALSE(snookered.miss);
+  EXPECT_EQ(snookered.next.points, (std::array<int, 2>{0, 4}));
+  // Resting where the red is in plain view: a legal stroke.
+  const Verdict open = snookerJudged(s, stroke(Vec2(green.x() - 0.1, green.y() - 0.2)));
+  EXPECT_TRUE(open.legal()) << describe(open);
+}
+
+TEST(SnookerFreeBall, WithOnlyThePinkAndBlackLeftTheFreeBallMaySnooker) {
+  // On the pink, the black nominated as the free ball; the cue ball rests behind the black, the
+  // pink hidden by it: no foul with only the pink and black left.
+  const Vec2 pink = colourSpot(kSnookerPink), black = colourSpot(kSnookerBlack);
+  std::vector<physics::Ball> balls{snookerBall(0, black.x() - 0.3, black.y() + 0.3),
+                                   onItsSpot(kSnookerPink), onItsSpot(kSnookerBlack)};
+  GameState s = snookerInPlay(0, kSnookerPink);
+  s.free_ball = true;
+  Shot shot = makeShot(balls, nominated(kSnookerBlack), LogBuilder().hit(0, kSnookerBlack));
+  shot.after[0].pos.head<2>() = black + (black - pink).normalized() * 0.1;
+  ASSERT_TRUE(isSnookered(shot.after, {kSnookerPink}, kSnookerR));
+  const Verdict v = snookerJudged(s, shot);
+  EXPECT_FALSE(v.hasFoul(Foul::FreeBallSnookers)) << describe(v);
 }
 
 }  // namespace

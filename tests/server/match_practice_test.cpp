@@ -1,12 +1,16 @@
 // A practice table as pure match logic: either seat shoots, undo brings the table back bit for
-// bit, again replays the shot exactly, coefficients change one table only, and every refused
-// practice command changes nothing.
+// bit, again replays the shot exactly, coefficients change one table only, every refused
+// practice command changes nothing, and snooker's and three-cushion's practice tables rack their
+// own game on their own table.
 #include <gtest/gtest.h>
 
 #include <cstring>
 
 #include "match_fixture.h"
 #include "protocol/practice_request.h"
+#include "rules/placement.h"
+#include "server/match_publish.h"
+#include "table/rack.h"
 
 namespace pool::server::test {
 namespace {
@@ -283,6 +287,197 @@ TEST(MatchPracticeTest, RacksAndClearingAreUndone) {
   EXPECT_EQ(m->balls().size(), 11u);
   ASSERT_TRUE(m->handlePractice(practice(PracticeAction::Undo, 4), 0.0).accepted());
   EXPECT_TRUE(sameBits(m->balls(), eight));
+}
+
+/// A practice table of `game` opened by "Ada" in seat 0, at a server with a table for each game.
+std::unique_ptr<Match> practiceTableOf(rules::Game game) {
+  MatchOptions options = unpaced();
+  options.tables = std::make_shared<TableRunners>(runner());
+  auto m = std::make_unique<Match>("srv-1", "Table 1", runner(), options, 42);
+  protocol::MatchSettings settings = practiceSettings();
+  settings.game = game;
+  EXPECT_TRUE(m->takeSeat(0, "Ada", "a", kToken0, publicKeyOf("a"), settings).accepted());
+  return m;
+}
+
+/// Seat 0's Rack command of game number `number` (0: clear), signed.
+PracticeRequest rackOf(int number, std::uint32_t seq) {
+  PracticeRequest r = practice(PracticeAction::Rack, seq);
+  r.rack = number;
+  protocol::signPractice(r, keyOf("a"));
+  return r;
+}
+
+/// Seat 0's Layout command of `balls`, signed.
+PracticeRequest layoutOf(const std::vector<protocol::BallSpot>& balls, std::uint32_t seq) {
+  PracticeRequest r = practice(PracticeAction::Layout, seq);
+  r.balls = balls;
+  protocol::signPractice(r, keyOf("a"));
+  return r;
+}
+
+/// `command` is refused as bad_practice with `text`, and the table, its game and its undo are
+/// as they were.
+void expectRefusedAndNothingChanged(Match& m, const PracticeRequest& command,
+                                    const std::string& text) {
+  const auto balls = m.balls();
+  const auto revision = m.revision();
+  const auto undo = m.undoDepth();
+  const auto game = m.settings().game;
+  const std::string table = m.table().spec.name;
+  const CommandAnswer answer = m.handlePractice(command, 0.0);
+  EXPECT_EQ(answer.rejection.reason, Reject::BadPractice);
+  EXPECT_EQ(answer.rejection.text, text);
+  EXPECT_TRUE(sameBits(m.balls(), balls));
+  EXPECT_EQ(m.revision(), revision);
+  EXPECT_EQ(m.undoDepth(), undo);
+  EXPECT_EQ(m.settings().game, game);
+  EXPECT_EQ(m.table().spec.name, table);
+}
+
+TEST(MatchPracticeTest, ASnookerPracticeTableRacksSnookerOnItsOwnTable) {
+  auto m = practiceTableOf(rules::Game::Snooker);
+  EXPECT_TRUE(m->practice());
+  EXPECT_TRUE(m->inPlay());
+  EXPECT_EQ(m->table().spec.name, "snooker-12ft");
+  EXPECT_EQ(m->settings().game, rules::Game::Snooker);
+  EXPECT_EQ(m->game().ball_in_hand, rules::BallInHand::Anywhere);
+  EXPECT_EQ(m->lastVerdict(), "practice: snooker rack");
+
+  // The rack of a snooker match (Section 2, "Position of Balls"), as table::snookerRack lays it
+  // out with a hand rack's gaps: the colours on their spots, the cue ball in the D, each red
+  // within a hand rack's stray of its slot.
+  const auto& table = m->table();
+  const double r = table.context.ball_radius;
+  const auto slots = table::snookerRack(table.spec, r, 2.0 * table::kRackStray);
+  ASSERT_EQ(slots.size(), 22u);
+  ASSERT_EQ(m->balls().size(), 22u);
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    const physics::Ball& b = m->balls()[i];
+    ASSERT_EQ(b.id, slots[i].id);
+    EXPECT_EQ(b.state, physics::MotionState::Stationary);
+    EXPECT_EQ(b.pos.z(), r);
+    const double off = (b.pos.head<2>() - slots[i].pos).norm();
+    if (b.id == physics::kCueBall || b.id > table::kSnookerReds) {
+      EXPECT_EQ(off, 0.0) << "ball " << b.id;
+    } else {
+      EXPECT_LE(off, table::kRackStray * (1 + 1e-9)) << "red " << b.id;
+    }
+  }
+  const physics::Ball& cue = m->balls().front();
+  std::vector<physics::Ball> others(m->balls().begin() + 1, m->balls().end());
+  EXPECT_TRUE(rules::checkCueBallPlacement(rules::BallInHand::InTheD, cue.pos.head<2>(), others,
+                                           table.context)
+                  .ok());
+  // The publishd state: 22 balls, the cue ball struck.
+  const protocol::MatchView view = matchViewOf(*m);
+  EXPECT_EQ(view.balls.size(), 22u);
+  EXPECT_EQ(view.cue_ball, physics::kCueBall);
+}
+
+TEST(MatchPracticeTest, ASnookerPracticeTableLaysOutTheBlackAndRefusesOtherGamesAndBalls) {
+  auto m = practiceTableOf(rules::Game::Snooker);
+  // Every ball where it lies and the black moved, as a drag sends it.
+  const Eigen::Vector2d black_to(1.2, 0.5);
+  std::vector<protocol::BallSpot> spots;
+  for (const auto& b : m->balls()) {
+    if (b.id == table::kSnookerBlack) {
+      spots.push_back({b.id, black_to.x(), black_to.y()});
+    } else {
+      spots.push_back({b.id, b.pos.x(), b.pos.y()});
+    }
+  }
+  const CommandAnswer laid = m->handlePractice(layoutOf(spots, 1), 0.0);
+  ASSERT_TRUE(laid.accepted()) << laid.rejection.text;
+  ASSERT_EQ(m->balls().size(), 22u);
+  EXPECT_EQ(m->balls().back().id, table::kSnookerBlack);
+  EXPECT_EQ(m->balls().back().pos.head<2>(), black_to);
+
+  // A 23rd ball, an 8-ball rack, a number no game has: each refused in one line, nothing
+  // changed.
+  spots.push_back({22, 0.0, -0.6});
+  expectRefusedAndNothingChanged(*m, layoutOf(spots, 2), "layout: ball 22: not a ball id (0-21)");
+  expectRefusedAndNothingChanged(
+      *m, rackOf(8, 3), "rack: this is a snooker table; it racks 22 (snooker) or 0 (clear)");
+  expectRefusedAndNothingChanged(
+      *m, rackOf(7, 4),
+      "rack: 7 is no game's number; this is a snooker table; it racks 22 (snooker) or 0 (clear)");
+
+  // Snooker again, then the cue ball alone; each undone.
+  ASSERT_TRUE(m->handlePractice(rackOf(22, 5), 0.0).accepted());
+  EXPECT_EQ(m->balls().size(), 22u);
+  EXPECT_EQ(m->balls().back().pos.head<2>(),
+            *table::snookerSpotOf(m->table().spec, table::kSnookerBlack));
+  ASSERT_TRUE(m->handlePractice(rackOf(0, 6), 0.0).accepted());
+  ASSERT_EQ(m->balls().size(), 1u);
+  EXPECT_EQ(m->balls()[0].id, physics::kCueBall);
+  EXPECT_EQ(m->settings().game, rules::Game::Snooker);
+  ASSERT_TRUE(m->handlePractice(practice(PracticeAction::Undo, 7), 0.0).accepted());
+  ASSERT_TRUE(m->handlePractice(practice(PracticeAction::Undo, 8), 0.0).accepted());
+  EXPECT_EQ(m->balls().back().pos.head<2>(), black_to);
+
+  // A shot: from the cue ball as it lies, struck by either seat.
+  const CommandAnswer shot = m->handleShot(stroke(9), 0.0);
+  ASSERT_TRUE(shot.accepted()) << shot.rejection.text;
+  const ShotReport report = land(*m);
+  ASSERT_FALSE(report.events.empty());
+  EXPECT_EQ(report.events.front().ball_a, physics::kCueBall);
+  EXPECT_TRUE(report.verdict.legal());
+  EXPECT_EQ(m->game().ball_in_hand, rules::BallInHand::Anywhere);
+}
+
+TEST(MatchPracticeTest, AThreeCushionPracticeTableRacksItsOpeningAndTheWhiteIsStruck) {
+  auto m = practiceTableOf(rules::Game::ThreeCushion);
+  EXPECT_EQ(m->table().spec.name, "carom-match");
+  EXPECT_EQ(m->settings().game, rules::Game::ThreeCushion);
+  // The opening (UMB, starting position): the red on the top spot, the yellow on the bottom
+  // spot, the white beside it on the head string.
+  const table::Spots spots = table::spotsFor(m->table().spec);
+  ASSERT_EQ(m->balls().size(), 3u);
+  EXPECT_EQ(m->balls()[rules::kCaromRed].pos.head<2>(), spots.foot_spot);
+  EXPECT_EQ(m->balls()[rules::kCaromYellow].pos.head<2>(), spots.head_spot);
+  const Eigen::Vector2d white = m->balls()[rules::kCaromWhite].pos.head<2>();
+  EXPECT_EQ(white.x(), spots.head_spot.x());
+  EXPECT_NEAR(std::abs(white.y() - spots.head_spot.y()), table::kCaromBreakOffset, 1e-12);
+  EXPECT_EQ(matchViewOf(*m).cue_ball, rules::kCaromWhite);
+
+  expectRefusedAndNothingChanged(*m, layoutOf({{0, -0.5, 0.0}, {3, 0.5, 0.0}}, 1),
+                                 "layout: ball 3: not a ball id (0-2)");
+  expectRefusedAndNothingChanged(
+      *m, rackOf(9, 2),
+      "rack: this is a three-cushion table; it racks 3 (three-cushion) or 0 (clear)");
+
+  // Seat 0, then seat 1, each strikes the white: the practice rules judge the white's shot.
+  ASSERT_TRUE(m->takeSeat(1, "Bob", "b", kToken1, publicKeyOf("b")).accepted());
+  for (int seat : {0, 1}) {
+    const Eigen::Vector2d from = m->balls()[rules::kCaromWhite].pos.head<2>();
+    const Eigen::Vector2d to = m->balls()[rules::kCaromRed].pos.head<2>() - from;
+    const CommandAnswer shot = m->handleShot(
+        stroke(static_cast<std::uint32_t>(3 + seat), seat, std::atan2(to.y(), to.x())), 0.0);
+    ASSERT_TRUE(shot.accepted()) << shot.rejection.text;
+    const ShotReport report = land(*m);
+    ASSERT_FALSE(report.events.empty());
+    EXPECT_EQ(report.events.front().ball_a, rules::kCaromWhite) << "seat " << seat;
+    EXPECT_TRUE(report.verdict.legal());
+    EXPECT_EQ(matchViewOf(*m).cue_ball, rules::kCaromWhite);
+  }
+  ASSERT_TRUE(m->handlePractice(rackOf(3, 5), 0.0).accepted());
+  EXPECT_EQ(m->balls().size(), 3u);
+  EXPECT_EQ(m->balls()[rules::kCaromRed].pos.head<2>(), spots.foot_spot);
+}
+
+TEST(MatchPracticeTest, APoolPracticeTableRacksThePoolGamesOnly) {
+  auto m = practiceTableOf(rules::Game::NineBall);
+  EXPECT_EQ(m->table().spec.name, "wpa-9ft");
+  expectRefusedAndNothingChanged(*m, rackOf(22, 1),
+                                 "rack: this is a pool table; it racks 8, 9, 10 or 0 (clear)");
+  expectRefusedAndNothingChanged(*m, rackOf(3, 2),
+                                 "rack: this is a pool table; it racks 8, 9, 10 or 0 (clear)");
+  expectRefusedAndNothingChanged(*m, layoutOf({{0, -0.5, 0.0}, {16, 0.5, 0.0}}, 3),
+                                 "layout: ball 16: not a ball id (0-15)");
+  ASSERT_TRUE(m->handlePractice(rackOf(8, 4), 0.0).accepted());
+  EXPECT_EQ(m->settings().game, rules::Game::EightBall);
+  EXPECT_EQ(m->balls().size(), 16u);
 }
 
 }  // namespace

@@ -61,6 +61,23 @@ TEST(ReadCommand, AnOversizedSignatureIsABadSignature) {
   EXPECT_TRUE(read.bad_signature);
 }
 
+TEST(ReadCommand, TheServersLimitsSpanItsLargestTable) {
+  // One check reads every command before its match: a snooker table's spot (the black's, beyond
+  // the 9-ft table's end) passes it; beyond the snooker table's cushions nothing does.
+  const protocol::CommandLimits limits = serverLimits(nineFoot()->spec);
+  EXPECT_EQ(limits.half_length, 3.569 / 2);
+  EXPECT_EQ(limits.half_width, 1.778 / 2);
+  EXPECT_EQ(limits.max_speed, nineFootLimits().max_speed);
+  EXPECT_EQ(limits.miscue_limit, nineFootLimits().miscue_limit);
+  auto in_the_d = net::toWire(breakShot(8));
+  in_the_d->has_cue_ball_placement = true;
+  in_the_d->cue_ball_x = -1.3;  // in snooker's D, past the 9-ft table's head cushion
+  EXPECT_FALSE(net::readCommand(*in_the_d, nineFootLimits()).request);
+  EXPECT_TRUE(net::readCommand(*in_the_d, limits).request);
+  in_the_d->cue_ball_x = -1.8;
+  EXPECT_FALSE(net::readCommand(*in_the_d, limits).request);
+}
+
 TEST(JoinCommandFromWire, UnknownActionsAreRefused) {
   pool_JoinRequest r{};
   net::setText(r.client, "c1");

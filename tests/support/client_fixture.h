@@ -67,6 +67,7 @@ enum Domain : std::uint32_t {
   kWindowPractice = 92,
   kPracticeRestart = 93,
   kPracticeFriend = 94,
+  kPracticeSnooker = 95,
   kServerStopped = 60,  ///< 60–69: match partitions, a stopped server
   kPartitionSwitch = 61,
   // The shooter's live aim (live_aim_test, the window's and the benchmark's): 70–79.

@@ -4,14 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <optional>
 #include <string>
 
 #include "game/loaded_table.h"
 #include "server/store/match_audit.h"
 #include "server/store/match_store.h"
 #include "server/store/rating_book.h"
+#include "server/store/stat_book.h"
 #include "support/child_process.h"
 #include "support/match_recorder.h"
 
@@ -46,6 +50,20 @@ inline void expectStoredMatchAgrees(MatchRecorder& recorder, ChildProcess& serve
     return e && e->ratings[w] > 1500 && e->ratings[1 - w] > 0 && e->ratings[1 - w] < 1500;
   });
   EXPECT_TRUE(shown) << "the lobby never showed the players' ratings";
+  // Each player's record (PlayerStats) reaches a client once the last stroke is seen through:
+  // one match each, won by the winner.
+  std::array<std::optional<protocol::PlayerStats>, 2> records;
+  const bool published = recorder.pump(10s, [&] {
+    for (std::size_t s = 0; s < 2; ++s) {
+      records[s].reset();
+      for (const auto* r : recorder.client().players().named(last.seats[s].name)) {
+        if (r->game == last.settings.game) records[s] = *r;
+      }
+    }
+    return records[0] && records[1] && records[w]->matches == 1 && records[w]->matches_won == 1 &&
+           records[1 - w]->matches == 1 && records[1 - w]->matches_won == 0;
+  });
+  EXPECT_TRUE(published) << "the players' records never showed the match";
   server.kill(SIGTERM);
   ASSERT_TRUE(server.waitExit(20s)) << "the server did not stop";
   auto store = store::MatchStore::open(db);
@@ -61,6 +79,22 @@ inline void expectStoredMatchAgrees(MatchRecorder& recorder, ChildProcess& serve
   ASSERT_EQ(rated.size(), 1u) << "the decided match was not rated once";
   EXPECT_GT(rated[0].winner_after, rated[0].winner_before);
   EXPECT_LT(rated[0].loser_after, rated[0].loser_before);
+  if (!published) return;
+  // The records published are the store's, with its rating; the strokes they count are the
+  // stored strokes.
+  int strokes = 0;
+  for (const auto& stored : (*store)->shots(match)) strokes += stored.record.shoots ? 1 : 0;
+  EXPECT_EQ(records[0]->strokes + records[1]->strokes, strokes);
+  for (const auto& record : records) {
+    auto kept = store::statsOf((*store)->database(), record->key, record->game);
+    ASSERT_TRUE(kept) << record->name << " has no statistics in the store";
+    const double rating = store::ratingOf((*store)->database(), record->key, record->game).rating;
+    EXPECT_EQ(record->rating, static_cast<int>(std::lround(rating))) << record->name;
+    kept->server = record->server;
+    kept->rating = record->rating;
+    kept->rating_deviation = record->rating_deviation;
+    EXPECT_EQ(*kept, *record) << record->name;
+  }
 }
 
 }  // namespace pool::client::test

@@ -87,6 +87,64 @@ TEST_F(WebSnookerLiveTest, ThePageFollowsAFrameWithEveryBallWhereTheServerPutsIt
   }
   EXPECT_EQ(difference, "") << shown.dump() << "\n" << page.lastError() << logs();
   EXPECT_EQ(shown["table"], "snooker-12ft");
+
+  // The page's lobby line for the match names both bots with their ratings and says how far the
+  // frame has gone (the frame, its score and the shots), as the server's own lobby entry says.
+  std::string line, wanted;
+  const auto lobby_deadline = std::chrono::steady_clock::now() + 20s;
+  while (std::chrono::steady_clock::now() < lobby_deadline) {
+    recorder.pump(100ms);
+    const LobbyEntry* e = recorder.client().lobby().find(match);
+    const auto status = page.evaluate("window.poolTest.status()", 10s);
+    if (!e || !status || status->is_null()) continue;
+    for (const auto& l : (*status)["lobbyLines"]) {
+      if (l["match"] == match) line = l["text"];
+    }
+    wanted = "";
+    for (std::size_t s = 0; s < 2; ++s) {
+      const std::string player = e->players[s] + " (" + std::to_string(e->ratings[s]) + ")";
+      if (e->ratings[s] <= 0 || line.find(player) == std::string::npos) wanted += player + "; ";
+    }
+    for (const std::string& part :
+         {"frame " + std::to_string(e->rack) + " " + std::to_string(e->rack_points[0]) + "-" +
+              std::to_string(e->rack_points[1]),
+          "shot " + std::to_string(e->shot_number)}) {
+      if (line.find(part) == std::string::npos) wanted += part + "; ";
+    }
+    if (wanted.empty()) break;
+  }
+  EXPECT_EQ(wanted, "") << "the lobby line: " << line;
+
+  // The page's player pages: each bot's snooker record with the strokes the server has counted
+  // (as a client of the domain receives the same record).
+  std::string missing = "no record";
+  nlohmann::json players;
+  const auto players_deadline = std::chrono::steady_clock::now() + 20s;
+  while (!missing.empty() && std::chrono::steady_clock::now() < players_deadline) {
+    recorder.pump(100ms);
+    const auto status = page.evaluate("window.poolTest.status()", 10s);
+    if (!status || status->is_null()) continue;
+    players = (*status)["players"];
+    missing.clear();
+    for (const std::string name : {"alice", "bob"}) {
+      const auto records = recorder.client().players().named(name);
+      if (records.empty()) {
+        missing += name + " (no record received); ";
+        continue;
+      }
+      const int n = records.front()->strokes;
+      const std::string strokes = std::to_string(n) + (n == 1 ? " stroke" : " strokes") + " in all";
+      bool found = false;
+      for (const auto& p : players) {
+        if (p["text"].get<std::string>().rfind(name + ":", 0) != 0) continue;
+        for (const auto& l : p["lines"]) {
+          found = found || l.get<std::string>().find(strokes) != std::string::npos;
+        }
+      }
+      if (!found) missing += name + ": " + strokes + "; ";
+    }
+  }
+  EXPECT_EQ(missing, "") << players.dump();
 }
 
 }  // namespace

@@ -4,6 +4,7 @@ import * as THREE from './three.module.js';
 import { PlaybackClock } from './playback.js';
 import { buildTable, placeBalls, fitCamera } from './table.js';
 import { describe, describeEntry } from './hud.js';
+import { byPlayer, playerButtonText, playerLines } from './players.js';
 
 const canvas = document.getElementById('view');
 const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
@@ -13,6 +14,8 @@ const camera = new THREE.PerspectiveCamera(40, 1, 0.05, 20);
 const ui = {
   status: document.getElementById('status'),
   lobby: document.getElementById('lobby'),
+  players: document.getElementById('players'),
+  playersTitle: document.getElementById('players-title'),
   title: document.getElementById('title'),
   facts: document.getElementById('facts'),
   back: document.getElementById('back'),
@@ -22,6 +25,8 @@ const app = {
   socket: null,
   connected: false,
   lobby: [],
+  players: [], // the players' records (the gateway's players message)
+  player: null, // the player whose page is open: "<server>/<key hex>"
   match: null, // the match watched
   table: null, // {scene, balls, outer}
   tableName: '',
@@ -50,6 +55,16 @@ function watch(match) {
   else url.searchParams.delete('match');
   window.history.replaceState(null, '', url);
   send({ watch: match || '' });
+  render();
+}
+
+/** Opens a player's page ("<server>/<key hex>"), or closes it (null). */
+function showPlayer(id) {
+  app.player = id;
+  const url = new URL(window.location.href);
+  if (id) url.searchParams.set('player', id);
+  else url.searchParams.delete('player');
+  window.history.replaceState(null, '', url);
   render();
 }
 
@@ -82,6 +97,9 @@ function receive(m) {
       }
       break;
     }
+    case 'players':
+      app.players = m.players;
+      break;
     case 'table':
       app.table = buildTable(m);
       app.tableName = m.name;
@@ -120,8 +138,19 @@ function lobbyEntry(match) {
 /** The lobby list and the HUD, as text. */
 function render() {
   ui.lobby.replaceChildren();
-  ui.lobby.hidden = !!app.match;
-  ui.back.hidden = !app.match;
+  ui.players.replaceChildren();
+  const lobbyShown = !app.match && !app.player;
+  ui.lobby.hidden = !lobbyShown;
+  ui.players.hidden = !lobbyShown;
+  ui.playersTitle.hidden = !lobbyShown || !app.players.length;
+  ui.back.hidden = lobbyShown;
+  if (!app.match && app.player) {
+    const records = byPlayer(app.players).get(app.player) || [];
+    ui.title.textContent = records.length ? `Player ${records[0].name}` : 'Player';
+    const lines = records.flatMap(playerLines);
+    ui.facts.replaceChildren(...(lines.length ? lines : ['No statistics yet.']).map(line));
+    return;
+  }
   if (!app.match) {
     ui.title.textContent = 'Matches on this network';
     if (!app.lobby.length) {
@@ -136,6 +165,14 @@ function render() {
       button.onclick = () => watch(entry.match);
       li.append(button);
       ui.lobby.append(li);
+    }
+    for (const [id, records] of byPlayer(app.players)) {
+      const li = document.createElement('li');
+      const button = document.createElement('button');
+      button.textContent = playerButtonText(records);
+      button.onclick = () => showPlayer(id);
+      li.append(button);
+      ui.players.append(li);
     }
     ui.facts.replaceChildren();
     return;
@@ -185,7 +222,11 @@ function frame() {
   ++app.frames;
 }
 
-ui.back.onclick = () => watch(null);
+ui.back.onclick = () => {
+  if (app.match) watch(null);
+  else showPlayer(null);
+};
+app.player = new URLSearchParams(window.location.search).get('player');
 resize();
 connect();
 render();
@@ -227,6 +268,12 @@ window.poolTest = {
       frames: app.frames,
       drawn: app.drawn.map((b) => ({ id: b[0], x: b[1], y: b[2], z: b[3], on: b[8] === 1 })),
       lobby: app.lobby.length,
+      lobbyLines: app.lobby.map((e) => ({ match: e.match, text: describeEntry(e) })),
+      players: [...byPlayer(app.players)].map(([id, records]) => ({
+        id,
+        text: playerButtonText(records),
+        lines: records.flatMap(playerLines),
+      })),
     };
   },
 };

@@ -122,8 +122,30 @@ export function describe(state, settings, result, entry) {
 
 /** A lobby entry in words: "Alice vs Bob, 8-ball, race to 1 (in play)". */
 export function describeEntry(entry) {
+  const ratings = entry.ratings || [0, 0];
+  const player = (seat) => {
+    const name = entry.players[seat];
+    if (!name) return 'a free seat';
+    return ratings[seat] > 0 ? `${name} (${ratings[seat]})` : name;
+  };
   const [a, b] = entry.players;
-  const who = a || b ? `${a || 'a free seat'} vs ${b || 'a free seat'}` : 'a free table';
+  const who = a || b ? `${player(0)} vs ${player(1)}` : 'a free table';
   const phase = entry.in_play ? 'in play' : entry.phase === 'over' ? 'over' : 'waiting';
-  return `${who}, ${entry.settings} (${phase})`;
+  const progress = entryProgress(entry);
+  return `${who}, ${entry.settings}${progress ? `, ${progress}` : ''} (${phase})`;
+}
+
+/**
+ * How far a match has gone, in the window lobby's words (client/app/lobby_line.cpp): "racks 2-1,
+ * rack 4, shot 37", "frames 1-0, frame 2 45-12, shot 37"; "practice, shot 12"; '' before it starts.
+ */
+export function entryProgress(entry) {
+  const shots = `shot ${entry.shot_number || 0}`;
+  if (entry.practice) return `practice, ${shots}`;
+  if (!entry.rack) return '';
+  const word = entry.game === 'snooker' ? 'frame' : entry.game === 'three-cushion' ? 'game' : 'rack';
+  const pair = (two) => `${two[0]}-${two[1]}`;
+  let text = `${word}s ${pair(entry.racks_won)}, ${word} ${entry.rack}`;
+  if (entry.game === 'snooker' || entry.game === 'three-cushion') text += ` ${pair(entry.rack_points)}`;
+  return `${text}, ${shots}`;
 }
