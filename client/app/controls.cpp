@@ -212,7 +212,8 @@ void Controls::keyDown(Key key, Mods mods) {
       if (aiming) cyclePocket();
       break;
     case Key::K:
-      if (aiming && !nominable_) {
+      // A declared safety is a pool game's (snooker nominates, three-cushion declares nothing).
+      if (aiming && !nominable_ && safety_declared_) {
         aim_.call.safety = !aim_.call.safety;
         aim_.call.by_player = true;
       }

@@ -150,6 +150,8 @@ class Controls {
   /// (a click on it again drops it), C calls no pocket and K declares no safety (snooker has
   /// neither); empty: the game calls a ball in a pocket.
   void setNominable(std::optional<std::vector<int>> balls) { nominable_ = std::move(balls); }
+  /// Whether the game has a declared safety (K): the pool games; three-cushion and snooker not.
+  void setSafetyDeclared(bool declared) { safety_declared_ = declared; }
   /// The ball clicked, waiting for its pocket.
   std::optional<int> pickedBall() const { return picked_ball_; }
   /// What a click at the cursor would pick or call now (nothing while dragging): the window rings
@@ -247,6 +249,7 @@ class Controls {
   std::optional<ClickTarget> targetAt(double x, double y) const;
   ClickTargets targets_;
   std::optional<std::vector<int>> nominable_;  ///< snooker: the balls a click nominates
+  bool safety_declared_ = true;                ///< K declares a safety
   std::optional<int> picked_ball_;
   bool ball_dragging_ = false;
   std::pair<int, Eigen::Vector2d> dragged_{0, Eigen::Vector2d::Zero()};  ///< with Drag::Ball

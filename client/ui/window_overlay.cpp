@@ -35,6 +35,7 @@ void addAiming(WindowOverlay& out, app::Controls& controls, const client::MatchV
                       std::move(ahead));
   controls.setClickTargets(app::clickTargetsFor(match.settings.game, balls, match.cue_ball, view));
   controls.setNominable(app::nominableFor(match.settings.game, state, balls));
+  controls.setSafetyDeclared(rules::isPool(match.settings.game));
   if (t.aim_line) {
     append(out.lines, app::aimOverlay(prediction, view.radius()));
     // Off the cushions: three-cushion's route always, a kick's when a cushion comes first.

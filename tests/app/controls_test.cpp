@@ -191,6 +191,21 @@ TEST_F(ControlsTest, TheCallCyclesPocketsAndASafetyDropsIt) {
   EXPECT_TRUE(wireCheck(*shot).ok());
 }
 
+TEST_F(ControlsTest, ThreeCushionDeclaresNoSafety) {
+  // UMB three-cushion has no declared safety (the server's rules refuse one): K does nothing.
+  controls.setSafetyDeclared(false);
+  controls.keyDown(Key::K, {});
+  EXPECT_FALSE(controls.aim().call.safety);
+  const auto shot = shoot(controls, 0.2);
+  ASSERT_TRUE(shot);
+  EXPECT_FALSE(shot->safety);
+  // A pool game's K declares one.
+  controls.setSafetyDeclared(true);
+  controls.startTurn(Eigen::Vector3d(-0.8, 0.1, kRadius), rules::BallInHand::None);
+  controls.keyDown(Key::K, {});
+  EXPECT_TRUE(controls.aim().call.safety);
+}
+
 TEST_F(ControlsTest, TheOptionGoesWithTheShot) {
   controls.setOption(protocol::ShotOption::PlayOn);
   const auto shot = shoot(controls, 0.2);
