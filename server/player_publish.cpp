@@ -31,8 +31,13 @@ std::string PlayerPublisher::publish(store::MatchStore& store, protocol::PlayerS
 std::vector<std::string> PlayerPublisher::publishSeats(store::MatchStore& store,
                                                        const Match& match) {
   std::vector<std::string> errors;
-  for (const Seat& seat : match.seats()) {
-    if (!seat.taken() || seat.public_key.empty()) continue;
+  const auto& seats = match.seats();
+  // Only a counted match changes records (stat_book.h's countsForStats): two different keys.
+  if (match.practice() || seats[0].public_key.empty() || seats[1].public_key.empty() ||
+      seats[0].public_key == seats[1].public_key) {
+    return errors;
+  }
+  for (const Seat& seat : seats) {
     auto stats = store::statsOf(store.database(), seat.public_key, match.settings().game);
     if (!stats) continue;
     if (auto error = publish(store, std::move(*stats)); !error.empty()) errors.push_back(error);

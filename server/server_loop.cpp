@@ -435,6 +435,12 @@ void ServerLoop::storeShot(const CommandAnswer& answer, const std::string& match
   }
   spdlog::info("stored shot {} of {} (seat {} seq {}) in {:.2f} ms", answer.record->shot_number,
                match, answer.seat, answer.seq, ms);
+  // A record without a stroke (a choice, the clock run out) has no flight to wait for: the
+  // players' records go out now; a stroke's once it is seen through (publishFrames).
+  if (!answer.record->shoots) {
+    for (const auto& error : players_.publishSeats(*store_, *m))
+      warnIfFailed(error, "player stats");
+  }
 }
 
 void ServerLoop::storeChanges(const std::vector<std::string>& closed) {

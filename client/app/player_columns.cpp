@@ -2,11 +2,13 @@
 #include "client/app/player_columns.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace pool::app {
 
 const std::array<const char*, kPlayerColumns>& playerHeaders() {
-  static const std::array<const char*, kPlayerColumns> kHeaders{"player",
+  static const std::array<const char*, kPlayerColumns> kHeaders{"server",
+                                                                "player",
                                                                 "game",
                                                                 "rating",
                                                                 "matches won",
@@ -22,10 +24,16 @@ const std::array<const char*, kPlayerColumns>& playerHeaders() {
 std::array<std::string, kPlayerColumns> playerColumns(const protocol::PlayerStats& s) {
   const auto of = [](int a, int b) { return std::to_string(a) + "/" + std::to_string(b); };
   std::string pots = of(s.pots, s.attempts);
-  if (s.attempts > 0) {
+  if (s.attempts > 0 && rules::isPool(s.game)) {
     pots += " " + std::to_string(static_cast<int>(std::lround(100.0 * s.pots / s.attempts))) + "%";
+  } else if (s.attempts > 0) {
+    // Points, not balls: a share of strokes would pass 100 %.
+    char per[32];
+    std::snprintf(per, sizeof per, "%.2f", static_cast<double>(s.pots) / s.attempts);
+    pots += std::string(", ") + per + " a stroke";
   }
-  return {s.name,
+  return {s.server,
+          s.name,
           rules::toString(s.game),
           std::to_string(s.rating) + " ±" + std::to_string(s.rating_deviation),
           of(s.matches_won, s.matches),

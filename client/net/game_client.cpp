@@ -261,8 +261,19 @@ void GameClient::pollPlayers(std::vector<ClientEvent>& out) {
       problem(stats.error());
       continue;
     }
-    players_.update(*stats);
-    out.emplace_back(std::move(*stats));
+    // A record counts once its server id is one the lobby lists (its tables open): until then
+    // it waits, a bounded few (a record of a server id nobody's lobby shows is never shown).
+    waiting_players_.push_back(std::move(*stats));
+    if (waiting_players_.size() > kMaxWaitingPlayers) waiting_players_.pop_front();
+  }
+  for (auto it = waiting_players_.begin(); it != waiting_players_.end();) {
+    if (!lobby_.servers().count(it->server)) {
+      ++it;
+      continue;
+    }
+    players_.update(*it);
+    out.emplace_back(std::move(*it));
+    it = waiting_players_.erase(it);
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -130,7 +131,8 @@ class GameClient {
   std::vector<ClientEvent> poll();
 
   const Lobby& lobby() const { return lobby_; }
-  /// The players' statistics and ratings received (PlayerStats), bounded.
+  /// The players' statistics and ratings received (PlayerStats) of the server ids the lobby lists,
+  /// bounded.
   const PlayerBook& players() const { return players_; }
   /// The matches whose states, results and frames this client receives (each travels in its own
   /// DDS partition): the one it sits in, the one it watches and those its unanswered requests
@@ -204,6 +206,9 @@ class GameClient {
   std::map<std::pair<std::string, int>, std::uint32_t> seen_seq_;  ///< highest seq per seat seen
   Lobby lobby_;
   PlayerBook players_;
+  /// Players' records whose server id the lobby does not list yet, the latest kMaxWaitingPlayers.
+  std::deque<protocol::PlayerStats> waiting_players_;
+  static constexpr std::size_t kMaxWaitingPlayers = 256;
   std::map<std::string, MatchView> states_;
   std::uint64_t unreadable_ = 0;
   std::uint64_t stale_ = 0;

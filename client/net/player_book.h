@@ -11,9 +11,11 @@
 
 namespace pool::client {
 
-/// The most players' records a client keeps (per server, key and game); past it the oldest
-/// received goes.
-inline constexpr std::size_t kMaxPlayerRecords = 512;
+/// The most players' records a client keeps (per server, key and game), in all and of one server
+/// id; past either the oldest received (of that server) goes, so one server id's flood of
+/// records (anyone may sign as a server id of their own) cannot push out another's.
+inline constexpr std::size_t kMaxPlayerRecords = 1024;
+inline constexpr std::size_t kMaxPlayerRecordsPerServer = 256;
 
 /// Each player's latest record per server and game.
 class PlayerBook {
@@ -22,6 +24,9 @@ class PlayerBook {
   void update(protocol::PlayerStats stats);
   /// Every record, the best rated first (then by name).
   std::vector<const protocol::PlayerStats*> records() const;
+  /// At most `limit` records, shared out among the server ids in turn (each one's best rated
+  /// first), so that no server id's records crowd out another's.
+  std::vector<const protocol::PlayerStats*> fairShare(std::size_t limit) const;
   /// The records of the player named `name`, one per server and game.
   std::vector<const protocol::PlayerStats*> named(const std::string& name) const;
   std::size_t size() const { return records_.size(); }

@@ -32,7 +32,7 @@ const Message& Gateway::lobbyMessage() {
 
 const Message& Gateway::playersMessage() {
   if (!players_ || players_stale_) {
-    players_ = share(playersJson(client_.players().records(), kPagePlayers));
+    players_ = share(playersJson(client_.players().fairShare(kPagePlayers), kPagePlayers));
     players_stale_ = false;
     ++stats_.messages;
   }

@@ -20,7 +20,8 @@ inline constexpr double kLeaveAfter = 10.0;
 /// The least time between two lobby messages to every browser, s: a flood of lobby entries
 /// costs a browser at most one lobby (bounded by LobbyLimits) this often.
 inline constexpr double kLobbyEvery = 0.5;
-/// The most players' records a players message carries (the best rated), as often as the lobby.
+/// The most players' records a players message carries (client::PlayerBook::fairShare), as often
+/// as the lobby.
 inline constexpr std::size_t kPagePlayers = 128;
 
 /// Counters for the log and the benchmark.
@@ -85,7 +86,8 @@ class Gateway {
   void sendLobby();
   /// The lobby message, made again when an entry changed since.
   const Message& lobbyMessage();
-  /// The players message (the best rated kPagePlayers records), made again when one changed.
+  /// The players message (kPagePlayers records shared out among the server ids, each one's best
+  /// rated first), made again when one changed.
   const Message& playersMessage();
   /// The table message of `match` from its lobby entry (cached by table name).
   Message tableOf(const std::string& match);

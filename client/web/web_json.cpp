@@ -90,7 +90,7 @@ std::string lobbyEntryJson(const client::LobbyEntry& e) {
               {"race_to", e.settings.race_to},
               {"settings", protocol::describe(e.settings)},
               {"spectators", e.spectators}}
-      .dump();
+      .dump(-1, ' ', false, json::error_handler_t::replace);  // wire text: never thrown on
 }
 
 std::string lobbyJson(const std::vector<const std::string*>& entries) {
@@ -128,7 +128,9 @@ std::string playersJson(const std::vector<const protocol::PlayerStats*>& players
                     {"safeties", s->safeties},
                     {"high_run", s->high_run}});
   }
-  return json{{"type", "players"}, {"players", std::move(list)}}.dump();
+  // Names come from the wire: bytes that are not UTF-8 are replaced, never thrown on.
+  return json{{"type", "players"}, {"players", std::move(list)}}.dump(
+      -1, ' ', false, json::error_handler_t::replace);
 }
 
 namespace {

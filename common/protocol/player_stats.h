@@ -12,10 +12,10 @@ namespace pool::protocol {
 
 /// A player's record in one game: the key it signs with, its rating and its counts.
 struct PlayerStats {
-  std::string server;             ///< the server that keeps it (empty in the store)
-  std::vector<std::uint8_t> key;  ///< the player's public key
+  std::string server = {};             ///< the server that keeps it (empty in the store)
+  std::vector<std::uint8_t> key = {};  ///< the player's public key
   rules::Game game = rules::Game::EightBall;
-  std::string name;          ///< the name it last played under
+  std::string name = {};     ///< the name it last played under
   int rating = 0;            ///< Glicko-2, rounded (0: not given)
   int rating_deviation = 0;  ///< rounded
   int matches = 0;           ///< matches decided at the table (a forfeit is not counted)

@@ -24,14 +24,14 @@ const physics::Ball* standing(const Shot& shot, int id) {
 }
 
 // Whether the flight's leg from `a` to `b` passes over a standing object ball other than `except`
-// (a ball the leg starts against, within a millimetre, is left behind, not passed over).
+// (a ball the leg starts against, within a millimetre, and leaves behind it is not passed over).
 bool legPassesOver(const Shot& shot, const Vec2& a, const Vec2& b, double r, int except = -1) {
   constexpr double kAgainst = 1e-3;
   return std::any_of(shot.before.begin(), shot.before.end(), [&](const physics::Ball& ball) {
     if (ball.id == physics::kCueBall || ball.id == except || !physics::onTable(ball.state))
       return false;
     const Vec2 c = ball.pos.head<2>();
-    if ((c - a).norm() < 2.0 * r + kAgainst) return false;
+    if ((c - a).norm() < 2.0 * r + kAgainst && (c - a).dot(b - a) <= 0.0) return false;
     return segmentDistance(c, a, b) < 2.0 * r - 1e-9;
   });
 }
@@ -66,11 +66,16 @@ bool jumpedOverABall(const Shot& shot, double ball_radius) {
       const Vec2 heading = at - *from;
       if (heading.norm() <= 0.0) return false;
       const Vec2 dir = heading.normalized();
-      // Over another ball on the way to this one; then, struck in the air, landed beyond it
-      // (exception ii: not when it does not land on the far side).
-      if (legPassesOver(shot, *from, at - 2.0 * r * dir, r, struck)) return true;
+      // The cue ball's centre at the contact: the event's position when it is ball_a; else a
+      // ball's width short of the struck ball along the flight.
+      const Vec2 contact = cue_a ? Vec2(e.pos.head<2>()) : Vec2(at - 2.0 * r * dir);
+      // Over another ball on the way to this one?
+      if (legPassesOver(shot, *from, contact, r, struck)) return true;
+      // Struck in the air: a jump shot only when the cue ball then passes over it, its centre
+      // over the struck ball's, and lands on its far side (exception ii); a thin hit that flies
+      // on beside it is not one.
       const auto land = landingAfter(shot.events, i);
-      return land && (*land - at).dot(dir) > 0.0;
+      return land && segmentDistance(at, contact, *land) < r && (*land - at).dot(dir) > 0.0;
     }
     if (!cue_a) continue;
     switch (e.type) {

@@ -204,17 +204,17 @@ bool touchingBallPushed(const Shot& shot, const std::vector<int>& touching) {
   return false;
 }
 
-/// Whether the free ball, left on the table, snookers the next stroke on `next_on` (0 a red, 1 a
-/// colour, else that colour): snookered with it and not without it. Never with only the pink and
+/// Whether the free ball, left on the table, snookers the cue ball on `on` (0 all the reds, else
+/// that colour): snookered with it and not without it. Never with only the pink and
 /// the black left before the stroke.
-bool freeBallSnookers(const Shot& shot, int free_ball, int next_on, double r) {
+bool freeBallSnookers(const Shot& shot, int free_ball, int on_now, double r) {
   const physics::Ball* ball = ballById(shot.after, free_ball);
   if (!ball || !physics::onTable(ball->state)) return false;
   std::vector<int> left = objectIdsOn(shot.before);
   std::sort(left.begin(), left.end());
   if (left == std::vector<int>{table::kSnookerPink, table::kSnookerBlack}) return false;
   GameState following;
-  following.ball_on = next_on;
+  following.ball_on = on_now;
   const std::vector<int> on = snookerBallsOn(following, shot.after);
   std::vector<physics::Ball> without = shot.after;
   std::erase_if(without, [&](const physics::Ball& b) { return b.id == free_ball; });
@@ -413,13 +413,10 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   }
   // Section 3, "Snookered after a Foul": the free ball may not snooker the next player on all
   // the reds or the ball on, unless only the pink and the black remain.
-  if (!no_stroke && target.free_ball >= 0) {
-    const bool pots_on = std::any_of(potted.begin(), potted.end(), legalPot);
-    const int next_on = pots_on && state.ball_on == kOnRed
-                            ? kOnColour
-                            : (redsLeft(shot.after) > 0 ? kOnRed : lowestColourOn(shot.after));
-    if (freeBallSnookers(shot, target.free_ball, next_on, r))
-      v.fouls.push_back(Foul::FreeBallSnookers);
+  // The reds or the ball on are the free-ball stroke's own.
+  if (!no_stroke && target.free_ball >= 0 &&
+      freeBallSnookers(shot, target.free_ball, state.ball_on, r)) {
+    v.fouls.push_back(Foul::FreeBallSnookers);
   }
   penalty = std::max(penalty, kMinPenalty);
 

@@ -74,7 +74,9 @@ CREATE TABLE rated_results(
 )sql";
 
 // Statistics: each player's counts per game (the key it signs with), added to with every stored
-// stroke; `run` and `from_break` follow the player's inning in play (stat_book.h).
+// stroke, the most recently added to found by `updated`; and each match seat's inning in play
+// (its run; whether it began with the seat's own break), which a player's other matches leave
+// alone (stat_book.h).
 constexpr const char* kVersion8 = R"sql(
 CREATE TABLE player_stats(
   public_key BLOB NOT NULL, game INTEGER NOT NULL, name TEXT NOT NULL,
@@ -84,9 +86,12 @@ CREATE TABLE player_stats(
   pots INTEGER NOT NULL DEFAULT 0, breaks INTEGER NOT NULL DEFAULT 0,
   break_pots INTEGER NOT NULL DEFAULT 0, break_and_runs INTEGER NOT NULL DEFAULT 0,
   fouls INTEGER NOT NULL DEFAULT 0, safeties INTEGER NOT NULL DEFAULT 0,
-  high_run INTEGER NOT NULL DEFAULT 0, run INTEGER NOT NULL DEFAULT 0,
-  from_break INTEGER NOT NULL DEFAULT 0, updated INTEGER NOT NULL DEFAULT 0,
+  high_run INTEGER NOT NULL DEFAULT 0, updated INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY(public_key, game));
+CREATE INDEX player_stats_by_update ON player_stats(updated);
+CREATE TABLE stat_innings(
+  match TEXT NOT NULL, seat INTEGER NOT NULL, run INTEGER NOT NULL, from_break INTEGER NOT NULL,
+  PRIMARY KEY(match, seat));
 )sql";
 
 constexpr std::array<const char*, kSchemaVersion> kSteps{

@@ -8,10 +8,10 @@ namespace {
 
 constexpr const char* kColumns =
     "public_key, game, name, matches, matches_won, racks, racks_won, strokes, attempts, pots, "
-    "breaks, break_pots, break_and_runs, fouls, safeties, high_run, run, from_break";
+    "breaks, break_pots, break_and_runs, fouls, safeties, high_run";
 
-/// A row as kept: the statistics and the inning in play (its run; whether it began with the
-/// player's own break and nobody else has played since).
+/// A seat's statistics and its inning in play in this match (its run; whether it began with the
+/// seat's own break and nobody else has played since).
 struct Row {
   PlayerStats stats;
   int run = 0;
@@ -29,8 +29,6 @@ Row rowAt(const Statement& q) {
                    &s.fouls,    &s.safeties,    &s.high_run};
   int column = 3;
   for (int* c : counts) *c = static_cast<int>(q.integer(column++));
-  row.run = static_cast<int>(q.integer(column++));
-  row.from_break = q.integer(column) != 0;
   return row;
 }
 
@@ -42,26 +40,40 @@ std::optional<Row> readRow(Database& db, const std::vector<std::uint8_t>& key, r
   return rowAt(q);
 }
 
-Row rowOf(Database& db, const server::Seat& seat, rules::Game game) {
-  Row row = readRow(db, seat.public_key, game).value_or(Row{});
+/// Seat `index` of `match`: its player's statistics in the match's game and the seat's inning.
+Row rowOf(Database& db, const server::MatchSnapshot& match, std::size_t index) {
+  const server::Seat& seat = match.seats[index];
+  Row row = readRow(db, seat.public_key, match.settings.game).value_or(Row{});
   row.stats.key = seat.public_key;
-  row.stats.game = game;
+  row.stats.game = match.settings.game;
   row.stats.name = seat.player;
+  auto q = db.prepare("SELECT run, from_break FROM stat_innings WHERE match = ? AND seat = ?");
+  q.bind(1, match.id).bind(2, static_cast<std::int64_t>(index));
+  if (q.step()) {
+    row.run = static_cast<int>(q.integer(0));
+    row.from_break = q.integer(1) != 0;
+  }
   return row;
 }
 
-void writeRow(Database& db, const Row& row) {
+void writeRow(Database& db, const Row& row, const std::string& match, std::size_t index) {
   const PlayerStats& s = row.stats;
   auto put = db.prepare(std::string("INSERT OR REPLACE INTO player_stats(") + kColumns +
-                        ", updated) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+                        ", updated) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
                         "(SELECT COALESCE(MAX(updated), 0) + 1 FROM player_stats))");
   put.bindBlob(1, s.key).bind(2, std::int64_t{rules::gameNumber(s.game)}).bind(3, s.name);
-  const int counts[] = {s.matches,  s.matches_won, s.racks,    s.racks_won,  s.strokes,
-                        s.attempts, s.pots,        s.breaks,   s.break_pots, s.break_and_runs,
-                        s.fouls,    s.safeties,    s.high_run, row.run};
-  int index = 4;
-  for (int c : counts) put.bind(index++, std::int64_t{c});
-  put.bind(index, std::int64_t{row.from_break ? 1 : 0}).run();
+  const int counts[] = {s.matches,  s.matches_won, s.racks,   s.racks_won,  s.strokes,
+                        s.attempts, s.pots,        s.breaks,  s.break_pots, s.break_and_runs,
+                        s.fouls,    s.safeties,    s.high_run};
+  int column = 4;
+  for (int c : counts) put.bind(column++, std::int64_t{c});
+  put.run();
+  db.prepare("INSERT OR REPLACE INTO stat_innings(match, seat, run, from_break) VALUES(?, ?, ?, ?)")
+      .bind(1, match)
+      .bind(2, static_cast<std::int64_t>(index))
+      .bind(3, std::int64_t{row.run})
+      .bind(4, std::int64_t{row.from_break ? 1 : 0})
+      .run();
 }
 
 /// What a stroke scored toward a run: legal pots in pool, the points in snooker and
@@ -87,8 +99,9 @@ void countStroke(Database& db, const server::ShotRecord& record,
   if (seat != 0 && seat != 1) return;
   const rules::Game game = after.settings.game;
   const rules::Verdict& v = record.verdict;
-  std::array<Row, 2> rows{rowOf(db, after.seats[0], game), rowOf(db, after.seats[1], game)};
+  std::array<Row, 2> rows{rowOf(db, after, 0), rowOf(db, after, 1)};
   Row& me = rows[static_cast<std::size_t>(seat)];
+  Row& other = rows[static_cast<std::size_t>(1 - seat)];
   PlayerStats& s = me.stats;
   if (record.shoots) {
     ++s.strokes;
@@ -109,15 +122,16 @@ void countStroke(Database& db, const server::ShotRecord& record,
       }
       me.run = v.legal() ? me.run + got : 0;
     }
-    if (!v.legal()) {
-      ++s.fouls;
-      me.from_break = false;
-    }
     s.high_run = std::max(s.high_run, me.run);
     // Whoever was at the table before this stroke is no longer in an inning of their own.
-    Row& other = rows[static_cast<std::size_t>(1 - seat)];
     other.run = 0;
     other.from_break = false;
+  }
+  // A foul ends the inning, a stroke's or the shot clock's run out before one.
+  if (!v.legal()) {
+    ++s.fouls;
+    me.run = 0;
+    me.from_break = false;
   }
   if (v.game_over && (v.winner == 0 || v.winner == 1)) {
     const auto w = static_cast<std::size_t>(v.winner);
@@ -137,8 +151,8 @@ void countStroke(Database& db, const server::ShotRecord& record,
     me.run = 0;
     me.from_break = false;
   }
-  writeRow(db, rows[0]);
-  writeRow(db, rows[1]);
+  writeRow(db, rows[0], after.id, 0);
+  writeRow(db, rows[1], after.id, 1);
 }
 
 std::optional<PlayerStats> statsOf(Database& db, const std::vector<std::uint8_t>& key,

@@ -8,6 +8,7 @@ namespace {
 
 TEST(PlayerColumns, ARowSaysTheRatingTheRecordAndThePotShare) {
   protocol::PlayerStats s;
+  s.server = "srv";
   s.name = "Ada";
   s.game = rules::Game::NineBall;
   s.rating = 1562;
@@ -26,13 +27,18 @@ TEST(PlayerColumns, ARowSaysTheRatingTheRecordAndThePotShare) {
   s.high_run = 8;
   const auto row = playerColumns(s);
   const std::array<std::string, kPlayerColumns> want{
-      "Ada", "9-ball", "1562 ±80", "2/3", "5/7", "45/60 75%", "4: 6, 1 run", "3", "2", "8"};
+      "srv", "Ada", "9-ball", "1562 ±80", "2/3", "5/7", "45/60 75%", "4: 6, 1 run", "3", "2", "8"};
   EXPECT_EQ(row, want);
   EXPECT_EQ(playerHeaders().size(), row.size());
+  // Snooker counts points: per stroke, never a share past 100 %.
+  s.game = rules::Game::Snooker;
+  s.pots = 145;
+  s.attempts = 90;
+  EXPECT_EQ(playerColumns(s)[6], "145/90, 1.61 a stroke");
   // No attempts yet: no share.
   s.attempts = 0;
   s.pots = 0;
-  EXPECT_EQ(playerColumns(s)[5], "0/0");
+  EXPECT_EQ(playerColumns(s)[6], "0/0");
 }
 
 }  // namespace

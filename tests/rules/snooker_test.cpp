@@ -689,6 +689,20 @@ TEST(SnookerJump, TheRulesExceptionsAreNoFoul) {
                                      .hit(0, 1)
                                      .raw(cueEvent(EventType::Land, 0.1, 0.25, 0.3)));
   EXPECT_TRUE(snookerJudged(snookerInPlay(0), far_side).hasFoul(Foul::JumpShot));
+  // A thin hit in the air: the cue ball meets the red's edge beside it and flies on past it, its
+  // centre never over the red's: no jump shot.
+  physics::Event thin;
+  thin.t = 0.05;
+  thin.type = EventType::BallBall;
+  thin.ball_a = physics::kCueBall;
+  thin.ball_b = 1;
+  thin.pos = physics::Vec3(0.15 - 0.01, 0.3 - 2 * kSnookerR + 0.001, kSnookerR);
+  const Shot thin_hit = makeShot(jumpLayout(), Intent::none(),
+                                 LogBuilder()
+                                     .raw(cueEvent(EventType::Airborne, 0.01, 0.0, 0.3 - 0.05))
+                                     .raw(thin)
+                                     .raw(cueEvent(EventType::Land, 0.1, 0.3, 0.3 - 0.07)));
+  EXPECT_FALSE(snookerJudged(snookerInPlay(0), thin_hit).hasFoul(Foul::JumpShot));
 }
 
 TEST(SnookerJump, TheRealPhysicsJumpOverARedIsCalled) {

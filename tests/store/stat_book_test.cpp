@@ -49,14 +49,17 @@ struct Stroke {
   int seat = 0;
   bool breaks = false;
   bool safety = false;
-  std::vector<int> pocketed;
+  std::vector<int> pocketed = {};
   bool foul = false;
   bool stays = false;
   int wins_rack = -1;
+  bool times_out = false;  ///< no stroke: the shot clock ran out (a foul)
 };
 
-void storeStroke(MatchStore& s, const Stroke& k, std::uint32_t number, bool match_over) {
+void storeStroke(MatchStore& s, const Stroke& k, std::uint32_t number, bool match_over,
+                 const std::string& match = "srv-1") {
   server::ShotRecord r;
+  r.shoots = !k.times_out;
   r.command.seat = k.seat;
   r.command.seq = number;
   r.shot_number = number;
@@ -64,10 +67,13 @@ void storeStroke(MatchStore& s, const Stroke& k, std::uint32_t number, bool matc
   r.intent.safety = k.safety;
   r.verdict.pocketed = k.pocketed;
   if (k.foul) r.verdict.fouls = {rules::Foul::CueBallPocketed};
+  if (k.times_out) r.verdict.fouls = {rules::Foul::ShotClockExpired};
   r.verdict.turn_continues = k.stays;
   r.verdict.game_over = k.wins_rack >= 0;
   r.verdict.winner = k.wins_rack;
   server::MatchSnapshot after = nineBallRace(match_over ? rules::Phase::Over : rules::Phase::Open);
+  after.id = match;
+  after.number = match == "srv-1" ? 1 : 2;
   after.shot_number = number;
   s.recordShot(r, "scripted", after);
 }
@@ -150,6 +156,29 @@ TEST(StatBook, AScriptedRaceCountsEachPlayersPotsFoulsBreaksAndRuns) {
   const auto recent = recentStats(s.database(), 10);
   ASSERT_EQ(recent.size(), 2u);
   EXPECT_EQ(recentStats(s.database(), 1).size(), 1u);
+}
+
+TEST(StatBook, AnInningIsItsMatchsOwnAndAShotClockFoulEndsIt) {
+  Scratch scratch;
+  auto opened = MatchStore::open(scratch.file("pool.db"));
+  ASSERT_TRUE(opened) << opened.error();
+  MatchStore& s = **opened;
+  // ann at two tables at once: her break in the first (2 balls), a pot in the second (1), then
+  // the 9 in the first: that inning is 3 balls from her break, a break-and-run; the second's 1.
+  storeStroke(s, {.seat = 0, .breaks = true, .pocketed = {3, 5}, .stays = true}, 1, false);
+  storeStroke(s, {.seat = 0, .pocketed = {4}, .stays = true}, 1, false, "srv-2");
+  storeStroke(s, {.seat = 0, .pocketed = {9}, .wins_rack = 0}, 2, false);
+  // In the second the shot clock runs out (a foul, no stroke): her inning there ends; her next
+  // pot there begins another.
+  storeStroke(s, {.seat = 0, .times_out = true}, 2, false, "srv-2");
+  storeStroke(s, {.seat = 0, .pocketed = {6}, .stays = true}, 2, false, "srv-2");
+  const auto ann = statsOf(s.database(), kStatsAnn, rules::Game::NineBall);
+  ASSERT_TRUE(ann);
+  EXPECT_EQ(ann->high_run, 3);  // not 4: the second table's pot is not part of the first's run
+  EXPECT_EQ(ann->break_and_runs, 1);
+  EXPECT_EQ(ann->strokes, 4);  // the clock's run out is no stroke
+  EXPECT_EQ(ann->fouls, 1);
+  EXPECT_EQ(ann->pots, 3);
 }
 
 TEST(StatBook, PracticeAndHotSeatPlayAreNotCounted) {

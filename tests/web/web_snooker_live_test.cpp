@@ -136,7 +136,7 @@ TEST_F(WebSnookerLiveTest, ThePageFollowsAFrameWithEveryBallWhereTheServerPutsIt
       const std::string strokes = std::to_string(n) + (n == 1 ? " stroke" : " strokes") + " in all";
       bool found = false;
       for (const auto& p : players) {
-        if (p["text"].get<std::string>().rfind(name + ":", 0) != 0) continue;
+        if (p["text"].get<std::string>().rfind(name + " at ", 0) != 0) continue;
         for (const auto& l : p["lines"]) {
           found = found || l.get<std::string>().find(strokes) != std::string::npos;
         }

@@ -222,7 +222,9 @@ function frame() {
   ++app.frames;
 }
 
+// Back to the lobby, from a match or a player's page alike.
 ui.back.onclick = () => {
+  app.player = null;
   if (app.match) watch(null);
   else showPlayer(null);
 };

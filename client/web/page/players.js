@@ -5,22 +5,27 @@ function plural(n, one, many) {
   return `${n} ${n === 1 ? one : many}`;
 }
 
-/** What a game calls the balls a stroke scores: points in three-cushion, else balls. */
+/** What a stroke scores: points in snooker and three-cushion, balls in pool. */
 function scoreWord(game) {
-  return game === 'three-cushion' ? 'point' : 'ball';
+  return game === 'three-cushion' || game === 'snooker' ? 'point' : 'ball';
 }
 
-/** One line for a player's list entry: "Ada: 8-ball 1562, snooker 1500". */
+/** One line for a player's list entry: "Ada at srv: 8-ball 1562, snooker 1500". */
 export function playerButtonText(records) {
   const name = records[0].name || 'a player';
-  return `${name}: ${records.map((r) => `${r.game} ${r.rating}`).join(', ')}`;
+  const games = records.map((r) => `${r.game} ${r.rating}`).join(', ');
+  return `${name} at ${records[0].server}: ${games}`;
 }
 
 /** A player's facts in one game, as lines. */
 export function playerLines(r) {
   const word = scoreWord(r.game);
   const rackWord = r.game === 'snooker' ? 'frame' : r.game === 'three-cushion' ? 'game' : 'rack';
-  const share = r.attempts > 0 ? ` (${Math.round((100 * r.pots) / r.attempts)} %)` : '';
+  // Points (snooker, three-cushion) per stroke: a share of strokes would pass 100 %.
+  const points = r.game === 'snooker' || r.game === 'three-cushion';
+  let share = '';
+  if (r.attempts > 0 && points) share = ` (${(r.pots / r.attempts).toFixed(2)} a stroke)`;
+  if (r.attempts > 0 && !points) share = ` (${Math.round((100 * r.pots) / r.attempts)} %)`;
   const best = r.game === 'snooker' ? `highest break ${r.high_run}` : `best inning ${plural(r.high_run, word, `${word}s`)}`;
   return [
     `${r.game}: rating ${r.rating} ±${r.rating_deviation}`,
