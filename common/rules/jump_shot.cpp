@@ -4,17 +4,13 @@
 #include <algorithm>
 #include <optional>
 
+#include "table/segment_distance.h"
+
 namespace pool::rules {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
-
-double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
+using table::segmentDistance;
 
 const physics::Ball* standing(const Shot& shot, int id) {
   for (const auto& b : shot.before) {

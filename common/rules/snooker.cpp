@@ -10,12 +10,14 @@
 #include "rules/shot_facts.h"
 #include "rules/verdict_steps.h"
 #include "table/rack.h"
+#include "table/segment_distance.h"
 
 namespace pool::rules {
 namespace {
 
 using physics::EventType;
 using Vec2 = Eigen::Vector2d;
+using table::segmentDistance;
 
 /// A ball counts as touching the cue ball when their surfaces are this close, m (Section 3,
 /// "Touching Ball": the referee's "touching ball"; a tenth of a millimetre is below what an eye can
@@ -62,14 +64,6 @@ int lowestColourOn(const std::vector<physics::Ball>& balls) {
   return 0;
 }
 
-/// The distance from `p` to the segment from `a` to `b`.
-double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 /// Whether the cue ball travelling straight from `from` to `to` (its centre's path) passes clear
 /// of every ball on the table but `target` and the balls of `ignore` (balls on never snooker).
 bool straightPathClear(const std::vector<physics::Ball>& balls, const Vec2& from, const Vec2& to,
@@ -110,28 +104,22 @@ std::optional<Vec2> cueBallAt(const std::vector<physics::Ball>& balls) {
   return cue->pos.head<2>();
 }
 
-/// Whether a ball at `p` would lie clear of every ball in `taken`.
-bool clearOfAll(const Vec2& p, const std::vector<Vec2>& taken, double r) {
-  return std::all_of(taken.begin(), taken.end(),
-                     [&](const Vec2& c) { return (c - p).norm() >= 2.0 * r; });
-}
-
 /// Section 3, "Spotting Colours": a colour's own spot; else the highest-valued free spot; else the
 /// nearest free point from its own spot toward the top cushion; else toward baulk.
 Vec2 respotColour(int colour, const std::vector<Vec2>& taken, const TableContext& table) {
   const double r = table.ball_radius;
   const Vec2 own = *table::snookerSpotOf(table.spec, colour);
-  if (clearOfAll(own, taken, r)) return own;
+  if (table::isFree(own, r, taken)) return own;
   for (int c = table::kSnookerBlack; c >= table::kSnookerYellow; --c) {
     const Vec2 spot = *table::snookerSpotOf(table.spec, c);
-    if (clearOfAll(spot, taken, r)) return spot;
+    if (table::isFree(spot, r, taken)) return spot;
   }
   const double top = table.spec.length / 2.0 - r;
   for (double x = own.x(); x <= top; x += kRespotStep) {
-    if (clearOfAll({x, own.y()}, taken, r)) return {x, own.y()};
+    if (table::isFree({x, own.y()}, r, taken)) return {x, own.y()};
   }
   for (double x = own.x(); x >= -top; x -= kRespotStep) {
-    if (clearOfAll({x, own.y()}, taken, r)) return {x, own.y()};
+    if (table::isFree({x, own.y()}, r, taken)) return {x, own.y()};
   }
   return own;  // the whole line is taken: nothing better exists
 }
@@ -447,7 +435,7 @@ Result<Verdict> judgeSnooker(const GameState& state, const Shot& shot, const Tab
   std::vector<int> elsewhere;
   for (int id : back) {
     const Vec2 own = *table::snookerSpotOf(table.spec, id);
-    if (!clearOfAll(own, taken, r)) {
+    if (!table::isFree(own, r, taken)) {
       elsewhere.push_back(id);
       continue;
     }

@@ -98,11 +98,6 @@ std::vector<BallPlacement> tenBall(const TableSpec& spec, double ball_radius, st
   return place(slots, ids, rest);
 }
 
-bool isFree(const Vec2& p, double ball_radius, const std::vector<Vec2>& occupied) {
-  return std::all_of(occupied.begin(), occupied.end(),
-                     [&](const Vec2& c) { return (c - p).norm() >= 2.0 * ball_radius; });
-}
-
 /// Points on the long string (y = 0) just clear of each ball that blocks it: behind (+x) or in
 /// front.
 std::vector<double> clearPoints(double ball_radius, const std::vector<Vec2>& occupied,
@@ -119,6 +114,11 @@ std::vector<double> clearPoints(double ball_radius, const std::vector<Vec2>& occ
 }
 
 }  // namespace
+
+bool isFree(const Vec2& p, double ball_radius, const std::vector<Vec2>& occupied) {
+  return std::all_of(occupied.begin(), occupied.end(),
+                     [&](const Vec2& c) { return (c - p).norm() >= 2.0 * ball_radius; });
+}
 
 Spots spotsFor(const TableSpec& spec) {
   Spots s;

@@ -98,6 +98,11 @@ inline constexpr double kRackStray = 0.127e-3;
 std::vector<BallPlacement> rackFor(RackType type, const TableSpec& spec, double ball_radius,
                                    std::uint64_t seed, RackGenerator generator);
 
+/// Whether a ball at `p` would lie clear of every ball centred in `occupied` (none nearer than two
+/// radii): where a re-spotted ball may go.
+bool isFree(const Eigen::Vector2d& p, double ball_radius,
+            const std::vector<Eigen::Vector2d>& occupied);
+
 /// Where a re-spotted ball goes: the foot spot, or the nearest free point behind it on the long
 /// string (toward the foot cushion), then in front of it. `occupied` are the centres of the balls
 /// on the table.

@@ -4,8 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "table/segment_distance.h"
+
 namespace pool::bot {
 namespace {
+
+using table::segmentDistance;
 
 // Widest angle between the object ball's path and the pocket's axis that still drops, rad.
 constexpr double kCornerApproach = 1.15;
@@ -14,13 +18,6 @@ constexpr double kSideApproach = 0.95;
 constexpr double kArrivalSpeed = 0.7;
 constexpr double kMinSpeed = 0.6;
 constexpr double kMaxSpeed = 6.5;
-
-double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
 
 bool onSurface(const Vec2& p, const TableView& view) {
   const double r = view.radius();
