@@ -20,7 +20,9 @@ ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry,
       limits_(serverLimits(registry.table().spec)),
       store_(store),
       players_(transport, registry.serverId()),
-      epoch_(std::chrono::steady_clock::now()) {}
+      epoch_(std::chrono::steady_clock::now()) {
+  if (store_) history_.emplace(*store_, registry.serverId());
+}
 
 double ServerLoop::now() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - epoch_).count();
@@ -59,6 +61,7 @@ void ServerLoop::step(double now) {
   readJoins(now);
   relayAims(now);  // first: a stroke's aim still finds its turn open when its command comes along
   readCommands(now);
+  answerHistory(now);
   stepReplay(now);
   publishFrames(now);
   registry_.expireAway(now, config_.grace);
@@ -394,6 +397,17 @@ void ServerLoop::publishResult(const std::string& match, const CommandAnswer& an
   // writer would otherwise hold one instance per made-up key for good.
   const bool keep = ourSeat(match, answer.seat);
   warnIfFailed(transport_.publish(result, keep), "shot result");
+}
+
+void ServerLoop::answerHistory(double now) {
+  auto requests = transport_.takeHistory();
+  if (!history_) return;  // no store, no history: the requests are read and dropped
+  for (const auto& in : requests) {
+    std::string why;
+    const auto shots = history_->answer(in, now, &why);
+    if (!why.empty()) spdlog::debug("history request from {}: {}", in.sender, why);
+    for (const auto& shot : shots) warnIfFailed(transport_.publish(shot), "history shot");
+  }
 }
 
 void ServerLoop::stepReplay(double now) {

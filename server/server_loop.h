@@ -16,6 +16,7 @@
 #include "server/admin/admin_listener.h"
 #include "server/admin_desk.h"
 #include "server/heap_trim.h"
+#include "server/history_desk.h"
 #include "server/join_tally.h"
 #include "server/match/aim_gate.h"
 #include "server/match/join_rate_limit.h"
@@ -127,6 +128,8 @@ class ServerLoop {
   void addRatings(const Match& match, protocol::LobbyEntry& entry);
   void storeShot(const CommandAnswer& answer, const std::string& match);
   void stepReplay(double now);
+  /// Answers the requests for stored shots (history_desk.h); without a store, drops them.
+  void answerHistory(double now);
   void storeChanges(const std::vector<std::string>& closed);
   /// Sends a match's last lobby entry again, saying it is closed: a client that reads the entry
   /// and its disposal in one take sees only the entry (DDS sends no separate notice then).
@@ -143,7 +146,8 @@ class ServerLoop {
   net::ServerTransport& transport_;
   protocol::CommandLimits limits_;
   store::MatchStore* store_;
-  PlayerPublisher players_;  ///< the players' records (PlayerStats)
+  PlayerPublisher players_;             ///< the players' records (PlayerStats)
+  std::optional<HistoryDesk> history_;  ///< answers history requests (with a store only)
   MatchReplay* replay_ = nullptr;
   bool replay_reported_ = false;
   bool replay_started_ = false;  ///< a spectator has been seen: the replay runs

@@ -230,7 +230,48 @@ std::vector<ClientEvent> GameClient::poll() {
   pollResults(out);
   pollFrames(out);
   pollAims(out);
+  pollHistory(out);
   return out;
+}
+
+void GameClient::openHistory() {
+  transport_->openHistory();
+}
+
+Result<std::uint32_t> GameClient::requestHistory(const std::string& match, std::uint32_t first,
+                                                 std::uint32_t count) {
+  protocol::HistoryRequest r;
+  r.client = options_.client_id;
+  r.request = next_request_++;
+  r.match = match;
+  r.first_shot = first;
+  r.count = count;
+  if (auto ok = protocol::checkHistoryRequest(r); !ok) {
+    return Result<std::uint32_t>::fail("history request: " + ok.error());
+  }
+  protocol::signHistory(r, key_);
+  if (auto why = transport_->send(r); !why.empty()) {
+    return Result<std::uint32_t>::fail("history request: " + why);
+  }
+  history_requests_.push_back(r.request);
+  while (history_requests_.size() > kHistoryRequestsKept) history_requests_.pop_front();
+  return Result<std::uint32_t>::ok(r.request);
+}
+
+void GameClient::pollHistory(std::vector<ClientEvent>& out) {
+  for (auto& shot : transport_->takeHistory()) {
+    if (!shot) {
+      problem(shot.error());
+      continue;
+    }
+    // Everyone's answers travel on the one topic: only those to our own requests are ours.
+    if (shot->client != options_.client_id ||
+        std::find(history_requests_.begin(), history_requests_.end(), shot->request) ==
+            history_requests_.end()) {
+      continue;
+    }
+    out.emplace_back(std::move(*shot));
+  }
 }
 
 const MatchView* GameClient::state(const std::string& match) const {

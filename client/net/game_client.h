@@ -24,6 +24,7 @@
 #include "core/result.h"
 #include "net/client_transport.h"
 #include "protocol/aim_sample.h"
+#include "protocol/history.h"
 #include "protocol/key_pair.h"
 #include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
@@ -34,8 +35,11 @@ namespace pool::client {
 /// Something received, as poll() hands it out.
 /// A shooter's live aim (protocol::AimSample) reaches poll() only once it passed the checks of
 /// GameClient::pollAims.
-using ClientEvent = std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport,
-                                 TableFrame, protocol::AimSample, protocol::PlayerStats>;
+/// A stored shot (protocol::HistoryShot) reaches poll() only when it answers one of this client's
+/// own recent history requests.
+using ClientEvent =
+    std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport, TableFrame,
+                 protocol::AimSample, protocol::PlayerStats, protocol::HistoryShot>;
 
 /// The seat this client holds in a match.
 struct SeatHolding {
@@ -122,6 +126,16 @@ class GameClient {
   /// one check per match and poll.
   std::uint64_t aimDropped() const { return aim_dropped_; }
 
+  // ---- Replays -------------------------------------------------------------------------------
+  /// Opens the history endpoints now, so that the first request finds the server listening
+  /// (net::ClientTransport::openHistory).
+  void openHistory();
+  /// Asks the server of `match` for its strokes `first` .. `first` + `count` - 1 (count up to
+  /// protocol::kMaxHistoryShots), signed with the client's key; the answers come out of poll()
+  /// as protocol::HistoryShot carrying the request number returned, or why nothing was sent.
+  Result<std::uint32_t> requestHistory(const std::string& match, std::uint32_t first,
+                                       std::uint32_t count = 1);
+
   // ---- Receiving ------------------------------------------------------------------------------
   /// Blocks until something arrives or `timeout` passes.
   void wait(std::chrono::nanoseconds timeout) const;
@@ -166,6 +180,7 @@ class GameClient {
   void pollResults(std::vector<ClientEvent>& out);
   void pollFrames(std::vector<ClientEvent>& out);
   void pollAims(std::vector<ClientEvent>& out);
+  void pollHistory(std::vector<ClientEvent>& out);
   /// Refuses a relayed aim (its seal checked) that is not taken, with why.
   Check<> checkAim(const protocol::AimSample& aim);
   struct PendingJoin {
@@ -240,6 +255,9 @@ class GameClient {
   /// Per match, the turn and the number of the last relayed aim taken.
   std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> aims_seen_;
   std::uint64_t aim_dropped_ = 0;
+  /// Our last history requests (their numbers), whose answers poll() hands out.
+  std::deque<std::uint32_t> history_requests_;
+  static constexpr std::size_t kHistoryRequestsKept = 64;
 };
 
 /// A random client id (hex, 16 characters).

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "client/web/replay_json.h"
 #include "client/web/web_json.h"
 
 namespace pool::web {
@@ -89,25 +90,106 @@ std::string Gateway::watch(std::uint64_t browser, const std::string& match) {
   return {};
 }
 
+std::string Gateway::replay(std::uint64_t browser, const std::string& match, std::uint32_t shot) {
+  if (!browsers_.count(browser)) return "not connected";
+  // One replay a browser waits for: a new one replaces it.
+  for (auto it = replays_.begin(); it != replays_.end();) {
+    it->second.browsers.erase(browser);
+    it = it->second.browsers.empty() ? replays_.erase(it) : std::next(it);
+  }
+  const auto cached = replay_cache_.find({match, shot});
+  if (cached != replay_cache_.end()) {
+    sendTo(browser, tableNamed(cached->second.table));
+    sendTo(browser, cached->second.message);
+    dropSlow();
+    return {};
+  }
+  for (auto& [request, pending] : replays_) {
+    if (pending.match == match && pending.shot == shot) {
+      pending.browsers.insert(browser);
+      return {};
+    }
+  }
+  if (!askReplay(match, shot, {browser}, 1)) {
+    const std::string why = "cannot ask for a replay of " + match;
+    sendTo(browser, share(errorJson(why)));
+    dropSlow();
+    return why;
+  }
+  return {};
+}
+
+bool Gateway::askReplay(const std::string& match, std::uint32_t shot,
+                        std::set<std::uint64_t> browsers, int tries) {
+  const auto request = client_.requestHistory(match, shot, 1);
+  if (!request) return false;
+  while (replays_.size() >= kMaxPendingReplays) replays_.erase(replays_.begin());
+  replays_[*request] = PendingReplay{match, shot, std::move(browsers), now_, tries};
+  return true;
+}
+
+void Gateway::answerReplay(const protocol::HistoryShot& shot) {
+  const auto it = replays_.find(shot.request);
+  if (it == replays_.end()) return;
+  PendingReplay pending = std::move(it->second);
+  replays_.erase(it);
+  const Message message = share(replayJson(shot, pending.shot));
+  ++stats_.messages;
+  Message drawing;
+  if (shot.found) {
+    drawing = tableNamed(shot.table);
+    const std::pair<std::string, std::uint32_t> key{pending.match, pending.shot};
+    if (!replay_cache_.count(key)) {
+      replay_order_.push_back(key);
+      while (replay_order_.size() > kReplayCache) {
+        replay_cache_.erase(replay_order_.front());
+        replay_order_.pop_front();
+      }
+    }
+    replay_cache_[key] = CachedReplay{message, shot.table};
+  }
+  for (const std::uint64_t browser : pending.browsers) {
+    if (drawing) sendTo(browser, drawing);
+    sendTo(browser, message);
+  }
+}
+
+Message Gateway::tableNamed(const std::string& name) {
+  const auto cached = tables_.find(name);
+  if (cached != tables_.end()) return cached->second;
+  auto text = tableJson(name);
+  if (!text) return share(errorJson("cannot draw table '" + name + "': " + text.error()));
+  Message drawing = share(std::move(*text));
+  if (tables_.size() < 16) tables_[name] = drawing;
+  return drawing;
+}
+
 Message Gateway::tableOf(const std::string& match) {
   Watched& w = watched_[match];
   if (w.table) return w.table;
   const auto* entry = lobby_entries_.find(match);
   if (!entry) return nullptr;
-  const auto cached = tables_.find(entry->table);
-  if (cached != tables_.end()) return w.table = cached->second;
-  auto text = tableJson(entry->table);
-  if (!text) {
-    // An unknown table is said once; the page then draws no table but still follows the match.
-    w.table = share(errorJson("cannot draw table '" + entry->table + "': " + text.error()));
-    return w.table;
-  }
-  if (tables_.size() < 16) tables_[entry->table] = share(*text);
-  return w.table = share(std::move(*text));
+  // An unknown table is said once; the page then draws no table but still follows the match.
+  return w.table = tableNamed(entry->table);
 }
 
 void Gateway::step(double now) {
+  now_ = now;
   for (const auto& event : client_.poll()) handle(event);
+  for (auto it = replays_.begin(); it != replays_.end();) {
+    if (now - it->second.sent_at < kReplayRetry) {
+      ++it;
+      continue;
+    }
+    PendingReplay pending = std::move(it->second);
+    it = replays_.erase(it);
+    if (pending.tries >= kReplayTries ||
+        !askReplay(pending.match, pending.shot, pending.browsers, pending.tries + 1)) {
+      const Message error = share(errorJson("no answer from the server of " + pending.match +
+                                            " for shot " + std::to_string(pending.shot)));
+      for (const std::uint64_t browser : pending.browsers) sendTo(browser, error);
+    }
+  }
   for (auto it = watched_.begin(); it != watched_.end();) {
     Watched& w = it->second;
     if (w.browsers.empty()) {
@@ -183,6 +265,8 @@ void Gateway::handle(const client::ClientEvent& event) {
     fanOut(report->match, message);
   } else if (std::holds_alternative<protocol::PlayerStats>(event)) {
     players_changed_ = players_stale_ = true;
+  } else if (const auto* shot = std::get_if<protocol::HistoryShot>(&event)) {
+    answerReplay(*shot);
   } else if (const auto* frame = std::get_if<client::TableFrame>(&event)) {
     if (watched_.count(frame->match)) fanOut(frame->match, share(frameJson(*frame)));
   }
@@ -214,29 +298,60 @@ void Gateway::dropSlow() {
   slow_.clear();
 }
 
-std::optional<std::string> parseWatch(const std::string& text, std::string& error) {
+namespace {
+
+/// A match id as a browser may send it: at most 64 printable ASCII characters without spaces.
+bool validMatchText(const std::string& match, std::string& error) {
+  if (match.size() > 64) {
+    error = "a match id has at most 64 characters";
+    return false;
+  }
+  for (unsigned char c : match) {
+    if (c < 0x21 || c > 0x7e) {
+      error = "a match id is printable ASCII without spaces";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<BrowserRequest> parseRequest(const std::string& text, std::string& error) {
   const auto json = nlohmann::json::parse(text, nullptr, false);
   if (json.is_discarded() || !json.is_object()) {
     error = "not a JSON object";
     return std::nullopt;
   }
-  const auto it = json.find("watch");
-  if (it == json.end() || !it->is_string() || json.size() != 1) {
-    error = "expected {\"watch\":\"<match id>\"}";
+  constexpr const char* kExpected =
+      "expected {\"watch\":\"<match id>\"} or {\"replay\":{\"match\":\"<match id>\",\"shot\":n}}";
+  if (json.size() != 1) {
+    error = kExpected;
     return std::nullopt;
   }
-  const std::string match = it->get<std::string>();
-  if (match.size() > 64) {
-    error = "a match id has at most 64 characters";
+  if (const auto it = json.find("watch"); it != json.end() && it->is_string()) {
+    std::string match = it->get<std::string>();
+    if (!validMatchText(match, error)) return std::nullopt;
+    return WatchRequest{std::move(match)};
+  }
+  const auto it = json.find("replay");
+  if (it == json.end() || !it->is_object() || it->size() != 2 || !it->contains("match") ||
+      !it->contains("shot") || !(*it)["match"].is_string() || !(*it)["shot"].is_number_unsigned()) {
+    error = kExpected;
     return std::nullopt;
   }
-  for (unsigned char c : match) {
-    if (c < 0x21 || c > 0x7e) {
-      error = "a match id is printable ASCII without spaces";
-      return std::nullopt;
-    }
+  std::string match = (*it)["match"].get<std::string>();
+  if (match.empty()) {
+    error = "a replay names a match";
+    return std::nullopt;
   }
-  return match;
+  if (!validMatchText(match, error)) return std::nullopt;
+  const auto shot = (*it)["shot"].get<std::uint64_t>();
+  if (shot < 1 || shot > 0xffffffffu) {
+    error = "a shot number counts from 1";
+    return std::nullopt;
+  }
+  return ReplayRequest{std::move(match), static_cast<std::uint32_t>(shot)};
 }
 
 }  // namespace pool::web

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
+#include <variant>
 
 #include "client/net/game_client.h"
 #include "client/web/bounded_lobby.h"
@@ -20,6 +22,14 @@ inline constexpr double kLeaveAfter = 10.0;
 /// The least time between two lobby messages to every browser, s: a flood of lobby entries
 /// costs a browser at most one lobby (bounded by LobbyLimits) this often.
 inline constexpr double kLobbyEvery = 0.5;
+/// A replay the server has not answered is asked again this often, s, and given up after
+/// kReplayTries tries (the browser is told).
+inline constexpr double kReplayRetry = 1.0;
+inline constexpr int kReplayTries = 5;
+/// Replays asked and not answered yet, at most (one a browser; past it the oldest is dropped), and
+/// replay messages kept for the next browser asking for the same shot.
+inline constexpr std::size_t kMaxPendingReplays = 64;
+inline constexpr std::size_t kReplayCache = 16;
 /// The most players' records a players message carries (client::PlayerBook::fairShare), as often
 /// as the lobby.
 inline constexpr std::size_t kPagePlayers = 128;
@@ -50,6 +60,12 @@ class Gateway {
   /// shot's result at once (late join), then everything of that match. Empty when done, else why
   /// not (nothing changes then).
   std::string watch(std::uint64_t browser, const std::string& match);
+
+  /// The browser wants stroke `shot` of `match` replayed: it gets the table's drawing and a replay
+  /// message (replay_json.h) once the match's server answers (asked again every kReplayRetry s,
+  /// kReplayTries times, then an error), at once when the shot was asked for lately. A browser
+  /// waits for one replay at a time (a new one replaces it). Empty when asked, else why not.
+  std::string replay(std::uint64_t browser, const std::string& match, std::uint32_t shot);
 
   /// Takes what DDS received and fans it out; sends spectate requests for newly watched matches
   /// (again every `join_retry` s until answered) and leaves matches nobody has watched for
@@ -92,6 +108,20 @@ class Gateway {
   /// The table message of `match` from its lobby entry (cached by table name).
   Message tableOf(const std::string& match);
   void dropSlow();
+  /// Asks the server for `match`'s stroke `shot` (again); false when the request could not go.
+  bool askReplay(const std::string& match, std::uint32_t shot, std::set<std::uint64_t> browsers,
+                 int tries);
+  void answerReplay(const protocol::HistoryShot& shot);
+  /// The table message of a table by name (cached).
+  Message tableNamed(const std::string& name);
+
+  struct PendingReplay {
+    std::string match;
+    std::uint32_t shot = 0;
+    std::set<std::uint64_t> browsers;
+    double sent_at = 0.0;
+    int tries = 1;
+  };
 
   client::GameClient& client_;
   double join_retry_;
@@ -110,10 +140,29 @@ class Gateway {
   double players_sent_at_ = -1e9;
   std::set<std::uint64_t> slow_;  ///< browsers whose sink refused a message this pass
   GatewayStats stats_;
+  double now_ = 0.0;                                ///< the last step's time
+  std::map<std::uint32_t, PendingReplay> replays_;  ///< by history request number
+  struct CachedReplay {
+    Message message;
+    std::string table;  ///< its table's name
+  };
+  std::map<std::pair<std::string, std::uint32_t>, CachedReplay> replay_cache_;
+  std::deque<std::pair<std::string, std::uint32_t>> replay_order_;  ///< oldest first
 };
 
+/// What a browser may ask: to watch a match (empty: none), or a stored shot replayed.
+struct WatchRequest {
+  std::string match;
+};
+struct ReplayRequest {
+  std::string match;
+  std::uint32_t shot = 1;
+};
+using BrowserRequest = std::variant<WatchRequest, ReplayRequest>;
+
 /// Parses a browser's request: {"watch":"<match id>"} (1–64 printable characters, or empty to
-/// stop watching). Empty optional and `error` set when it is not one.
-std::optional<std::string> parseWatch(const std::string& text, std::string& error);
+/// stop watching), or {"replay":{"match":"<match id>","shot":n}} (n from 1). Empty optional and
+/// `error` set when it is neither.
+std::optional<BrowserRequest> parseRequest(const std::string& text, std::string& error);
 
 }  // namespace pool::web

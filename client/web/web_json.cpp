@@ -51,6 +51,8 @@ void appendBall(std::string& out, const physics::Ball& b) {
                  physics::onTable(b.state) ? 1 : 0);
 }
 
+}  // namespace
+
 std::string ballsArray(const std::vector<physics::Ball>& balls) {
   std::string out = "[";
   for (std::size_t i = 0; i < balls.size(); ++i) {
@@ -60,8 +62,6 @@ std::string ballsArray(const std::vector<physics::Ball>& balls) {
   out += ']';
   return out;
 }
-
-}  // namespace
 
 bool validTableName(const std::string& name) {
   if (name.empty() || name.size() > 32) return false;

@@ -20,6 +20,10 @@ bool validTableName(const std::string& name);
 /// spectators, in_play}.
 std::string lobbyEntryJson(const client::LobbyEntry& entry);
 
+/// Balls as the page draws them: [[id, x, y, z, qw, qx, qy, qz, on the table (1/0)], ...],
+/// positions to 0.01 mm and orientations to 1e-5.
+std::string ballsArray(const std::vector<physics::Ball>& balls);
+
 /// {"type":"lobby","matches":[entries...]} of entries made by lobbyEntryJson, in their order.
 std::string lobbyJson(const std::vector<const std::string*>& entries);
 

@@ -77,6 +77,7 @@ int serve(WebConfig c) {
       {c.domain, "", "web", c.pins, [](const std::string& line, bool problem) {
          std::cerr << "pool-web: " << (problem ? "dropped: " : "") << line << '\n';
        }});
+  client.openHistory();  // replays: the server matches our request writer before a browser asks
   // The lobby message takes at most a quarter of a browser's queue.
   pool::web::LobbyLimits lobby_limits;
   lobby_limits.served_bytes = c.options.queue_bytes / 4;

@@ -186,8 +186,12 @@ class BrowserSession : public std::enable_shared_from_this<BrowserSession> {
     const std::string text = beast::buffers_to_string(in_.data());
     in_.consume(in_.size());
     std::string error;
-    if (const auto match = parseWatch(text, error)) {
-      state_->gateway.watch(id_, *match);
+    if (const auto request = parseRequest(text, error)) {
+      if (const auto* watch = std::get_if<WatchRequest>(&*request)) {
+        state_->gateway.watch(id_, watch->match);
+      } else if (const auto* replay = std::get_if<ReplayRequest>(&*request)) {
+        state_->gateway.replay(id_, replay->match, replay->shot);
+      }
     } else {
       push(std::make_shared<const std::string>(
           nlohmann::json{{"type", "error"}, {"text", "bad request: " + error}}.dump()));

@@ -6,6 +6,7 @@
 
 #include "net/aim_convert.h"
 #include "net/convert.h"
+#include "net/history_convert.h"
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
 #include "net/participant.h"
@@ -33,7 +34,15 @@ QosProfile deeper(QosProfile profile, std::uint32_t depth = kReaderDepth) {
   return profile;
 }
 
-enum WaitTag : std::int64_t { kLobby = 1, kReplies, kResults, kSnapshots, kStates, kAims };
+enum WaitTag : std::int64_t {
+  kLobby = 1,
+  kReplies,
+  kResults,
+  kSnapshots,
+  kStates,
+  kAims,
+  kHistory
+};
 
 /// The readers of one followed match's own topics, in its partition.
 struct MatchReaders {
@@ -138,6 +147,9 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   Writer<pool_ShotCommand> commands;
   Writer<pool_PracticeCommand> practice;
   Writer<pool_AimCommand> aim_commands;
+  /// Made by openHistory() only: a client that never replays receives no one's stored shots.
+  std::unique_ptr<Writer<pool_HistoryRequest>> history_requests;
+  std::unique_ptr<Reader<pool_HistoryShot>> history_shots;
   WaitSet waitset;
   /// The writer of each match's last lobby entry taken (its publication handle): only that
   /// writer's disposal of the entry is taken as the match gone.
@@ -168,6 +180,25 @@ std::string ClientTransport::send(const protocol::PracticeRequest& command) {
 
 std::string ClientTransport::send(const protocol::AimSample& aim) {
   return e_->aim_commands.writeOrWhy(*toAimCommand(aim));
+}
+
+void ClientTransport::openHistory() {
+  if (e_->history_requests) return;
+  e_->history_requests = std::make_unique<Writer<pool_HistoryRequest>>(
+      e_->participant, e_->history_request_topic, qos::command());
+  e_->history_shots = std::make_unique<Reader<pool_HistoryShot>>(
+      e_->participant, e_->history_shot_topic, qos::history());
+  e_->waitset.attachData(*e_->history_shots, kHistory);
+}
+
+std::string ClientTransport::send(const protocol::HistoryRequest& request) {
+  openHistory();
+  return e_->history_requests->writeOrWhy(*toWire(request));
+}
+
+std::vector<Result<protocol::HistoryShot>> ClientTransport::takeHistory() {
+  if (!e_->history_shots) return {};
+  return e_->readAll<protocol::HistoryShot>(e_->history_shots->take());
 }
 
 std::vector<Result<protocol::AimSample>> ClientTransport::takeAims() {

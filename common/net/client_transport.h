@@ -13,6 +13,7 @@
 
 #include "core/result.h"
 #include "protocol/aim_sample.h"
+#include "protocol/history.h"
 #include "protocol/match_messages.h"
 #include "protocol/player_stats.h"
 #include "protocol/practice_request.h"
@@ -77,6 +78,15 @@ class ClientTransport {
   /// its latest state and results come again from the writers' histories, as when first
   /// followed. Empty when done, else why not.
   std::string refetch(const std::string& match);
+
+  /// Opens the history request writer and the reader of stored shots (once; send does it too, but
+  /// a request written before the server's reader has matched the new writer is lost: open early).
+  void openHistory();
+  /// Writes a signed request for stored shots (opening the history endpoints if need be).
+  std::string send(const protocol::HistoryRequest& request);
+  /// Stored shots since the last take, anyone's answers (each names its client and request),
+  /// checked as the lobby is; none before openHistory().
+  std::vector<Result<protocol::HistoryShot>> takeHistory();
 
   /// Writes the shooter's signed aim (best effort: it may be lost, the next one replaces it).
   std::string send(const protocol::AimSample& aim);

@@ -32,6 +32,8 @@ POOL_NET_MESSAGE(pool_PracticeCommand, topics::kPracticeCommand);
 POOL_NET_MESSAGE(pool_AimCommand, topics::kAimCommand);
 POOL_NET_MESSAGE(pool_CueAim, topics::kCueAim);
 POOL_NET_MESSAGE(pool_PlayerStats, topics::kPlayerStats);
+POOL_NET_MESSAGE(pool_HistoryRequest, topics::kHistoryRequest);
+POOL_NET_MESSAGE(pool_HistoryShot, topics::kHistoryShot);
 
 #undef POOL_NET_MESSAGE
 

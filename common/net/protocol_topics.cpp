@@ -15,6 +15,8 @@ ProtocolTopics::ProtocolTopics(std::uint32_t domain)
       practice_topic(participant),
       aim_command_topic(participant),
       cue_aim_topic(participant),
-      player_stats_topic(participant) {}
+      player_stats_topic(participant),
+      history_request_topic(participant),
+      history_shot_topic(participant) {}
 
 }  // namespace pool::net

@@ -10,7 +10,7 @@
 
 namespace pool::net {
 
-/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's eleven topics.
+/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's thirteen topics.
 /// Endpoint sets derive from it, so their readers and writers are destroyed before the topics
 /// and the participant. Throws DdsError when DDS refuses one.
 struct ProtocolTopics {
@@ -25,9 +25,11 @@ struct ProtocolTopics {
   Topic<pool_TableSnapshot> snapshot_topic;
   Topic<pool_MatchState> state_topic;
   Topic<pool_PracticeCommand> practice_topic;
-  Topic<pool_AimCommand> aim_command_topic;    ///< player -> server
-  Topic<pool_CueAim> cue_aim_topic;            ///< per match, like snapshot_topic
-  Topic<pool_PlayerStats> player_stats_topic;  ///< server -> all, like match_info_topic
+  Topic<pool_AimCommand> aim_command_topic;          ///< player -> server
+  Topic<pool_CueAim> cue_aim_topic;                  ///< per match, like snapshot_topic
+  Topic<pool_PlayerStats> player_stats_topic;        ///< server -> all, like match_info_topic
+  Topic<pool_HistoryRequest> history_request_topic;  ///< anyone -> server
+  Topic<pool_HistoryShot> history_shot_topic;        ///< server -> all
 };
 
 }  // namespace pool::net

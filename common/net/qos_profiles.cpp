@@ -63,4 +63,8 @@ QosProfile state() {
   return make(Reliability::Reliable, Durability::TransientLocal, 1);
 }
 
+QosProfile history() {
+  return make(Reliability::Reliable, Durability::Volatile, 32);
+}
+
 }  // namespace pool::net::qos

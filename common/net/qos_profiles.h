@@ -60,6 +60,9 @@ QosProfile aim();
 /// The server's reader of AimCommand: as aim() but keep-last 64. The topic has no key, so every
 /// seat's aims (and a stranger's) share one history, which the server takes every loop.
 QosProfile aimReader();
+/// HistoryShot, both ends: reliable, volatile, keep-last 32 (the answers to a burst of requests;
+/// a reader that was not there when one was written has no use for it).
+QosProfile history();
 
 }  // namespace qos
 }  // namespace pool::net

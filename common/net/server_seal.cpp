@@ -78,4 +78,8 @@ protocol::SealedSample sealedOf(const pool_PlayerStats& sample) {
   return common(sample, std::string(textOf(sample.server)), {});
 }
 
+protocol::SealedSample sealedOf(const pool_HistoryShot& sample) {
+  return ofMatch(sample);
+}
+
 }  // namespace pool::net

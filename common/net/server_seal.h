@@ -52,6 +52,10 @@ template <>
 constexpr protocol::PublishedKind publishedKindOf<pool_PlayerStats>() {
   return protocol::PublishedKind::PlayerStats;
 }
+template <>
+constexpr protocol::PublishedKind publishedKindOf<pool_HistoryShot>() {
+  return protocol::PublishedKind::HistoryShot;
+}
 
 /// What the server's signature covers: every field of `sample`, in its wire encoding, with the
 /// signature empty. Generic over the type, so fields added to a message later are covered too.
@@ -82,5 +86,6 @@ protocol::SealedSample sealedOf(const pool_ShotResult& sample);
 protocol::SealedSample sealedOf(const pool_TableSnapshot& sample);
 protocol::SealedSample sealedOf(const pool_CueAim& sample);
 protocol::SealedSample sealedOf(const pool_PlayerStats& sample);
+protocol::SealedSample sealedOf(const pool_HistoryShot& sample);
 
 }  // namespace pool::net

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "net/aim_convert.h"
+#include "net/history_convert.h"
 #include "net/liveliness_watch.h"
 #include "net/match_scopes.h"
 #include "net/message_convert.h"
@@ -28,7 +29,13 @@ namespace pool::net {
 
 namespace {
 
-enum BusTag : std::int64_t { kJoinTag = 1, kCommandTag = 2, kPracticeTag = 3, kAimTag = 4 };
+enum BusTag : std::int64_t {
+  kJoinTag = 1,
+  kCommandTag = 2,
+  kPracticeTag = 3,
+  kAimTag = 4,
+  kHistoryTag = 5
+};
 
 /// More matches than any server keeps open (--max-matches bounds them): the writers of every
 /// match the server publishes are kept until it disposes the match.
@@ -61,11 +68,14 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         join_replies(participant, join_reply_topic, qos::joinReply()),
         stray_results(participant, result_topic, qos::strayResult()),
         aim_commands(participant, aim_command_topic, qos::aimReader()),
+        history_requests(participant, history_request_topic, qos::command()),
+        history_shots(participant, history_shot_topic, qos::history()),
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
     waitset.attachData(practice, kPracticeTag);
     waitset.attachData(aim_commands, kAimTag);
+    waitset.attachData(history_requests, kHistoryTag);
   }
 
   /// Seals `sample` with the server's key and writes it; empty when written, else why not.
@@ -93,6 +103,8 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   /// Answers to commands naming no match or seat of this server, in the default partition.
   Writer<pool_ShotResult> stray_results;
   Reader<pool_AimCommand> aim_commands;
+  Reader<pool_HistoryRequest> history_requests;
+  Writer<pool_HistoryShot> history_shots;
   WaitSet waitset;
   MatchScopes<Publisher, MatchWriters> matches;  ///< per-match writers, each in its partition
   std::unordered_set<std::string> replied;       ///< clients whose last reply is kept
@@ -166,6 +178,20 @@ std::vector<Result<protocol::AimSample>> ServerTransport::takeAims() {
     if (sample.meta().valid) out.push_back(fromWire(*sample));
   }
   return out;
+}
+
+std::vector<IncomingHistory> ServerTransport::takeHistory() {
+  std::vector<IncomingHistory> out;
+  for (auto& sample : e_->history_requests.take()) {
+    if (!sample.meta().valid) continue;
+    out.push_back(IncomingHistory{
+        fromWire(*sample), e_->senderOf(e_->history_requests, sample.meta().publication_handle)});
+  }
+  return out;
+}
+
+std::string ServerTransport::publish(const protocol::HistoryShot& shot) {
+  return e_->sealAndWrite(e_->history_shots, *toWire(shot));
 }
 
 std::string ServerTransport::publish(const protocol::AimSample& aim) {

@@ -15,6 +15,7 @@
 #include "net/incoming_practice.h"
 #include "protocol/aim_sample.h"
 #include "protocol/command_limits.h"
+#include "protocol/history.h"
 #include "protocol/key_pair.h"
 #include "protocol/match_messages.h"
 #include "protocol/player_stats.h"
@@ -49,6 +50,13 @@ struct IncomingJoin {
 /// What the join-request topic delivered.
 using JoinEvent = std::variant<IncomingJoin, UnreadableJoin>;
 
+/// A history request as read (or why it could not be), with the DDS participant it came from (as
+/// IncomingJoin::sender names it).
+struct IncomingHistory {
+  Result<protocol::HistoryRequest> request;
+  std::string sender;
+};
+
 /// The server's participant, its readers of requests and commands and its writers of lobby
 /// entries, replies, results, frames and states (QoS from qos_profiles.h). Lobby entries and
 /// replies go out in the default partition; each match's states, results and frames in the
@@ -73,6 +81,9 @@ class ServerTransport {
   /// has no key, so a flood costs no instances; aims are cosmetic and a lost one is replaced by
   /// the next), each read with net::fromWire or why it could not be.
   std::vector<Result<protocol::AimSample>> takeAims();
+  /// Requests for stored shots since the last take (the reader keeps all until taken; the server
+  /// bounds what it answers).
+  std::vector<IncomingHistory> takeHistory();
 
   std::string publish(const protocol::LobbyEntry& entry);
   /// A player's statistics and rating (kept for late readers, one sample per player and game).
@@ -86,6 +97,8 @@ class ServerTransport {
   /// writer would otherwise hold one instance per key for good).
   std::string publish(const protocol::ShotReport& report, bool keep = true);
   std::string publish(const protocol::TableFrame& frame);
+  /// One stored shot, the answer to a history request (not kept for late readers).
+  std::string publish(const protocol::HistoryShot& shot);
   /// Relays an aim the server accepted as a CueAim (best effort; token and signature dropped).
   std::string publish(const protocol::AimSample& aim);
 

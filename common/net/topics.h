@@ -16,5 +16,7 @@ inline constexpr std::string_view kPracticeCommand = "pool/PracticeCommand";  //
 inline constexpr std::string_view kAimCommand = "pool/AimCommand";            ///< no key
 inline constexpr std::string_view kCueAim = "pool/CueAim";                    ///< key match
 inline constexpr std::string_view kPlayerStats = "pool/PlayerStats";  ///< key server, player, game
+inline constexpr std::string_view kHistoryRequest = "pool/HistoryRequest";  ///< no key
+inline constexpr std::string_view kHistoryShot = "pool/HistoryShot";        ///< no key
 
 }  // namespace pool::net::topics

@@ -1,5 +1,6 @@
-// The one signed envelope of every player message (shot, seat request, aim, practice): a fixed
-// header naming the message kind, match, seat holding and sequence number, then the kind's fields.
+// The one signed envelope of every player message (shot, seat request, aim, practice, history): a
+// fixed header naming the message kind, match, seat holding and sequence number, then the kind's
+// fields.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,7 @@ enum class MessageTag : std::uint8_t {
   SeatRequest = 2,  ///< a JoinRequest that changes a seat (take, rejoin, leave, rematch, concede)
   Aim = 3,          ///< the shooter's cue while aiming
   Practice = 4,     ///< a practice-table command
+  History = 5,      ///< a request for a match's stored shots (protocol/history.h)
 };
 
 /// What every signed message names: its kind, the match, the seat holding and a sequence number.

@@ -17,7 +17,8 @@ namespace pool::protocol {
 /// (ball ids to 21, the game as 22, the ball on, free balls, misses, the cue ball in hand in the
 /// D, a ball nominated without a pocket). 9: snooker's jump-shot and free-ball-snookers fouls; the
 /// lobby's rack, shot count and game score (MatchInfo); players' records (PlayerStats); practice
-/// tables of every game (practice commands of up to 22 balls).
-inline constexpr unsigned kProtocolVersion = 9;
+/// tables of every game (practice commands of up to 22 balls). 10: a match's stored shots for
+/// replays (HistoryRequest, HistoryShot).
+inline constexpr unsigned kProtocolVersion = 10;
 
 }  // namespace pool::protocol

@@ -36,6 +36,8 @@ const char* toString(PublishedKind kind) {
       return "CueAim";
     case PublishedKind::PlayerStats:
       return "PlayerStats";
+    case PublishedKind::HistoryShot:
+      return "HistoryShot";
   }
   return "?";
 }

@@ -25,6 +25,7 @@ enum class PublishedKind : std::uint8_t {
   TableSnapshot = 5,
   CueAim = 6,       ///< the shooter's aim, relayed
   PlayerStats = 7,  ///< a player's statistics and rating (since protocol version 9)
+  HistoryShot = 8,  ///< a stored shot, for a replay (since protocol version 10)
 };
 
 const char* toString(PublishedKind kind);

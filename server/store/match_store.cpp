@@ -300,28 +300,53 @@ std::string MatchStore::tableOf(const std::string& id) {
   return q.step() ? q.text(0) : std::string();
 }
 
+namespace {
+
+constexpr const char* kShotColumns =
+    "SELECT shot_number, shoots, command, state, before, intent, events, after, verdict, "
+    "verdict_text FROM shots ";
+
+/// The stored shot of the row `q` stands on (its columns as kShotColumns lists them).
+StoredShot shotOfRow(Statement& q, const std::string& match) {
+  StoredShot s;
+  s.match = match;
+  s.record.shot_number = static_cast<std::uint32_t>(q.integer(0));
+  s.record.shoots = q.integer(1) != 0;
+  s.record.command = commandFrom(q.text(2));
+  s.record.state = gameFrom(q.text(3));
+  s.record.before = ballsFrom(q.text(4));
+  s.record.intent = intentFrom(q.text(5));
+  s.record.events = eventsFrom(q.text(6));
+  s.record.after = ballsFrom(q.text(7));
+  s.record.verdict = verdictFrom(q.text(8));
+  s.verdict_text = q.text(9);
+  return s;
+}
+
+}  // namespace
+
 std::vector<StoredShot> MatchStore::shots(const std::string& id) {
   std::vector<StoredShot> out;
-  auto q = db_.prepare(
-      "SELECT shot_number, shoots, command, state, before, intent, events, after, verdict, "
-      "verdict_text FROM shots WHERE match = ? ORDER BY id");
+  auto q = db_.prepare(std::string(kShotColumns) + "WHERE match = ? ORDER BY id");
   q.bind(1, id);
-  while (q.step()) {
-    StoredShot s;
-    s.match = id;
-    s.record.shot_number = static_cast<std::uint32_t>(q.integer(0));
-    s.record.shoots = q.integer(1) != 0;
-    s.record.command = commandFrom(q.text(2));
-    s.record.state = gameFrom(q.text(3));
-    s.record.before = ballsFrom(q.text(4));
-    s.record.intent = intentFrom(q.text(5));
-    s.record.events = eventsFrom(q.text(6));
-    s.record.after = ballsFrom(q.text(7));
-    s.record.verdict = verdictFrom(q.text(8));
-    s.verdict_text = q.text(9);
-    out.push_back(std::move(s));
-  }
+  while (q.step()) out.push_back(shotOfRow(q, id));
   return out;
+}
+
+std::optional<StoredShot> MatchStore::stroke(const std::string& id, std::uint32_t number) {
+  auto q = db_.prepare(std::string(kShotColumns) +
+                       "WHERE match = ? AND shot_number = ? AND shoots = 1 ORDER BY id LIMIT 1");
+  q.bind(1, id);
+  q.bind(2, static_cast<std::int64_t>(number));
+  if (!q.step()) return std::nullopt;
+  return shotOfRow(q, id);
+}
+
+std::uint32_t MatchStore::strokes(const std::string& id) {
+  auto q =
+      db_.prepare("SELECT COALESCE(MAX(shot_number), 0) FROM shots WHERE match = ? AND shoots = 1");
+  q.bind(1, id);
+  return q.step() ? static_cast<std::uint32_t>(q.integer(0)) : 0;
 }
 
 }  // namespace pool::store

@@ -65,6 +65,11 @@ class MatchStore {
   std::string tableOf(const std::string& id);
   /// Every stored command of match `id`, in the order they were accepted.
   std::vector<StoredShot> shots(const std::string& id);
+  /// The stroke numbered `number` of match `id` (a choice keeps the number of the stroke before
+  /// it, and is not one), if stored.
+  std::optional<StoredShot> stroke(const std::string& id, std::uint32_t number);
+  /// The number of match `id`'s last stored stroke (0: none).
+  std::uint32_t strokes(const std::string& id);
 
   Database& database() { return db_; }
 

@@ -61,6 +61,7 @@ enum Domain : std::uint32_t {
   kWebSnookerPage = 48,
   kWebSnookerScore = 49,
   kWebSnookerLive = 50,
+  kWebReplay = 51,
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,

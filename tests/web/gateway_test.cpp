@@ -140,14 +140,32 @@ TEST_F(GatewayTest, BadRequestsAreRefusedAndChangeNothing) {
   EXPECT_EQ(gateway_->watchers("srv-1"), 1u) << "a refused watch keeps the match watched";
 
   std::string error;
-  for (const char* bad : {"", "[]", "{\"watch\":3}", "{\"watch\":\"a b\"}", "{\"seat\":\"srv-1\"}",
-                          "{\"watch\":\"srv-1\",\"shoot\":1}", "not json"}) {
-    EXPECT_FALSE(parseWatch(bad, error)) << bad;
+  for (const char* bad :
+       {"", "[]", "{\"watch\":3}", "{\"watch\":\"a b\"}", "{\"seat\":\"srv-1\"}",
+        "{\"watch\":\"srv-1\",\"shoot\":1}", "not json", "{\"replay\":{\"match\":\"srv-1\"}}",
+        "{\"replay\":{\"match\":\"srv-1\",\"shot\":0}}",
+        "{\"replay\":{\"match\":\"srv-1\",\"shot\":-2}}",
+        "{\"replay\":{\"match\":\"srv-1\",\"shot\":1.5}}",
+        "{\"replay\":{\"match\":\"\",\"shot\":1}}",
+        "{\"replay\":{\"match\":\"srv-1\",\"shot\":4294967296}}",
+        "{\"replay\":{\"match\":\"srv-1\",\"shot\":1,\"x\":1}}"}) {
+    error.clear();
+    EXPECT_FALSE(parseRequest(bad, error)) << bad;
     EXPECT_FALSE(error.empty()) << bad;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << bad;
   }
-  EXPECT_FALSE(parseWatch("{\"watch\":\"" + std::string(65, 'x') + "\"}", error));
-  EXPECT_EQ(parseWatch("{\"watch\":\"srv-1\"}", error).value_or("?"), "srv-1");
-  EXPECT_EQ(parseWatch("{\"watch\":\"\"}", error).value_or("?"), "");
+  EXPECT_FALSE(parseRequest("{\"watch\":\"" + std::string(65, 'x') + "\"}", error));
+  auto watched = [&](const std::string& text) {
+    const auto request = parseRequest(text, error);
+    const auto* watch = request ? std::get_if<WatchRequest>(&*request) : nullptr;
+    return watch ? watch->match : std::string("?");
+  };
+  EXPECT_EQ(watched("{\"watch\":\"srv-1\"}"), "srv-1");
+  EXPECT_EQ(watched("{\"watch\":\"\"}"), "");
+  const auto replay = parseRequest("{\"replay\":{\"match\":\"srv-1\",\"shot\":12}}", error);
+  ASSERT_TRUE(replay && std::holds_alternative<ReplayRequest>(*replay)) << error;
+  EXPECT_EQ(std::get<ReplayRequest>(*replay).match, "srv-1");
+  EXPECT_EQ(std::get<ReplayRequest>(*replay).shot, 12u);
 }
 
 TEST_F(GatewayTest, ATableNameFromTheWireNeverLeavesAssetsTables) {

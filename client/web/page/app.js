@@ -5,6 +5,7 @@ import { PlaybackClock } from './playback.js';
 import { buildTable, placeBalls, fitCamera } from './table.js';
 import { describe, describeEntry } from './hud.js';
 import { byPlayer, playerButtonText, playerLines } from './players.js';
+import { Replay, replayLink, replayLines } from './replay.js';
 
 const canvas = document.getElementById('view');
 const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
@@ -19,6 +20,12 @@ const ui = {
   title: document.getElementById('title'),
   facts: document.getElementById('facts'),
   back: document.getElementById('back'),
+  replayControls: document.getElementById('replay-controls'),
+  previous: document.getElementById('previous'),
+  again: document.getElementById('again'),
+  next: document.getElementById('next'),
+  scenario: document.getElementById('scenario'),
+  replayLast: document.getElementById('replay-last'),
 };
 
 const app = {
@@ -36,6 +43,9 @@ const app = {
   drawn: [], // the balls as last drawn
   inMotion: false,
   frames: 0,
+  replayAsk: null, // the stored shot asked for: {match, shot}
+  replay: null, // the stored shot playing (Replay), once the gateway sent it
+  replayError: '',
 };
 
 const seconds = () => performance.now() / 1000;
@@ -45,6 +55,8 @@ function send(object) {
 }
 
 function watch(match) {
+  app.replayAsk = null;
+  app.replay = null;
   app.match = match;
   app.table = null;
   app.state = null;
@@ -53,8 +65,24 @@ function watch(match) {
   const url = new URL(window.location.href);
   if (match) url.searchParams.set('match', match);
   else url.searchParams.delete('match');
+  url.searchParams.delete('shot');
   window.history.replaceState(null, '', url);
   send({ watch: match || '' });
+  render();
+}
+
+/** Plays stroke `shot` of `match` from the server's store (the page's link says which). */
+function askReplay(match, shot) {
+  if (app.match) send({ watch: '' });
+  app.match = null;
+  app.state = null;
+  app.result = null;
+  app.replay = null;
+  app.replayError = '';
+  app.replayAsk = { match, shot };
+  app.playback.clear();
+  window.history.replaceState(null, '', replayLink(match, shot));
+  send({ replay: { match, shot } });
   render();
 }
 
@@ -75,8 +103,11 @@ function connect() {
   socket.onopen = () => {
     app.connected = true;
     ui.status.textContent = 'Connected.';
-    const wanted = new URLSearchParams(window.location.search).get('match');
-    if (wanted && wanted !== 'any') watch(wanted);
+    const params = new URLSearchParams(window.location.search);
+    const wanted = params.get('match');
+    const shot = Number.parseInt(params.get('shot') || '', 10);
+    if (wanted && wanted !== 'any' && shot >= 1) askReplay(wanted, shot);
+    else if (wanted && wanted !== 'any') watch(wanted);
   };
   socket.onclose = () => {
     app.connected = false;
@@ -119,6 +150,17 @@ function receive(m) {
       if (m.match !== app.match) return;
       app.playback.push(m, seconds());
       break;
+    case 'replay':
+      if (!app.replayAsk || m.match !== app.replayAsk.match || m.shot !== app.replayAsk.shot) return;
+      app.playback.clear();
+      if (m.found) {
+        app.replay = new Replay(m, seconds());
+        app.replayError = '';
+      } else {
+        app.replay = null;
+        app.replayError = m.error;
+      }
+      break;
     case 'gone':
       if (m.match === app.match) ui.status.textContent = 'This match has ended or its server left.';
       break;
@@ -139,6 +181,27 @@ function lobbyEntry(match) {
 function render() {
   ui.lobby.replaceChildren();
   ui.players.replaceChildren();
+  const replaying = !!app.replayAsk;
+  ui.replayControls.hidden = !replaying;
+  ui.replayLast.hidden = !(app.match && app.state && app.state.state.shot_number >= 1);
+  if (replaying) {
+    ui.lobby.hidden = ui.players.hidden = ui.playersTitle.hidden = true;
+    ui.back.hidden = false;
+    const { match, shot } = app.replayAsk;
+    ui.title.textContent = `Replay: shot ${shot} of ${match}`;
+    const m = app.replay ? app.replay.message : null;
+    const lines = m ? replayLines(m) : [app.replayError || 'Asking the server for the shot…'];
+    ui.facts.replaceChildren(...lines.map(line));
+    ui.previous.disabled = shot <= 1;
+    ui.next.disabled = !m || shot >= m.shots;
+    ui.again.disabled = !m;
+    ui.scenario.hidden = !m || !m.scenario;
+    if (m && m.scenario) {
+      ui.scenario.href = `data:application/json;charset=utf-8,${encodeURIComponent(m.scenario)}`;
+      ui.scenario.download = `${match}-shot-${shot}.json`;
+    }
+    return;
+  }
   const lobbyShown = !app.match && !app.player;
   ui.lobby.hidden = !lobbyShown;
   ui.players.hidden = !lobbyShown;
@@ -210,6 +273,18 @@ function frame() {
     renderer.clear();
     return;
   }
+  if (app.replay) {
+    const now = seconds();
+    for (const f of app.replay.due(now)) app.playback.push(f, now);
+    const played = app.playback.sample(now);
+    app.inMotion = app.replay.next > 0 && !(app.replay.handedOut() && app.playback.caughtUp());
+    const balls = app.inMotion && played ? played : app.replay.still();
+    placeBalls(app.table.balls, balls);
+    app.drawn = balls;
+    renderer.render(app.table.scene, camera);
+    ++app.frames;
+    return;
+  }
   const settled = app.state ? app.state.state.shot_number : 0;
   const played = app.playback.sample(seconds());
   app.inMotion = app.playback.inMotion(settled);
@@ -222,11 +297,21 @@ function frame() {
   ++app.frames;
 }
 
-// Back to the lobby, from a match or a player's page alike.
+// Back to the lobby, from a match, a replay or a player's page alike.
 ui.back.onclick = () => {
   app.player = null;
-  if (app.match) watch(null);
+  if (app.match || app.replayAsk) watch(null);
   else showPlayer(null);
+};
+ui.previous.onclick = () => app.replayAsk && askReplay(app.replayAsk.match, app.replayAsk.shot - 1);
+ui.next.onclick = () => app.replayAsk && askReplay(app.replayAsk.match, app.replayAsk.shot + 1);
+ui.again.onclick = () => {
+  if (!app.replay) return;
+  app.playback.clear();
+  app.replay.again(seconds());
+};
+ui.replayLast.onclick = () => {
+  if (app.match && app.state) askReplay(app.match, app.state.state.shot_number);
 };
 app.player = new URLSearchParams(window.location.search).get('player');
 resize();
@@ -269,6 +354,16 @@ window.poolTest = {
       inMotion: app.inMotion,
       frames: app.frames,
       drawn: app.drawn.map((b) => ({ id: b[0], x: b[1], y: b[2], z: b[3], on: b[8] === 1 })),
+      replay: app.replayAsk ? {
+        match: app.replayAsk.match,
+        shot: app.replayAsk.shot,
+        found: app.replay ? true : app.replayError ? false : null,
+        shots: app.replay ? app.replay.message.shots : null,
+        error: app.replayError,
+        started: app.replay ? app.replay.next > 0 : false,
+        done: app.replay ? app.replay.handedOut() && !app.inMotion : false,
+        lines: app.replay ? replayLines(app.replay.message) : [],
+      } : null,
       lobby: app.lobby.length,
       lobbyLines: app.lobby.map((e) => ({ match: e.match, text: describeEntry(e) })),
       players: [...byPlayer(app.players)].map(([id, records]) => ({
