@@ -69,9 +69,81 @@ AdminDesk::Reply AdminDesk::answer(const std::string& request) {
     case admin::Verb::Backup:
       reply = backup(*parsed);
       break;
+    case admin::Verb::TournamentCreate:
+      reply = createTournament(*parsed);
+      break;
+    case admin::Verb::TournamentStart:
+      reply = startTournament(*parsed);
+      break;
+    case admin::Verb::TournamentCancel:
+      reply = cancelTournament(*parsed);
+      break;
+    case admin::Verb::Tournaments:
+      reply = listTournaments();
+      break;
   }
   const Json doc = Json::parse(reply, nullptr, false);
   return {doc.is_object() && doc.value("ok", false), reply};
+}
+
+std::string AdminDesk::createTournament(const admin::AdminRequest& r) {
+  if (!tournaments_) return adminError("this server runs no tournaments");
+  TournamentSetup setup;
+  setup.name = r.name;
+  setup.format = r.format == "double"        ? protocol::TournamentFormat::DoubleElimination
+                 : r.format == "round-robin" ? protocol::TournamentFormat::RoundRobin
+                                             : protocol::TournamentFormat::SingleElimination;
+  const auto game = rules::gameOfNumber(r.game);
+  if (!game) return adminError("game: 8, 9, 10, 3 or 22");
+  setup.game = *game;
+  setup.race_to = r.race;
+  setup.capacity = r.entrants;
+  auto id = tournaments_->create(setup);
+  if (!id) return adminError(id.error());
+  return done({{"tournament", *id}});
+}
+
+std::string AdminDesk::startTournament(const admin::AdminRequest& r) {
+  if (!tournaments_) return adminError("this server runs no tournaments");
+  if (auto started = tournaments_->start(r.tournament); !started) {
+    return adminError(started.error());
+  }
+  return done({{"tournament", r.tournament}, {"started", true}});
+}
+
+std::string AdminDesk::cancelTournament(const admin::AdminRequest& r) {
+  if (!tournaments_) return adminError("this server runs no tournaments");
+  auto in_play = tournaments_->cancel(r.tournament);
+  if (!in_play) return adminError(in_play.error());
+  return done({{"tournament", r.tournament}, {"cancelled", true}, {"matches_go_on", *in_play}});
+}
+
+std::string AdminDesk::listTournaments() const {
+  Json list = Json::array();
+  if (tournaments_) {
+    for (const auto& t : tournaments_->views()) {
+      Json entrants = Json::array();
+      for (const auto& e : t.entrants) {
+        entrants.push_back({{"name", e.name}, {"seed", e.seed}, {"place", e.place}});
+      }
+      int decided = 0;
+      for (const auto& m : t.matches) decided += m.state == 3 ? 1 : 0;
+      list.push_back({{"tournament", t.tournament},
+                      {"name", t.name},
+                      {"format", protocol::toString(t.format)},
+                      {"game", rules::toString(t.game)},
+                      {"race_to", t.race_to},
+                      {"phase", protocol::toString(t.phase)},
+                      {"capacity", t.capacity},
+                      {"entrants", entrants},
+                      {"matches", t.matches.size()},
+                      {"decided", decided},
+                      {"champion", t.champion >= 0
+                                       ? Json(t.entrants[static_cast<std::size_t>(t.champion)].name)
+                                       : Json(nullptr)}});
+    }
+  }
+  return done({{"tournaments", list}});
 }
 
 std::string AdminDesk::status() const {

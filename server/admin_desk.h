@@ -1,4 +1,5 @@
-// The operator's orders carried out on a running server: list, close, ban, backup, status.
+// The operator's orders carried out on a running server: list, close, ban, backup, status,
+// tournaments.
 #pragma once
 
 #include <chrono>
@@ -8,6 +9,7 @@
 #include "server/match/match_registry.h"
 #include "server/server_counters.h"
 #include "server/store/match_store.h"
+#include "server/tournament_desk.h"
 
 namespace pool::server {
 
@@ -22,6 +24,8 @@ class AdminDesk {
 
   /// Loads the bans kept in the store into the registry (at start).
   void loadBans();
+  /// The tournaments the tournament verbs act on (without: they are refused).
+  void tournaments(TournamentDesk* desk) { tournaments_ = desk; }
 
   /// The reply to `request` line: {"ok":true, ...} or {"ok":false,"error":"..."}; a request that
   /// does not parse, or names nothing that exists, changes nothing.
@@ -39,11 +43,16 @@ class AdminDesk {
   std::string unban(const admin::AdminRequest& r);
   std::string bans();
   std::string backup(const admin::AdminRequest& r);
+  std::string createTournament(const admin::AdminRequest& r);
+  std::string startTournament(const admin::AdminRequest& r);
+  std::string cancelTournament(const admin::AdminRequest& r);
+  std::string listTournaments() const;
 
   MatchRegistry& registry_;
   store::MatchStore& store_;
   const ServerCounters& counters_;
   std::string db_path_;
+  TournamentDesk* tournaments_ = nullptr;
   std::chrono::steady_clock::time_point started_;
 };
 

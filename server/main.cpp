@@ -165,6 +165,7 @@ int serve(const pool::server::ServerConfig& config,
   }
   AdminDesk desk(registry, store, loop.counters(), db_path);
   desk.loadBans();
+  desk.tournaments(&loop.tournaments());
   if (listener) loop.admin(listener->get(), &desk);
   spdlog::info(
       "server {} on domain {}: {} free tables opened, {} resumed, {} Hz{}, db {}, admin {}",

@@ -20,8 +20,10 @@ ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry,
       limits_(serverLimits(registry.table().spec)),
       store_(store),
       players_(transport, registry.serverId()),
+      tournaments_(registry, store),
       epoch_(std::chrono::steady_clock::now()) {
   if (store_) history_.emplace(*store_, registry.serverId());
+  tournaments_.restore();
 }
 
 double ServerLoop::now() const {
@@ -64,6 +66,7 @@ void ServerLoop::step(double now) {
   answerHistory(now);
   stepReplay(now);
   publishFrames(now);
+  stepTournaments(now);  // before the sweep: a decided match is read before it may go
   registry_.expireAway(now, config_.grace);
   for (const auto& [match, answer] : registry_.tickClocks(now)) {
     if (!answer.accepted()) {
@@ -254,7 +257,10 @@ void ServerLoop::answerJoin(const JoinCommand& command, const std::string& sende
     return;
   }
   if (!withinSenderLimit(sender, writer, command, now)) return;
-  const JoinAnswer answer = registry_.join(command);
+  // An entry names a tournament in the match field; everything else goes to the matches.
+  const JoinAnswer answer = command.action == JoinAction::Enter
+                                ? tournaments_.enter(command, sender)
+                                : registry_.join(command);
   ++(answer.accepted() ? counters_.joins_accepted : counters_.joins_refused);
   const auto line = [&] {
     return fmt::format("join {} {} by {} ({}): {} {}", toString(command.action),
@@ -397,6 +403,13 @@ void ServerLoop::publishResult(const std::string& match, const CommandAnswer& an
   // writer would otherwise hold one instance per made-up key for good.
   const bool keep = ourSeat(match, answer.seat);
   warnIfFailed(transport_.publish(result, keep), "shot result");
+}
+
+void ServerLoop::stepTournaments(double now) {
+  tournaments_.step(now);
+  for (const auto& view : tournaments_.takeChanged()) {
+    warnIfFailed(transport_.publish(view), "tournament");
+  }
 }
 
 void ServerLoop::answerHistory(double now) {

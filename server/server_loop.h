@@ -28,6 +28,7 @@
 #include "server/server_config.h"
 #include "server/server_counters.h"
 #include "server/store/match_store.h"
+#include "server/tournament_desk.h"
 
 namespace pool::server {
 
@@ -55,6 +56,9 @@ class ServerLoop {
     admin_ = listener;
     desk_ = desk;
   }
+
+  /// The tournaments this server runs (restored from the store when the loop is made).
+  TournamentDesk& tournaments() { return tournaments_; }
 
   /// What the loop has counted so far.
   const ServerCounters& counters() const { return counters_; }
@@ -130,6 +134,8 @@ class ServerLoop {
   void stepReplay(double now);
   /// Answers the requests for stored shots (history_desk.h); without a store, drops them.
   void answerHistory(double now);
+  /// Runs the tournaments (their results, their next matches) and publishes those that changed.
+  void stepTournaments(double now);
   void storeChanges(const std::vector<std::string>& closed);
   /// Sends a match's last lobby entry again, saying it is closed: a client that reads the entry
   /// and its disposal in one take sees only the entry (DDS sends no separate notice then).
@@ -148,6 +154,7 @@ class ServerLoop {
   store::MatchStore* store_;
   PlayerPublisher players_;             ///< the players' records (PlayerStats)
   std::optional<HistoryDesk> history_;  ///< answers history requests (with a store only)
+  TournamentDesk tournaments_;          ///< the tournaments, their matches opened in registry_
   MatchReplay* replay_ = nullptr;
   bool replay_reported_ = false;
   bool replay_started_ = false;  ///< a spectator has been seen: the replay runs

@@ -61,6 +61,10 @@ const client::PlayerBook& MatchSession::players() const {
   return clients_.front()->players();
 }
 
+const std::map<std::string, protocol::TournamentView>& MatchSession::tournaments() const {
+  return clients_.front()->tournaments();
+}
+
 void MatchSession::note(std::string text, bool problem) {
   notes_.push_back({std::move(text), problem});
 }

@@ -82,6 +82,8 @@ class MatchSession {
   const client::Lobby& lobby() const;
   /// The players' ratings and statistics received (the lobby's Players table).
   const client::PlayerBook& players() const;
+  /// The tournaments received (their brackets), by id.
+  const std::map<std::string, protocol::TournamentView>& tournaments() const;
   const std::string& match() const { return match_; }
   /// The latest state of the match followed, if any.
   const client::MatchView* view() const;

@@ -11,6 +11,7 @@
 
 #include "client/bot/ai/bot_level.h"
 #include "client/bot/bot_player.h"
+#include "client/bot/tournament_entrant.h"
 #include "client/net/game_client.h"
 #include "core/check.h"
 #include "core/result.h"
@@ -33,6 +34,7 @@ struct BotProgramConfig {
   std::string log_level = "info";
   double timeout = 0.0;  // s; 0: none
   pool::bot::BotConfig bot;
+  std::string tournament;  // a tournament to enter and play through
   // How to play a table the bot opens (the first player at a table chooses); unset: the server's.
   std::string game;  ///< empty: the server's
   int race = 1;
@@ -44,8 +46,12 @@ struct BotProgramConfig {
 /// Every flag of pool-bot, each bound to its field of `c`.
 void addBotFlags(CLI::App& app, BotProgramConfig& c) {
   app.add_option("--domain", c.domain, "DDS domain id")->check(CLI::Range(0, 232));
-  app.add_option("--match", c.bot.match,
-                 "match id to sit in (default: the lowest-numbered with a free seat)");
+  auto* match = app.add_option(
+      "--match", c.bot.match, "match id to sit in (default: the lowest-numbered with a free seat)");
+  app.add_option("--tournament", c.tournament,
+                 "enter this tournament (its id, e.g. srv-t1) and play each match it gives the "
+                 "bot until it is over")
+      ->excludes(match);
   app.add_option("--name", c.name, "player name")->required();
   auto* level = app.add_option("--level", c.level,
                                "beginner, club, league or pro: its stroke's error and how it plans "
@@ -133,11 +139,31 @@ int run(const BotProgramConfig& c) {
       }};
   client::GameClient client(std::move(options), key);
   client.setTableSettings(settings);
-  bot::BotPlayer player(client, c.bot, saved);
   const auto start = std::chrono::steady_clock::now();
   auto now = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  if (!c.tournament.empty()) {
+    bot::TournamentEntrant entrant(client, c.bot, c.tournament);
+    spdlog::info("{} on domain {} as client {}: entering {}", c.name, c.domain, client.clientId(),
+                 c.tournament);
+    while (!entrant.done() && !g_stop) {
+      if (c.timeout > 0 && now() > c.timeout) {
+        spdlog::error("gave up after {} s in {}", c.timeout, c.tournament);
+        return 3;
+      }
+      client.wait(std::chrono::milliseconds(20));
+      entrant.step(now());
+    }
+    if (entrant.failed()) {
+      spdlog::error("{}", entrant.failure());
+      return 2;
+    }
+    if (g_stop) return 130;
+    std::cout << entrant.resultLine() << std::endl;
+    return 0;
+  }
+  bot::BotPlayer player(client, c.bot, saved);
   spdlog::info("{} on domain {} as client {}{}", c.name, c.domain, client.clientId(),
                saved ? " (rejoining " + saved->match + ")" : std::string());
   while (!player.done() && !g_stop) {

@@ -128,7 +128,10 @@ void GameClient::refollow() {
   wanted.insert(wanted.end(), observed_.begin(), observed_.end());
   for (auto it = pending_.rbegin(); it != pending_.rend(); ++it) {
     const auto& r = it->second.request;
-    if (r.action != JoinAction::Leave && r.match != protocol::kNewMatch) wanted.push_back(r.match);
+    if (r.action != JoinAction::Leave && r.action != JoinAction::Enter &&
+        r.match != protocol::kNewMatch) {
+      wanted.push_back(r.match);
+    }
   }
   std::set<std::string> follow;
   for (const auto& match : wanted) {
@@ -231,7 +234,42 @@ std::vector<ClientEvent> GameClient::poll() {
   pollFrames(out);
   pollAims(out);
   pollHistory(out);
+  pollTournaments(out);
   return out;
+}
+
+std::uint32_t GameClient::requestEnter(const std::string& tournament) {
+  return sendJoin(tournament, JoinAction::Enter, -1, 0);
+}
+
+void GameClient::pollTournaments(std::vector<ClientEvent>& out) {
+  for (auto& view : transport_->takeTournaments()) {
+    if (!view) {
+      problem(view.error());
+      continue;
+    }
+    // A tournament waits until its server is in the lobby (the lobby's entries may come later),
+    // the latest kMaxTournaments of them.
+    if (!waiting_tournaments_.count(view->tournament) &&
+        waiting_tournaments_.size() >= kMaxTournaments) {
+      waiting_tournaments_.erase(waiting_tournaments_.begin());
+    }
+    waiting_tournaments_[view->tournament] = std::move(*view);
+  }
+  for (auto it = waiting_tournaments_.begin(); it != waiting_tournaments_.end();) {
+    const protocol::TournamentView& view = it->second;
+    // Kept only for a server the lobby lists, and only so many (a flood of invented ids is no
+    // one's tournaments).
+    if (!lobby_.servers().count(view.server)) {
+      ++it;
+      continue;
+    }
+    if (tournaments_.count(view.tournament) || tournaments_.size() < kMaxTournaments) {
+      tournaments_[view.tournament] = view;
+      out.emplace_back(view);
+    }
+    it = waiting_tournaments_.erase(it);
+  }
 }
 
 void GameClient::openHistory() {

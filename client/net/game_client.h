@@ -29,6 +29,7 @@
 #include "protocol/practice_request.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
+#include "protocol/tournament_view.h"
 
 namespace pool::client {
 
@@ -37,9 +38,9 @@ namespace pool::client {
 /// GameClient::pollAims.
 /// A stored shot (protocol::HistoryShot) reaches poll() only when it answers one of this client's
 /// own recent history requests.
-using ClientEvent =
-    std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport, TableFrame,
-                 protocol::AimSample, protocol::PlayerStats, protocol::HistoryShot>;
+using ClientEvent = std::variant<LobbyEntry, MatchGone, JoinAnswer, MatchView, ShotReport,
+                                 TableFrame, protocol::AimSample, protocol::PlayerStats,
+                                 protocol::HistoryShot, protocol::TournamentView>;
 
 /// The seat this client holds in a match.
 struct SeatHolding {
@@ -91,6 +92,9 @@ class GameClient {
   /// Takes back `seat` (0 or 1; -1: the one bound to our key) of `match` held with `token`,
   /// proving with our key's signature that it is ours.
   std::uint32_t requestRejoin(const std::string& match, std::uint64_t token, int seat = -1);
+  /// Enters the tournament `tournament` under this client's name, signed with its key (the
+  /// entrant is the key).
+  std::uint32_t requestEnter(const std::string& tournament);
   /// Leaves the seat held (or stops watching `match` when no seat is held there).
   std::uint32_t requestLeave(const std::string& match);
   std::uint32_t requestRematch();
@@ -148,6 +152,12 @@ class GameClient {
   /// The players' statistics and ratings received (PlayerStats) of the server ids the lobby lists,
   /// bounded.
   const PlayerBook& players() const { return players_; }
+  /// The tournaments received, by id (the latest of each; at most kMaxTournaments, those of
+  /// server ids the lobby lists).
+  const std::map<std::string, protocol::TournamentView>& tournaments() const {
+    return tournaments_;
+  }
+  static constexpr std::size_t kMaxTournaments = 64;
   /// The matches whose states, results and frames this client receives (each travels in its own
   /// DDS partition): the one it sits in, the one it watches and those its unanswered requests
   /// name. Following changes as requests go out and answers come in.
@@ -181,6 +191,7 @@ class GameClient {
   void pollFrames(std::vector<ClientEvent>& out);
   void pollAims(std::vector<ClientEvent>& out);
   void pollHistory(std::vector<ClientEvent>& out);
+  void pollTournaments(std::vector<ClientEvent>& out);
   /// Refuses a relayed aim (its seal checked) that is not taken, with why.
   Check<> checkAim(const protocol::AimSample& aim);
   struct PendingJoin {
@@ -255,6 +266,9 @@ class GameClient {
   /// Per match, the turn and the number of the last relayed aim taken.
   std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> aims_seen_;
   std::uint64_t aim_dropped_ = 0;
+  std::map<std::string, protocol::TournamentView> tournaments_;
+  /// Tournaments whose server the lobby does not list yet, by id.
+  std::map<std::string, protocol::TournamentView> waiting_tournaments_;
   /// Our last history requests (their numbers), whose answers poll() hands out.
   std::deque<std::uint32_t> history_requests_;
   static constexpr std::size_t kHistoryRequestsKept = 64;

@@ -6,6 +6,7 @@
 #include "client/app/lobby_line.h"
 #include "client/app/player_columns.h"
 #include "client/app/spoken.h"
+#include "client/app/tournament_lines.h"
 #include "client/bot/ai/bot_level.h"
 
 namespace pool::ui {
@@ -58,6 +59,34 @@ void drawPlayers(const client::PlayerBook& players) {
   ImGui::EndTable();
 }
 
+/// The tournaments, each a tree of its entrants and its bracket (app::tournament_lines); a match
+/// in play has a Watch button.
+void drawTournaments(const std::map<std::string, protocol::TournamentView>& tournaments,
+                     bool joining, std::optional<LobbyChoice>& choice) {
+  if (tournaments.empty()) return;
+  if (!ImGui::CollapsingHeader("Tournaments", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (const auto& [id, t] : tournaments) {
+    ImGui::PushID(id.c_str());
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::TreeNode("tournament", "%s", app::tournamentLine(t).c_str())) {
+      for (const std::string& line : app::entrantLines(t)) ImGui::BulletText("%s", line.c_str());
+      for (const app::BracketLine& line : app::bracketLines(t)) {
+        ImGui::TextUnformatted(line.text.c_str());
+        if (line.in_play && !joining) {
+          ImGui::SameLine();
+          ImGui::PushID(line.match.c_str());
+          if (ImGui::SmallButton("Watch")) {
+            choice = LobbyChoice{LobbyChoice::Kind::Spectate, line.match};
+          }
+          ImGui::PopID();
+        }
+      }
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+}
+
 }  // namespace
 
 protocol::MatchSettings TableOptions::settings() const {
@@ -73,8 +102,9 @@ protocol::MatchSettings TableOptions::settings() const {
   return s;
 }
 
-std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, const client::PlayerBook& players,
-                                     bool joining, bool hotseat, TableOptions& options) {
+std::optional<LobbyChoice> drawLobby(
+    const client::Lobby& lobby, const std::map<std::string, protocol::TournamentView>& tournaments,
+    const client::PlayerBook& players, bool joining, bool hotseat, TableOptions& options) {
   std::optional<LobbyChoice> choice;
   const ImGuiViewport* screen = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(screen->WorkSize.x * 0.5f, screen->WorkSize.y * 0.5f),
@@ -146,6 +176,7 @@ std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, const client::P
     }
     ImGui::EndTable();
   }
+  drawTournaments(tournaments, joining, choice);
   drawPlayers(players);
   ImGui::End();
   return choice;

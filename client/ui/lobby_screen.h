@@ -1,12 +1,14 @@
 // The lobby screen (Dear ImGui): every open match of every server, to join, start or watch.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 
 #include "client/net/lobby.h"
 #include "client/net/player_book.h"
 #include "protocol/match_settings.h"
+#include "protocol/tournament_view.h"
 
 namespace pool::ui {
 
@@ -38,8 +40,10 @@ struct TableOptions {
 /// Draws the lobby for this frame; `joining` greys the buttons while answers are pending. The
 /// options of a fresh table are edited in `options`; "Practice" sets its `practice` and plays at a
 /// new table, "New game" clears it.
-/// Below the matches, every player's rating and statistics per game (`players`).
-std::optional<LobbyChoice> drawLobby(const client::Lobby& lobby, const client::PlayerBook& players,
-                                     bool joining, bool hotseat, TableOptions& options);
+/// Below the matches, the tournaments and their brackets (a match in play can be watched), then
+/// every player's rating and statistics per game (`players`).
+std::optional<LobbyChoice> drawLobby(
+    const client::Lobby& lobby, const std::map<std::string, protocol::TournamentView>& tournaments,
+    const client::PlayerBook& players, bool joining, bool hotseat, TableOptions& options);
 
 }  // namespace pool::ui

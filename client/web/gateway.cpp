@@ -31,6 +31,17 @@ const Message& Gateway::lobbyMessage() {
   return lobby_;
 }
 
+const Message& Gateway::tournamentsMessage() {
+  if (!tournaments_message_ || tournaments_stale_) {
+    std::vector<const protocol::TournamentView*> list;
+    for (const auto& [id, view] : client_.tournaments()) list.push_back(&view);
+    tournaments_message_ = share(tournamentsJson(list));
+    tournaments_stale_ = false;
+    ++stats_.messages;
+  }
+  return tournaments_message_;
+}
+
 const Message& Gateway::playersMessage() {
   if (!players_ || players_stale_) {
     players_ = share(playersJson(client_.players().fairShare(kPagePlayers), kPagePlayers));
@@ -44,6 +55,7 @@ void Gateway::attach(std::uint64_t browser, Sink sink) {
   browsers_[browser] = Browser{std::move(sink), {}};
   sendTo(browser, lobbyMessage());
   if (client_.players().size() > 0) sendTo(browser, playersMessage());
+  if (!client_.tournaments().empty()) sendTo(browser, tournamentsMessage());
   dropSlow();
 }
 
@@ -216,6 +228,12 @@ void Gateway::step(double now) {
     lobby_sent_at_ = now;
     sendLobby();
   }
+  if (tournaments_changed_ && now - tournaments_sent_at_ >= kLobbyEvery) {
+    tournaments_sent_at_ = now;
+    tournaments_changed_ = false;
+    const Message message = tournamentsMessage();
+    for (const auto& [id, browser] : browsers_) sendTo(id, message);
+  }
   if (players_changed_ && now - players_sent_at_ >= kLobbyEvery) {
     players_sent_at_ = now;
     players_changed_ = false;
@@ -265,6 +283,8 @@ void Gateway::handle(const client::ClientEvent& event) {
     fanOut(report->match, message);
   } else if (std::holds_alternative<protocol::PlayerStats>(event)) {
     players_changed_ = players_stale_ = true;
+  } else if (std::holds_alternative<protocol::TournamentView>(event)) {
+    tournaments_changed_ = tournaments_stale_ = true;
   } else if (const auto* shot = std::get_if<protocol::HistoryShot>(&event)) {
     answerReplay(*shot);
   } else if (const auto* frame = std::get_if<client::TableFrame>(&event)) {

@@ -102,6 +102,9 @@ class Gateway {
   void sendLobby();
   /// The lobby message, made again when an entry changed since.
   const Message& lobbyMessage();
+  /// The tournaments message (every tournament the client holds: at most 64), made again when
+  /// one changed.
+  const Message& tournamentsMessage();
   /// The players message (kPagePlayers records shared out among the server ids, each one's best
   /// rated first), made again when one changed.
   const Message& playersMessage();
@@ -134,6 +137,10 @@ class Gateway {
   bool lobby_stale_ = true;    ///< lobby_ must be made again
   bool lobby_changed_ = true;  ///< the browsers have not been sent the lobby as it is
   double lobby_sent_at_ = -1e9;
+  Message tournaments_message_;
+  bool tournaments_stale_ = true;
+  bool tournaments_changed_ = false;
+  double tournaments_sent_at_ = -1e9;
   Message players_;
   bool players_stale_ = true;
   bool players_changed_ = false;

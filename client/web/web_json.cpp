@@ -63,6 +63,45 @@ std::string ballsArray(const std::vector<physics::Ball>& balls) {
   return out;
 }
 
+std::string tournamentsJson(const std::vector<const protocol::TournamentView*>& tournaments) {
+  json list = json::array();
+  for (const auto* t : tournaments) {
+    json entrants = json::array();
+    for (const auto& e : t->entrants) {
+      entrants.push_back({{"name", e.name},
+                          {"rating", e.rating},
+                          {"seed", e.seed},
+                          {"place", e.place},
+                          {"withdrawn", e.withdrawn}});
+    }
+    json matches = json::array();
+    for (const auto& m : t->matches) {
+      matches.push_back({{"round", m.round},
+                         {"a", m.a},
+                         {"b", m.b},
+                         {"state", m.state},
+                         {"winner", m.winner},
+                         {"racks_a", m.racks_a},
+                         {"racks_b", m.racks_b},
+                         {"forfeit", m.forfeit},
+                         {"match", m.match}});
+    }
+    list.push_back({{"tournament", t->tournament},
+                    {"server", t->server},
+                    {"name", t->name},
+                    {"format", protocol::toString(t->format)},
+                    {"game", rules::toString(t->game)},
+                    {"race_to", t->race_to},
+                    {"phase", protocol::toString(t->phase)},
+                    {"capacity", t->capacity},
+                    {"entrants", entrants},
+                    {"matches", matches},
+                    {"champion", t->champion}});
+  }
+  return json{{"type", "tournaments"}, {"tournaments", list}}.dump(-1, ' ', false,
+                                                                   json::error_handler_t::replace);
+}
+
 bool validTableName(const std::string& name) {
   if (name.empty() || name.size() > 32) return false;
   for (char c : name) {

@@ -9,6 +9,7 @@
 #include "client/net/match_types.h"
 #include "core/result.h"
 #include "protocol/player_stats.h"
+#include "protocol/tournament_view.h"
 
 namespace pool::web {
 
@@ -33,6 +34,12 @@ std::string lobbyJson(const std::vector<const std::string*>& entries);
 /// high_run}, ...]}, at most `limit` of them in the order given.
 std::string playersJson(const std::vector<const protocol::PlayerStats*>& players,
                         std::size_t limit);
+
+/// The tournaments for the page's brackets: {"type":"tournaments","tournaments":[{tournament,
+/// server, name, format, game, race_to, phase, capacity, entrants: [{name, rating, seed, place,
+/// withdrawn}], matches: [{round, a, b, state (0 waiting, 1 ready, 2 in play, 3 decided), winner,
+/// racks_a, racks_b, forfeit, match}], champion}, ...]} (entrants and matches by index; -1: none).
+std::string tournamentsJson(const std::vector<const protocol::TournamentView*>& tournaments);
 
 /// {"type":"table","name":...,"length","width","cushion_width","rail_width","nose_height",
 /// "ball_radius","noses":[{a,b,normal}],"holes":[{name,centre,radius}],"lamps":{...},

@@ -17,6 +17,7 @@
 #include "net/reader.h"
 #include "net/server_seal.h"
 #include "net/topic.h"
+#include "net/tournament_convert.h"
 #include "net/waitset.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
@@ -68,6 +69,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         check(server_check ? std::move(server_check) : ServerCheck(protocol::checkSeal)),
         match_info(participant, match_info_topic, qos::lobby()),
         player_stats(participant, player_stats_topic, qos::lobby()),
+        tournaments(participant, tournament_topic, qos::lobby()),
         join_replies(participant, join_reply_topic, qos::joinReply()),
         stray_results(participant, result_topic, deeper(qos::strayResult())),
         join_requests(participant, join_request_topic, qos::joinRequest()),
@@ -77,6 +79,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
         waitset(participant) {
     waitset.attachData(match_info, kLobby);
     waitset.attachData(player_stats, kLobby);
+    waitset.attachData(tournaments, kLobby);
     waitset.attachData(join_replies, kReplies);
     waitset.attachData(stray_results, kResults);
   }
@@ -140,6 +143,7 @@ struct ClientTransport::Endpoints : ProtocolTopics {
   ServerCheck check;
   Reader<pool_MatchInfo> match_info;
   Reader<pool_PlayerStats> player_stats;
+  Reader<pool_TournamentInfo> tournaments;
   Reader<pool_JoinReply> join_replies;
   /// Answers to commands naming no match or seat of the server (in the default partition).
   Reader<pool_ShotResult> stray_results;
@@ -248,6 +252,10 @@ std::vector<Result<LobbyEvent>> ClientTransport::takeLobby() {
     }
   }
   return out;
+}
+
+std::vector<Result<protocol::TournamentView>> ClientTransport::takeTournaments() {
+  return e_->readAll<protocol::TournamentView>(e_->tournaments.take());
 }
 
 std::vector<Result<protocol::PlayerStats>> ClientTransport::takePlayerStats() {

@@ -20,6 +20,7 @@
 #include "protocol/seat_request.h"
 #include "protocol/server_signature.h"
 #include "protocol/shot_request.h"
+#include "protocol/tournament_view.h"
 
 namespace pool::net {
 
@@ -70,6 +71,8 @@ class ClientTransport {
   /// match id that names no partition, or past kMaxFollowed, is not followed: the first such
   /// reason is returned (empty: all followed).
   std::string follow(const std::set<std::string>& matches);
+  /// Tournaments since the last take (TournamentInfo), each checked as the lobby is.
+  std::vector<Result<protocol::TournamentView>> takeTournaments();
   /// Players' statistics and ratings since the last take (PlayerStats), each checked as the lobby
   /// is.
   std::vector<Result<protocol::PlayerStats>> takePlayerStats();

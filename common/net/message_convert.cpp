@@ -15,7 +15,7 @@ using namespace protocol;
 
 // The domain enums copy the IDL's enumerators in order; these catch a change on either side.
 static_assert(pool_PHASE_CLOSED == static_cast<int>(MatchPhase::Closed));
-static_assert(pool_JOIN_CONCEDE == static_cast<int>(JoinAction::Concede));
+static_assert(pool_JOIN_ENTER == static_cast<int>(JoinAction::Enter));
 static_assert(pool_JOIN_STALE_SEQUENCE == static_cast<int>(JoinOutcome::StaleSequence));
 // Every refusal reason, one by one: an earlier order of the domain enum differed from the IDL's.
 static_assert(pool_REJECT_MALFORMED == static_cast<int>(RejectReason::Malformed));
@@ -180,7 +180,7 @@ Result<JoinAnswer> fromWire(const pool_JoinReply& reply) {
   answer.request = reply.request;
   answer.server = std::string(textOf(reply.server));
   answer.match = std::string(textOf(reply.match));
-  const auto action = enumOf<JoinAction>(reply.action, pool_JOIN_CONCEDE + 1);
+  const auto action = enumOf<JoinAction>(reply.action, pool_JOIN_ENTER + 1);
   const auto outcome = enumOf<JoinOutcome>(reply.outcome, pool_JOIN_STALE_SEQUENCE + 1);
   if (!action || !outcome) return fail<JoinAnswer>("join reply", "unknown action or outcome");
   answer.action = *action;
@@ -323,7 +323,7 @@ Sample<pool_JoinRequest> toWire(const SeatRequest& fields) {
 }
 
 Result<SeatRequest> fromWire(const pool_JoinRequest& r) {
-  const auto action = enumOf<JoinAction>(r.action, pool_JOIN_CONCEDE + 1);
+  const auto action = enumOf<JoinAction>(r.action, pool_JOIN_ENTER + 1);
   if (!action) return Result<SeatRequest>::fail("action: not a known join action");
   if (!terminated(r.client) || !terminated(r.match) || !terminated(r.name)) {
     return Result<SeatRequest>::fail("client, match, name: text must fit its bound");

@@ -34,6 +34,7 @@ POOL_NET_MESSAGE(pool_CueAim, topics::kCueAim);
 POOL_NET_MESSAGE(pool_PlayerStats, topics::kPlayerStats);
 POOL_NET_MESSAGE(pool_HistoryRequest, topics::kHistoryRequest);
 POOL_NET_MESSAGE(pool_HistoryShot, topics::kHistoryShot);
+POOL_NET_MESSAGE(pool_TournamentInfo, topics::kTournamentInfo);
 
 #undef POOL_NET_MESSAGE
 

@@ -17,6 +17,7 @@ ProtocolTopics::ProtocolTopics(std::uint32_t domain)
       cue_aim_topic(participant),
       player_stats_topic(participant),
       history_request_topic(participant),
-      history_shot_topic(participant) {}
+      history_shot_topic(participant),
+      tournament_topic(participant) {}
 
 }  // namespace pool::net

@@ -10,7 +10,7 @@
 
 namespace pool::net {
 
-/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's thirteen topics.
+/// The participant on `domain` (configured by CYCLONEDDS_URI) and the protocol's fourteen topics.
 /// Endpoint sets derive from it, so their readers and writers are destroyed before the topics
 /// and the participant. Throws DdsError when DDS refuses one.
 struct ProtocolTopics {
@@ -30,6 +30,7 @@ struct ProtocolTopics {
   Topic<pool_PlayerStats> player_stats_topic;        ///< server -> all, like match_info_topic
   Topic<pool_HistoryRequest> history_request_topic;  ///< anyone -> server
   Topic<pool_HistoryShot> history_shot_topic;        ///< server -> all
+  Topic<pool_TournamentInfo> tournament_topic;       ///< server -> all, like match_info_topic
 };
 
 }  // namespace pool::net

@@ -82,4 +82,8 @@ protocol::SealedSample sealedOf(const pool_HistoryShot& sample) {
   return ofMatch(sample);
 }
 
+protocol::SealedSample sealedOf(const pool_TournamentInfo& sample) {
+  return common(sample, std::string(textOf(sample.server)), {});
+}
+
 }  // namespace pool::net

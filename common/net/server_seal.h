@@ -56,6 +56,10 @@ template <>
 constexpr protocol::PublishedKind publishedKindOf<pool_HistoryShot>() {
   return protocol::PublishedKind::HistoryShot;
 }
+template <>
+constexpr protocol::PublishedKind publishedKindOf<pool_TournamentInfo>() {
+  return protocol::PublishedKind::TournamentInfo;
+}
 
 /// What the server's signature covers: every field of `sample`, in its wire encoding, with the
 /// signature empty. Generic over the type, so fields added to a message later are covered too.
@@ -87,5 +91,6 @@ protocol::SealedSample sealedOf(const pool_TableSnapshot& sample);
 protocol::SealedSample sealedOf(const pool_CueAim& sample);
 protocol::SealedSample sealedOf(const pool_PlayerStats& sample);
 protocol::SealedSample sealedOf(const pool_HistoryShot& sample);
+protocol::SealedSample sealedOf(const pool_TournamentInfo& sample);
 
 }  // namespace pool::net

@@ -21,6 +21,7 @@
 #include "net/server_seal.h"
 #include "net/shot_command_check.h"
 #include "net/topic.h"
+#include "net/tournament_convert.h"
 #include "net/waitset.h"
 #include "net/wire_fields.h"
 #include "net/writer.h"
@@ -70,6 +71,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
         aim_commands(participant, aim_command_topic, qos::aimReader()),
         history_requests(participant, history_request_topic, qos::command()),
         history_shots(participant, history_shot_topic, qos::history()),
+        tournaments(participant, tournament_topic, qos::lobby()),
         waitset(participant) {
     waitset.attachData(join_requests, kJoinTag);
     waitset.attachData(commands, kCommandTag);
@@ -105,6 +107,7 @@ struct ServerTransport::Endpoints : ProtocolTopics {
   Reader<pool_AimCommand> aim_commands;
   Reader<pool_HistoryRequest> history_requests;
   Writer<pool_HistoryShot> history_shots;
+  Writer<pool_TournamentInfo> tournaments;
   WaitSet waitset;
   MatchScopes<Publisher, MatchWriters> matches;  ///< per-match writers, each in its partition
   std::unordered_set<std::string> replied;       ///< clients whose last reply is kept
@@ -188,6 +191,10 @@ std::vector<IncomingHistory> ServerTransport::takeHistory() {
         fromWire(*sample), e_->senderOf(e_->history_requests, sample.meta().publication_handle)});
   }
   return out;
+}
+
+std::string ServerTransport::publish(const protocol::TournamentView& tournament) {
+  return e_->sealAndWrite(e_->tournaments, *toWire(tournament));
 }
 
 std::string ServerTransport::publish(const protocol::HistoryShot& shot) {

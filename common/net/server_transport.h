@@ -21,6 +21,7 @@
 #include "protocol/player_stats.h"
 #include "protocol/seat_request.h"
 #include "protocol/shot_request.h"
+#include "protocol/tournament_view.h"
 
 namespace pool::net {
 
@@ -97,6 +98,8 @@ class ServerTransport {
   /// writer would otherwise hold one instance per key for good).
   std::string publish(const protocol::ShotReport& report, bool keep = true);
   std::string publish(const protocol::TableFrame& frame);
+  /// A tournament and its bracket (kept for late readers, one sample per tournament).
+  std::string publish(const protocol::TournamentView& tournament);
   /// One stored shot, the answer to a history request (not kept for late readers).
   std::string publish(const protocol::HistoryShot& shot);
   /// Relays an aim the server accepted as a CueAim (best effort; token and signature dropped).

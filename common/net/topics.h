@@ -18,5 +18,6 @@ inline constexpr std::string_view kCueAim = "pool/CueAim";                    //
 inline constexpr std::string_view kPlayerStats = "pool/PlayerStats";  ///< key server, player, game
 inline constexpr std::string_view kHistoryRequest = "pool/HistoryRequest";  ///< no key
 inline constexpr std::string_view kHistoryShot = "pool/HistoryShot";        ///< no key
+inline constexpr std::string_view kTournamentInfo = "pool/TournamentInfo";  ///< key tournament
 
 }  // namespace pool::net::topics

@@ -35,6 +35,8 @@ const char* toString(JoinAction action) {
       return "rematch";
     case JoinAction::Concede:
       return "concede";
+    case JoinAction::Enter:
+      return "enter";
   }
   return "unknown";
 }

@@ -9,7 +9,7 @@ namespace pool::protocol {
 enum class MatchPhase : std::uint8_t { Lobby, Break, Open, Assigned, Over, Closed };
 
 /// What a JoinRequest asks for (JoinAction of pool.idl).
-enum class JoinAction : std::uint8_t { Seat, Spectate, Rejoin, Leave, Rematch, Concede };
+enum class JoinAction : std::uint8_t { Seat, Spectate, Rejoin, Leave, Rematch, Concede, Enter };
 
 /// The outcome of a JoinRequest (JoinOutcome of pool.idl).
 enum class JoinOutcome : std::uint8_t {

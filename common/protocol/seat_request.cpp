@@ -20,6 +20,7 @@ bool changesSeat(const SeatRequest& r) {
     case JoinAction::Rejoin:
     case JoinAction::Rematch:
     case JoinAction::Concede:
+    case JoinAction::Enter:  // the entrant is the key that signs
       return true;
   }
   return true;

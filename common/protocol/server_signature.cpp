@@ -38,6 +38,8 @@ const char* toString(PublishedKind kind) {
       return "PlayerStats";
     case PublishedKind::HistoryShot:
       return "HistoryShot";
+    case PublishedKind::TournamentInfo:
+      return "TournamentInfo";
   }
   return "?";
 }

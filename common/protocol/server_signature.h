@@ -23,9 +23,10 @@ enum class PublishedKind : std::uint8_t {
   MatchState = 3,
   ShotResult = 4,
   TableSnapshot = 5,
-  CueAim = 6,       ///< the shooter's aim, relayed
-  PlayerStats = 7,  ///< a player's statistics and rating (since protocol version 9)
-  HistoryShot = 8,  ///< a stored shot, for a replay (since protocol version 10)
+  CueAim = 6,          ///< the shooter's aim, relayed
+  PlayerStats = 7,     ///< a player's statistics and rating (since protocol version 9)
+  HistoryShot = 8,     ///< a stored shot, for a replay (since protocol version 10)
+  TournamentInfo = 9,  ///< a tournament and its bracket (since protocol version 10)
 };
 
 const char* toString(PublishedKind kind);

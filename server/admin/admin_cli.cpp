@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <filesystem>
 #include <iostream>
 #include <numeric>
@@ -84,8 +85,23 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
   admin
       ->add_option("verb", words,
                    "status | list | close MATCH REASON... | ban KEY REASON... | unban KEY | "
-                   "bans | backup PATH")
+                   "bans | backup PATH | tournament-create NAME... | tournament-start ID | "
+                   "tournament-cancel ID | tournaments")
       ->required();
+  // tournament-create's settings; the other verbs take none of them.
+  std::string format = "single";
+  int game = 8, race = 1, entrants = 8;
+  const std::array<CLI::Option*, 4> tournament_options{
+      admin->add_option("--format", format,
+                        "tournament-create: single | double | round-robin (default single)"),
+      admin->add_option("--game", game,
+                        "tournament-create: 8, 9, 10, 3 (three-cushion) or 22 (snooker); "
+                        "default 8"),
+      admin->add_option("--race", race, "tournament-create: each match a race to 1-15 (default 1)"),
+      admin->add_option("--entrants", entrants,
+                        "tournament-create: the entrants it takes, 3-32 (default 8); it starts "
+                        "when full or when started"),
+  };
   for (auto* sub : {status, admin}) {
     sub->fallthrough();
     sub->footer(
@@ -110,6 +126,14 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
       std::cerr << "pool-server admin " << verb << ": usage: " << usage << "\n";
       return false;
     };
+    if (verb != "tournament-create") {
+      for (const auto* option : tournament_options) {
+        if (option->count() == 0) continue;
+        std::cerr << "pool-server admin " << verb << ": " << option->get_name()
+                  << " is for tournament-create\n";
+        return 2;
+      }
+    }
     if (verb == "close") {
       if (!need(2, "close MATCH REASON...")) return 2;
       doc["match"] = rest[0];
@@ -126,6 +150,26 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
       // A relative path is the operator's, not the server's working directory.
       std::error_code ec;
       doc["path"] = std::filesystem::absolute(rest[0], ec).lexically_normal().string();
+    } else if (verb == "tournament-create") {
+      if (!need(1,
+                "tournament-create NAME... [--format single|double|round-robin] [--game N] "
+                "[--race N] [--entrants N]")) {
+        return 2;
+      }
+      doc["name"] = joined(rest);
+      doc["format"] = format;
+      doc["game"] = game;
+      doc["race"] = race;
+      doc["entrants"] = entrants;
+    } else if (verb == "tournament-start" || verb == "tournament-cancel") {
+      if (!need(1, verb == "tournament-start" ? "tournament-start ID" : "tournament-cancel ID")) {
+        return 2;
+      }
+      if (rest.size() > 1) {
+        std::cerr << "pool-server admin " << verb << ": takes one tournament id\n";
+        return 2;
+      }
+      doc["tournament"] = rest[0];
     } else if (rest.size() > 0) {
       std::cerr << "pool-server admin " << verb << ": takes no arguments\n";
       return 2;

@@ -86,6 +86,37 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
 
 // ---- Seats --------------------------------------------------------------------------------------
 
+pool::Check<> Match::reserveSeats(const std::array<std::string, 2>& players,
+                                  const std::array<std::vector<std::uint8_t>, 2>& keys,
+                                  const std::array<std::uint64_t, 2>& tokens,
+                                  const protocol::MatchSettings& settings, double now) {
+  if (started_ || seats_[0].taken() || seats_[1].taken()) {
+    return pool::Check<>::refuse("taken", "the table has started or a seat is taken");
+  }
+  if (settings != settings_) {
+    auto runner = runnerFor(settings.game);
+    if (!runner) {
+      return pool::Check<>::refuse("game", std::string("this server cannot play ") +
+                                               rules::toString(settings.game) + ": " +
+                                               runner.error());
+    }
+    runner_ = *runner;
+    settings_ = settings;
+    balls_ = layout(layouts_ - 1, settings_.game);
+  }
+  for (std::size_t s = 0; s < 2; ++s) {
+    Seat& seat = seats_[s];
+    seat = Seat{};
+    seat.player = players[s];
+    seat.token = tokens[s];
+    seat.public_key = keys[s];
+    seat.away_since = now;
+  }
+  touch();
+  startRack(0);
+  return pool::Check<>::pass();
+}
+
 JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::string& client,
                            std::uint64_t token, const std::vector<std::uint8_t>& public_key,
                            const std::optional<protocol::MatchSettings>& settings) {
@@ -94,6 +125,17 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
     if (mine.taken() && mine.client == client && mine.public_key == public_key &&
         (seat == s || seat == -1)) {
       return seated(id_, s, mine.token);  // a repeated request: same seat, same token
+    }
+  }
+  // A seat bound to this key whose player is away is theirs again (the key signed the request).
+  for (int s = 0; s < 2; ++s) {
+    Seat& mine = seats_[static_cast<std::size_t>(s)];
+    if (mine.taken() && mine.away_since && mine.public_key == public_key &&
+        (seat == s || seat == -1)) {
+      mine.client = client;
+      mine.away_since.reset();
+      touch();
+      return seated(id_, s, mine.token);
     }
   }
   if (flight_) return JoinAnswer::refuse(JoinOutcome::NotAllowed, "a shot is in motion");
@@ -173,6 +215,7 @@ JoinAnswer Match::seatRequest(const protocol::SeatRequest& r) {
       break;
     case JoinAction::Seat:
     case JoinAction::Spectate:
+    case JoinAction::Enter:
       break;
   }
   answer.last_seq = r.seq;

@@ -53,12 +53,23 @@ class Match {
   /// Seats `player` (client `client`) in `seat` (0, 1, or -1 for the first free one) with
   /// `token` (non-zero), binding `public_key` to it: the seat's commands and requests must be
   /// signed with it (the registry checked the seat request's signature) and carry the token.
-  /// The client already in that seat with that key gets it back unchanged (a repeated request).
+  /// The client already in that seat with that key gets it back unchanged (a repeated request);
+  /// a seat bound to that key whose player is away (a tournament's reserved seat, a player who
+  /// dropped out) is given back to `client`, present again.
   /// Starts a rack when both seats are taken and no game is in play. `settings` (checked by the
   /// registry) apply when this player is the first to sit at a table that has not started.
   JoinAnswer takeSeat(int seat, const std::string& player, const std::string& client,
                       std::uint64_t token, const std::vector<std::uint8_t>& public_key,
                       const std::optional<protocol::MatchSettings>& settings = {});
+  /// Seats the two players a tournament drew for this table that has not started (names, keys and
+  /// tokens; seat 0 is the bracket's entrant a), each away from `now` until they take their seat
+  /// (takeSeat with that key gives it back), and starts the first rack with `settings` (checked):
+  /// a player who does not come within the grace period forfeits, as one who left. Refused when
+  /// the table has started or a seat is taken, or the game cannot be played here.
+  Check<> reserveSeats(const std::array<std::string, 2>& players,
+                       const std::array<std::vector<std::uint8_t>, 2>& keys,
+                       const std::array<std::uint64_t, 2>& tokens,
+                       const protocol::MatchSettings& settings, double now);
   /// A request that changes a held seat (Rejoin, Leave, Rematch, Concede), checked in this order:
   /// the seat (the one named, or the one bound to the request's key) → the holding's token (public,
   /// but a request signed for an earlier holding of the seat never matches it) → unsigned

@@ -1,5 +1,6 @@
 // Schema version 1 (matches, seats, shots), 2 (seats' public keys), 3 (banned keys), 4 (the
-// server's own key), 5 (match settings), 6 (rack generators) and 7 (ratings), and the refusals.
+// server's own key), 5 (match settings), 6 (rack generators), 7 (ratings), 8 (statistics) and 9
+// (tournaments), and the refusals.
 #include "server/store/schema.h"
 
 #include <array>
@@ -94,8 +95,22 @@ CREATE TABLE stat_innings(
   PRIMARY KEY(match, seat));
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{
-    kVersion1, kVersion2, kVersion3, kVersion4, kVersion5, kVersion6, kVersion7, kVersion8};
+// Tournaments: each one the server runs, by its id and number (the counter of tournaments
+// opened), its settings (format, game, race, capacity), its phase, the entries taken before it
+// starts (JSON), the tournament itself once started (pool_tournament's JSON; empty before) and
+// the server match id of each tournament match index (a JSON array of strings, "" for none).
+// The texts are opaque to the store (tournament_book.h).
+constexpr const char* kVersion9 = R"sql(
+CREATE TABLE tournaments(
+  id TEXT PRIMARY KEY, number INTEGER NOT NULL, name TEXT NOT NULL, format INTEGER NOT NULL,
+  game INTEGER NOT NULL, race_to INTEGER NOT NULL, capacity INTEGER NOT NULL,
+  phase INTEGER NOT NULL, entries TEXT NOT NULL, state TEXT NOT NULL, match_ids TEXT NOT NULL,
+  created INTEGER NOT NULL);
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3,
+                                                         kVersion4, kVersion5, kVersion6,
+                                                         kVersion7, kVersion8, kVersion9};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

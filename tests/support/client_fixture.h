@@ -51,6 +51,7 @@ enum Domain : std::uint32_t {
   kWindowThreeCushion = 131,
   kSnookerFrame = 132,
   kWindowSnooker = 133,
+  kTournament = 134,
   kWebPage = 40,  ///< 40–59: the web spectator's tests and benchmark
   kWebGateway = 41,
   kWebSlowBrowser = 43,  ///< (42: web_bench)

@@ -6,6 +6,7 @@ import { buildTable, placeBalls, fitCamera } from './table.js';
 import { describe, describeEntry } from './hud.js';
 import { byPlayer, playerButtonText, playerLines } from './players.js';
 import { Replay, replayLink, replayLines } from './replay.js';
+import { bracketLines, entrantLines, tournamentButtonText } from './tournaments.js';
 
 const canvas = document.getElementById('view');
 const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
@@ -17,6 +18,9 @@ const ui = {
   lobby: document.getElementById('lobby'),
   players: document.getElementById('players'),
   playersTitle: document.getElementById('players-title'),
+  tournaments: document.getElementById('tournaments'),
+  tournamentsTitle: document.getElementById('tournaments-title'),
+  bracket: document.getElementById('bracket'),
   title: document.getElementById('title'),
   facts: document.getElementById('facts'),
   back: document.getElementById('back'),
@@ -34,6 +38,8 @@ const app = {
   lobby: [],
   players: [], // the players' records (the gateway's players message)
   player: null, // the player whose page is open: "<server>/<key hex>"
+  tournaments: [], // the gateway's tournaments message
+  tournament: null, // the tournament whose bracket is open
   match: null, // the match watched
   table: null, // {scene, balls, outer}
   tableName: '',
@@ -86,6 +92,16 @@ function askReplay(match, shot) {
   render();
 }
 
+/** Opens a tournament's bracket page, or closes it (null). */
+function showTournament(id) {
+  app.tournament = id;
+  const url = new URL(window.location.href);
+  if (id) url.searchParams.set('tournament', id);
+  else url.searchParams.delete('tournament');
+  window.history.replaceState(null, '', url);
+  render();
+}
+
 /** Opens a player's page ("<server>/<key hex>"), or closes it (null). */
 function showPlayer(id) {
   app.player = id;
@@ -130,6 +146,9 @@ function receive(m) {
     }
     case 'players':
       app.players = m.players;
+      break;
+    case 'tournaments':
+      app.tournaments = m.tournaments;
       break;
     case 'table':
       app.table = buildTable(m);
@@ -181,6 +200,10 @@ function lobbyEntry(match) {
 function render() {
   ui.lobby.replaceChildren();
   ui.players.replaceChildren();
+  ui.tournaments.replaceChildren();
+  ui.bracket.replaceChildren();
+  ui.bracket.hidden = true;
+  ui.tournaments.hidden = ui.tournamentsTitle.hidden = true;
   const replaying = !!app.replayAsk;
   ui.replayControls.hidden = !replaying;
   ui.replayLast.hidden = !(app.match && app.state && app.state.state.shot_number >= 1);
@@ -199,6 +222,29 @@ function render() {
     if (m && m.scenario) {
       ui.scenario.href = `data:application/json;charset=utf-8,${encodeURIComponent(m.scenario)}`;
       ui.scenario.download = `${match}-shot-${shot}.json`;
+    }
+    return;
+  }
+  if (!app.match && app.tournament) {
+    ui.lobby.hidden = ui.players.hidden = ui.playersTitle.hidden = true;
+    ui.back.hidden = false;
+    const t = app.tournaments.find((x) => x.tournament === app.tournament);
+    ui.title.textContent = t ? t.name : `Tournament ${app.tournament}`;
+    ui.facts.replaceChildren(...(t ? [tournamentButtonText(t), ...entrantLines(t)]
+      : ['Waiting for the tournament…']).map(line));
+    if (!t) return;
+    ui.bracket.hidden = false;
+    for (const b of bracketLines(t)) {
+      const li = document.createElement('li');
+      if (b.state === 2) {
+        const button = document.createElement('button');
+        button.textContent = `Watch ${b.text}`;
+        button.onclick = () => watch(b.match);
+        li.append(button);
+      } else {
+        li.textContent = b.text;
+      }
+      ui.bracket.append(li);
     }
     return;
   }
@@ -228,6 +274,15 @@ function render() {
       button.onclick = () => watch(entry.match);
       li.append(button);
       ui.lobby.append(li);
+    }
+    ui.tournaments.hidden = ui.tournamentsTitle.hidden = !app.tournaments.length;
+    for (const t of app.tournaments) {
+      const li = document.createElement('li');
+      const button = document.createElement('button');
+      button.textContent = tournamentButtonText(t);
+      button.onclick = () => showTournament(t.tournament);
+      li.append(button);
+      ui.tournaments.append(li);
     }
     for (const [id, records] of byPlayer(app.players)) {
       const li = document.createElement('li');
@@ -301,6 +356,7 @@ function frame() {
 ui.back.onclick = () => {
   app.player = null;
   if (app.match || app.replayAsk) watch(null);
+  else if (app.tournament) showTournament(null);
   else showPlayer(null);
 };
 ui.previous.onclick = () => app.replayAsk && askReplay(app.replayAsk.match, app.replayAsk.shot - 1);
@@ -314,6 +370,7 @@ ui.replayLast.onclick = () => {
   if (app.match && app.state) askReplay(app.match, app.state.state.shot_number);
 };
 app.player = new URLSearchParams(window.location.search).get('player');
+app.tournament = new URLSearchParams(window.location.search).get('tournament');
 resize();
 connect();
 render();
@@ -364,6 +421,12 @@ window.poolTest = {
         done: app.replay ? app.replay.handedOut() && !app.inMotion : false,
         lines: app.replay ? replayLines(app.replay.message) : [],
       } : null,
+      tournaments: app.tournaments.map((t) => ({
+        id: t.tournament,
+        text: tournamentButtonText(t),
+        entrants: entrantLines(t),
+        bracket: bracketLines(t).map((b) => b.text),
+      })),
       lobby: app.lobby.length,
       lobbyLines: app.lobby.map((e) => ({ match: e.match, text: describeEntry(e) })),
       players: [...byPlayer(app.players)].map(([id, records]) => ({

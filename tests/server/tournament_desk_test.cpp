@@ -1,0 +1,175 @@
+// The server's tournaments without the network: entries (only the signing key enters, once;
+// forged, unsigned, banned, late and excess entries refused, nothing changed), the matches opened
+// with seats only the drawn keys can take, and a restart restoring the tournament from the store.
+#include <gtest/gtest.h>
+
+#include "server/match_fixture.h"
+#include "server/tournament_desk.h"
+#include "store/store_fixture.h"
+
+namespace pool::server {
+namespace {
+
+using test::keyOf;
+using test::nineFoot;
+using test::publicKeyOf;
+
+class TournamentDeskTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    options_.server_id = "srv";
+    options_.protocol_version = protocol::kProtocolVersion;
+    auto opened = store::MatchStore::open(scratch_.file("pool.db"));
+    ASSERT_TRUE(opened) << opened.error();
+    store_ = std::move(*opened);
+  }
+
+  /// An entry of `client` (its name and key) into `tournament`, signed by `signer` (default: the
+  /// client's own key; another's cannot verify, as a forger's).
+  protocol::SeatRequest entry(const std::string& client, const std::string& tournament = "srv-t1",
+                              const std::string& signer = {}) {
+    protocol::SeatRequest r;
+    r.client = client;
+    r.protocol_version = protocol::kProtocolVersion;
+    r.match = tournament;
+    r.action = protocol::JoinAction::Enter;
+    r.name = client;
+    r.seq = ++seq_;
+    protocol::signSeatRequest(r, keyOf(signer.empty() ? client : signer));
+    r.public_key = publicKeyOf(client);
+    return r;
+  }
+
+  TournamentSetup cup(int capacity = 4) {
+    TournamentSetup s;
+    s.name = "Cup";
+    s.capacity = capacity;
+    return s;
+  }
+
+  store::test::Scratch scratch_;
+  std::unique_ptr<store::MatchStore> store_;
+  RegistryOptions options_;
+  std::uint32_t seq_ = 0;
+};
+
+TEST_F(TournamentDeskTest, OnlyTheSigningKeyEntersAndOnlyOnce) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  const auto id = desk.create(cup());
+  ASSERT_TRUE(id) << id.error();
+  ASSERT_EQ(*id, "srv-t1");
+  EXPECT_TRUE(desk.enter(entry("ann"), "p1").accepted());
+  // Entering again is the same entry (a repeated request), not a second one.
+  EXPECT_TRUE(desk.enter(entry("ann"), "p1").accepted());
+  // A stranger cannot enter someone else: the request carries bob's key, signed by eve's.
+  EXPECT_EQ(desk.enter(entry("bob", "srv-t1", "eve"), "p2").outcome, JoinOutcome::BadSignature);
+  auto unsigned_entry = entry("bob");
+  unsigned_entry.signature.clear();
+  EXPECT_EQ(desk.enter(unsigned_entry, "p2").outcome, JoinOutcome::Unsigned);
+  auto old_version = entry("bob");
+  old_version.protocol_version = 9;
+  protocol::signSeatRequest(old_version, keyOf("bob"));
+  EXPECT_EQ(desk.enter(old_version, "p2").outcome, JoinOutcome::VersionMismatch);
+  EXPECT_EQ(desk.enter(entry("bob", "srv-t9"), "p2").outcome, JoinOutcome::NoSuchMatch);
+  registry.ban(publicKeyOf("bob"), "cheating");
+  EXPECT_EQ(desk.enter(entry("bob"), "p2").outcome, JoinOutcome::NotAllowed);
+  // One participant may enter two keys (keys cost nothing: a third is refused).
+  EXPECT_TRUE(desk.enter(entry("cid"), "p1").accepted());
+  const auto third = desk.enter(entry("dot"), "p1");
+  EXPECT_EQ(third.outcome, JoinOutcome::NotAllowed);
+  EXPECT_EQ(third.reason, "at most 2 entries from one participant");
+  const auto views = desk.views();
+  ASSERT_EQ(views.size(), 1u);
+  ASSERT_EQ(views[0].entrants.size(), 2u);
+  EXPECT_EQ(views[0].entrants[0].name, "ann");
+  EXPECT_EQ(views[0].entrants[1].name, "cid");
+  EXPECT_EQ(views[0].phase, protocol::TournamentPhase::Entry);
+}
+
+TEST_F(TournamentDeskTest, AFullTournamentStartsAndReservesEachSeatForItsKey) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  ASSERT_TRUE(desk.create(cup(4)));
+  EXPECT_FALSE(desk.start("srv-t1")) << "two entrants are too few";
+  for (const char* who : {"ann", "bob", "cid", "dot"}) {
+    EXPECT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted()) << who;
+  }
+  EXPECT_EQ(desk.enter(entry("eve"), "p-eve").outcome, JoinOutcome::MatchFull);
+  desk.step(10.0);
+  const auto view = desk.views().front();
+  EXPECT_EQ(view.phase, protocol::TournamentPhase::Running);
+  ASSERT_EQ(view.matches.size(), 3u);
+  int in_play = 0;
+  for (const auto& m : view.matches) {
+    if (m.state != 2) continue;
+    ++in_play;
+    Match* table = registry.find(m.match);
+    ASSERT_NE(table, nullptr) << m.match;
+    EXPECT_TRUE(table->inPlay());
+    const auto& a = view.entrants[static_cast<std::size_t>(m.a)];
+    const auto& b = view.entrants[static_cast<std::size_t>(m.b)];
+    EXPECT_EQ(table->seats()[0].player, a.name);
+    EXPECT_EQ(table->seats()[1].player, b.name);
+    // Nobody but the drawn key takes a reserved seat; the drawn player gets it back.
+    const auto stranger = table->takeSeat(-1, "eve", "eve", 77, publicKeyOf("eve"), std::nullopt);
+    EXPECT_FALSE(stranger.accepted());
+    const auto drawn = table->takeSeat(-1, a.name, a.name, 78, publicKeyOf(a.name), std::nullopt);
+    EXPECT_TRUE(drawn.accepted()) << drawn.reason;
+    EXPECT_EQ(drawn.seat, 0);
+    EXPECT_TRUE(table->seats()[0].connected());
+    EXPECT_FALSE(table->seats()[1].connected()) << "b has not come yet";
+  }
+  EXPECT_EQ(in_play, 2) << "both semi-finals at once";
+  EXPECT_EQ(desk.enter(entry("ann"), "p-ann").outcome, JoinOutcome::Accepted)
+      << "an entrant asking again is told it is in";
+}
+
+TEST_F(TournamentDeskTest, ARestartRestoresTheTournamentFromTheStore) {
+  protocol::TournamentView before;
+  {
+    MatchRegistry registry(options_, nineFoot());
+    TournamentDesk desk(registry, store_.get());
+    ASSERT_TRUE(desk.create(cup(3)));
+    for (const char* who : {"ann", "bob", "cid"}) {
+      ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
+    }
+    desk.step(1.0);
+    before = desk.views().front();
+    ASSERT_EQ(before.phase, protocol::TournamentPhase::Running);
+  }
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  desk.restore();
+  ASSERT_EQ(desk.views().size(), 1u);
+  EXPECT_EQ(desk.views().front(), before);
+  // Numbers go on from the stored ones.
+  const auto next = desk.create(cup());
+  ASSERT_TRUE(next) << next.error();
+  EXPECT_EQ(*next, "srv-t2");
+  // Cancelled: its match in play goes on as an ordinary match.
+  const auto going_on = desk.cancel("srv-t1");
+  ASSERT_TRUE(going_on) << going_on.error();
+  EXPECT_EQ(going_on->size(), 1u);
+  EXPECT_EQ(desk.views().front().phase, protocol::TournamentPhase::Cancelled);
+  EXPECT_FALSE(desk.cancel("srv-t1"));
+}
+
+TEST_F(TournamentDeskTest, BadSetupsAreRefused) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  auto bad = cup(2);
+  EXPECT_FALSE(desk.create(bad));
+  bad = cup(33);
+  EXPECT_FALSE(desk.create(bad));
+  bad = cup();
+  bad.race_to = 0;
+  EXPECT_FALSE(desk.create(bad));
+  bad = cup();
+  bad.name = "";
+  EXPECT_FALSE(desk.create(bad));
+  EXPECT_TRUE(desk.views().empty());
+}
+
+}  // namespace
+}  // namespace pool::server
