@@ -46,6 +46,11 @@ std::vector<protocol::HistoryShot> HistoryDesk::answer(const net::IncomingHistor
   for (std::size_t i = 0; i < 2; ++i) head.players[i] = match->seats[i].player;
   std::vector<protocol::HistoryShot> out;
   for (std::uint32_t n = r.first_shot; n < r.first_shot + r.count && n <= head.shots; ++n) {
+    if (in_motion_ && in_motion_(r.match, n)) {
+      if (out.empty())
+        return notFound("shot " + std::to_string(n) + " of " + r.match + " is still being played");
+      break;
+    }
     const auto stored = store_.stroke(r.match, n);
     if (!stored) continue;
     protocol::HistoryShot shot = head;

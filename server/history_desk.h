@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,13 @@ class HistoryDesk {
   std::vector<protocol::HistoryShot> answer(const net::IncomingHistory& in, double now,
                                             std::string* why = nullptr);
 
+  /// Says which stroke is still being played out (`match`, its number): such a stroke is stored
+  /// before its frames and result go out, and is not answered until they have (a replay must not
+  /// tell the result before the table does).
+  void inMotion(std::function<bool(const std::string& match, std::uint32_t shot)> test) {
+    in_motion_ = std::move(test);
+  }
+
   const HistoryCounts& counts() const { return counts_; }
 
   static constexpr double kPerSecond = 4.0;
@@ -45,6 +53,7 @@ class HistoryDesk {
   JoinRateLimit by_sender_{kPerSecond, kBurst};
   JoinRateLimit by_key_{kPerSecond, kBurst};
   HistoryCounts counts_;
+  std::function<bool(const std::string&, std::uint32_t)> in_motion_;
 };
 
 }  // namespace pool::server

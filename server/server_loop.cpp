@@ -22,7 +22,13 @@ ServerLoop::ServerLoop(const ServerConfig& config, MatchRegistry& registry,
       players_(transport, registry.serverId()),
       tournaments_(registry, store),
       epoch_(std::chrono::steady_clock::now()) {
-  if (store_) history_.emplace(*store_, registry.serverId());
+  if (store_) {
+    history_.emplace(*store_, registry.serverId());
+    history_->inMotion([this](const std::string& match, std::uint32_t shot) {
+      const Match* m = registry_.find(match);
+      return m && m->inMotion() && m->shotInMotion() == shot;
+    });
+  }
   tournaments_.restore();
 }
 

@@ -246,15 +246,25 @@ void TournamentDesk::stepHeld(Held& held, double now) {
     const int winner = seat == 0 ? m.a : m.b;
     const int loser = seat == 0 ? m.b : m.a;
     const auto& seats = table->seats();
-    // One who left (or never came) forfeits the tournament's later matches too.
-    if (seats[static_cast<std::size_t>(1 - seat)].away_since) {
+    // A match forfeited by one who left (or never came): that player forfeits the tournament's
+    // later matches too. A match played out (or a rack conceded by a player at the table) is a
+    // result, whoever is away now (a restart leaves everyone away until they come back).
+    // (The seat of one forfeited for not coming back is away, or already free again.)
+    const bool walked_out = table->game().end == rules::GameEnd::Forfeit &&
+                            !seats[static_cast<std::size_t>(1 - seat)].connected();
+    auto reported = walked_out
+                        ? Check<>::refuse("forfeit", "walked out")
+                        : bracket.report(m.index, winner, seats[0].racks_won, seats[1].racks_won);
+    if (!reported) {
+      if (!walked_out) {
+        spdlog::warn("tournament {}: result of {}: {}; decided by forfeit", held.id, match_id,
+                     reported.error());
+      }
       auto decided = bracket.forfeit(loser);
-      if (!decided) spdlog::error("tournament {}: forfeit: {}", held.id, decided.error());
-    } else if (auto reported =
-                   bracket.report(m.index, winner, seats[0].racks_won, seats[1].racks_won);
-               !reported) {
-      spdlog::error("tournament {}: result of {}: {}", held.id, match_id, reported.error());
-      continue;
+      if (!decided) {
+        spdlog::error("tournament {}: forfeit: {}", held.id, decided.error());
+        continue;
+      }
     }
     spdlog::info("tournament {}: {} ({}) won by {}", held.id, match_id, m.round,
                  escapedForLog(bracket.entrants()[static_cast<std::size_t>(winner)].name));

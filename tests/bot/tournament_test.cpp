@@ -74,7 +74,7 @@ TEST_F(TournamentTest, EightBotsPlayASingleEliminationThroughAServerKillToOneCha
                                   "--name",       names[i],
                                   "--seed",       std::to_string(31 + i),
                                   "--timeout",    "200",
-                                  "--level",      "club",
+                                  "--skill",      "1",
                                   "--tournament", "srv-t1"};
     bots.push_back(&start("pool-bot", args, names[i]));
   }

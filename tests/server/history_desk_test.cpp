@@ -93,6 +93,25 @@ TEST_F(HistoryDeskTest, WhatIsNotStoredIsSaidInOneLine) {
   }
 }
 
+// A stroke still being played out (stored, its frames and result not all out) is not told: a
+// replay must not give away the result before the table does.
+TEST_F(HistoryDeskTest, AStrokeStillInMotionIsNotToldYet) {
+  HistoryDesk desk(*store_, "srv");
+  bool moving = true;
+  desk.inMotion([&](const std::string& match, std::uint32_t shot) {
+    return moving && match == "srv-1" && shot == 1;
+  });
+  auto shots = desk.answer(request("srv-1", 1, 1, key_), 0.0);
+  ASSERT_EQ(shots.size(), 1u);
+  EXPECT_FALSE(shots[0].found);
+  EXPECT_EQ(shots[0].error, "shot 1 of srv-1 is still being played");
+  EXPECT_TRUE(shots[0].events.empty());
+  moving = false;
+  shots = desk.answer(request("srv-1", 1, 1, key_), 1.0);
+  ASSERT_EQ(shots.size(), 1u);
+  EXPECT_TRUE(shots[0].found);
+}
+
 // A request someone else's key did not sign, or no key signed, or past its bounds, gets no answer
 // at all (and reads nothing).
 TEST_F(HistoryDeskTest, ForgedUnsignedAndUnboundedRequestsAreRefused) {

@@ -3,6 +3,8 @@
 // with seats only the drawn keys can take, and a restart restoring the tournament from the store.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "server/match_fixture.h"
 #include "server/tournament_desk.h"
 #include "store/store_fixture.h"
@@ -123,6 +125,37 @@ TEST_F(TournamentDeskTest, AFullTournamentStartsAndReservesEachSeatForItsKey) {
   EXPECT_EQ(in_play, 2) << "both semi-finals at once";
   EXPECT_EQ(desk.enter(entry("ann"), "p-ann").outcome, JoinOutcome::Accepted)
       << "an entrant asking again is told it is in";
+}
+
+// A drawn player who never sits forfeits once the grace period is over (Match::expireAway), and
+// with it the rest of the tournament: withdrawn, the match decided by forfeit, the winner on.
+TEST_F(TournamentDeskTest, ANoShowForfeitsTheMatchAndTheRestOfTheTournament) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  ASSERT_TRUE(desk.create(cup(3)));
+  for (const char* who : {"ann", "bob", "cid"}) {
+    ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
+  }
+  desk.step(0.0);
+  auto view = desk.views().front();
+  const auto played = std::find_if(view.matches.begin(), view.matches.end(),
+                                   [](const auto& m) { return m.state == 2; });
+  ASSERT_NE(played, view.matches.end());
+  const int comes = played->a;
+  const int stays_away = played->b;
+  Match* table = registry.find(played->match);
+  ASSERT_NE(table, nullptr);
+  const std::string& name = view.entrants[static_cast<std::size_t>(comes)].name;
+  ASSERT_TRUE(table->takeSeat(0, name, name, 5, publicKeyOf(name), std::nullopt).accepted());
+  registry.expireAway(61.0, 60.0);
+  desk.step(61.0);
+  view = desk.views().front();
+  const auto& decided = view.matches[static_cast<std::size_t>(played - view.matches.begin())];
+  EXPECT_EQ(decided.state, 3);
+  EXPECT_TRUE(decided.forfeit);
+  EXPECT_EQ(decided.winner, comes);
+  EXPECT_TRUE(view.entrants[static_cast<std::size_t>(stays_away)].withdrawn);
+  EXPECT_FALSE(view.entrants[static_cast<std::size_t>(comes)].withdrawn);
 }
 
 TEST_F(TournamentDeskTest, ARestartRestoresTheTournamentFromTheStore) {
