@@ -13,23 +13,29 @@ std::vector<protocol::HistoryShot> HistoryDesk::answer(const net::IncomingHistor
     if (why) *why = std::move(reason);
     return std::vector<protocol::HistoryShot>{};
   };
+  // The participant's share first (the cheapest check), then the request itself, then the key's
+  // share and the server's whole budget (participants cost nothing).
+  if (!by_sender_.allow(in.sender, now)) {
+    return refuse("history requests: over the share of " + in.sender, counts_.limited);
+  }
   if (!in.request) return refuse(in.request.error(), counts_.refused);
   const protocol::HistoryRequest& r = *in.request;
   if (auto ok = protocol::checkHistoryRequest(r); !ok) return refuse(ok.error(), counts_.refused);
   if (protocol::verifyHistory(r) != protocol::SignatureCheck::Valid) {
     return refuse("history request: not signed by the key it carries", counts_.refused);
   }
-  if (!by_sender_.allow(in.sender, now)) {
-    return refuse("history requests: over the share of " + in.sender, counts_.limited);
-  }
   if (!by_key_.allow(hexOf(r.public_key), now)) {
     return refuse("history requests: over the share of key " + hexOf(r.public_key).substr(0, 16),
                   counts_.limited);
+  }
+  if (!all_.allow("all", now)) {
+    return refuse("history requests: over the server's budget", counts_.limited);
   }
   ++counts_.answered;
   protocol::HistoryShot head;
   head.client = r.client;
   head.request = r.request;
+  head.asker = r.public_key;
   head.match = r.match;
   auto notFound = [&](std::string error) {
     head.found = false;
@@ -38,12 +44,12 @@ std::vector<protocol::HistoryShot> HistoryDesk::answer(const net::IncomingHistor
   };
   // Another server's match, or none: the request names an id this server never stored.
   if (r.match.rfind(server_ + "-", 0) != 0) return notFound("not a match of server " + server_);
-  const auto match = store_.match(r.match);
+  const auto match = store_.header(r.match);
   if (!match) return notFound("no match " + r.match + " is stored");
   head.shots = store_.strokes(r.match);
   head.game = match->settings.game;
   head.table = store_.tableOf(r.match);
-  for (std::size_t i = 0; i < 2; ++i) head.players[i] = match->seats[i].player;
+  head.players = match->players;
   std::vector<protocol::HistoryShot> out;
   for (std::uint32_t n = r.first_shot; n < r.first_shot + r.count && n <= head.shots; ++n) {
     if (in_motion_ && in_motion_(r.match, n)) {

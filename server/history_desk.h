@@ -31,7 +31,8 @@ class HistoryDesk {
   /// nothing for a request that is refused or over a share (counted, and said in `why` when
   /// given). A request's share: kPerSecond a second (kBurst at once) per DDS participant and per
   /// key, so neither many keys from one participant nor one key from many participants make the
-  /// server read more than that.
+  /// server read more than that; and all of them together kServerPerSecond (kServerBurst), since
+  /// participants cost nothing.
   std::vector<protocol::HistoryShot> answer(const net::IncomingHistory& in, double now,
                                             std::string* why = nullptr);
 
@@ -46,12 +47,16 @@ class HistoryDesk {
 
   static constexpr double kPerSecond = 4.0;
   static constexpr double kBurst = 8.0;
+  static constexpr double kServerPerSecond = 32.0;
+  static constexpr double kServerBurst = 64.0;
 
  private:
   store::MatchStore& store_;
   std::string server_;
   JoinRateLimit by_sender_{kPerSecond, kBurst};
   JoinRateLimit by_key_{kPerSecond, kBurst};
+  /// Every participant's and key's together: the most the server reads for replays.
+  JoinRateLimit all_{kServerPerSecond, kServerBurst};
   HistoryCounts counts_;
   std::function<bool(const std::string&, std::uint32_t)> in_motion_;
 };

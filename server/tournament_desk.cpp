@@ -71,15 +71,6 @@ void TournamentDesk::restore() {
     held.setup.race_to = row.race_to;
     held.setup.capacity = row.capacity;
     held.phase = static_cast<protocol::TournamentPhase>(std::clamp(row.phase, 0, 3));
-    const auto entries = json::parse(row.entries, nullptr, false);
-    if (entries.is_array()) {
-      for (const auto& e : entries) {
-        const auto key = bytesFromHex(e.value("key", std::string()));
-        if (!key) continue;
-        held.entries.push_back(
-            {e.value("name", std::string()), *key, e.value("rating", 1500.0), {}});
-      }
-    }
     if (!row.state.empty()) {
       auto bracket = tournament::Tournament::fromJson(row.state);
       if (!bracket) {
@@ -88,16 +79,61 @@ void TournamentDesk::restore() {
         continue;
       }
       held.bracket = std::move(*bracket);
+      // The bracket's field is the truth: its entrants' ids are their keys in hex.
+      for (const auto& e : held.bracket->entrants()) {
+        held.entries.push_back(
+            {e.name, bytesFromHex(e.id).value_or(std::vector<std::uint8_t>{}), e.rating, {}});
+      }
+    } else {
+      const auto entries = json::parse(row.entries, nullptr, false);
+      for (const auto& e : entries.is_array() ? entries : json::array()) {
+        if (!e.is_object() || !e.contains("name") || !e["name"].is_string() || !e.contains("key") ||
+            !e["key"].is_string()) {
+          continue;
+        }
+        const auto key = bytesFromHex(e["key"].get<std::string>());
+        const double rating =
+            e.contains("rating") && e["rating"].is_number() ? e["rating"].get<double>() : 1500.0;
+        if (key && key->size() == protocol::kPublicKeyBytes) {
+          held.entries.push_back({e["name"].get<std::string>(), *key, rating, {}});
+        }
+      }
     }
     const auto ids = json::parse(row.match_ids, nullptr, false);
-    if (ids.is_array()) {
-      for (const auto& id : ids)
-        held.match_ids.push_back(id.is_string() ? id.get<std::string>() : "");
+    for (const auto& id : ids.is_array() ? ids : json::array()) {
+      held.match_ids.push_back(id.is_string() ? id.get<std::string>() : "");
     }
-    if (held.bracket) held.match_ids.resize(held.bracket->matches().size());
+    if (held.bracket) {
+      held.match_ids.resize(held.bracket->matches().size());
+      // The tables of its matches in play were resumed: their seats stay the drawn players'.
+      for (const auto& m : held.bracket->matches()) {
+        if (m.state != tournament::MatchState::InPlay) continue;
+        if (Match* table = registry_.find(held.match_ids[static_cast<std::size_t>(m.index)])) {
+          table->reserveKeys({held.entries[static_cast<std::size_t>(m.a)].key,
+                              held.entries[static_cast<std::size_t>(m.b)].key});
+        }
+      }
+    }
     spdlog::info("tournament {} ({}) restored: {}, {} entrants", held.id, held.setup.name,
                  protocol::toString(held.phase), held.entries.size());
     tournaments_[held.id] = std::move(held);
+  }
+  forgetOldest();
+}
+
+void TournamentDesk::forgetOldest() {
+  // The finished and cancelled ones longest ago make room (they stay in the store).
+  while (tournaments_.size() >= kMaxTournaments) {
+    auto oldest = tournaments_.end();
+    for (auto it = tournaments_.begin(); it != tournaments_.end(); ++it) {
+      const bool over = it->second.phase == protocol::TournamentPhase::Finished ||
+                        it->second.phase == protocol::TournamentPhase::Cancelled;
+      if (over && (oldest == tournaments_.end() || it->second.number < oldest->second.number)) {
+        oldest = it;
+      }
+    }
+    if (oldest == tournaments_.end()) return;
+    tournaments_.erase(oldest);
   }
 }
 
@@ -108,8 +144,10 @@ Result<std::string> TournamentDesk::create(const TournamentSetup& setup) {
   if (setup.capacity < tournament::kMinEntrants || setup.capacity > tournament::kMaxEntrants) {
     return Out::fail("entrants: 3 to 32");
   }
+  forgetOldest();
   if (tournaments_.size() >= kMaxTournaments) {
-    return Out::fail("this server holds " + std::to_string(kMaxTournaments) + " tournaments");
+    return Out::fail("this server holds " + std::to_string(kMaxTournaments) +
+                     " tournaments not over");
   }
   Held held;
   held.number = ++opened_;
@@ -235,12 +273,36 @@ void TournamentDesk::stepHeld(Held& held, double now) {
   if (held.phase != protocol::TournamentPhase::Running || !held.bracket) return;
   tournament::Tournament& bracket = *held.bracket;
   bool changed = false;
-  // Results: each match in play whose table is over.
+  // Results: each match in play whose table is over. (A result can add a match, the grand
+  // final's reset: the matches are read by index, and the table ids follow the bracket's size.)
+  std::vector<int> in_play;
   for (const auto& m : bracket.matches()) {
-    if (m.state != tournament::MatchState::InPlay) continue;
-    const std::string& match_id = held.match_ids[static_cast<std::size_t>(m.index)];
+    if (m.state == tournament::MatchState::InPlay) in_play.push_back(m.index);
+  }
+  for (const int index : in_play) {
+    const tournament::Match m = bracket.matches()[static_cast<std::size_t>(index)];
+    const std::string match_id = held.match_ids[static_cast<std::size_t>(index)];
     const Match* table = match_id.empty() ? nullptr : registry_.find(match_id);
-    if (!table || table->phase() != MatchPhase::Over) continue;
+    // A table gone (closed, or abandoned by both players and swept) or left by both: neither
+    // player is there to finish it, and both forfeit (the bracket's rule gives such a match to
+    // its entrant a, who forfeits the next).
+    const bool over = table && !table->closed() && table->phase() == MatchPhase::Over;
+    const bool abandoned = !over && (!table || table->closed() ||
+                                     (!table->seats()[0].taken() && !table->seats()[1].taken()));
+    if (abandoned) {
+      spdlog::warn("tournament {}: {} ({}) has no players left: both forfeit", held.id,
+                   match_id.empty() ? "a match" : match_id, m.round);
+      for (const int entrant : {m.a, m.b}) {
+        if (bracket.finished() || bracket.withdrawn(entrant)) continue;
+        if (auto decided = bracket.forfeit(entrant); !decided) {
+          spdlog::error("tournament {}: forfeit: {}", held.id, decided.error());
+        }
+      }
+      held.match_ids.resize(bracket.matches().size());
+      changed = true;
+      continue;
+    }
+    if (!over) continue;
     const int seat = table->game().winner;
     if (seat != 0 && seat != 1) continue;
     const int winner = seat == 0 ? m.a : m.b;
@@ -268,6 +330,7 @@ void TournamentDesk::stepHeld(Held& held, double now) {
     }
     spdlog::info("tournament {}: {} ({}) won by {}", held.id, match_id, m.round,
                  escapedForLog(bracket.entrants()[static_cast<std::size_t>(winner)].name));
+    held.match_ids.resize(bracket.matches().size());
     changed = true;
   }
   // Matches ready to play: a table each, the drawn players' seats reserved for their keys.

@@ -29,7 +29,8 @@ struct TournamentSetup {
 /// Entries one DDS participant may make in one tournament (keys cost nothing: a participant that
 /// makes many is still one asking).
 inline constexpr int kEntriesPerParticipant = 2;
-/// Tournaments a server holds at once (finished and cancelled ones included), at most.
+/// Tournaments a server holds at once, at most: past it, those over longest ago are forgotten
+/// (kept in the store), and none is created while as many are not over.
 inline constexpr std::size_t kMaxTournaments = 64;
 
 /// Not thread-safe; time is passed in (s, the server's monotonic clock).
@@ -84,6 +85,8 @@ class TournamentDesk {
   };
 
   Check<> startHeld(Held& held);
+  /// Forgets the tournaments over longest ago (kept in the store) while kMaxTournaments are held.
+  void forgetOldest();
   void stepHeld(Held& held, double now);
   protocol::TournamentView viewOf(const Held& held) const;
   void save(const Held& held);

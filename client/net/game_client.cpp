@@ -264,6 +264,23 @@ void GameClient::pollTournaments(std::vector<ClientEvent>& out) {
       ++it;
       continue;
     }
+    // A tournament's id names its server ("<server id>-t<n>"): another server cannot publish one
+    // under it (the samples' signatures are pinned per server id).
+    if (view.tournament.rfind(view.server + "-t", 0) != 0) {
+      problem("tournament " + view.tournament + " published as server " + view.server);
+      it = waiting_tournaments_.erase(it);
+      continue;
+    }
+    if (!tournaments_.count(view.tournament) && tournaments_.size() >= kMaxTournaments) {
+      // Full: one that is over makes room.
+      for (auto old = tournaments_.begin(); old != tournaments_.end(); ++old) {
+        if (old->second.phase == protocol::TournamentPhase::Finished ||
+            old->second.phase == protocol::TournamentPhase::Cancelled) {
+          tournaments_.erase(old);
+          break;
+        }
+      }
+    }
     if (tournaments_.count(view.tournament) || tournaments_.size() < kMaxTournaments) {
       tournaments_[view.tournament] = view;
       out.emplace_back(view);
@@ -302,8 +319,11 @@ void GameClient::pollHistory(std::vector<ClientEvent>& out) {
       problem(shot.error());
       continue;
     }
-    // Everyone's answers travel on the one topic: only those to our own requests are ours.
+    // Everyone's answers travel on the one topic: only those to our own requests, signed with
+    // our own key (a client id and request number are anyone's to reuse), are ours.
     if (shot->client != options_.client_id ||
+        !std::equal(shot->asker.begin(), shot->asker.end(), key_.public_key.begin(),
+                    key_.public_key.end()) ||
         std::find(history_requests_.begin(), history_requests_.end(), shot->request) ==
             history_requests_.end()) {
       continue;

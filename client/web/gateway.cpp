@@ -52,7 +52,7 @@ const Message& Gateway::playersMessage() {
 }
 
 void Gateway::attach(std::uint64_t browser, Sink sink) {
-  browsers_[browser] = Browser{std::move(sink), {}};
+  browsers_[browser] = Browser{std::move(sink), {}, -1e9};
   sendTo(browser, lobbyMessage());
   if (client_.players().size() > 0) sendTo(browser, playersMessage());
   if (!client_.tournaments().empty()) sendTo(browser, tournamentsMessage());
@@ -62,6 +62,10 @@ void Gateway::attach(std::uint64_t browser, Sink sink) {
 void Gateway::detach(std::uint64_t browser) {
   const auto it = browsers_.find(browser);
   if (it == browsers_.end()) return;
+  for (auto r = replays_.begin(); r != replays_.end();) {
+    r->second.browsers.erase(browser);
+    r = r->second.browsers.empty() ? replays_.erase(r) : std::next(r);
+  }
   if (!it->second.match.empty()) {
     const auto w = watched_.find(it->second.match);
     if (w != watched_.end()) w->second.browsers.erase(browser);
@@ -103,7 +107,17 @@ std::string Gateway::watch(std::uint64_t browser, const std::string& match) {
 }
 
 std::string Gateway::replay(std::uint64_t browser, const std::string& match, std::uint32_t shot) {
-  if (!browsers_.count(browser)) return "not connected";
+  const auto self = browsers_.find(browser);
+  if (self == browsers_.end()) return "not connected";
+  // A browser asks at most once every kReplayGap s: the gateway's one key has a share of the
+  // server's answers that every browser shares.
+  if (now_ - self->second.replay_at < kReplayGap) {
+    const std::string why = "one replay at a time: wait a moment";
+    sendTo(browser, share(errorJson(why)));
+    dropSlow();
+    return why;
+  }
+  self->second.replay_at = now_;
   // One replay a browser waits for: a new one replaces it.
   for (auto it = replays_.begin(); it != replays_.end();) {
     it->second.browsers.erase(browser);
@@ -135,14 +149,23 @@ bool Gateway::askReplay(const std::string& match, std::uint32_t shot,
                         std::set<std::uint64_t> browsers, int tries) {
   const auto request = client_.requestHistory(match, shot, 1);
   if (!request) return false;
-  while (replays_.size() >= kMaxPendingReplays) replays_.erase(replays_.begin());
+  while (replays_.size() >= kMaxPendingReplays) {
+    // The oldest gives way; its browsers are told.
+    const Message error = share(errorJson("too many replays asked at once: ask again"));
+    for (const std::uint64_t b : replays_.begin()->second.browsers) sendTo(b, error);
+    replays_.erase(replays_.begin());
+  }
   replays_[*request] = PendingReplay{match, shot, std::move(browsers), now_, tries};
   return true;
 }
 
 void Gateway::answerReplay(const protocol::HistoryShot& shot) {
   const auto it = replays_.find(shot.request);
-  if (it == replays_.end()) return;
+  // Only the answer about what was asked (the client's key checked it was asked by us).
+  if (it == replays_.end() || shot.match != it->second.match ||
+      (shot.found && shot.shot_number != it->second.shot)) {
+    return;
+  }
   PendingReplay pending = std::move(it->second);
   replays_.erase(it);
   const Message message = share(replayJson(shot, pending.shot));

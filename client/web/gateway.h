@@ -30,6 +30,8 @@ inline constexpr int kReplayTries = 5;
 /// replay messages kept for the next browser asking for the same shot.
 inline constexpr std::size_t kMaxPendingReplays = 64;
 inline constexpr std::size_t kReplayCache = 16;
+/// The least time between two replays one browser asks for, s.
+inline constexpr double kReplayGap = 0.5;
 /// The most players' records a players message carries (client::PlayerBook::fairShare), as often
 /// as the lobby.
 inline constexpr std::size_t kPagePlayers = 128;
@@ -95,6 +97,7 @@ class Gateway {
   struct Browser {
     Sink sink;
     std::string match;
+    double replay_at = -1e9;  ///< when it last asked for a replay
   };
 
   void sendTo(std::uint64_t browser, const Message& message);

@@ -50,6 +50,7 @@ Sample<pool_HistoryShot> toWire(const protocol::HistoryShot& s) {
   pool_HistoryShot& w = *sample;
   setText(w.client, s.client);
   w.request = s.request;
+  setBytes(w.asker, s.asker, 32);
   setText(w.match, s.match);
   w.found = s.found;
   setText(w.error, s.error);
@@ -83,6 +84,11 @@ Result<protocol::HistoryShot> fromWire(const pool_HistoryShot& w) {
   protocol::HistoryShot s;
   s.client = std::string(textOf(w.client));
   s.request = w.request;
+  if (w.asker._length > 32 || (w.asker._length > 0 && !w.asker._buffer)) {
+    return Out::fail("history shot: asker past 32 bytes");
+  }
+  const auto asker = elementsOf(w.asker);
+  s.asker.assign(asker.begin(), asker.end());
   s.match = std::string(textOf(w.match));
   s.found = w.found;
   s.error = std::string(textOf(w.error));

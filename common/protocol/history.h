@@ -51,6 +51,7 @@ Check<> checkHistoryRequest(const HistoryRequest& request);
 struct HistoryShot {
   std::string client;  ///< the request answered
   std::uint32_t request = 0;
+  std::vector<std::uint8_t> asker;  ///< the key that signed it (32 bytes)
   std::string match;
   bool found = false;
   std::string error;  ///< why not, when not found

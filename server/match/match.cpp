@@ -112,6 +112,7 @@ pool::Check<> Match::reserveSeats(const std::array<std::string, 2>& players,
     seat.public_key = keys[s];
     seat.away_since = now;
   }
+  reserveKeys(keys);
   touch();
   startRack(0);
   return pool::Check<>::pass();
@@ -137,6 +138,15 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
       touch();
       return seated(id_, s, mine.token);
     }
+  }
+  if (reserved()) {
+    // A tournament's table: a seat is its drawn player's alone.
+    const int mine = reserved_[0] == public_key ? 0 : (reserved_[1] == public_key ? 1 : -1);
+    if (mine < 0 || (seat != -1 && seat != mine)) {
+      return JoinAnswer::refuse(JoinOutcome::SeatTaken,
+                                "this table's seats are kept for a tournament's drawn players");
+    }
+    seat = mine;
   }
   if (flight_) return JoinAnswer::refuse(JoinOutcome::NotAllowed, "a shot is in motion");
   if (seat == -1) {
@@ -170,7 +180,11 @@ JoinAnswer Match::takeSeat(int seat, const std::string& player, const std::strin
   }
   touch();
   if (practice() && !started_) startPractice();
-  if (seats_[0].taken() && seats_[1].taken() && !inPlay()) startRack(rack_ % 2 == 0 ? 0 : 1);
+  // (A tournament's decided race starts no new rack.)
+  if (seats_[0].taken() && seats_[1].taken() && !inPlay() &&
+      !(reserved() && phase() == MatchPhase::Over)) {
+    startRack(rack_ % 2 == 0 ? 0 : 1);
+  }
   return seated(id_, seat, token);
 }
 
@@ -238,6 +252,9 @@ JoinAnswer Match::leaveSeat(int seat) {
 }
 
 JoinAnswer Match::rematchSeat(int seat) {
+  if (reserved()) {
+    return JoinAnswer::refuse(JoinOutcome::NotAllowed, "a tournament's match has no rematch");
+  }
   if (phase() != MatchPhase::Over || pending_forfeit_) {
     return JoinAnswer::refuse(JoinOutcome::NotAllowed, "the match is not over");
   }

@@ -70,6 +70,11 @@ class Match {
                        const std::array<std::vector<std::uint8_t>, 2>& keys,
                        const std::array<std::uint64_t, 2>& tokens,
                        const protocol::MatchSettings& settings, double now);
+  /// Keeps this table's seats for `keys` for good (seat 0, seat 1): any other key is refused a
+  /// seat, a decided race starts no new rack and no rematch (a tournament's table; a restarted
+  /// server says so again after resuming it).
+  void reserveKeys(const std::array<std::vector<std::uint8_t>, 2>& keys) { reserved_ = keys; }
+  bool reserved() const { return !reserved_[0].empty(); }
   /// A request that changes a held seat (Rejoin, Leave, Rematch, Concede), checked in this order:
   /// the seat (the one named, or the one bound to the request's key) → the holding's token (public,
   /// but a request signed for an earlier holding of the seat never matches it) → unsigned
@@ -252,6 +257,7 @@ class Match {
   /// How its racks are laid out: the generator of the program that opened it.
   table::RackGenerator rack_generator_ = table::kCurrentRackGenerator;
   std::array<Seat, 2> seats_{};
+  std::array<std::vector<std::uint8_t>, 2> reserved_{};  ///< reserveKeys
   std::set<std::string> spectators_;
   bool started_ = false;
   bool closed_ = false;

@@ -294,6 +294,21 @@ std::optional<server::MatchSnapshot> MatchStore::match(const std::string& id) {
   return std::nullopt;
 }
 
+std::optional<MatchStore::MatchHeader> MatchStore::header(const std::string& id) {
+  auto q = db_.prepare("SELECT settings FROM matches WHERE id = ?");
+  q.bind(1, id);
+  if (!q.step()) return std::nullopt;
+  MatchHeader h;
+  h.settings = settingsFrom(q.text(0));
+  auto seats = db_.prepare("SELECT seat, player FROM seats WHERE match = ?");
+  seats.bind(1, id);
+  while (seats.step()) {
+    const auto seat = seats.integer(0);
+    if (seat == 0 || seat == 1) h.players[static_cast<std::size_t>(seat)] = seats.text(1);
+  }
+  return h;
+}
+
 std::string MatchStore::tableOf(const std::string& id) {
   auto q = db_.prepare("SELECT table_name FROM matches WHERE id = ?");
   q.bind(1, id);

@@ -1,6 +1,7 @@
 // The server's SQLite file: its id and match counter, every match, and every accepted command.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "core/result.h"
 #include "protocol/key_pair.h"
+#include "protocol/match_settings.h"
 #include "server/match/match_snapshot.h"
 #include "server/match/shot_record.h"
 #include "server/store/file_watch.h"
@@ -61,6 +63,13 @@ class MatchStore {
   std::vector<server::MatchSnapshot> matches();
   /// The stored match `id`.
   std::optional<server::MatchSnapshot> match(const std::string& id);
+  /// What a replay names of stored match `id` (one indexed lookup, its seats aside): its
+  /// settings and its seated players' names; empty when no such match.
+  struct MatchHeader {
+    protocol::MatchSettings settings;
+    std::array<std::string, 2> players;
+  };
+  std::optional<MatchHeader> header(const std::string& id);
   /// The table spec match `id` is played on (empty when no such match).
   std::string tableOf(const std::string& id);
   /// Every stored command of match `id`, in the order they were accepted.

@@ -52,6 +52,7 @@ TEST_F(HistoryDeskTest, AStoredStrokeComesBackAsStored) {
   EXPECT_TRUE(s.found) << s.error;
   EXPECT_EQ(s.client, "browser-gateway");
   EXPECT_EQ(s.request, in.request->request);
+  EXPECT_EQ(s.asker, key_.publicKey()) << "the answer names the key that asked";
   EXPECT_EQ(s.match, "srv-1");
   EXPECT_EQ(s.shot_number, 1u);
   EXPECT_EQ(s.shots, 1u);

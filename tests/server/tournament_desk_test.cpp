@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 
 #include "server/match_fixture.h"
 #include "server/tournament_desk.h"
@@ -156,6 +158,87 @@ TEST_F(TournamentDeskTest, ANoShowForfeitsTheMatchAndTheRestOfTheTournament) {
   EXPECT_EQ(decided.winner, comes);
   EXPECT_TRUE(view.entrants[static_cast<std::size_t>(stays_away)].withdrawn);
   EXPECT_FALSE(view.entrants[static_cast<std::size_t>(comes)].withdrawn);
+  // The freed seat stays the drawn player's: a stranger cannot sit and play the table on, and
+  // the drawn player coming back late starts no new rack.
+  EXPECT_FALSE(table->takeSeat(1, "eve", "eve", 9, publicKeyOf("eve"), std::nullopt).accepted());
+  const std::string& late = view.entrants[static_cast<std::size_t>(stays_away)].name;
+  EXPECT_TRUE(table->takeSeat(1, late, late, 10, publicKeyOf(late), std::nullopt).accepted());
+  EXPECT_EQ(table->phase(), MatchPhase::Over);
+}
+
+// Both drawn players gone past the grace: the table is abandoned, both forfeit, and the
+// tournament still ends (the bye's entrant wins it).
+TEST_F(TournamentDeskTest, ATableBothPlayersLeftEndsInTheirForfeitsAndTheTournamentGoesOn) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  ASSERT_TRUE(desk.create(cup(3)));
+  for (const char* who : {"ann", "bob", "cid"}) {
+    ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
+  }
+  desk.step(0.0);
+  registry.expireAway(61.0, 60.0);
+  for (double t = 61.0; t < 70.0; t += 1.0) desk.step(t);
+  const auto view = desk.views().front();
+  EXPECT_EQ(view.phase, protocol::TournamentPhase::Finished);
+  ASSERT_GE(view.champion, 0);
+  EXPECT_EQ(view.entrants[static_cast<std::size_t>(view.champion)].seed, 1);
+}
+
+// Double elimination played through the desk to the grand final's reset (the losers' side wins
+// the final): the reset is a match added while results are read, and gets a table of its own.
+TEST_F(TournamentDeskTest, ADoubleEliminationReachesTheResetAndEnds) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  auto setup = cup(3);
+  setup.format = protocol::TournamentFormat::DoubleElimination;
+  ASSERT_TRUE(desk.create(setup));
+  for (const char* who : {"ann", "bob", "cid"}) {
+    ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
+  }
+  double now = 0.0;
+  desk.step(now);
+  std::set<std::string> tables;
+  for (int round = 0;
+       round < 20 && desk.views().front().phase == protocol::TournamentPhase::Running; ++round) {
+    const auto view = desk.views().front();
+    for (const auto& m : view.matches) {
+      if (m.state != 2) continue;
+      tables.insert(m.match);
+      Match* table = registry.find(m.match);
+      ASSERT_NE(table, nullptr) << m.match;
+      // Both come; then one concedes the race's only rack: entrant a, but for the grand final,
+      // where a (the winners' side) concedes so that the reset is played.
+      std::array<std::uint64_t, 2> tokens{};
+      for (int seat = 0; seat < 2; ++seat) {
+        const auto& who = view.entrants[static_cast<std::size_t>(seat == 0 ? m.a : m.b)].name;
+        const auto sat = table->takeSeat(seat, who, who, 0, publicKeyOf(who), std::nullopt);
+        ASSERT_TRUE(sat.accepted()) << sat.reason;
+        tokens[static_cast<std::size_t>(seat)] = sat.token;
+      }
+      const int loser_seat = m.round == "GF reset" ? 1 : 0;
+      const auto& loser = view.entrants[static_cast<std::size_t>(loser_seat == 0 ? m.a : m.b)].name;
+      protocol::SeatRequest concede;
+      concede.client = loser;
+      concede.protocol_version = protocol::kProtocolVersion;
+      concede.match = m.match;
+      concede.action = protocol::JoinAction::Concede;
+      concede.seat = loser_seat;
+      concede.token = tokens[static_cast<std::size_t>(loser_seat)];
+      concede.seq = ++seq_;
+      protocol::signSeatRequest(concede, keyOf(loser));
+      const auto conceded = table->seatRequest(concede);
+      ASSERT_TRUE(conceded.accepted()) << conceded.reason;
+      ASSERT_EQ(table->phase(), MatchPhase::Over);
+    }
+    desk.step(now += 1.0);
+  }
+  const auto view = desk.views().front();
+  EXPECT_EQ(view.phase, protocol::TournamentPhase::Finished);
+  ASSERT_FALSE(view.matches.empty());
+  EXPECT_EQ(view.matches.back().round, "GF reset");
+  EXPECT_EQ(view.matches.back().state, 3);
+  EXPECT_EQ(tables.size(), view.matches.size()) << "each match had a table of its own";
+  for (const auto& m : view.matches) EXPECT_FALSE(m.match.empty()) << m.round;
 }
 
 TEST_F(TournamentDeskTest, ARestartRestoresTheTournamentFromTheStore) {
