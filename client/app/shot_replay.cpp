@@ -206,32 +206,12 @@ std::vector<ReplayFrame> replayFrames(const std::vector<Ball>& before,
     turned[b.id] = b.orient;
     last[b.id] = b.pos;
   }
-  // Rolling alone does not end in `after`'s orientation (sliding turns a ball too): the
-  // difference is spread over the shot, so the last frame is `after` itself without a jump.
-  std::map<int, Quat> correction;
-  {
-    std::map<int, Quat> q = turned;
-    std::map<int, Vec3> p = last;
-    for (int k = 1; k <= count; ++k) {
-      const double t = std::min(k * dt, end);
-      for (const Ball& b : before) {
-        const Vec3 at = place(tracks[b.id], t, params).first;
-        q[b.id] = rolled(q[b.id], at - p[b.id], b.pos.z());
-        p[b.id] = at;
-      }
-    }
-    for (const Ball& b : before) correction[b.id] = tracks[b.id].after.orient * q[b.id].inverse();
-  }
   for (int k = 0; k <= count; ++k) {
     const double t = std::min(k * dt, end);
     ReplayFrame frame{t, {}};
     frame.balls.reserve(before.size());
     for (const Ball& b : before) {
       const Track& track = tracks[b.id];
-      if (k == count) {
-        frame.balls.push_back(track.after);
-        continue;
-      }
       Ball ball = b;
       if (physics::onTable(b.state)) {
         const auto [at, phase] = place(track, t, params);
@@ -239,13 +219,25 @@ std::vector<ReplayFrame> replayFrames(const std::vector<Ball>& before,
         last[b.id] = at;
         ball.pos = phase == Phase::Gone ? track.after.pos : at;
         ball.state = phase == Phase::Gone ? track.after.state : stateOf(phase);
-        const double u = end > 0 ? t / end : 1.0;
-        ball.orient = (Quat::Identity().slerp(u, correction[b.id]) * turned[b.id]).normalized();
+        ball.orient = turned[b.id];  // as rolled; corrected below
         ball.vel = ball.ang_vel = Vec3::Zero();
       }
-      frame.balls.push_back(ball);
+      frame.balls.push_back(k == count ? track.after : ball);
     }
     frames.push_back(std::move(frame));
+  }
+  // Rolling alone does not end in `after`'s orientation (sliding turns a ball too): the
+  // difference is spread over the shot, so the last frame is `after` itself without a jump.
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    const Ball& b = before[i];
+    if (!physics::onTable(b.state)) continue;
+    const Quat correction = tracks[b.id].after.orient * turned[b.id].inverse();
+    for (int k = 0; k < count; ++k) {
+      ReplayFrame& frame = frames[static_cast<std::size_t>(k)];
+      const double u = end > 0 ? frame.t / end : 1.0;
+      Quat& q = frame.balls[i].orient;
+      q = (Quat::Identity().slerp(u, correction) * q).normalized();
+    }
   }
   return frames;
 }

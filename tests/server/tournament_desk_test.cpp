@@ -44,6 +44,14 @@ class TournamentDeskTest : public ::testing::Test {
     return r;
   }
 
+  /// Enters each of `who` into srv-t1, each from a DDS participant of its own.
+  void enterEach(TournamentDesk& desk, std::initializer_list<const char*> who) {
+    for (const char* name : who) {
+      const auto answer = desk.enter(entry(name), std::string("p-") + name);
+      ASSERT_TRUE(answer.accepted()) << name << ": " << answer.reason;
+    }
+  }
+
   TournamentSetup cup(int capacity = 4) {
     TournamentSetup s;
     s.name = "Cup";
@@ -135,9 +143,7 @@ TEST_F(TournamentDeskTest, ANoShowForfeitsTheMatchAndTheRestOfTheTournament) {
   MatchRegistry registry(options_, nineFoot());
   TournamentDesk desk(registry, store_.get());
   ASSERT_TRUE(desk.create(cup(3)));
-  for (const char* who : {"ann", "bob", "cid"}) {
-    ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
-  }
+  ASSERT_NO_FATAL_FAILURE(enterEach(desk, {"ann", "bob", "cid"}));
   desk.step(0.0);
   auto view = desk.views().front();
   const auto played = std::find_if(view.matches.begin(), view.matches.end(),
@@ -172,9 +178,7 @@ TEST_F(TournamentDeskTest, ATableBothPlayersLeftEndsInTheirForfeitsAndTheTournam
   MatchRegistry registry(options_, nineFoot());
   TournamentDesk desk(registry, store_.get());
   ASSERT_TRUE(desk.create(cup(3)));
-  for (const char* who : {"ann", "bob", "cid"}) {
-    ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
-  }
+  ASSERT_NO_FATAL_FAILURE(enterEach(desk, {"ann", "bob", "cid"}));
   desk.step(0.0);
   registry.expireAway(61.0, 60.0);
   for (double t = 61.0; t < 70.0; t += 1.0) desk.step(t);
@@ -192,9 +196,7 @@ TEST_F(TournamentDeskTest, ADoubleEliminationReachesTheResetAndEnds) {
   auto setup = cup(3);
   setup.format = protocol::TournamentFormat::DoubleElimination;
   ASSERT_TRUE(desk.create(setup));
-  for (const char* who : {"ann", "bob", "cid"}) {
-    ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
-  }
+  ASSERT_NO_FATAL_FAILURE(enterEach(desk, {"ann", "bob", "cid"}));
   double now = 0.0;
   desk.step(now);
   std::set<std::string> tables;
@@ -247,9 +249,7 @@ TEST_F(TournamentDeskTest, ARestartRestoresTheTournamentFromTheStore) {
     MatchRegistry registry(options_, nineFoot());
     TournamentDesk desk(registry, store_.get());
     ASSERT_TRUE(desk.create(cup(3)));
-    for (const char* who : {"ann", "bob", "cid"}) {
-      ASSERT_TRUE(desk.enter(entry(who), std::string("p-") + who).accepted());
-    }
+    ASSERT_NO_FATAL_FAILURE(enterEach(desk, {"ann", "bob", "cid"}));
     desk.step(1.0);
     before = desk.views().front();
     ASSERT_EQ(before.phase, protocol::TournamentPhase::Running);
