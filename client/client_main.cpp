@@ -75,6 +75,17 @@ void addClientFlags(CLI::App& app, ClientConfig& c) {
                  "where a practice table saves (F5) and loads (F6) its scenario file")
       ->capture_default_str();
   app.add_option("--match", c.window.match, "with --play: the match to join");
+  auto* replay = app.add_option("--replay", c.window.replay,
+                                "replay a stored shot of MATCH at once, in the lobby's stead "
+                                "(window; Previous and Next walk its shots)")
+                     ->excludes("--spectate")
+                     ->excludes("--play")
+                     ->excludes("--practice")
+                     ->excludes("--bot");
+  app.add_option("--shot", c.window.replay_shot,
+                 "with --replay: the shot to open (from 1; default: the match's last)")
+      ->check(CLI::Range(1u, 1000000000u))
+      ->needs(replay);
   app.add_option("--script", c.window.script, "play timed key presses from FILE (window)");
   app.add_option("--capture", c.window.capture, "write the window's last frame to this PNG");
   app.add_flag("--log-frames", c.window.log_frames,

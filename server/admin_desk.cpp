@@ -98,6 +98,7 @@ std::string AdminDesk::createTournament(const admin::AdminRequest& r) {
   setup.game = *game;
   setup.race_to = r.race;
   setup.capacity = r.entrants;
+  setup.handicap = r.handicap;
   auto id = tournaments_->create(setup);
   if (!id) return adminError(id.error());
   return done({{"tournament", *id}});
@@ -135,6 +136,8 @@ std::string AdminDesk::listTournaments() const {
                       {"race_to", t.race_to},
                       {"phase", protocol::toString(t.phase)},
                       {"capacity", t.capacity},
+                      {"handicap", t.handicap},
+                      {"opened_by", t.opened_by.empty() ? Json(nullptr) : Json(t.opened_by)},
                       {"entrants", entrants},
                       {"matches", t.matches.size()},
                       {"decided", decided},

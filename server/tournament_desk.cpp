@@ -13,6 +13,7 @@
 #include "core/text.h"
 #include "server/store/rating_book.h"
 #include "server/store/tournament_book.h"
+#include "server/tournament/handicap.h"
 
 namespace pool::server {
 namespace {
@@ -71,6 +72,19 @@ void TournamentDesk::restore() {
     held.setup.race_to = row.race_to;
     held.setup.capacity = row.capacity;
     held.phase = static_cast<protocol::TournamentPhase>(std::clamp(row.phase, 0, 3));
+    // Its options (since schema 10): a field of the wrong kind reads as absent.
+    const auto options = json::parse(row.options, nullptr, false);
+    const auto field = [&](const char* name) {
+      return options.is_object() && options.contains(name) ? options[name] : json();
+    };
+    held.setup.handicap = field("handicap").is_boolean() && field("handicap").get<bool>();
+    if (field("opener").is_string() && field("opened_by").is_string()) {
+      const auto opener = bytesFromHex(field("opener").get<std::string>());
+      if (opener && opener->size() == protocol::kPublicKeyBytes) {
+        held.setup.opened_by = field("opened_by").get<std::string>();
+        held.setup.opener_key = *opener;
+      }
+    }
     if (!row.state.empty()) {
       auto bracket = tournament::Tournament::fromJson(row.state);
       if (!bracket) {
@@ -154,9 +168,11 @@ Result<std::string> TournamentDesk::create(const TournamentSetup& setup) {
   held.id = registry_.serverId() + "-t" + std::to_string(held.number);
   held.setup = setup;
   save(held);
-  spdlog::info("tournament {} ({}) created: {}, {}, race to {}, {} entrants", held.id, setup.name,
+  spdlog::info("tournament {} ({}) created{}: {}, {}, race to {}, {} entrants{}", held.id,
+               escapedForLog(setup.name),
+               setup.opened_by.empty() ? "" : " by " + escapedForLog(setup.opened_by),
                protocol::toString(setup.format), rules::toString(setup.game), setup.race_to,
-               setup.capacity);
+               setup.capacity, setup.handicap ? ", handicapped" : "");
   const std::string id = held.id;
   tournaments_[id] = std::move(held);
   return Out::ok(id);
@@ -215,8 +231,11 @@ JoinAnswer TournamentDesk::enter(const JoinCommand& c, const std::string& sender
     answer.match = c.match;
     return answer;
   };
+  const bool opening = c.match == protocol::kNewMatch;
   const auto it = tournaments_.find(c.match);
-  if (it == tournaments_.end()) return refuse(JoinOutcome::NoSuchMatch, "no tournament " + c.match);
+  if (!opening && it == tournaments_.end()) {
+    return refuse(JoinOutcome::NoSuchMatch, "no tournament " + c.match);
+  }
   if (c.protocol_version != registry_.options().protocol_version) {
     return refuse(JoinOutcome::VersionMismatch,
                   "server speaks protocol " + std::to_string(registry_.options().protocol_version));
@@ -233,17 +252,67 @@ JoinAnswer TournamentDesk::enter(const JoinCommand& c, const std::string& sender
   if (const std::string* why = registry_.banReason(c.public_key)) {
     return refuse(JoinOutcome::NotAllowed, "this key is banned from the server: " + *why);
   }
-  Held& held = it->second;
-  JoinAnswer accepted{JoinOutcome::Accepted, {}, c.match, -1, 0, c.seq};
+  return opening ? open(c, sender) : addEntry(it->second, c, sender);
+}
+
+JoinAnswer TournamentDesk::open(const JoinCommand& c, const std::string& sender) {
+  auto refuse = [&](std::string why) {
+    JoinAnswer answer = JoinAnswer::refuse(JoinOutcome::NotAllowed, std::move(why));
+    answer.match = c.match;
+    return answer;
+  };
+  if (!c.settings || !c.opening) {
+    return refuse("opening a tournament takes its settings (game, race) and its format");
+  }
+  if (c.settings->practice) return refuse("a tournament is no practice table");
+  if (auto ok = protocol::checkSettings(*c.settings); !ok) return refuse(ok.error());
+  int open_by_players = 0;
+  for (const auto& [id, held] : tournaments_) {
+    if (held.phase != protocol::TournamentPhase::Entry || held.setup.opener_key.empty()) continue;
+    ++open_by_players;
+    if (held.setup.opener_key == c.public_key || held.opener_sender == sender) {
+      return refuse("you opened " + id + ", still taking entries: one at a time");
+    }
+  }
+  if (open_by_players >= kPlayerTournamentsOpen) {
+    return refuse("players have " + std::to_string(kPlayerTournamentsOpen) +
+                  " tournaments taking entries already");
+  }
+  TournamentSetup setup;
+  setup.name = c.name + "'s cup";
+  if (!validPlayerName(setup.name)) setup.name = c.name;
+  setup.format = c.opening->format;
+  setup.game = c.settings->game;
+  setup.race_to = c.settings->race_to;
+  setup.capacity = c.opening->entrants;
+  setup.handicap = c.opening->handicap;
+  setup.opened_by = c.name;
+  setup.opener_key = c.public_key;
+  auto created = create(setup);
+  if (!created) return refuse(created.error());
+  Held& held = tournaments_.at(*created);
+  held.opener_sender = sender;
+  JoinAnswer answer = addEntry(held, c, sender);
+  answer.match = held.id;
+  return answer;
+}
+
+JoinAnswer TournamentDesk::addEntry(Held& held, const JoinCommand& c, const std::string& sender) {
+  auto refuse = [&](JoinOutcome outcome, std::string why) {
+    JoinAnswer answer = JoinAnswer::refuse(outcome, std::move(why));
+    answer.match = held.id;
+    return answer;
+  };
+  JoinAnswer accepted{JoinOutcome::Accepted, {}, held.id, -1, 0, c.seq};
   for (const auto& e : held.entries) {
     if (e.key == c.public_key) return accepted;  // entered already: a repeated request
   }
   if (held.phase != protocol::TournamentPhase::Entry) {
     return refuse(JoinOutcome::NotAllowed,
-                  c.match + " takes no more entries (" + protocol::toString(held.phase) + ")");
+                  held.id + " takes no more entries (" + protocol::toString(held.phase) + ")");
   }
   if (static_cast<int>(held.entries.size()) >= held.setup.capacity) {
-    return refuse(JoinOutcome::MatchFull, c.match + " is full");
+    return refuse(JoinOutcome::MatchFull, held.id + " is full");
   }
   const auto from_sender = std::count_if(held.entries.begin(), held.entries.end(),
                                          [&](const Entry& e) { return e.sender == sender; });
@@ -259,6 +328,13 @@ JoinAnswer TournamentDesk::enter(const JoinCommand& c, const std::string& sender
   spdlog::info("tournament {}: {} entered ({} of {})", held.id, escapedForLog(c.name),
                held.entries.size(), held.setup.capacity);
   return accepted;
+}
+
+std::array<int, 2> TournamentDesk::spotsOf(const Held& held, int a, int b) const {
+  if (!held.setup.handicap || a < 0 || b < 0) return {0, 0};
+  return tournament::handicapSpots(held.entries[static_cast<std::size_t>(a)].rating,
+                                   held.entries[static_cast<std::size_t>(b)].rating,
+                                   held.setup.race_to);
 }
 
 void TournamentDesk::step(double now) {
@@ -345,8 +421,9 @@ void TournamentDesk::stepHeld(Held& held, double now) {
     protocol::MatchSettings settings;
     settings.game = held.setup.game;
     settings.race_to = held.setup.race_to;
-    if (auto reserved = table->reserveSeats({a.name, b.name}, {a.key, b.key},
-                                            {freshToken(), freshToken()}, settings, now);
+    if (auto reserved =
+            table->reserveSeats({a.name, b.name}, {a.key, b.key}, {freshToken(), freshToken()},
+                                settings, now, spotsOf(held, m.a, m.b));
         !reserved) {
       spdlog::error("tournament {}: {}: {}", held.id, table->id(), reserved.error());
       registry_.closeMatch(table->id(), "the tournament could not seat its players");
@@ -384,6 +461,8 @@ protocol::TournamentView TournamentDesk::viewOf(const Held& held) const {
   v.race_to = held.setup.race_to;
   v.phase = held.phase;
   v.capacity = held.setup.capacity;
+  v.handicap = held.setup.handicap;
+  v.opened_by = held.setup.opened_by;
   for (std::size_t i = 0; i < held.entries.size(); ++i) {
     const auto& e = held.entries[i];
     protocol::TournamentEntrantView ev;
@@ -401,8 +480,10 @@ protocol::TournamentView TournamentDesk::viewOf(const Held& held) const {
       v.entrants[static_cast<std::size_t>(s.entrant)].place = s.place;
     }
     for (const auto& m : held.bracket->matches()) {
+      const auto spots = spotsOf(held, m.a, m.b);
       v.matches.push_back({m.round, m.a, m.b, stateOf(m.state), m.winner, m.racksA, m.racksB,
-                           m.forfeit, held.match_ids[static_cast<std::size_t>(m.index)]});
+                           m.forfeit, held.match_ids[static_cast<std::size_t>(m.index)], spots[0],
+                           spots[1]});
     }
     v.champion = held.bracket->champion().value_or(-1);
   }
@@ -443,6 +524,12 @@ void TournamentDesk::save(const Held& held) {
   row.entries = entries.dump(-1, ' ', false, json::error_handler_t::replace);
   row.state = held.bracket ? held.bracket->toJson() : std::string();
   row.match_ids = json(held.match_ids).dump();
+  json options = {{"handicap", held.setup.handicap}};
+  if (!held.setup.opener_key.empty()) {
+    options["opened_by"] = held.setup.opened_by;
+    options["opener"] = hexOf(held.setup.opener_key);
+  }
+  row.options = options.dump(-1, ' ', false, json::error_handler_t::replace);
   store::saveTournament(store_->database(), row);
   store_->checkStillThere();
 }

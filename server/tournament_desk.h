@@ -3,6 +3,7 @@
 // their results taken from those matches, kept in the store and published (TournamentInfo).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -24,7 +25,16 @@ struct TournamentSetup {
   rules::Game game = rules::Game::EightBall;
   int race_to = 1;   ///< racks (frames, games) each match is a race to, 1..15
   int capacity = 8;  ///< the entrants it takes, 3..32: it starts once that many entered
+  /// The lower-rated player of each match starts with racks on the wire (tournament::
+  /// handicapSpots of the two ratings at entry).
+  bool handicap = false;
+  std::string opened_by = {};                 ///< the player who opened it; empty: the operator
+  std::vector<std::uint8_t> opener_key = {};  ///< their key
 };
+
+/// Tournaments taking entries that players opened, at most, on one server (the operator's are
+/// not counted); one of them a key, and one a DDS participant.
+inline constexpr int kPlayerTournamentsOpen = 4;
 
 /// Entries one DDS participant may make in one tournament (keys cost nothing: a participant that
 /// makes many is still one asking).
@@ -55,6 +65,10 @@ class TournamentDesk {
   /// made here too): the signing key enters under the request's name; entering again is accepted
   /// unchanged. Refused once the tournament has started, when it is full, or past
   /// kEntriesPerParticipant entries from `sender`.
+  /// An entry into protocol::kNewMatch with settings (game, race) and an opening (format,
+  /// entrants, handicap) opens a tournament ("<name>'s cup") that the signer enters first; the
+  /// answer names it. Refused past kPlayerTournamentsOpen taking entries, or when the key or
+  /// `sender` has one taking entries already.
   JoinAnswer enter(const JoinCommand& command, const std::string& sender);
 
   /// Takes the decided matches' results, opens the matches that are ready (as far as the
@@ -81,9 +95,15 @@ class TournamentDesk {
     std::vector<Entry> entries;
     std::optional<tournament::Tournament> bracket;  ///< once started
     std::vector<std::string> match_ids;             ///< by bracket match index
+    std::string opener_sender;  ///< the DDS participant a player opened it from (not stored)
     bool changed = true;
   };
 
+  JoinAnswer open(const JoinCommand& command, const std::string& sender);
+  /// Adds the signer of `command` (checked) to `held` from `sender`.
+  JoinAnswer addEntry(Held& held, const JoinCommand& command, const std::string& sender);
+  /// Racks on the wire for the entrants of bracket match `index` (none without a handicap).
+  std::array<int, 2> spotsOf(const Held& held, int a, int b) const;
   Check<> startHeld(Held& held);
   /// Forgets the tournaments over longest ago (kept in the store) while kMaxTournaments are held.
   void forgetOldest();

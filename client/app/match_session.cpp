@@ -1,6 +1,8 @@
 // Joining, following and shooting in one match from this screen.
 #include "client/app/match_session.h"
 
+#include "core/hex.h"
+
 #include <algorithm>
 #include <variant>
 
@@ -76,6 +78,7 @@ std::vector<SessionNote> MatchSession::takeNotes() {
 }
 
 void MatchSession::play(const std::string& match) {
+  stored_.close();
   want_ = Want::Play;
   wanted_match_ = match;
   stage_ = SessionStage::Joining;
@@ -83,6 +86,7 @@ void MatchSession::play(const std::string& match) {
 }
 
 void MatchSession::spectate(const std::string& match) {
+  stored_.close();
   want_ = Want::Spectate;
   wanted_match_ = match == "any" ? std::string() : match;
   stage_ = SessionStage::Joining;
@@ -106,6 +110,19 @@ void MatchSession::leave() {
   verdict_heard_.clear();
   replay_.clear();
   names_ = seatNames(nullptr);
+}
+
+void MatchSession::enterTournament(const std::string& tournament) {
+  clients_.front()->requestEnter(tournament);
+}
+
+void MatchSession::openTournament(const protocol::MatchSettings& settings,
+                                  const protocol::TournamentOpening& opening) {
+  clients_.front()->requestOpenTournament(settings, opening);
+}
+
+std::string MatchSession::playerKey() const {
+  return hexOf(clients_.front()->key().publicKey());
 }
 
 void MatchSession::rematch() {
@@ -211,6 +228,15 @@ void MatchSession::rejoinIfAway(const client::MatchView& view) {
 }
 
 void MatchSession::onAnswer(const client::JoinAnswer& answer, std::size_t from) {
+  // An entry (or a tournament opened) changes no seat: it is only told.
+  if (answer.action == client::JoinAction::Enter) {
+    if (answer.accepted()) {
+      note("entered tournament " + answer.match);
+    } else {
+      note("tournament: " + answer.reason, true);
+    }
+    return;
+  }
   if (answer.action == client::JoinAction::Leave && answer.accepted() && identities_[from]) {
     identities_[from]->forgetSeat();
   }
@@ -317,6 +343,8 @@ void MatchSession::handle(client::ClientEvent& event, std::size_t from, double n
     }
   } else if (auto* report = std::get_if<client::ShotReport>(&event)) {
     onReport(*report);
+  } else if (auto* stored = std::get_if<protocol::HistoryShot>(&event)) {
+    stored_.take(std::move(*stored), now);
   } else if (auto* aim = std::get_if<protocol::AimSample>(&event)) {
     // Our own seats' aims come back relayed: this screen draws its own cue.
     const auto local = localSeats();
@@ -334,6 +362,7 @@ void MatchSession::poll(double now) {
   }
   startPending();
   retryJoins();
+  askStored(now);
   // The followed cue goes when its turn does: a new shot counted, or the shot's motion drawn.
   const client::MatchView* v = view();
   if (const auto& latest = follower_.latest();
@@ -342,6 +371,29 @@ void MatchSession::poll(double now) {
     follower_.forget();
   }
   follower_.advance(now);
+}
+
+bool MatchSession::showStored(const std::string& match, std::uint32_t shot) {
+  if (stage_ != SessionStage::Lobby || match.empty()) return false;
+  const client::LobbyEntry* entry = lobby().find(match);
+  stored_.open(match, shot, entry ? entry->shot_number : 0);
+  return true;
+}
+
+void MatchSession::askStored(double now) {
+  const auto shot = stored_.due(now);
+  if (!shot) return;
+  client::GameClient& asker = *clients_.front();
+  if (!history_open_) {
+    asker.openHistory();
+    history_open_ = true;
+  }
+  auto request = asker.requestHistory(stored_.match(), *shot, 1);
+  if (request) {
+    stored_.asked(*request, now);
+  } else {
+    stored_.notAsked(request.error(), now);
+  }
 }
 
 void MatchSession::sendAim(int seat, const AimState& aim, const Eigen::Vector2d& cue_ball,

@@ -14,6 +14,7 @@
 #include "client/app/instant_replay.h"
 #include "client/app/playback_clock.h"
 #include "client/app/shot_story.h"
+#include "client/app/stored_replay.h"
 #include "client/net/aim_pacer.h"
 #include "client/net/game_client.h"
 #include "client/net/player_identity.h"
@@ -72,6 +73,13 @@ class MatchSession {
   void spectate(const std::string& match = {});
   /// Leaves the match (seats and watching) and goes back to the lobby.
   void leave();
+  /// Enters tournament `tournament` (the first seat's key and name); the answer is noted.
+  void enterTournament(const std::string& tournament);
+  /// Opens a tournament of `settings`' game and race, played as `opening` says, and enters it.
+  void openTournament(const protocol::MatchSettings& settings,
+                      const protocol::TournamentOpening& opening);
+  /// The first seat's key in lower-case hex: the entrant a tournament knows this player by.
+  std::string playerKey() const;
 
   /// Takes everything received; `now` (s, the caller's steady clock) stamps frames.
   void poll(double now);
@@ -141,6 +149,16 @@ class MatchSession {
   InstantReplay& replay() { return replay_; }
   const InstantReplay& replay() const { return replay_; }
 
+  /// Opens the replay of stored shot `shot` of any match (0: its last, the lobby's shot count
+  /// asked first), asked of its server over history (the endpoints opened on the first ask; the
+  /// ask sent again while unanswered). Only from the lobby, which it stands in for until
+  /// closeStored (a seat or a match to watch closes it too): false elsewhere.
+  bool showStored(const std::string& match, std::uint32_t shot = 0);
+  void closeStored() { stored_.close(); }
+  /// The stored shot asked for and shown (open while its replay stands in for the lobby).
+  StoredReplay& stored() { return stored_; }
+  const StoredReplay& stored() const { return stored_; }
+
   /// Notes since the last call: join answers, rejections, verdicts.
   std::vector<SessionNote> takeNotes();
   const std::string& lastVerdict() const { return last_verdict_; }
@@ -165,6 +183,7 @@ class MatchSession {
   void retryJoins();
   void onReport(const client::ShotReport& report);
   void startPending();
+  void askStored(double now);
   void note(std::string text, bool problem = false);
 
   SessionOptions options_;
@@ -187,6 +206,8 @@ class MatchSession {
   std::string last_verdict_;
   std::string verdict_heard_;  ///< the last state's verdict, to tell a new one
   InstantReplay replay_;       ///< the last shot's frames, to play again
+  StoredReplay stored_;        ///< a stored shot of any match, replayed in the lobby
+  bool history_open_ = false;  ///< the first client's history endpoints are open
   std::string banner_;
   std::deque<std::string> shot_log_;
   SeatNames names_ = seatNames(nullptr);

@@ -41,13 +41,16 @@ std::string tournamentLine(const protocol::TournamentView& t) {
     where = "cancelled";
   }
   return t.name + ": " + rules::toString(t.game) + ", " + formatWords(t.format) + ", race to " +
-         std::to_string(t.race_to) + " - " + where;
+         std::to_string(t.race_to) + (t.handicap ? ", handicapped" : "") + " - " + where;
 }
 
 std::vector<BracketLine> bracketLines(const protocol::TournamentView& t) {
   std::vector<BracketLine> out;
   for (const auto& m : t.matches) {
-    const std::string pair = m.round + ": " + nameOf(t, m.a) + " v " + nameOf(t, m.b);
+    std::string pair = m.round + ": " + nameOf(t, m.a) + " v " + nameOf(t, m.b);
+    // A handicap: the racks one of them started with.
+    if (m.spot_a > 0) pair += " (" + nameOf(t, m.a) + " +" + std::to_string(m.spot_a) + ")";
+    if (m.spot_b > 0) pair += " (" + nameOf(t, m.b) + " +" + std::to_string(m.spot_b) + ")";
     if (m.state == 3) {
       const std::string score = m.forfeit ? "by forfeit"
                                           : std::to_string(std::max(m.racks_a, m.racks_b)) + "-" +

@@ -10,10 +10,11 @@
 namespace pool::app {
 
 /// "Friday cup: 8-ball, single elimination, race to 1 - running, 3 of 7 matches played" (or
-/// "5/8 entered", "won by ann", "cancelled").
+/// "5/8 entered", "won by ann", "cancelled"; ", handicapped" after the race when it is).
 std::string tournamentLine(const protocol::TournamentView& t);
 
-/// One match of the bracket: "QF: ann v hal - ann won 1-0", "... - in play at srv-5", "... —
+/// One match of the bracket: "QF: ann v hal - ann won 1-0", "QF: ann v hal (hal +2) - in play at
+/// srv-5" (hal started with two racks on the wire), "... —
 /// next", "... - waiting"; `match` the table it is (or was) played at, `in_play` whether it is
 /// being played now.
 struct BracketLine {

@@ -99,7 +99,7 @@ Check<> GameClient::checkJump(const std::string& match, const char* what, std::u
 }
 
 std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, int seat,
-                                   std::uint64_t token) {
+                                   std::uint64_t token, const std::optional<Opening>& opening) {
   protocol::SeatRequest r;
   r.client = options_.client_id;
   r.request = next_request_++;
@@ -110,6 +110,10 @@ std::uint32_t GameClient::sendJoin(const std::string& match, JoinAction action, 
   r.name = options_.name;
   r.token = token;
   if (action == JoinAction::Seat) r.settings = table_settings_;
+  if (opening) {
+    r.settings = opening->first;
+    r.opening = opening->second;
+  }
   const std::uint32_t number = r.request;
   send(r);
   pending_[number] = PendingJoin{std::move(r), false};
@@ -240,6 +244,11 @@ std::vector<ClientEvent> GameClient::poll() {
 
 std::uint32_t GameClient::requestEnter(const std::string& tournament) {
   return sendJoin(tournament, JoinAction::Enter, -1, 0);
+}
+
+std::uint32_t GameClient::requestOpenTournament(const protocol::MatchSettings& settings,
+                                                const protocol::TournamentOpening& opening) {
+  return sendJoin(protocol::kNewMatch, JoinAction::Enter, -1, 0, Opening{settings, opening});
 }
 
 void GameClient::pollTournaments(std::vector<ClientEvent>& out) {

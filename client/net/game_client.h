@@ -95,6 +95,10 @@ class GameClient {
   /// Enters the tournament `tournament` under this client's name, signed with its key (the
   /// entrant is the key).
   std::uint32_t requestEnter(const std::string& tournament);
+  /// Opens a tournament of `settings`' game and race, played as `opening` says, and enters it
+  /// first (signed with our key); the accepted answer names it.
+  std::uint32_t requestOpenTournament(const protocol::MatchSettings& settings,
+                                      const protocol::TournamentOpening& opening);
   /// Leaves the seat held (or stops watching `match` when no seat is held there).
   std::uint32_t requestLeave(const std::string& match);
   std::uint32_t requestRematch();
@@ -177,8 +181,10 @@ class GameClient {
   const std::string& lastProblem() const { return last_problem_; }
 
  private:
-  std::uint32_t sendJoin(const std::string& match, JoinAction action, int seat,
-                         std::uint64_t token);
+  /// A tournament to open: its settings and how it is played.
+  using Opening = std::pair<protocol::MatchSettings, protocol::TournamentOpening>;
+  std::uint32_t sendJoin(const std::string& match, JoinAction action, int seat, std::uint64_t token,
+                         const std::optional<Opening>& opening = {});
   /// Fills in the seat held (match, seat, token) and `seq`, signs `message` with `sign` and
   /// writes it; the sequence number sent, or why not ("<what>: <error>").
   template <class Message, class Sign>

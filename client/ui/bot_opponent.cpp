@@ -49,27 +49,26 @@ std::string botOpponentName(bot::Level level) {
 }
 
 Check<> BotOpponent::start(std::uint32_t domain, const std::string& match, bot::Level level) {
+  // --stay: it plays the rematches the player asks for; its log is the player's only when it
+  // warns (a window's terminal is not the bot's log).
+  return launch({"--domain", std::to_string(domain), "--match", match, "--level",
+                 bot::toString(level), "--name", botOpponentName(level), "--think", "0.8", "--stay",
+                 "--log-level", "warn"});
+}
+
+Check<> BotOpponent::enter(std::uint32_t domain, const std::string& tournament, bot::Level level,
+                           const std::string& name) {
+  return launch({"--domain", std::to_string(domain), "--tournament", tournament, "--level",
+                 bot::toString(level), "--name", name, "--think", "0.8", "--log-level", "warn"});
+}
+
+Check<> BotOpponent::launch(std::vector<std::string> args) {
   stop();
   const std::string program = botProgram();
   if (program.empty())
     return Check<>::refuse(
         "no_program", "could not start the bot: no pool-bot beside pool-client or on the PATH");
-  // --stay: it plays the rematches the player asks for; its log is the player's only when it
-  // warns (a window's terminal is not the bot's log).
-  std::vector<std::string> args{program,
-                                "--domain",
-                                std::to_string(domain),
-                                "--match",
-                                match,
-                                "--level",
-                                bot::toString(level),
-                                "--name",
-                                botOpponentName(level),
-                                "--think",
-                                "0.8",
-                                "--stay",
-                                "--log-level",
-                                "warn"};
+  args.insert(args.begin(), program);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "client/bot/ai/bot_level.h"
 #include "core/check.h"
@@ -28,12 +29,19 @@ class BotOpponent {
   /// Starts a bot of `level` to take the free seat of `match` on DDS `domain`, or refuses with why
   /// it could not start, in one line.
   Check<> start(std::uint32_t domain, const std::string& match, bot::Level level);
+  /// Starts a bot of `level` named `name` that enters tournament `tournament` and plays each of
+  /// its matches there (pool-bot --tournament), or refuses with why, in one line.
+  Check<> enter(std::uint32_t domain, const std::string& tournament, bot::Level level,
+                const std::string& name);
   /// Stops the bot, if one runs.
   void stop();
   /// Whether the bot started last is still running.
   bool running();
 
  private:
+  /// Starts pool-bot with `args` (after the program's path), its output to /dev/null.
+  Check<> launch(std::vector<std::string> args);
+
   pid_t pid_ = -1;
 };
 

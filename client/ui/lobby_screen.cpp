@@ -3,6 +3,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "client/app/lobby_line.h"
 #include "client/app/player_columns.h"
 #include "client/app/spoken.h"
@@ -59,16 +61,54 @@ void drawPlayers(const client::PlayerBook& players) {
   ImGui::EndTable();
 }
 
+/// A tournament to open: its format, entrants and handicap (its game and race are the fresh
+/// table's options above).
+void openTournament(TableOptions& options, bool hotseat, std::optional<LobbyChoice>& choice) {
+  if (hotseat) return;  // an entrant is one player's key
+  if (ImGui::Button("Open a tournament"))
+    choice = LobbyChoice{LobbyChoice::Kind::OpenTournament, ""};
+  ImGui::SameLine();
+  constexpr const char* kFormats[] = {"single elimination", "double elimination", "round robin"};
+  for (int f = 0; f < 3; ++f) {
+    ImGui::SameLine();
+    ImGui::RadioButton(kFormats[f], &options.tournament_format, f);
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderInt("entrants", &options.tournament_entrants, 3,
+                   static_cast<int>(protocol::kMaxTournamentEntrants));
+  ImGui::SameLine();
+  ImGui::Checkbox("handicap", &options.handicap);
+}
+
+/// The buttons of a tournament taking entries: Enter (until this player is in) and Add a bot.
+void entryButtons(const protocol::TournamentView& t, const std::string& me, bool hotseat,
+                  std::optional<LobbyChoice>& choice) {
+  if (t.phase != protocol::TournamentPhase::Entry) return;
+  const bool full = static_cast<int>(t.entrants.size()) >= t.capacity;
+  if (t.entrantOf(me) >= 0) {
+    ImGui::TextUnformatted("you are in: your matches start here as they come");
+  } else if (!full && !hotseat && ImGui::SmallButton("Enter")) {
+    choice = LobbyChoice{LobbyChoice::Kind::Enter, t.tournament};
+  }
+  if (full) return;
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Add a bot"))
+    choice = LobbyChoice{LobbyChoice::Kind::AddBot, t.tournament};
+}
+
 /// The tournaments, each a tree of its entrants and its bracket (app::tournament_lines); a match
-/// in play has a Watch button.
+/// in play has a Watch button, one played or in play a Replay button.
 void drawTournaments(const std::map<std::string, protocol::TournamentView>& tournaments,
-                     bool joining, std::optional<LobbyChoice>& choice) {
+                     bool joining, bool hotseat, const std::string& me,
+                     std::optional<LobbyChoice>& choice) {
   if (tournaments.empty()) return;
   if (!ImGui::CollapsingHeader("Tournaments", ImGuiTreeNodeFlags_DefaultOpen)) return;
   for (const auto& [id, t] : tournaments) {
     ImGui::PushID(id.c_str());
     ImGui::SetNextItemOpen(true, ImGuiCond_Once);
     if (ImGui::TreeNode("tournament", "%s", app::tournamentLine(t).c_str())) {
+      if (!joining) entryButtons(t, me, hotseat, choice);
       for (const std::string& line : app::entrantLines(t)) ImGui::BulletText("%s", line.c_str());
       for (const app::BracketLine& line : app::bracketLines(t)) {
         ImGui::TextUnformatted(line.text.c_str());
@@ -77,6 +117,15 @@ void drawTournaments(const std::map<std::string, protocol::TournamentView>& tour
           ImGui::PushID(line.match.c_str());
           if (ImGui::SmallButton("Watch")) {
             choice = LobbyChoice{LobbyChoice::Kind::Spectate, line.match};
+          }
+          ImGui::PopID();
+        }
+        // A match played or in play: its stored shots.
+        if (!line.match.empty() && !joining) {
+          ImGui::SameLine();
+          ImGui::PushID(line.match.c_str());
+          if (ImGui::SmallButton("Replay")) {
+            choice = LobbyChoice{LobbyChoice::Kind::Replay, line.match};
           }
           ImGui::PopID();
         }
@@ -102,9 +151,15 @@ protocol::MatchSettings TableOptions::settings() const {
   return s;
 }
 
+protocol::TournamentOpening TableOptions::opening() const {
+  return {static_cast<protocol::TournamentFormat>(std::clamp(tournament_format, 0, 2)),
+          tournament_entrants, handicap};
+}
+
 std::optional<LobbyChoice> drawLobby(
     const client::Lobby& lobby, const std::map<std::string, protocol::TournamentView>& tournaments,
-    const client::PlayerBook& players, bool joining, bool hotseat, TableOptions& options) {
+    const client::PlayerBook& players, bool joining, bool hotseat, TableOptions& options,
+    const std::string& me) {
   std::optional<LobbyChoice> choice;
   const ImGuiViewport* screen = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(screen->WorkSize.x * 0.5f, screen->WorkSize.y * 0.5f),
@@ -142,6 +197,7 @@ std::optional<LobbyChoice> drawLobby(
       }
     }
     tableOptions(options);
+    openTournament(options, hotseat, choice);
   }
   ImGui::Separator();
   if (lobby.empty()) ImGui::TextUnformatted("no server found yet (is pool-server running?)");
@@ -167,16 +223,22 @@ std::optional<LobbyChoice> drawLobby(
       ImGui::TableNextColumn();
       if (joining) continue;
       ImGui::PushID(e->match.c_str());
-      if (e->seats_taken < (hotseat ? 1 : 2) && ImGui::SmallButton("Join")) {
-        choice = LobbyChoice{LobbyChoice::Kind::Play, e->match};
+      // Side by side; the first at the cell's start (a SameLine there would follow the cell
+      // before, where the button is clipped away).
+      if (e->seats_taken < (hotseat ? 1 : 2)) {
+        if (ImGui::SmallButton("Join")) choice = LobbyChoice{LobbyChoice::Kind::Play, e->match};
+        ImGui::SameLine();
       }
-      ImGui::SameLine();
       if (ImGui::SmallButton("Watch")) choice = LobbyChoice{LobbyChoice::Kind::Spectate, e->match};
+      if (e->shot_number > 0) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Replay")) choice = LobbyChoice{LobbyChoice::Kind::Replay, e->match};
+      }
       ImGui::PopID();
     }
     ImGui::EndTable();
   }
-  drawTournaments(tournaments, joining, choice);
+  drawTournaments(tournaments, joining, hotseat, me, choice);
   drawPlayers(players);
   ImGui::End();
   return choice;

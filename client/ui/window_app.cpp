@@ -93,7 +93,10 @@ class WindowApp {
     startWith(options);
   }
 
-  void setScript(std::vector<app::ScriptStep> steps) { script_.emplace(std::move(steps)); }
+  void setScript(std::vector<app::ScriptStep> steps) {
+    script_.emplace(std::move(steps));
+    interface_.setScriptMouse(&script_mouse_);
+  }
 
   int run(const std::atomic<bool>& stop) {
     const auto start = std::chrono::steady_clock::now();
@@ -126,6 +129,7 @@ class WindowApp {
       session_.play(options.match);
     }
     if (!options.spectate.empty()) session_.spectate(options.spectate);
+    if (!options.replay.empty()) session_.showStored(options.replay, options.replay_shot);
   }
 
   /// Writes the frame just drawn (read before the swap) when the window is closing.
@@ -160,9 +164,10 @@ class WindowApp {
     if (options_.json) progress_.report(session_);
     for (auto& note : session_.takeNotes()) notes_.add(std::move(note));
     turn_.follow();
-    if (script_ && playScriptFrame(*script_, controls_, session_, script_mouse_)) quit_ = true;
+    if (script_ && playScriptFrame(*script_, controls_, session_, script_mouse_, now)) quit_ = true;
     handleKeys(parts_, now);
     desk_.startBotOpponent();
+    desk_.answerTournamentCall();
     controls_.setBallDragging(session_.practiceTable());
     if (const auto move = controls_.takeBallMove(); move && session_.view()) {
       practice_.moveBall(*session_.view(), move->first, move->second);
@@ -173,20 +178,24 @@ class WindowApp {
     if (auto shot = controls_.takeShot()) shoot(std::move(*shot), now);
   }
 
-  /// The table the match in hand is played on (its lobby entry's: three-cushion's carom table):
-  /// loaded and drawn from now on when it is not the one shown. Every part holds the table by
-  /// reference, so it changes in place; a table that cannot load leaves the one shown, noted.
+  /// The table the match in hand is played on (its lobby entry's: three-cushion's carom table),
+  /// or in the lobby the table of the stored shot replayed: loaded and drawn from now on when it
+  /// is not the one shown. Every part holds the table by reference, so it changes in place; a
+  /// table that cannot load leaves the one shown, noted.
   void followTable() {
-    if (session_.match().empty()) return;
-    const client::LobbyEntry* entry = session_.lobby().find(session_.match());
-    if (!entry || entry->table.empty() || entry->table == view_.spec.name ||
-        entry->table == table_refused_) {
-      return;
+    std::string table;
+    if (const protocol::HistoryShot* stored = session_.stored().shown();
+        stored && session_.stage() == app::SessionStage::Lobby) {
+      table = stored->table;
+    } else if (!session_.match().empty()) {
+      const client::LobbyEntry* entry = session_.lobby().find(session_.match());
+      if (entry) table = entry->table;
     }
-    auto loaded = game::loadTable(entry->table);
+    if (table.empty() || table == view_.spec.name || table == table_refused_) return;
+    auto loaded = game::loadTable(table);
     if (!loaded) {
-      table_refused_ = entry->table;
-      notes_.add({"table " + entry->table + ": " + loaded.error(), true});
+      table_refused_ = table;
+      notes_.add({"table " + table + ": " + loaded.error(), true});
       return;
     }
     view_ = std::move(*loaded);

@@ -20,8 +20,12 @@ struct WindowOptions {
   bool play = false;     ///< take a seat at once (in `match`, or the first free table)
   std::string spectate;  ///< watch this match at once ("any": the first in play)
   std::string match;     ///< with `play`: this match
-  std::string script;    ///< input script file (see client/app/input_script.h)
-  bool json = false;     ///< print shots sent and messages as JSON lines on stdout
+  /// Replay a stored shot of this match at once, from the lobby (`pool-client --replay MATCH`):
+  /// shot `replay_shot`, or its last when 0 (`--shot N`).
+  std::string replay;
+  std::uint32_t replay_shot = 0;
+  std::string script;  ///< input script file (see client/app/input_script.h)
+  bool json = false;   ///< print shots sent and messages as JSON lines on stdout
   /// With `json`: a line for every frame drawn (the camera, the cue ball as drawn and in pixels,
   /// the mouse, the playback): tests check the picture against the server's frames.
   bool log_frames = false;

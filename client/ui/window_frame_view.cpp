@@ -17,6 +17,20 @@ std::optional<std::vector<physics::Ball>> replayedBalls(app::MatchSession& sessi
   return replay.sample(now);
 }
 
+/// A stored shot's replay, shown in the lobby's stead: its balls at `now` and what the frame's log
+/// says of it; none before its shot arrived.
+std::optional<StoredDrawn> storedShown(const app::MatchSession& session, double now) {
+  const app::StoredReplay& stored = session.stored();
+  if (session.stage() != app::SessionStage::Lobby || !stored.isOpen() || !stored.shown()) {
+    return std::nullopt;
+  }
+  auto balls = stored.balls(now);
+  if (!balls) return std::nullopt;
+  const protocol::HistoryShot& shot = *stored.shown();
+  return StoredDrawn{shot.match,       shot.shot_number,   shot.shots,
+                     stored.time(now), stored.atRest(now), std::move(*balls)};
+}
+
 /// The balls as the match has them, with the cue ball held or placed and a practice table's
 /// dragged ball under the cursor.
 void showMatchBalls(FrameView& f, const FrameSources& from, double now) {
@@ -87,7 +101,12 @@ FrameView viewFrame(const FrameSources& from, double now, int width, int height)
   FrameView f;
   f.width = width;
   f.height = height;
-  if (auto replay = replayedBalls(from.session, now)) {
+  auto stored = storedShown(from.session, now);
+  if (stored) {
+    f.replay = true;
+    f.balls_known = true;
+    f.shown = stored->balls;
+  } else if (auto replay = replayedBalls(from.session, now)) {
     f.replay = true;
     f.balls_known = true;
     f.shown = std::move(*replay);
@@ -99,6 +118,7 @@ FrameView viewFrame(const FrameSources& from, double now, int width, int height)
   const app::Toggles& t = from.controls.toggles();
   f.switches = {t.wireframe, t.textures, t.lighting};
   f.facts = frameFacts(from, now);
+  f.facts.stored = std::move(stored);
   return f;
 }
 

@@ -24,8 +24,8 @@ namespace pool::ui {
 struct FrameView {
   int width = 0;  ///< the framebuffer, pixels
   int height = 0;
-  bool replay = false;                    ///< the instant replay is shown: the balls only
-  bool balls_known = false;               ///< false: no state yet (the renderer keeps its balls)
+  bool replay = false;       ///< the instant replay or a stored shot is shown: the balls only
+  bool balls_known = false;  ///< false: no state yet (the renderer keeps its balls)
   std::vector<physics::Ball> shown;       ///< the balls as drawn
   std::optional<Eigen::Vector3d> chased;  ///< the cue ball the watching view follows
   std::vector<render::OverlayLine> overlay;
@@ -52,8 +52,9 @@ struct FrameSources {
   bool follow_cue = false;  ///< the watching view follows the cue ball while the balls run
 };
 
-/// The frame at `now` (s) on a `width` × `height` framebuffer: the instant replay while one
-/// shows, else the match's balls with the cue ball held or placed, the overlay and the cue.
+/// The frame at `now` (s) on a `width` × `height` framebuffer: a stored shot's replay in the
+/// lobby, the instant replay while one shows, else the match's balls with the cue ball held or
+/// placed, the overlay and the cue.
 FrameView viewFrame(const FrameSources& from, double now, int width, int height);
 
 }  // namespace pool::ui

@@ -74,6 +74,16 @@ void printDrawnLine(const DrawnFrame& f) {
   }
   line["aim_dropped"] = f.aim_dropped;
   if (!f.capture.empty()) line["capture"] = f.capture;
+  if (f.stored) {
+    nlohmann::json balls = nlohmann::json::array();
+    for (const auto& b : f.stored->balls) {
+      balls.push_back(
+          {{"id", b.id}, {"on", physics::onTable(b.state)}, {"x", b.pos.x()}, {"y", b.pos.y()}});
+    }
+    line["stored"] = {{"match", f.stored->match},     {"shot", f.stored->shot},
+                      {"shots", f.stored->shots},     {"time", f.stored->time},
+                      {"at_rest", f.stored->at_rest}, {"balls", balls}};
+  }
   printLine(line);
 }
 

@@ -31,6 +31,16 @@ struct CueStick {
   Eigen::Vector2d butt_px = Eigen::Vector2d::Zero();
 };
 
+/// The stored shot a frame draws (its replay from the lobby).
+struct StoredDrawn {
+  std::string match;
+  std::uint32_t shot = 0;
+  std::uint32_t shots = 0;           ///< the match's stored shots
+  double time = 0.0;                 ///< s since its strike (negative before it)
+  bool at_rest = false;              ///< its last frame (the table at rest) is drawn
+  std::vector<physics::Ball> balls;  ///< as drawn
+};
+
 /// One frame as drawn (--log-frames).
 struct DrawnFrame {
   double now = 0.0;                   ///< s on the window's clock
@@ -55,6 +65,7 @@ struct DrawnFrame {
   std::optional<protocol::AimSample> live_aim;  ///< the latest live aim shown (unsmoothed)
   std::uint64_t aim_dropped = 0;                ///< live aims dropped so far
   std::string capture;  ///< the PNG file this frame is written to (a script's capture step)
+  std::optional<StoredDrawn> stored;  ///< a stored shot's replay is drawn
 };
 
 /// Prints {"event": "drawn", ...}.

@@ -1,6 +1,8 @@
 // The match's requests at the window, each carried out on the session with a note for the player.
 #include "client/ui/window_match_desk.h"
 
+#include "client/app/tournament_call.h"
+
 #include <algorithm>
 
 namespace pool::ui {
@@ -110,7 +112,44 @@ void MatchDesk::takeLobbyChoice(const LobbyChoice& choice) {
     case LobbyChoice::Kind::Cancel:
       session_.leave();
       break;
+    case LobbyChoice::Kind::Replay:
+      session_.showStored(choice.match);  // its last shot first
+      break;
+    case LobbyChoice::Kind::Enter:
+      session_.enterTournament(choice.match);
+      break;
+    case LobbyChoice::Kind::AddBot:
+      addTournamentBot(choice.match, static_cast<bot::Level>(table_options_.bot_level));
+      break;
+    case LobbyChoice::Kind::OpenTournament:
+      session_.openTournament(table_options_.settings(), table_options_.opening());
+      break;
   }
+}
+
+void MatchDesk::addTournamentBot(const std::string& tournament, bot::Level level) {
+  // Bots started here play while the window stays (each its own key and DDS participant).
+  std::erase_if(entrant_bots_, [](const auto& bot) { return !bot->running(); });
+  if (entrant_bots_.size() >= kMaxEntrantBots) {
+    notes_.add({"at most " + std::to_string(kMaxEntrantBots) + " bots from this window", true});
+    return;
+  }
+  const std::string name = botOpponentName(level) + " " + std::to_string(++bots_named_);
+  auto bot = std::make_unique<BotOpponent>();
+  const auto started = bot->enter(domain_, tournament, level, name);
+  notes_.add({started ? name + " is entering " + tournament : started.error(), !started});
+  if (started) entrant_bots_.push_back(std::move(bot));
+}
+
+void MatchDesk::answerTournamentCall() {
+  if (session_.stage() != app::SessionStage::Lobby) return;
+  const auto call = app::tournamentCall(session_.tournaments(), session_.playerKey(), called_);
+  if (!call) return;
+  called_.insert(call->match);
+  notes_.add(
+      {"your tournament match: " + call->round + " v " + call->opponent + " at " + call->match,
+       false});
+  session_.play(call->match);
 }
 
 }  // namespace pool::ui

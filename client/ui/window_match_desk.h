@@ -2,8 +2,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "client/app/controls.h"
 #include "client/app/match_session.h"
@@ -51,6 +54,12 @@ class MatchDesk {
   void startBotOpponent();
   /// Carries out the lobby's `choice` with its table options.
   void takeLobbyChoice(const LobbyChoice& choice);
+  /// Starts a bot of `level` that enters `tournament` and plays its matches there while the
+  /// window stays (kMaxEntrantBots at most).
+  void addTournamentBot(const std::string& tournament, bot::Level level);
+  static constexpr std::size_t kMaxEntrantBots = 31;
+  /// In the lobby, takes the seat of the tournament match that calls this player (once each).
+  void answerTournamentCall();
   /// The lobby's options for a fresh table.
   TableOptions& tableOptions() { return table_options_; }
 
@@ -69,6 +78,9 @@ class MatchDesk {
   TableOptions table_options_;
   std::optional<bot::Level> bot_wanted_;  ///< a bot to start once this window holds its seat
   BotOpponent bot_opponent_;
+  std::vector<std::unique_ptr<BotOpponent>> entrant_bots_;  ///< bots entered in tournaments
+  int bots_named_ = 0;
+  std::set<std::string> called_;  ///< tournament matches this window took its seat in
   bool in_room_ = false;
   EightBallRoomState room_;
 };

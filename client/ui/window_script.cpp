@@ -4,11 +4,14 @@
 namespace pool::ui {
 
 bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
-                     const app::MatchSession& session, ScriptMouse& mouse) {
+                     const app::MatchSession& session, ScriptMouse& mouse, double at) {
   app::ScriptConditions now;
   now.can_aim = controls.mode() == app::ControlMode::Aiming;
   now.replaying = session.replay().playing();
-  now.moving = session.inMotion();
+  const app::StoredReplay& stored = session.stored();
+  const bool stored_moving = session.stage() == app::SessionStage::Lobby && stored.isOpen() &&
+                             stored.problem().empty() && (stored.waiting() || !stored.atRest(at));
+  now.moving = session.inMotion() || stored_moving;
   if (const auto* v = session.view()) {
     now.shot_number = v->shot_number;
     now.over = v->phase == client::MatchPhase::Over;
@@ -27,6 +30,7 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
       case app::ScriptStep::Kind::MousePress:
         mouse.at = {step.x, step.y};
         controls.mouseButton(app::MouseButton::Left, true, step.x, step.y, step.mods);
+        mouse.down = true;
         break;
       case app::ScriptStep::Kind::MouseOnCue:
         if (mouse.cue_ball) mouse.at = *mouse.cue_ball;
@@ -44,6 +48,7 @@ bool playScriptFrame(app::ScriptPlayer& script, app::Controls& controls,
       case app::ScriptStep::Kind::MouseRelease:
         if (step.count == 0) mouse.at = {step.x, step.y};
         controls.mouseButton(app::MouseButton::Left, false, mouse.at.x(), mouse.at.y());
+        mouse.down = false;
         break;
       case app::ScriptStep::Kind::Capture:
         mouse.capture = step.path;

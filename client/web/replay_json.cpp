@@ -47,7 +47,11 @@ std::string replayJson(const protocol::HistoryShot& shot, std::uint32_t asked) {
                    {"verdict", shot.verdict_text},
                    {"verdict_words", app::spokenText(shot.verdict_text)},
                    {"shoots", shot.shoots},
-                   {"scenario", shot.shoots ? scenario::scenarioJson(source) : std::string()}};
+                   // A scenario file strikes the cue ball: three-cushion's second player's shot
+                   // (their own ball struck) has none to download.
+                   {"scenario", shot.shoots && shot.cue.ball == physics::kCueBall
+                                    ? scenario::scenarioJson(source)
+                                    : std::string()}};
   std::string text = facts.dump(-1, ' ', false, json::error_handler_t::replace);
   text.pop_back();  // the closing brace: the balls and frames follow, written as the live ones
   fmt::format_to(std::back_inserter(text), R"(,"before":{},"after":{},"frames":{}}})",

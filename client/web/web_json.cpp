@@ -84,7 +84,9 @@ std::string tournamentsJson(const std::vector<const protocol::TournamentView*>& 
                          {"racks_a", m.racks_a},
                          {"racks_b", m.racks_b},
                          {"forfeit", m.forfeit},
-                         {"match", m.match}});
+                         {"match", m.match},
+                         {"spot_a", m.spot_a},
+                         {"spot_b", m.spot_b}});
     }
     list.push_back({{"tournament", t->tournament},
                     {"server", t->server},
@@ -94,6 +96,8 @@ std::string tournamentsJson(const std::vector<const protocol::TournamentView*>& 
                     {"race_to", t->race_to},
                     {"phase", protocol::toString(t->phase)},
                     {"capacity", t->capacity},
+                    {"handicap", t->handicap},
+                    {"opened_by", t->opened_by},
                     {"entrants", entrants},
                     {"matches", matches},
                     {"champion", t->champion}});

@@ -319,6 +319,11 @@ Sample<pool_JoinRequest> toWire(const SeatRequest& fields) {
     request.practice = fields.settings->practice;
     request.points = static_cast<std::uint16_t>(fields.settings->points);
   }
+  if (fields.opening) {
+    request.tournament_format = static_cast<std::uint8_t>(fields.opening->format);
+    request.entrants = static_cast<std::uint8_t>(std::clamp(fields.opening->entrants, 0, 255));
+    request.handicap = fields.opening->handicap;
+  }
   return sample;
 }
 
@@ -346,6 +351,14 @@ Result<SeatRequest> fromWire(const pool_JoinRequest& r) {
     auto settings = settingsOf(r.game, r.race_to, r.breaks, r.shot_clock, r.practice, r.points);
     if (!settings) return Result<SeatRequest>::fail("settings: " + settings.error());
     c.settings = *settings;
+  }
+  // An entry into "new" opens a tournament: its format, entrants and handicap cross with it.
+  if (c.action == JoinAction::Enter && c.match == kNewMatch) {
+    if (r.tournament_format > static_cast<int>(TournamentFormat::RoundRobin)) {
+      return Result<SeatRequest>::fail("tournament_format: not a known format");
+    }
+    c.opening = TournamentOpening{static_cast<TournamentFormat>(r.tournament_format), r.entrants,
+                                  r.handicap};
   }
   return Result<SeatRequest>::ok(std::move(c));
 }

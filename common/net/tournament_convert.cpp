@@ -59,14 +59,19 @@ Sample<pool_TournamentInfo> toWire(const protocol::TournamentView& v) {
     matches[i].racks_b = byteOf(m.racks_b);
     matches[i].forfeit = m.forfeit;
     setText(matches[i].match, m.match);
+    matches[i].spot_a = byteOf(m.spot_a);
+    matches[i].spot_b = byteOf(m.spot_b);
   }
   w.champion = indexOf(v.champion);
+  w.handicap = v.handicap;
+  setText(w.opened_by, v.opened_by);
   return sample;
 }
 
 Result<protocol::TournamentView> fromWire(const pool_TournamentInfo& w) {
   using Out = Result<protocol::TournamentView>;
-  if (!terminated(w.tournament) || !terminated(w.server) || !terminated(w.name)) {
+  if (!terminated(w.tournament) || !terminated(w.server) || !terminated(w.name) ||
+      !terminated(w.opened_by)) {
     return Out::fail("tournament: a text past its bound");
   }
   protocol::TournamentView v;
@@ -101,10 +106,12 @@ Result<protocol::TournamentView> fromWire(const pool_TournamentInfo& w) {
       return Out::fail("tournament: a match names no entrant of it");
     }
     v.matches.push_back({std::string(textOf(m.round)), m.a, m.b, m.state, m.winner, m.racks_a,
-                         m.racks_b, m.forfeit, std::string(textOf(m.match))});
+                         m.racks_b, m.forfeit, std::string(textOf(m.match)), m.spot_a, m.spot_b});
   }
   if (!entrant(w.champion)) return Out::fail("tournament: the champion is no entrant of it");
   v.champion = w.champion;
+  v.handicap = w.handicap;
+  v.opened_by = std::string(textOf(w.opened_by));
   return Out::ok(std::move(v));
 }
 

@@ -18,7 +18,9 @@ namespace pool::protocol {
 /// D, a ball nominated without a pocket). 9: snooker's jump-shot and free-ball-snookers fouls; the
 /// lobby's rack, shot count and game score (MatchInfo); players' records (PlayerStats); practice
 /// tables of every game (practice commands of up to 22 balls). 10: a match's stored shots for
-/// replays (HistoryRequest, HistoryShot).
-inline constexpr unsigned kProtocolVersion = 10;
+/// replays (HistoryRequest, HistoryShot); tournaments (JOIN_ENTER, TournamentInfo). 11: players
+/// open tournaments (JOIN_ENTER with the match "new" and the tournament's format, entrants and
+/// handicap); handicapped tournaments (each match's racks on the wire, who opened it).
+inline constexpr unsigned kProtocolVersion = 11;
 
 }  // namespace pool::protocol

@@ -1,6 +1,8 @@
 // The signed encoding of seat requests.
 #include "protocol/seat_request.h"
 
+#include <algorithm>
+
 namespace pool::protocol {
 
 namespace {
@@ -41,7 +43,12 @@ std::vector<std::uint8_t> signedBytes(const SeatRequest& r) {
   e.u8(r.settings ? static_cast<std::uint8_t>(s.breaks) : 0);
   e.f64(r.settings ? s.shot_clock : 0.0);
   e.u8(r.settings && s.practice ? 1 : 0);
-  e.u32(r.settings ? static_cast<std::uint32_t>(s.points) : 0);  // since version 7
+  e.u32(r.settings ? static_cast<std::uint32_t>(s.points) : 0);               // since version 7
+  const TournamentOpening& o = r.opening ? *r.opening : TournamentOpening{};  // since version 11
+  e.u8(r.opening ? 1 : 0);
+  e.u8(r.opening ? static_cast<std::uint8_t>(o.format) : 0);
+  e.u8(r.opening ? static_cast<std::uint8_t>(std::clamp(o.entrants, 0, 255)) : 0);
+  e.u8(r.opening && o.handicap ? 1 : 0);
   return e.message();
 }
 

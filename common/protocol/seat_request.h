@@ -12,6 +12,7 @@
 #include "protocol/key_pair.h"
 #include "protocol/match_settings.h"
 #include "protocol/protocol_enums.h"
+#include "protocol/tournament_view.h"
 
 namespace pool::protocol {
 
@@ -21,6 +22,15 @@ inline constexpr const char* kNewMatch = "new";
 /// The words of a match state's last verdict after a concession: "seat N" + these (+ what
 /// follows: the next rack, or the match won). Clients tell a concession by them.
 inline constexpr const char* kConcededTheRack = " conceded the rack";
+
+/// How a tournament a player opens is played (JoinAction::Enter with kNewMatch; its game and race
+/// are the request's settings).
+struct TournamentOpening {
+  TournamentFormat format = TournamentFormat::SingleElimination;
+  int entrants = 8;       ///< 3..kMaxTournamentEntrants
+  bool handicap = false;  ///< racks on the wire for the lower-rated player of each match
+  bool operator==(const TournamentOpening&) const = default;
+};
 
 /// One JoinRequest. Every action but Spectate (and Leave by a spectator) changes a seat and must
 /// be signed: Seat by the key it binds, the others by the seat's bound key.
@@ -39,6 +49,8 @@ struct SeatRequest {
   /// Seat: how to play, if this request opens the table (the first player to sit at a free
   /// table sets them; otherwise they are ignored). Empty: the server's defaults.
   std::optional<MatchSettings> settings;
+  /// Enter with kNewMatch (and settings): the tournament to open, which the signer enters first.
+  std::optional<TournamentOpening> opening;
 };
 
 /// True for the requests that change a seat and so must be signed.
@@ -47,7 +59,8 @@ bool changesSeat(const SeatRequest& request);
 /// The bytes a seat request's signature covers: the envelope header (tag SeatRequest, match,
 /// seat, token, seq), then action u8 | client length u8 + 40 | request u32 | name length u8 + 32
 /// | public key 32 bytes (zero-padded) | settings given u8 | game number u8 | race u32 | breaks u8
-/// | shot clock f64 | practice u8 (all 0 without settings).
+/// | shot clock f64 | practice u8 (all 0 without settings) | points u32 | opening given u8 | format
+/// u8 | entrants u8 | handicap u8 (all 0 without an opening).
 std::vector<std::uint8_t> signedBytes(const SeatRequest& request);
 
 /// Fills in `request.public_key` with `key`'s public half and `request.signature` with its

@@ -42,6 +42,8 @@ struct TournamentMatchView {
   int racks_b = 0;
   bool forfeit = false;
   std::string match = {};  ///< the server's match playing it, or empty
+  int spot_a = 0;          ///< racks on the wire for a (a handicapped tournament)
+  int spot_b = 0;
   bool operator==(const TournamentMatchView&) const = default;
 };
 
@@ -57,6 +59,8 @@ struct TournamentView {
   std::vector<TournamentEntrantView> entrants = {};
   std::vector<TournamentMatchView> matches = {};
   int champion = -1;
+  bool handicap = false;       ///< the lower-rated player of each match has racks on the wire
+  std::string opened_by = {};  ///< the player who opened it; empty: the operator
   bool operator==(const TournamentView&) const = default;
 
   /// The index of the entrant with key `player` (hex), or -1.

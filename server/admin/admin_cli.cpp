@@ -91,7 +91,8 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
   // tournament-create's settings; the other verbs take none of them.
   std::string format = "single";
   int game = 8, race = 1, entrants = 8;
-  const std::array<CLI::Option*, 4> tournament_options{
+  bool handicap = false;
+  const std::array<CLI::Option*, 5> tournament_options{
       admin->add_option("--format", format,
                         "tournament-create: single | double | round-robin (default single)"),
       admin->add_option("--game", game,
@@ -101,6 +102,9 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
       admin->add_option("--entrants", entrants,
                         "tournament-create: the entrants it takes, 3-32 (default 8); it starts "
                         "when full or when started"),
+      admin->add_flag("--handicap", handicap,
+                      "tournament-create: the lower-rated player of each match starts with racks "
+                      "on the wire (the spot that makes the race closest to even by the ratings)"),
   };
   for (auto* sub : {status, admin}) {
     sub->fallthrough();
@@ -153,7 +157,7 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
     } else if (verb == "tournament-create") {
       if (!need(1,
                 "tournament-create NAME... [--format single|double|round-robin] [--game N] "
-                "[--race N] [--entrants N]")) {
+                "[--race N] [--entrants N] [--handicap]")) {
         return 2;
       }
       doc["name"] = joined(rest);
@@ -161,6 +165,7 @@ int runAdminCommand(int argc, const char* const* argv, const std::string& defaul
       doc["game"] = game;
       doc["race"] = race;
       doc["entrants"] = entrants;
+      if (handicap) doc["handicap"] = true;
     } else if (verb == "tournament-start" || verb == "tournament-cancel") {
       if (!need(1, verb == "tournament-start" ? "tournament-start ID" : "tournament-cancel ID")) {
         return 2;

@@ -22,7 +22,8 @@ using Json = nlohmann::json;
 struct VerbInfo {
   Verb verb;
   const char* name;
-  std::set<std::string> fields;  ///< besides "verb"; every one required
+  std::set<std::string> fields;         ///< besides "verb"; every one required
+  std::set<std::string> optional = {};  ///< may be left out (a yes or no, false when out)
 };
 
 const std::array<VerbInfo, 11>& verbs() {
@@ -34,7 +35,10 @@ const std::array<VerbInfo, 11>& verbs() {
       {Verb::Unban, "unban", {"key"}},
       {Verb::Bans, "bans", {}},
       {Verb::Backup, "backup", {"path"}},
-      {Verb::TournamentCreate, "tournament-create", {"name", "format", "game", "race", "entrants"}},
+      {Verb::TournamentCreate,
+       "tournament-create",
+       {"name", "format", "game", "race", "entrants"},
+       {"handicap"}},
       {Verb::TournamentStart, "tournament-start", {"tournament"}},
       {Verb::TournamentCancel, "tournament-cancel", {"tournament"}},
       {Verb::Tournaments, "tournaments", {}},
@@ -146,12 +150,17 @@ Result<AdminRequest> parseRequest(const std::string& line) {
     return refuse("verb: '" + escapedForLog(name) + "' is not one of " + verbNames());
   }
   for (const auto& [field, value] : doc.items()) {
-    if (field != "verb" && !info->fields.count(field)) {
+    if (field != "verb" && !info->fields.count(field) && !info->optional.count(field)) {
       return refuse(escapedForLog(field) + ": not a field of " + name);
     }
   }
   AdminRequest out;
   out.verb = info->verb;
+  for (const auto& field : info->optional) {
+    if (!doc.contains(field)) continue;
+    if (!doc[field].is_boolean()) return refuse(field + ": must be true or false");
+    out.handicap = doc[field].get<bool>();  // the only optional field: tournament-create's
+  }
   for (const auto& field : info->fields) {
     if (!doc.contains(field)) return refuse(field + ": missing (" + name + " needs it)");
     if (isNumberField(field)) {
@@ -228,6 +237,7 @@ std::string requestLine(const AdminRequest& r) {
       doc["game"] = r.game;
       doc["race"] = r.race;
       doc["entrants"] = r.entrants;
+      if (r.handicap) doc["handicap"] = true;
       break;
     case Verb::TournamentStart:
     case Verb::TournamentCancel:

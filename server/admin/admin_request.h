@@ -37,6 +37,7 @@ struct AdminRequest {
   int game = 0;             ///< tournament-create: the game's number (8, 9, 10, 3, 22)
   int race = 0;             ///< tournament-create: each match a race to this many racks (1-15)
   int entrants = 0;         ///< tournament-create: the entrants it takes (3-32)
+  bool handicap = false;    ///< tournament-create (optional): racks on the wire by rating
 };
 
 /// The longest request line the server reads (bytes, newline excluded).

@@ -89,9 +89,15 @@ Match::Match(const MatchSnapshot& snapshot, std::shared_ptr<ShotRunner> runner,
 pool::Check<> Match::reserveSeats(const std::array<std::string, 2>& players,
                                   const std::array<std::vector<std::uint8_t>, 2>& keys,
                                   const std::array<std::uint64_t, 2>& tokens,
-                                  const protocol::MatchSettings& settings, double now) {
+                                  const protocol::MatchSettings& settings, double now,
+                                  const std::array<int, 2>& spots) {
   if (started_ || seats_[0].taken() || seats_[1].taken()) {
     return pool::Check<>::refuse("taken", "the table has started or a seat is taken");
+  }
+  for (const int spot : spots) {
+    if (spot < 0 || spot >= settings.race_to) {
+      return pool::Check<>::refuse("spot", "a spot is 0 to one below the race");
+    }
   }
   if (settings != settings_) {
     auto runner = runnerFor(settings.game);
@@ -111,6 +117,7 @@ pool::Check<> Match::reserveSeats(const std::array<std::string, 2>& players,
     seat.token = tokens[s];
     seat.public_key = keys[s];
     seat.away_since = now;
+    seat.racks_won = spots[s];  // on the wire from the start
   }
   reserveKeys(keys);
   touch();

@@ -64,12 +64,14 @@ class Match {
   /// Seats the two players a tournament drew for this table that has not started (names, keys and
   /// tokens; seat 0 is the bracket's entrant a), each away from `now` until they take their seat
   /// (takeSeat with that key gives it back), and starts the first rack with `settings` (checked):
-  /// a player who does not come within the grace period forfeits, as one who left. Refused when
-  /// the table has started or a seat is taken, or the game cannot be played here.
+  /// a player who does not come within the grace period forfeits, as one who left. `spots`: the
+  /// racks each seat starts the race with (a handicap; each below the race). Refused when the
+  /// table has started or a seat is taken, or the game cannot be played here.
   Check<> reserveSeats(const std::array<std::string, 2>& players,
                        const std::array<std::vector<std::uint8_t>, 2>& keys,
                        const std::array<std::uint64_t, 2>& tokens,
-                       const protocol::MatchSettings& settings, double now);
+                       const protocol::MatchSettings& settings, double now,
+                       const std::array<int, 2>& spots = {0, 0});
   /// Keeps this table's seats for `keys` for good (seat 0, seat 1): any other key is refused a
   /// seat, a decided race starts no new rack and no rematch (a tournament's table; a restarted
   /// server says so again after resuming it).

@@ -108,9 +108,15 @@ CREATE TABLE tournaments(
   created INTEGER NOT NULL);
 )sql";
 
-constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3,
-                                                         kVersion4, kVersion5, kVersion6,
-                                                         kVersion7, kVersion8, kVersion9};
+// A tournament's options beyond its settings (JSON, opaque to the store): its handicap, and who
+// opened it (a player's name and key; none: the operator).
+constexpr const char* kVersion10 = R"sql(
+ALTER TABLE tournaments ADD COLUMN options TEXT NOT NULL DEFAULT '{}';
+)sql";
+
+constexpr std::array<const char*, kSchemaVersion> kSteps{kVersion1, kVersion2, kVersion3, kVersion4,
+                                                         kVersion5, kVersion6, kVersion7, kVersion8,
+                                                         kVersion9, kVersion10};
 
 std::uint64_t bigEndian(const unsigned char* p, int n) {
   std::uint64_t v = 0;

@@ -11,7 +11,7 @@
 namespace pool::store {
 
 /// The schema version this code writes (PRAGMA user_version).
-inline constexpr int kSchemaVersion = 9;
+inline constexpr int kSchemaVersion = 10;
 /// PRAGMA application_id of a pool database ("POOL").
 inline constexpr std::int64_t kApplicationId = 0x504F4F4C;
 

@@ -1,4 +1,5 @@
-// Tournaments in the store: one row each in the tournaments table (schema version 9).
+// Tournaments in the store: one row each in the tournaments table (schema version 9; options
+// since 10).
 #include "server/store/tournament_book.h"
 
 namespace pool::store {
@@ -7,7 +8,7 @@ namespace {
 
 constexpr const char* kTournamentColumns =
     "id, number, name, format, game, race_to, capacity, phase, entries, state, match_ids, "
-    "created";
+    "created, options";
 
 int tournamentInt(const Statement& q, int column) {
   return static_cast<int>(q.integer(column));
@@ -27,6 +28,7 @@ StoredTournament tournamentAt(const Statement& q) {
   t.state = q.text(9);
   t.match_ids = q.text(10);
   t.created = q.integer(11);
+  t.options = q.text(12);
   return t;
 }
 
@@ -35,7 +37,7 @@ StoredTournament tournamentAt(const Statement& q) {
 void saveTournament(Database& db, const StoredTournament& t) {
   Transaction tx(db);
   db.prepare(std::string("INSERT OR REPLACE INTO tournaments(") + kTournamentColumns +
-             ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+             ") VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
       .bind(1, t.id)
       .bind(2, static_cast<std::int64_t>(t.number))
       .bind(3, t.name)
@@ -48,6 +50,7 @@ void saveTournament(Database& db, const StoredTournament& t) {
       .bind(10, t.state)
       .bind(11, t.match_ids)
       .bind(12, t.created)
+      .bind(13, t.options)
       .run();
   tx.commit();
 }

@@ -1,4 +1,5 @@
-// The tournaments the store keeps (schema 9): one row each, its settings and its texts opaque.
+// The tournaments the store keeps (schema 9, options since 10): one row each, its settings and its
+// texts opaque.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,7 @@ struct StoredTournament {
   std::string state = {};      ///< pool_tournament's Tournament::toJson(); empty before the start
   std::string match_ids = {};  ///< JSON array: the server match id of each match index, or ""
   std::int64_t created = 0;    ///< when it was created (the server's clock, seconds)
+  std::string options = "{}";  ///< JSON: the handicap, who opened it (since schema 10)
 };
 
 /// Stores `t`, replacing the tournament of the same id, in a transaction of its own. Throws

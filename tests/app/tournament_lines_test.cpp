@@ -34,6 +34,19 @@ TEST(TournamentLines, TheLineSaysWhereItStands) {
   t.phase = protocol::TournamentPhase::Finished;
   t.champion = 1;
   EXPECT_EQ(tournamentLine(t), "Friday cup: 8-ball, round robin, race to 3 - won by bob");
+  t.handicap = true;
+  EXPECT_EQ(tournamentLine(t),
+            "Friday cup: 8-ball, round robin, race to 3, handicapped - won by bob");
+}
+
+TEST(TournamentLines, AHandicapSaysWhoStartedWithRacks) {
+  auto t = cup();
+  t.handicap = true;
+  t.matches[1].spot_b = 2;
+  EXPECT_EQ(bracketLines(t)[1].text, "SF: ann v cid (cid +2) - in play at srv-3");
+  t.matches[1].spot_b = 0;
+  t.matches[1].spot_a = 1;
+  EXPECT_EQ(bracketLines(t)[1].text, "SF: ann v cid (ann +1) - in play at srv-3");
 }
 
 TEST(TournamentLines, TheBracketAndTheEntrants) {

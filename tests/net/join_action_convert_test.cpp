@@ -55,5 +55,49 @@ TEST(JoinActionConvert, AConcessionCrossesSignedAndAnUnknownActionIsRefused) {
   EXPECT_FALSE(fromWire(reply));
 }
 
+TEST(JoinActionConvert, ATournamentOpeningCrossesSignedAndAnUnknownFormatIsRefused) {
+  const protocol::KeyPair key = protocol::generateKeyPair();
+  protocol::SeatRequest r;
+  r.client = "c0ffee";
+  r.request = 5;
+  r.match = protocol::kNewMatch;
+  r.action = protocol::JoinAction::Enter;
+  r.name = "Ann";
+  r.seq = 3;
+  protocol::MatchSettings settings;
+  settings.game = rules::Game::TenBall;
+  settings.race_to = 4;
+  r.settings = settings;
+  r.opening = protocol::TournamentOpening{protocol::TournamentFormat::DoubleElimination, 12, true};
+  protocol::signSeatRequest(r, key);
+  auto wire = toWire(r);
+  EXPECT_EQ(wire->tournament_format, 1);
+  EXPECT_EQ(wire->entrants, 12);
+  EXPECT_TRUE(wire->handicap);
+  const auto back = fromWire(*wire);
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_TRUE(back->opening);
+  EXPECT_EQ(*back->opening, *r.opening);
+  EXPECT_EQ(back->settings->game, rules::Game::TenBall);
+  EXPECT_EQ(back->settings->race_to, 4);
+  EXPECT_EQ(protocol::verifySeatRequest(*back, key.publicKey()), protocol::SignatureCheck::Valid);
+  // Each of the opening's fields is signed.
+  for (int field = 0; field < 3; ++field) {
+    protocol::SeatRequest changed = *back;
+    if (field == 0) changed.opening->format = protocol::TournamentFormat::RoundRobin;
+    if (field == 1) changed.opening->entrants = 13;
+    if (field == 2) changed.opening->handicap = false;
+    EXPECT_EQ(protocol::verifySeatRequest(changed, key.publicKey()),
+              protocol::SignatureCheck::BadSignature)
+        << field;
+  }
+  // An entry into an existing tournament carries no opening, whatever the fields say.
+  setText(wire->match, "srv-t1");
+  EXPECT_FALSE(fromWire(*wire)->opening);
+  setText(wire->match, protocol::kNewMatch);
+  wire->tournament_format = 3;
+  EXPECT_EQ(fromWire(*wire).error(), "tournament_format: not a known format");
+}
+
 }  // namespace
 }  // namespace pool::net

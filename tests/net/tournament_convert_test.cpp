@@ -28,8 +28,10 @@ TournamentView cup() {
                           1500 + i, i + 1, 0, i == 3});
   }
   v.matches.push_back({"WB R1", 0, 3, 3, 0, 3, 1, false, "srv-4"});
-  v.matches.push_back({"WB R1", 1, 2, 2, -1, 0, 0, false, "srv-5"});
+  v.matches.push_back({"WB R1", 1, 2, 2, -1, 0, 0, false, "srv-5", 0, 2});
   v.matches.push_back({"LB R1", 3, -1, 0, -1, 0, 0, false, ""});
+  v.handicap = true;
+  v.opened_by = "Zoë";
   return v;
 }
 

@@ -5,6 +5,7 @@
 #include "client/render/eight_ball_room.h"
 #include "client/room/magic_eight_ball.h"
 #include "support/screenshot_fixture.h"
+#include "support/xvfb_run.h"
 
 namespace pool::client::test {
 namespace {
@@ -85,7 +86,7 @@ TEST_F(RenderEightBallTest, ADifferentAnswerChangesTheTextOnly) {
 }
 
 TEST_F(RenderEightBallTest, ABlankQuestionIsRefused) {
-  const std::string cmd = std::string("xvfb-run -a ") + POOL_BIN_DIR +
+  const std::string cmd = pool::test::xvfbRun() + std::string(" ") + POOL_BIN_DIR +
                           "/pool-client --screenshot " + png_ +
                           " --scene eightball --question \"  \" 2>/dev/null";
   EXPECT_NE(std::system(cmd.c_str()), 0);

@@ -11,6 +11,7 @@
 #include "client/render/scene.h"
 #include "support/png_image.h"
 #include "support/screenshot_fixture.h"
+#include "support/xvfb_run.h"
 
 namespace pool::client::test {
 namespace {
@@ -171,7 +172,7 @@ TEST_F(RenderScreenshotTest, FramesOptionStillWritesOnePng) {
 }
 
 TEST_F(RenderScreenshotTest, UnknownSceneIsRefusedWithoutWritingAFile) {
-  const std::string cmd = std::string("xvfb-run -a ") + POOL_BIN_DIR +
+  const std::string cmd = pool::test::xvfbRun() + std::string(" ") + POOL_BIN_DIR +
                           "/pool-client --screenshot " + png_ + " --scene nowhere 2>/dev/null";
   EXPECT_NE(std::system(cmd.c_str()), 0);
   EXPECT_EQ(loadPng(png_).width, 0);

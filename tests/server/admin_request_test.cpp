@@ -91,6 +91,19 @@ TEST(AdminRequest, TournamentVerbsReadTheirFieldsAndWriteThemBack) {
   EXPECT_EQ(again->game, create->game);
   EXPECT_EQ(again->race, create->race);
   EXPECT_EQ(again->entrants, create->entrants);
+  EXPECT_FALSE(again->handicap) << "left out: no handicap";
+  // A handicap is a yes or no, and crosses back.
+  auto handicapped =
+      parseRequest(R"({"verb":"tournament-create","name":"H","format":"single","game":9,"race":5,)"
+                   R"("entrants":8,"handicap":true})");
+  ASSERT_TRUE(handicapped) << handicapped.error();
+  EXPECT_TRUE(handicapped->handicap);
+  EXPECT_TRUE(parseRequest(requestLine(*handicapped))->handicap);
+  EXPECT_EQ(refusal(R"({"verb":"tournament-create","name":"H","format":"single","game":9,)"
+                    R"("race":5,"entrants":8,"handicap":1})"),
+            "handicap: must be true or false");
+  EXPECT_EQ(refusal(R"({"verb":"tournaments","handicap":true})"),
+            "handicap: not a field of tournaments");
   // Every format and game, and the bounds of race and entrants.
   for (const char* format : {"single", "double", "round-robin"}) {
     for (int game : {8, 9, 10, 3, 22}) {
@@ -202,6 +215,8 @@ TEST(AdminCommandLine, TournamentVerbsAreCheckedBeforeAnyServerIsAsked) {
   EXPECT_EQ(run({"tournament-create", "Spring", "--format", "round-robin", "--game", "22", "--race",
                  "15", "--entrants", "3"}),
             1);
+  EXPECT_EQ(run({"tournament-create", "Cup", "--race", "5", "--handicap"}), 1);
+  EXPECT_EQ(run({"tournaments", "--handicap"}), 2) << "a tournament-create flag";
   EXPECT_EQ(run({"tournament-start", "ab-t1"}), 1);
   EXPECT_EQ(run({"tournament-cancel", "ab-t1"}), 1);
   EXPECT_EQ(run({"tournaments"}), 1);

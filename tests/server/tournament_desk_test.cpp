@@ -271,6 +271,117 @@ TEST_F(TournamentDeskTest, ARestartRestoresTheTournamentFromTheStore) {
   EXPECT_FALSE(desk.cancel("srv-t1"));
 }
 
+TEST_F(TournamentDeskTest, APlayerOpensATournamentAndEntersItFirst) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  auto opening = [&](const std::string& who, const std::string& signer = {}) {
+    auto r = entry(who, protocol::kNewMatch);
+    protocol::MatchSettings settings;
+    settings.game = rules::Game::NineBall;
+    settings.race_to = 3;
+    r.settings = settings;
+    r.opening = protocol::TournamentOpening{protocol::TournamentFormat::RoundRobin, 5, true};
+    protocol::signSeatRequest(r, keyOf(signer.empty() ? who : signer));
+    r.public_key = publicKeyOf(who);
+    return r;
+  };
+  // Opened in someone else's name: the signature is not by the key it carries.
+  EXPECT_EQ(desk.enter(opening("ann", "eve"), "p-eve").outcome, JoinOutcome::BadSignature);
+  // The opening's fields are signed: a copy with another format does not verify.
+  auto altered = opening("ann");
+  altered.opening->format = protocol::TournamentFormat::SingleElimination;
+  EXPECT_EQ(desk.enter(altered, "p-ann").outcome, JoinOutcome::BadSignature);
+  auto without_format = opening("ann");
+  without_format.opening.reset();
+  protocol::signSeatRequest(without_format, keyOf("ann"));
+  EXPECT_EQ(desk.enter(without_format, "p-ann").outcome, JoinOutcome::NotAllowed);
+  auto too_many = opening("ann");
+  too_many.opening->entrants = 33;
+  protocol::signSeatRequest(too_many, keyOf("ann"));
+  const auto refused = desk.enter(too_many, "p-ann");
+  EXPECT_EQ(refused.outcome, JoinOutcome::NotAllowed);
+  EXPECT_EQ(refused.reason, "entrants: 3 to 32");
+  EXPECT_TRUE(desk.views().empty()) << "nothing opened by a refused request";
+
+  const auto opened = desk.enter(opening("ann"), "p-ann");
+  ASSERT_TRUE(opened.accepted()) << opened.reason;
+  EXPECT_EQ(opened.match, "srv-t1");
+  const auto view = desk.views().front();
+  EXPECT_EQ(view.name, "ann's cup");
+  EXPECT_EQ(view.opened_by, "ann");
+  EXPECT_EQ(view.format, protocol::TournamentFormat::RoundRobin);
+  EXPECT_EQ(view.game, rules::Game::NineBall);
+  EXPECT_EQ(view.race_to, 3);
+  EXPECT_EQ(view.capacity, 5);
+  EXPECT_TRUE(view.handicap);
+  ASSERT_EQ(view.entrants.size(), 1u);
+  EXPECT_EQ(view.entrants[0].name, "ann");
+  // One taking entries a key, and one a participant.
+  const auto again = desk.enter(opening("ann"), "p-ann2");
+  EXPECT_EQ(again.reason, "you opened srv-t1, still taking entries: one at a time");
+  EXPECT_FALSE(desk.enter(opening("bob"), "p-ann").accepted());
+  // Players together hold kPlayerTournamentsOpen taking entries at most.
+  for (const char* who : {"bob", "cid", "dot"}) {
+    EXPECT_TRUE(desk.enter(opening(who), std::string("p-") + who).accepted()) << who;
+  }
+  const auto fifth = desk.enter(opening("eve"), "p-eve");
+  EXPECT_EQ(fifth.reason, "players have 4 tournaments taking entries already");
+  EXPECT_EQ(desk.views().size(), 4u);
+  // The operator cancels one; its opener may open another.
+  ASSERT_TRUE(desk.cancel("srv-t1"));
+  EXPECT_TRUE(desk.enter(opening("ann"), "p-ann").accepted());
+  // Stored: a restart knows who opened it and its handicap.
+  MatchRegistry registry2(options_, nineFoot());
+  TournamentDesk restored(registry2, store_.get());
+  restored.restore();
+  EXPECT_EQ(restored.views(), desk.views());
+}
+
+TEST_F(TournamentDeskTest, AHandicapPutsRacksOnTheWireForTheLowerRated) {
+  // Ratings as the store keeps them: ann 1900, the others 1500 (9-ball).
+  const auto rate = [&](const char* who, double rating) {
+    store_->database()
+        .prepare(
+            "INSERT INTO ratings(public_key, game, rating, deviation, volatility, matches) "
+            "VALUES(?, 9, ?, 60, 0.06, 20)")
+        .bindBlob(1, publicKeyOf(who))
+        .bind(2, rating)
+        .run();
+  };
+  rate("ann", 1900);
+  rate("bob", 1700);
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  auto setup = cup(4);
+  setup.game = rules::Game::NineBall;
+  setup.race_to = 3;
+  setup.handicap = true;
+  ASSERT_TRUE(desk.create(setup));
+  ASSERT_NO_FATAL_FAILURE(enterEach(desk, {"ann", "bob", "cid", "dot"}));
+  desk.step(1.0);
+  const auto view = desk.views().front();
+  ASSERT_EQ(view.phase, protocol::TournamentPhase::Running);
+  // Seeds 1 v 4 (ann 1900 v a 1500: 400 points) and 2 v 3 (bob 1700 v a 1500: 200 points).
+  // A 1500 player wins a rack from a 1700 one with p = 1/(1+10^0.5) = 0.2403; in a race to 3 the
+  // chances of winning it with 0, 1, 2 racks on the wire are 0.094, 0.245, 0.562: 2 is nearest
+  // even. Against 1900 (p = 1/11): 0.007, 0.044, 0.249: 2 again (the most below the race).
+  int checked = 0;
+  for (const auto& m : view.matches) {
+    if (m.state != 2) continue;
+    const auto& a = view.entrants[static_cast<std::size_t>(m.a)];
+    const auto& b = view.entrants[static_cast<std::size_t>(m.b)];
+    ASSERT_GT(a.rating, b.rating) << "the better seed is a";
+    EXPECT_EQ(m.spot_a, 0) << m.round;
+    EXPECT_EQ(m.spot_b, 2) << m.round;
+    const Match* table = registry.find(m.match);
+    ASSERT_NE(table, nullptr);
+    EXPECT_EQ(table->seats()[0].racks_won, 0);
+    EXPECT_EQ(table->seats()[1].racks_won, 2) << "the spot is on the table's score";
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+}
+
 TEST_F(TournamentDeskTest, BadSetupsAreRefused) {
   MatchRegistry registry(options_, nineFoot());
   TournamentDesk desk(registry, store_.get());

@@ -28,6 +28,7 @@ StoredTournament sample(const std::string& id, std::uint64_t number) {
       .state = R"({"format":1,"matches":[]})",
       .match_ids = R"(["srv-4",""])",
       .created = 1'700'000'123,
+      .options = R"({"handicap":true,"opened_by":"Zoë"})",
   };
 }
 
@@ -44,6 +45,7 @@ void expectSame(const StoredTournament& got, const StoredTournament& want) {
   EXPECT_EQ(got.state, want.state);
   EXPECT_EQ(got.match_ids, want.match_ids);
   EXPECT_EQ(got.created, want.created);
+  EXPECT_EQ(got.options, want.options);
 }
 
 TEST(TournamentBook, ASavedTournamentReadsBackEveryField) {
@@ -124,26 +126,47 @@ TEST(TournamentBook, TournamentsAreListedByNumberAndCounted) {
   EXPECT_EQ(tournamentsOpened(db), 10u);
 }
 
+/// A file of schema `version` (its first `version` steps, as that version ran them) with `data`
+/// of its own, written at `path`.
+void writeFileOfSchema(const std::string& path, std::size_t version, const std::string& data) {
+  std::string sql;
+  const auto steps = migrationSteps();
+  ASSERT_GT(steps.size(), version);
+  for (std::size_t i = 0; i < version; ++i) sql += steps[i];
+  sql += data +
+         "PRAGMA application_id = 1347374924;\nPRAGMA user_version = " + std::to_string(version) +
+         ";\n";
+  test::runSql(path, sql);
+}
+
+TEST(TournamentBook, ATournamentOfSchemaNineReadsWithNoOptions) {
+  Scratch scratch;
+  const std::string path = scratch.file("v9.db");
+  ASSERT_NO_FATAL_FAILURE(writeFileOfSchema(path, 9, R"sql(
+INSERT INTO meta VALUES('server_id', 'old'), ('opened', '0');
+INSERT INTO tournaments VALUES('old-t1', 1, 'Cup', 0, 8, 2, 4, 0, '[]', '', '[]', 17);
+)sql"));
+  auto store = MatchStore::open(path);
+  ASSERT_TRUE(store) << store.error();
+  const auto got = tournament((*store)->database(), "old-t1");
+  ASSERT_TRUE(got);
+  EXPECT_EQ(got->name, "Cup");
+  EXPECT_EQ(got->race_to, 2);
+  EXPECT_EQ(got->options, "{}") << "an operator's tournament without a handicap";
+}
+
 TEST(TournamentBook, AFileOfSchemaEightMigratesToNineKeepingItsData) {
   Scratch scratch;
   const std::string path = scratch.file("v8.db");
-  // A version-8 file: the first eight steps, as that version ran them, and some data of its own.
-  std::string sql;
-  const auto steps = migrationSteps();
-  ASSERT_GE(steps.size(), 9u);
-  for (std::size_t i = 0; i < 8; ++i) sql += steps[i];
-  sql += R"sql(
+  ASSERT_NO_FATAL_FAILURE(writeFileOfSchema(path, 8, R"sql(
 INSERT INTO meta VALUES('server_id', 'old'), ('opened', '4');
 INSERT INTO bans VALUES(x'0102', 'spam', '2024-01-02 03:04:05');
-PRAGMA application_id = 1347374924;
-PRAGMA user_version = 8;
-)sql";
-  test::runSql(path, sql);
+)sql"));
   auto store = MatchStore::open(path);
   ASSERT_TRUE(store) << store.error();
   Database& db = (*store)->database();
   EXPECT_EQ(db.integer("PRAGMA user_version"), kSchemaVersion);
-  EXPECT_EQ(kSchemaVersion, 9);
+  EXPECT_EQ(kSchemaVersion, 10);
   EXPECT_EQ((*store)->serverId(), "old");
   EXPECT_EQ((*store)->opened(), 4u);
   const auto kept = bans(db);

@@ -11,6 +11,7 @@
 #include "support/display_check.h"
 #include "support/png_image.h"
 #include "support/reported_camera.h"
+#include "support/xvfb_run.h"
 
 namespace pool::client::test {
 
@@ -28,7 +29,7 @@ class ScreenshotTest : public ::testing::Test {
   }
   /// Renders with `extra` flags and decodes the result (empty image on failure).
   Image screenshot(const std::string& extra) const {
-    const std::string cmd = std::string("xvfb-run -a -s \"-screen 0 1280x720x24\" ") +
+    const std::string cmd = pool::test::xvfbRun() + std::string(" -s \"-screen 0 1280x720x24\" ") +
                             POOL_BIN_DIR + "/pool-client --screenshot " + png_ + " " + extra;
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     return loadPng(png_);

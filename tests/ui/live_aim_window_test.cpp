@@ -19,6 +19,7 @@
 #include "support/png_image.h"
 #include "support/reported_camera.h"
 #include "support/window_output.h"
+#include "support/xvfb_run.h"
 #include "table/table_spec.h"
 
 namespace pool::client::test {
@@ -42,9 +43,9 @@ class LiveAimWindowTest : public ClientIntegrationTest {
 
   void startSpectatingWindow(const std::string& match, const std::string& script) {
     std::ofstream(file("input.script")) << script;
-    const std::string cmd = "timeout 150 xvfb-run -a -s \"-screen 0 1280x720x24\" " +
-                            std::string(POOL_BIN_DIR) + "/pool-client --domain " +
-                            std::to_string(domain_) +
+    const std::string cmd = "timeout 150 " + pool::test::xvfbRun() +
+                            " -s \"-screen 0 1280x720x24\" " + std::string(POOL_BIN_DIR) +
+                            "/pool-client --domain " + std::to_string(domain_) +
                             " --json --log-frames --timeout 120 --width 800 --height 450" +
                             " --spectate " + match + " --script " + file("input.script") + " > " +
                             file("window.out") + " 2> " + file("window.err");

@@ -10,6 +10,7 @@
 #include <future>
 #include <glm/glm.hpp>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
@@ -23,6 +24,7 @@
 #include "support/png_image.h"
 #include "support/reported_camera.h"
 #include "support/window_output.h"
+#include "support/xvfb_run.h"
 #include "table/table_spec.h"
 
 namespace pool::client::test {
@@ -54,7 +56,7 @@ class WindowClientTest : public ClientIntegrationTest {
   /// Starts pool-client in a window under Xvfb (in the background) with `args` and `script`.
   void startWindow(const std::vector<std::string>& args, const std::string& script) {
     std::ofstream(file("input.script")) << script;
-    std::string cmd = "timeout 150 xvfb-run -a -s \"-screen 0 1280x720x24\" " +
+    std::string cmd = "timeout 150 " + pool::test::xvfbRun() + " -s \"-screen 0 1280x720x24\" " +
                       std::string(POOL_BIN_DIR) + "/pool-client --domain " +
                       std::to_string(domain_) + " --json --timeout 120 --width 800 --height 450" +
                       " --script " + file("input.script");
@@ -999,7 +1001,8 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
 
 // After the break, I replays it: the drawn cue ball passes again through the server's frames of
 // that shot (within 2 px, projected through the camera each frame reports), from the strike on,
-// while the view is turned (right drag) during the replay; then the live table is back.
+// while the view is turned (right drag) during the replay; then the live table is back. A second
+// window then replays the stored break from the lobby (--replay) to the server's layout at rest.
 TEST_F(WindowClientTest, TheInstantReplayDrawsTheLastShotsFramesAgain) {
   open(kWindowReplay, "window-replay");
   MatchRecorder recorder(kWindowReplay);
@@ -1042,6 +1045,46 @@ TEST_F(WindowClientTest, TheInstantReplayDrawsTheLastShotsFramesAgain) {
       << "the replayed cue ball moved as it did in the break";
   EXPECT_GT(views.size(), 5u) << "the view moved during the replay";
   EXPECT_TRUE(live_after) << "the live table came back after the replay";
+
+  // The same shot as the server stored it, replayed from the lobby (pool-client --replay): the
+  // pane names it, and it comes to rest with every ball where the server's state after it has
+  // it (a pocketed ball off the table).
+  const MatchView* rest = recorder.latest(match);
+  ASSERT_NE(rest, nullptr);
+  ASSERT_EQ(rest->shot_number, 1u);
+  startWindow({"--replay", match, "--shot", "1", "--log-frames", "--fresh-identity"},
+              "wait rest\nframes 5\nquit\n");
+  EXPECT_EQ(windowExit(recorder), 0) << windowErr();
+  nlohmann::json stored;
+  bool played = false;
+  for (const auto& d : windowLines("drawn")) {
+    if (!d.contains("stored")) continue;
+    stored = d["stored"];
+    played = played || (stored["time"].get<double>() > 0.1 && !stored["at_rest"].get<bool>());
+  }
+  ASSERT_FALSE(stored.is_null()) << "no stored shot drawn\n" << windowErr();
+  EXPECT_TRUE(played) << "the stored shot was not seen in motion";
+  EXPECT_EQ(stored["match"], match);
+  EXPECT_EQ(stored["shot"], 1);
+  EXPECT_TRUE(stored["at_rest"].get<bool>());
+  std::map<int, nlohmann::json> drawn;
+  for (const auto& b : stored["balls"]) drawn[b["id"].get<int>()] = b;
+  EXPECT_EQ(drawn.size(), rest->balls.size());
+  for (const auto& b : rest->balls) {
+    ASSERT_TRUE(drawn.count(b.id)) << "ball " << b.id;
+    EXPECT_EQ(drawn[b.id]["on"].get<bool>(), physics::onTable(b.state)) << "ball " << b.id;
+    if (!physics::onTable(b.state)) continue;
+    EXPECT_NEAR(drawn[b.id]["x"].get<double>(), b.pos.x(), 1e-6) << "ball " << b.id;
+    EXPECT_NEAR(drawn[b.id]["y"].get<double>(), b.pos.y(), 1e-6) << "ball " << b.id;
+  }
+  bool named = false;
+  for (const auto& h : windowLines("hud")) {
+    for (const auto& text : h["texts"]) {
+      named =
+          named || text.get<std::string>().rfind("Replay of " + match + ", shot 1 of 1: ", 0) == 0;
+    }
+  }
+  EXPECT_TRUE(named) << "the pane did not name the shot";
 }
 
 // The drawing quality chosen in the settings file is the one the window draws with, whatever

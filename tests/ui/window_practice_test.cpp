@@ -12,6 +12,7 @@
 #include "physics/events.h"
 #include "support/client_fixture.h"
 #include "support/display_check.h"
+#include "support/xvfb_run.h"
 
 namespace pool::client::test {
 namespace {
@@ -53,9 +54,9 @@ TEST_F(WindowPracticeTest, KeysShootUndoSaveAndRerackAtAPracticeTable) {
                                          "down F5\nup F5\nframes 3\n"
                                          "down 9\nup 9\nframes 3\nwait aiming\n"
                                          "frames 10\nquit\n";
-  const std::string cmd = "timeout 150 xvfb-run -a -s \"-screen 0 1280x720x24\" " +
-                          std::string(POOL_BIN_DIR) + "/pool-client --domain " +
-                          std::to_string(domain_) +
+  const std::string cmd = "timeout 150 " + pool::test::xvfbRun() +
+                          " -s \"-screen 0 1280x720x24\" " + std::string(POOL_BIN_DIR) +
+                          "/pool-client --domain " + std::to_string(domain_) +
                           " --json --timeout 120 --width 800 --height 450 --practice"
                           " --fresh-identity --practice-file " +
                           saved + " --script " + file("input.script") + " > " + file("window.out") +

@@ -17,17 +17,22 @@ export function tournamentButtonText(t) {
   } else if (t.phase === 'cancelled') {
     where = 'cancelled';
   }
-  return `${t.name}: ${t.game}, ${FORMATS[t.format] || t.format}, race to ${t.race_to} - ${where}`;
+  const handicap = t.handicap ? ', handicapped' : '';
+  return `${t.name}: ${t.game}, ${FORMATS[t.format] || t.format}, race to ${t.race_to}${handicap} - ${where}`;
 }
 
 function nameOf(t, i) {
   return i >= 0 && i < t.entrants.length ? t.entrants[i].name : 'to come';
 }
 
-/** One line per match of the bracket: "QF: ann v hal - ann 1-0", "... - in play at srv-2". */
+/** One line per match of the bracket: "QF: ann v hal - ann 1-0", "QF: ann v hal (hal +2) - in
+ * play at srv-2". */
 export function bracketLines(t) {
   return t.matches.map((m) => {
-    const pair = `${m.round}: ${nameOf(t, m.a)} v ${nameOf(t, m.b)}`;
+    let pair = `${m.round}: ${nameOf(t, m.a)} v ${nameOf(t, m.b)}`;
+    // A handicap: the racks one of them started with.
+    if (m.spot_a > 0) pair += ` (${nameOf(t, m.a)} +${m.spot_a})`;
+    if (m.spot_b > 0) pair += ` (${nameOf(t, m.b)} +${m.spot_b})`;
     if (m.state === 3) {
       const score = m.forfeit ? 'by forfeit' : `${Math.max(m.racks_a, m.racks_b)}-${Math.min(m.racks_a, m.racks_b)}`;
       return { text: `${pair} - ${nameOf(t, m.winner)} won ${score}`, match: m.match, state: 3 };
