@@ -85,6 +85,10 @@ void TournamentDesk::restore() {
         held.setup.opener_key = *opener;
       }
     }
+    if (field("signature").is_string()) {
+      held.setup.opening_signature =
+          bytesFromHex(field("signature").get<std::string>()).value_or(std::vector<std::uint8_t>{});
+    }
     if (!row.state.empty()) {
       auto bracket = tournament::Tournament::fromJson(row.state);
       if (!bracket) {
@@ -128,11 +132,19 @@ void TournamentDesk::restore() {
         }
       }
     }
+    // The entrants' rating deviations at entry (a bracket keeps the ratings alone).
+    const json deviations = field("deviations");
+    if (deviations.is_array() && deviations.size() == held.entries.size()) {
+      for (std::size_t i = 0; i < held.entries.size(); ++i) {
+        if (deviations[i].is_number()) held.entries[i].deviation = deviations[i].get<double>();
+      }
+    }
     spdlog::info("tournament {} ({}) restored: {}, {} entrants", held.id, held.setup.name,
                  protocol::toString(held.phase), held.entries.size());
+    // Those over longest ago make room as the rows are read (kept in the store).
+    forgetOldest();
     tournaments_[held.id] = std::move(held);
   }
-  forgetOldest();
 }
 
 void TournamentDesk::forgetOldest() {
@@ -157,6 +169,13 @@ Result<std::string> TournamentDesk::create(const TournamentSetup& setup) {
   if (setup.race_to < 1 || setup.race_to > 15) return Out::fail("race: 1 to 15");
   if (setup.capacity < tournament::kMinEntrants || setup.capacity > tournament::kMaxEntrants) {
     return Out::fail("entrants: 3 to 32");
+  }
+  // Every match of the bracket crosses the wire: a round robin of N plays N(N-1)/2.
+  if (setup.format == protocol::TournamentFormat::RoundRobin &&
+      setup.capacity * (setup.capacity - 1) / 2 >
+          static_cast<int>(protocol::kMaxTournamentMatches)) {
+    return Out::fail("entrants: a round robin takes 3 to " +
+                     std::to_string(kMaxRoundRobinEntrants));
   }
   forgetOldest();
   if (tournaments_.size() >= kMaxTournaments) {
@@ -266,17 +285,31 @@ JoinAnswer TournamentDesk::open(const JoinCommand& c, const std::string& sender)
   }
   if (c.settings->practice) return refuse("a tournament is no practice table");
   if (auto ok = protocol::checkSettings(*c.settings); !ok) return refuse(ok.error());
-  int open_by_players = 0;
+  // The same signed request again (a retry, or someone replaying it) is that tournament.
   for (const auto& [id, held] : tournaments_) {
-    if (held.phase != protocol::TournamentPhase::Entry || held.setup.opener_key.empty()) continue;
-    ++open_by_players;
+    if (held.setup.opening_signature == c.signature) {
+      return JoinAnswer{JoinOutcome::Accepted, {}, id, -1, 0, c.seq};
+    }
+  }
+  int taking_entries = 0, not_over = 0;
+  for (const auto& [id, held] : tournaments_) {
+    if (held.setup.opener_key.empty()) continue;
+    const bool entry = held.phase == protocol::TournamentPhase::Entry;
+    if (!entry && held.phase != protocol::TournamentPhase::Running) continue;
+    ++not_over;
+    if (!entry) continue;
+    ++taking_entries;
     if (held.setup.opener_key == c.public_key || held.opener_sender == sender) {
       return refuse("you opened " + id + ", still taking entries: one at a time");
     }
   }
-  if (open_by_players >= kPlayerTournamentsOpen) {
+  if (taking_entries >= kPlayerTournamentsOpen) {
     return refuse("players have " + std::to_string(kPlayerTournamentsOpen) +
                   " tournaments taking entries already");
+  }
+  if (not_over >= kPlayerTournamentsNotOver) {
+    return refuse("players have " + std::to_string(kPlayerTournamentsNotOver) +
+                  " tournaments not over already");
   }
   TournamentSetup setup;
   setup.name = c.name + "'s cup";
@@ -288,6 +321,7 @@ JoinAnswer TournamentDesk::open(const JoinCommand& c, const std::string& sender)
   setup.handicap = c.opening->handicap;
   setup.opened_by = c.name;
   setup.opener_key = c.public_key;
+  setup.opening_signature = c.signature;
   auto created = create(setup);
   if (!created) return refuse(created.error());
   Held& held = tournaments_.at(*created);
@@ -320,9 +354,10 @@ JoinAnswer TournamentDesk::addEntry(Held& held, const JoinCommand& c, const std:
     return refuse(JoinOutcome::NotAllowed, "at most " + std::to_string(kEntriesPerParticipant) +
                                                " entries from one participant");
   }
-  const double rating =
-      store_ ? store::ratingOf(store_->database(), c.public_key, held.setup.game).rating : 1500.0;
-  held.entries.push_back({c.name, c.public_key, rating, sender});
+  const rating::Rating rated =
+      store_ ? store::ratingOf(store_->database(), c.public_key, held.setup.game)
+             : rating::Rating{};
+  held.entries.push_back({c.name, c.public_key, rated.rating, sender, rated.deviation});
   held.changed = true;
   save(held);
   spdlog::info("tournament {}: {} entered ({} of {})", held.id, escapedForLog(c.name),
@@ -332,8 +367,9 @@ JoinAnswer TournamentDesk::addEntry(Held& held, const JoinCommand& c, const std:
 
 std::array<int, 2> TournamentDesk::spotsOf(const Held& held, int a, int b) const {
   if (!held.setup.handicap || a < 0 || b < 0) return {0, 0};
-  return tournament::handicapSpots(held.entries[static_cast<std::size_t>(a)].rating,
-                                   held.entries[static_cast<std::size_t>(b)].rating,
+  const auto& ea = held.entries[static_cast<std::size_t>(a)];
+  const auto& eb = held.entries[static_cast<std::size_t>(b)];
+  return tournament::handicapSpots({ea.rating, ea.deviation}, {eb.rating, eb.deviation},
                                    held.setup.race_to);
 }
 
@@ -345,6 +381,18 @@ void TournamentDesk::stepHeld(Held& held, double now) {
   if (held.phase == protocol::TournamentPhase::Entry &&
       static_cast<int>(held.entries.size()) >= held.setup.capacity) {
     if (auto started = startHeld(held); !started) spdlog::error("{}", started.error());
+  }
+  // A player's tournament takes entries for a while: then it starts with those in, or is off.
+  if (held.phase == protocol::TournamentPhase::Entry && !held.setup.opener_key.empty()) {
+    if (!held.entry_since) held.entry_since = now;
+    if (now - *held.entry_since >= kPlayerEntryWindow) {
+      const bool enough = static_cast<int>(held.entries.size()) >= tournament::kMinEntrants;
+      if (!enough || !startHeld(held)) {
+        spdlog::info("tournament {}: too few entries in {} minutes", held.id,
+                     static_cast<int>(kPlayerEntryWindow / 60));
+        (void)cancel(held.id);
+      }
+    }
   }
   if (held.phase != protocol::TournamentPhase::Running || !held.bracket) return;
   tournament::Tournament& bracket = *held.bracket;
@@ -528,7 +576,11 @@ void TournamentDesk::save(const Held& held) {
   if (!held.setup.opener_key.empty()) {
     options["opened_by"] = held.setup.opened_by;
     options["opener"] = hexOf(held.setup.opener_key);
+    options["signature"] = hexOf(held.setup.opening_signature);
   }
+  json deviations = json::array();
+  for (const auto& e : held.entries) deviations.push_back(e.deviation);
+  options["deviations"] = deviations;
   row.options = options.dump(-1, ' ', false, json::error_handler_t::replace);
   store::saveTournament(store_->database(), row);
   store_->checkStillThere();

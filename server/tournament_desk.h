@@ -1,6 +1,7 @@
-// The tournaments a server runs: created by the operator, entered by players with signed
-// requests, their matches opened as ordinary matches with the drawn players' seats reserved,
-// their results taken from those matches, kept in the store and published (TournamentInfo).
+// The tournaments a server runs: created by the operator or opened by players, entered by
+// players with signed requests, their matches opened as ordinary matches with the drawn players'
+// seats reserved, their results taken from those matches, kept in the store and published
+// (TournamentInfo).
 #pragma once
 
 #include <array>
@@ -18,7 +19,7 @@
 
 namespace pool::server {
 
-/// How a tournament is played, as the operator creates it.
+/// How a tournament is played, as the operator creates it or a player opens it.
 struct TournamentSetup {
   std::string name = {};
   protocol::TournamentFormat format = protocol::TournamentFormat::SingleElimination;
@@ -30,15 +31,25 @@ struct TournamentSetup {
   bool handicap = false;
   std::string opened_by = {};                 ///< the player who opened it; empty: the operator
   std::vector<std::uint8_t> opener_key = {};  ///< their key
+  /// The signature of the request that opened it: the same request again opens nothing more.
+  std::vector<std::uint8_t> opening_signature = {};
 };
 
 /// Tournaments taking entries that players opened, at most, on one server (the operator's are
 /// not counted); one of them a key, and one a DDS participant.
 inline constexpr int kPlayerTournamentsOpen = 4;
+/// Tournaments players opened that are not over, at most (those taking entries and those running):
+/// the rest of kMaxTournaments is the operator's.
+inline constexpr int kPlayerTournamentsNotOver = 8;
+/// How long a tournament a player opened takes entries, s: then it starts with those in (3 at
+/// least) or is cancelled (a restart gives it this long again).
+inline constexpr double kPlayerEntryWindow = 15 * 60.0;
 
 /// Entries one DDS participant may make in one tournament (keys cost nothing: a participant that
 /// makes many is still one asking).
 inline constexpr int kEntriesPerParticipant = 2;
+/// A round robin's entrants, at most: its N(N-1)/2 matches within protocol::kMaxTournamentMatches.
+inline constexpr int kMaxRoundRobinEntrants = 11;
 /// Tournaments a server holds at once, at most: past it, those over longest ago are forgotten
 /// (kept in the store), and none is created while as many are not over.
 inline constexpr std::size_t kMaxTournaments = 64;
@@ -85,7 +96,8 @@ class TournamentDesk {
     std::string name;
     std::vector<std::uint8_t> key;
     double rating = 1500.0;
-    std::string sender;  ///< the DDS participant it came from (not stored)
+    std::string sender;        ///< the DDS participant it came from (not stored)
+    double deviation = 350.0;  ///< its rating's, at entry
   };
   struct Held {
     std::string id;
@@ -96,6 +108,7 @@ class TournamentDesk {
     std::optional<tournament::Tournament> bracket;  ///< once started
     std::vector<std::string> match_ids;             ///< by bracket match index
     std::string opener_sender;  ///< the DDS participant a player opened it from (not stored)
+    std::optional<double> entry_since;  ///< a player's: taking entries since (s, this run)
     bool changed = true;
   };
 

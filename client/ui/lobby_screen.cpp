@@ -74,9 +74,14 @@ void openTournament(TableOptions& options, bool hotseat, std::optional<LobbyChoi
     ImGui::RadioButton(kFormats[f], &options.tournament_format, f);
   }
   ImGui::SameLine();
+  // A round robin's every match crosses the wire: 11 entrants play 55 (12 would play 66).
+  constexpr int kRoundRobinMost = 11;
+  const int most = options.tournament_format == 2
+                       ? kRoundRobinMost
+                       : static_cast<int>(protocol::kMaxTournamentEntrants);
+  options.tournament_entrants = std::min(options.tournament_entrants, most);
   ImGui::SetNextItemWidth(120);
-  ImGui::SliderInt("entrants", &options.tournament_entrants, 3,
-                   static_cast<int>(protocol::kMaxTournamentEntrants));
+  ImGui::SliderInt("entrants", &options.tournament_entrants, 3, most);
   ImGui::SameLine();
   ImGui::Checkbox("handicap", &options.handicap);
 }

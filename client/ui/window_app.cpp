@@ -27,8 +27,10 @@
 #include "client/ui/window_script.h"
 #include "client/ui/window_sound.h"
 #include "client/ui/window_stroke.h"
+#include "core/text.h"
 #include "game/loaded_table.h"
 #include "net/dds_error.h"
+#include "table/table_spec.h"
 
 namespace pool::ui {
 namespace {
@@ -167,7 +169,7 @@ class WindowApp {
     if (script_ && playScriptFrame(*script_, controls_, session_, script_mouse_, now)) quit_ = true;
     handleKeys(parts_, now);
     desk_.startBotOpponent();
-    desk_.answerTournamentCall();
+    if (!options_.hotseat) desk_.answerTournamentCall();  // an entrant is one player's key
     controls_.setBallDragging(session_.practiceTable());
     if (const auto move = controls_.takeBallMove(); move && session_.view()) {
       practice_.moveBall(*session_.view(), move->first, move->second);
@@ -192,6 +194,12 @@ class WindowApp {
       if (entry) table = entry->table;
     }
     if (table.empty() || table == view_.spec.name || table == table_refused_) return;
+    // A name from a peer names a table of the assets, never a path.
+    if (!table::isSpecName(table)) {
+      table_refused_ = table;
+      notes_.add({"table " + escapedForLog(table) + ": not a table's name", true});
+      return;
+    }
     auto loaded = game::loadTable(table);
     if (!loaded) {
       table_refused_ = table;

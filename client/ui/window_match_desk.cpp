@@ -142,13 +142,26 @@ void MatchDesk::addTournamentBot(const std::string& tournament, bot::Level level
 }
 
 void MatchDesk::answerTournamentCall() {
-  if (session_.stage() != app::SessionStage::Lobby) return;
   const auto call = app::tournamentCall(session_.tournaments(), session_.playerKey(), called_);
   if (!call) return;
+  // From the lobby, or a decided match (the result on screen), the window goes to the table; a
+  // player in the middle of a game (or a practice table) is told once, and goes when they like.
+  const client::MatchView* v = session_.view();
+  const bool decided = session_.stage() == app::SessionStage::Playing && v &&
+                       v->phase == client::MatchPhase::Over && !session_.practiceTable();
+  if (session_.stage() != app::SessionStage::Lobby && !decided) {
+    if (told_.insert(call->match).second) {
+      notes_.add({"your tournament match is ready at " + call->match + " (" + call->round + " v " +
+                      call->opponent + "): leave this table to take it",
+                  true});
+    }
+    return;
+  }
   called_.insert(call->match);
   notes_.add(
       {"your tournament match: " + call->round + " v " + call->opponent + " at " + call->match,
        false});
+  if (decided) session_.leave();
   session_.play(call->match);
 }
 

@@ -58,7 +58,8 @@ class MatchDesk {
   /// window stays (kMaxEntrantBots at most).
   void addTournamentBot(const std::string& tournament, bot::Level level);
   static constexpr std::size_t kMaxEntrantBots = 31;
-  /// In the lobby, takes the seat of the tournament match that calls this player (once each).
+  /// Takes the seat of the tournament match that calls this player (once each), from the lobby
+  /// or a decided match; elsewhere (a game in play, a practice table) tells them once.
   void answerTournamentCall();
   /// The lobby's options for a fresh table.
   TableOptions& tableOptions() { return table_options_; }
@@ -81,6 +82,7 @@ class MatchDesk {
   std::vector<std::unique_ptr<BotOpponent>> entrant_bots_;  ///< bots entered in tournaments
   int bots_named_ = 0;
   std::set<std::string> called_;  ///< tournament matches this window took its seat in
+  std::set<std::string> told_;    ///< tournament matches the player was told of, away
   bool in_room_ = false;
   EightBallRoomState room_;
 };

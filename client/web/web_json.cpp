@@ -107,12 +107,7 @@ std::string tournamentsJson(const std::vector<const protocol::TournamentView*>& 
 }
 
 bool validTableName(const std::string& name) {
-  if (name.empty() || name.size() > 32) return false;
-  for (char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
-    if (!ok) return false;
-  }
-  return true;
+  return table::isSpecName(name);
 }
 
 std::string lobbyEntryJson(const client::LobbyEntry& e) {

@@ -1,6 +1,8 @@
 // Conversions between the wire types of pool.idl and domain types.
 #include "net/convert.h"
 
+#include <cmath>
+
 #include <algorithm>
 #include <optional>
 #include <string>
@@ -170,6 +172,12 @@ Result<physics::Event> fromWire(const pool_ShotEvent& event) {
   if (!type) {
     return Result<physics::Event>::fail("unknown event type " +
                                         std::to_string(rawValue(event.type)));
+  }
+  // A shot's events lie within its simulated time (physics: 60 s at most by default): a time
+  // past any shot would make a replay of hours of frames.
+  constexpr double kLatestEvent = 120.0;
+  if (!std::isfinite(event.t) || event.t < 0.0 || event.t > kLatestEvent) {
+    return Result<physics::Event>::fail("event time out of range (0 to 120 s)");
   }
   physics::Event e;
   e.t = event.t;

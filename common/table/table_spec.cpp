@@ -301,6 +301,15 @@ Result<TableSpec> parseTableSpec(const std::string& json_text, const std::string
   return Result<TableSpec>::ok(std::move(spec));
 }
 
+bool isSpecName(const std::string& name) {
+  if (name.empty() || name.size() > 32) return false;
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
 Result<TableSpec> loadTableSpec(const std::string& nameOrPath) {
   if (nameOrPath.empty()) return Result<TableSpec>::fail("empty table name");
   if (looksLikePath(nameOrPath))

@@ -50,6 +50,10 @@ struct TableSpec {
       render_mesh;  ///< absolute path of the render mesh; may equal collision_mesh
 };
 
+/// True for a spec's name as a peer may send it: 1–32 of [a-z0-9-] (never a path, so a name a
+/// sample carries can only name a table of assets/tables).
+bool isSpecName(const std::string& name);
+
 /// Loads a spec by name ("wpa-9ft", "wpa-8ft", "wpa-7ft", "snooker-12ft", "carom-match":
 /// assets/tables/<name>.json) or by path
 /// to a JSON file. Failure gives a one-line reason naming the field.

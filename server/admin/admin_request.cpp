@@ -159,7 +159,7 @@ Result<AdminRequest> parseRequest(const std::string& line) {
   for (const auto& field : info->optional) {
     if (!doc.contains(field)) continue;
     if (!doc[field].is_boolean()) return refuse(field + ": must be true or false");
-    out.handicap = doc[field].get<bool>();  // the only optional field: tournament-create's
+    if (field == "handicap") out.handicap = doc[field].get<bool>();
   }
   for (const auto& field : info->fields) {
     if (!doc.contains(field)) return refuse(field + ": missing (" + name + " needs it)");

@@ -2,11 +2,15 @@
 #include "server/tournament/handicap.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace pool::tournament {
 
-double rackChance(double rating, double other) {
-  return 1.0 / (1.0 + std::pow(10.0, (other - rating) / 400.0));
+double rackChance(double rating, double other, double deviation) {
+  constexpr double kScale = 173.7178;  // Glicko-2's rating points per unit of μ
+  const double phi = deviation / kScale;
+  const double g = 1.0 / std::sqrt(1.0 + 3.0 * phi * phi / (std::numbers::pi * std::numbers::pi));
+  return 1.0 / (1.0 + std::pow(10.0, -g * (rating - other) / 400.0));
 }
 
 double raceChance(double p, int need, int other_need) {
@@ -22,10 +26,12 @@ double raceChance(double p, int need, int other_need) {
   return total;
 }
 
-std::array<int, 2> handicapSpots(double rating_a, double rating_b, int race_to) {
-  if (race_to <= 1 || rating_a == rating_b) return {0, 0};
-  const bool a_weaker = rating_a < rating_b;
-  const double p = a_weaker ? rackChance(rating_a, rating_b) : rackChance(rating_b, rating_a);
+std::array<int, 2> handicapSpots(RatedEntrant a, RatedEntrant b, int race_to) {
+  if (race_to <= 1 || a.rating == b.rating) return {0, 0};
+  const bool a_weaker = a.rating < b.rating;
+  const double deviation = std::hypot(a.deviation, b.deviation);
+  const double p = a_weaker ? rackChance(a.rating, b.rating, deviation)
+                            : rackChance(b.rating, a.rating, deviation);
   int best = 0;
   double best_gap = 1.0;
   for (int spot = 0; spot < race_to; ++spot) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "net/server_seal.h"
 #include "net/wire_fields.h"
 #include "protocol/key_pair.h"
@@ -138,6 +140,14 @@ TEST(HistoryConvert, UnreadableShotsAreRefused) {
   auto unknown_game = toWire(stored());
   unknown_game->game = 7;
   EXPECT_FALSE(fromWire(*unknown_game));
+  // An event past any shot's time (a replay would be hours of frames), or no time at all.
+  for (const double t : {-0.5, 120.5, 3e4, std::nan("")}) {
+    auto late = stored();
+    late.events[1].t = t;
+    const auto read = fromWire(*toWire(late));
+    ASSERT_FALSE(read) << t;
+    EXPECT_EQ(read.error(), "history shot: events[1]: event time out of range (0 to 120 s)");
+  }
   HistoryShot none;
   none.client = "web-1";
   none.match = "srv-7";

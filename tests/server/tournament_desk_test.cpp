@@ -303,7 +303,8 @@ TEST_F(TournamentDeskTest, APlayerOpensATournamentAndEntersItFirst) {
   EXPECT_EQ(refused.reason, "entrants: 3 to 32");
   EXPECT_TRUE(desk.views().empty()) << "nothing opened by a refused request";
 
-  const auto opened = desk.enter(opening("ann"), "p-ann");
+  const auto anns = opening("ann");
+  const auto opened = desk.enter(anns, "p-ann");
   ASSERT_TRUE(opened.accepted()) << opened.reason;
   EXPECT_EQ(opened.match, "srv-t1");
   const auto view = desk.views().front();
@@ -327,14 +328,73 @@ TEST_F(TournamentDeskTest, APlayerOpensATournamentAndEntersItFirst) {
   const auto fifth = desk.enter(opening("eve"), "p-eve");
   EXPECT_EQ(fifth.reason, "players have 4 tournaments taking entries already");
   EXPECT_EQ(desk.views().size(), 4u);
-  // The operator cancels one; its opener may open another.
+  // The same signed request again, from anywhere, opens nothing more: it is srv-t1.
+  const auto replayed = desk.enter(anns, "p-eve");
+  EXPECT_TRUE(replayed.accepted());
+  EXPECT_EQ(replayed.match, "srv-t1");
+  EXPECT_EQ(desk.views().size(), 4u);
+  // The operator cancels one; its opener may open another (a new request: a new signature).
   ASSERT_TRUE(desk.cancel("srv-t1"));
-  EXPECT_TRUE(desk.enter(opening("ann"), "p-ann").accepted());
+  EXPECT_EQ(desk.enter(opening("ann"), "p-ann").match, "srv-t5");
   // Stored: a restart knows who opened it and its handicap.
   MatchRegistry registry2(options_, nineFoot());
   TournamentDesk restored(registry2, store_.get());
   restored.restore();
   EXPECT_EQ(restored.views(), desk.views());
+}
+
+TEST_F(TournamentDeskTest, APlayersTournamentTakesEntriesForAWhileAndPlayersHoldAFewAtMost) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  auto opening = [&](const std::string& who, int entrants) {
+    auto r = entry(who, protocol::kNewMatch);
+    r.settings = protocol::MatchSettings{};
+    r.opening =
+        protocol::TournamentOpening{protocol::TournamentFormat::SingleElimination, entrants, false};
+    protocol::signSeatRequest(r, keyOf(who));
+    r.public_key = publicKeyOf(who);
+    return r;
+  };
+  ASSERT_TRUE(desk.enter(opening("ann", 8), "p-ann").accepted());  // srv-t1: ann alone
+  ASSERT_TRUE(desk.enter(opening("bob", 8), "p-bob").accepted());  // srv-t2: bob, cid, dot
+  for (const char* who : {"cid", "dot"}) {
+    ASSERT_TRUE(desk.enter(entry(who, "srv-t2"), std::string("p-") + who).accepted());
+  }
+  desk.step(100.0);
+  desk.step(100.0 + kPlayerEntryWindow - 1);
+  EXPECT_EQ(desk.views()[0].phase, protocol::TournamentPhase::Entry);
+  desk.step(100.0 + kPlayerEntryWindow);
+  // Past the window: one entrant is too few (off), three start.
+  EXPECT_EQ(desk.views()[0].phase, protocol::TournamentPhase::Cancelled);
+  EXPECT_EQ(desk.views()[1].phase, protocol::TournamentPhase::Running);
+  // Players' tournaments not over, running ones included, are kPlayerTournamentsNotOver at most:
+  // srv-t2 runs; seven more (three entrants each, so they start at once) fill the rest.
+  for (int i = 0; i < kPlayerTournamentsNotOver - 1; ++i) {
+    const std::string opener = "o" + std::to_string(i);
+    const auto opened = desk.enter(opening(opener, 3), "p-" + opener);
+    ASSERT_TRUE(opened.accepted()) << opener << ": " << opened.reason;
+    for (const char* who : {"x", "y"}) {
+      const std::string entrant = who + std::to_string(i);
+      ASSERT_TRUE(desk.enter(entry(entrant, opened.match), "p-" + entrant).accepted());
+    }
+    desk.step(200.0);
+  }
+  const auto refused = desk.enter(opening("eve", 3), "p-eve");
+  EXPECT_EQ(refused.reason, "players have 8 tournaments not over already");
+  // The operator's are not counted.
+  EXPECT_TRUE(desk.create(cup()));
+}
+
+TEST_F(TournamentDeskTest, ARoundRobinTakesNoMoreEntrantsThanItsMatchesCanCross) {
+  MatchRegistry registry(options_, nineFoot());
+  TournamentDesk desk(registry, store_.get());
+  auto setup = cup(12);
+  setup.format = protocol::TournamentFormat::RoundRobin;
+  const auto refused = desk.create(setup);
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error(), "entrants: a round robin takes 3 to 11") << "12 play 66 matches";
+  setup.capacity = 11;  // 55 matches
+  EXPECT_TRUE(desk.create(setup));
 }
 
 TEST_F(TournamentDeskTest, AHandicapPutsRacksOnTheWireForTheLowerRated) {
@@ -361,22 +421,24 @@ TEST_F(TournamentDeskTest, AHandicapPutsRacksOnTheWireForTheLowerRated) {
   desk.step(1.0);
   const auto view = desk.views().front();
   ASSERT_EQ(view.phase, protocol::TournamentPhase::Running);
-  // Seeds 1 v 4 (ann 1900 v a 1500: 400 points) and 2 v 3 (bob 1700 v a 1500: 200 points).
-  // A 1500 player wins a rack from a 1700 one with p = 1/(1+10^0.5) = 0.2403; in a race to 3 the
-  // chances of winning it with 0, 1, 2 racks on the wire are 0.094, 0.245, 0.562: 2 is nearest
-  // even. Against 1900 (p = 1/11): 0.007, 0.044, 0.249: 2 again (the most below the race).
+  // Seeds 1 v 4 (ann 1900 v a fresh 1500) and 2 v 3 (bob 1700 v a fresh 1500); ann and bob's
+  // deviations 60, a fresh key's 350. Glickman's expectation with the combined deviation 355.1
+  // (g = 0.6637): a fresh 1500 wins a rack from 1700 with p = 0.3178, a race to 3 with 0, 1, 2
+  // racks on the wire 0.187, 0.380, 0.682: 1 is nearest even; from 1900, p = 0.1783: 0.043,
+  // 0.148, 0.445: 2.
   int checked = 0;
   for (const auto& m : view.matches) {
     if (m.state != 2) continue;
     const auto& a = view.entrants[static_cast<std::size_t>(m.a)];
     const auto& b = view.entrants[static_cast<std::size_t>(m.b)];
     ASSERT_GT(a.rating, b.rating) << "the better seed is a";
+    const int spot = a.name == "ann" ? 2 : 1;
     EXPECT_EQ(m.spot_a, 0) << m.round;
-    EXPECT_EQ(m.spot_b, 2) << m.round;
+    EXPECT_EQ(m.spot_b, spot) << a.name;
     const Match* table = registry.find(m.match);
     ASSERT_NE(table, nullptr);
     EXPECT_EQ(table->seats()[0].racks_won, 0);
-    EXPECT_EQ(table->seats()[1].racks_won, 2) << "the spot is on the table's score";
+    EXPECT_EQ(table->seats()[1].racks_won, spot) << "the spot is on the table's score";
     ++checked;
   }
   EXPECT_EQ(checked, 2);
