@@ -330,7 +330,7 @@ void BM_BotHeadToHead(benchmark::State& state) {
   const bot::PlannerOptions strong = bot::plannerOptionsFor(upper, view.radius());
   const bot::PlannerOptions weak = bot::plannerOptionsFor(lower, view.radius());
   bot::ShotVerifier verifier(view);
-  const int n = pool::bench::smokeOr(100, 1);
+  const int n = pool::bench::smokeOr(200, 1);
   int upper_wins = 0, decided = 0;
   for (auto _ : state) {
     bot::Rng rng(29);

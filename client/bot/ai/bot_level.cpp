@@ -11,13 +11,14 @@ struct LevelRow {
   const char* name;
   double noise_factor;
   int samples;
+  int max_runs;  ///< physics trials a turn, at most
 };
 
 constexpr std::array<LevelRow, 4> kLevels{{
-    {Level::Beginner, "beginner", 6.0, 0},
-    {Level::Club, "club", 3.5, 8},
-    {Level::League, "league", 2.0, 12},
-    {Level::Pro, "pro", 1.0, 16},
+    {Level::Beginner, "beginner", 8.0, 0, 320},
+    {Level::Club, "club", 4.5, 8, 320},
+    {Level::League, "league", 2.5, 12, 320},
+    {Level::Pro, "pro", 1.0, 32, 640},
 }};
 
 const LevelRow& rowOf(Level level) {
@@ -61,6 +62,7 @@ PlannerOptions plannerOptionsFor(Level level, double ball_radius) {
   PlannerOptions options;
   options.noise = levelNoise(level, ball_radius);
   options.samples = rowOf(level).samples;
+  options.max_runs = rowOf(level).max_runs;
   return options;
 }
 

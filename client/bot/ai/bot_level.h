@@ -23,15 +23,17 @@ std::vector<std::string> levelNames();
 /// The level named `name`; none for any other text.
 std::optional<Level> levelFromString(std::string_view name);
 
-/// How many times the olympiad noise (olympiadNoise) a level's stroke carries: pro 1, league 2,
-/// club 3.5, beginner 6.
+/// How many times the olympiad noise (olympiadNoise) a level's stroke carries: pro 1, league 2.5,
+/// club 4.5, beginner 8 (spread so that each level wins at least 70 % of the racks against the one
+/// below it: bot_bench's BM_BotHeadToHead, 200 racks a pair).
 double noiseFactor(Level level);
 
 /// A level's execution noise on a table with balls of `ball_radius` (m).
 ExecutionNoise levelNoise(Level level, double ball_radius);
 
 /// How a level plans: it judges its shortlisted pots under its own noise, with more samples the
-/// stronger it is (pro 16, league 12, club 8); a beginner judges each by one exact trial.
+/// stronger it is (pro 32 with 640 physics trials a turn, league 12, club 8); a beginner judges
+/// each by one exact trial.
 PlannerOptions plannerOptionsFor(Level level, double ball_radius);
 
 }  // namespace pool::bot
