@@ -363,6 +363,7 @@ void MatchSession::poll(double now) {
   startPending();
   retryJoins();
   askStored(now);
+  recent_.see(lobby());
   // The followed cue goes when its turn does: a new shot counted, or the shot's motion drawn.
   const client::MatchView* v = view();
   if (const auto& latest = follower_.latest();

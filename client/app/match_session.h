@@ -13,6 +13,7 @@
 #include "client/app/aim_follower.h"
 #include "client/app/instant_replay.h"
 #include "client/app/playback_clock.h"
+#include "client/app/recent_matches.h"
 #include "client/app/shot_story.h"
 #include "client/app/stored_replay.h"
 #include "client/net/aim_pacer.h"
@@ -90,6 +91,8 @@ class MatchSession {
   const client::Lobby& lobby() const;
   /// The players' ratings and statistics received (the lobby's Players table).
   const client::PlayerBook& players() const;
+  /// The matches seen played that have left the lobby since (the lobby's history).
+  const RecentMatches& recent() const { return recent_; }
   /// The tournaments received (their brackets), by id.
   const std::map<std::string, protocol::TournamentView>& tournaments() const;
   const std::string& match() const { return match_; }
@@ -207,6 +210,7 @@ class MatchSession {
   std::string verdict_heard_;  ///< the last state's verdict, to tell a new one
   InstantReplay replay_;       ///< the last shot's frames, to play again
   StoredReplay stored_;        ///< a stored shot of any match, replayed in the lobby
+  RecentMatches recent_;       ///< the lobby's history
   bool history_open_ = false;  ///< the first client's history endpoints are open
   std::string banner_;
   std::deque<std::string> shot_log_;

@@ -24,13 +24,12 @@ const std::array<const char*, kPlayerColumns>& playerHeaders() {
 std::array<std::string, kPlayerColumns> playerColumns(const protocol::PlayerStats& s) {
   const auto of = [](int a, int b) { return std::to_string(a) + "/" + std::to_string(b); };
   std::string pots = of(s.pots, s.attempts);
-  if (s.attempts > 0 && rules::isPool(s.game)) {
-    pots += " " + std::to_string(static_cast<int>(std::lround(100.0 * s.pots / s.attempts))) + "%";
-  } else if (s.attempts > 0) {
-    // Points, not balls: a share of strokes would pass 100 %.
+  if (s.attempts > 0) {
+    // Balls (or points) an attempt: one stroke can pot two balls, so a share of the attempts
+    // could pass 100 %.
     char per[32];
     std::snprintf(per, sizeof per, "%.2f", static_cast<double>(s.pots) / s.attempts);
-    pots += std::string(", ") + per + " a stroke";
+    pots += std::string(", ") + per + " an attempt";
   }
   return {s.server,
           s.name,

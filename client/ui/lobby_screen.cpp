@@ -61,6 +61,25 @@ void drawPlayers(const client::PlayerBook& players) {
   ImGui::EndTable();
 }
 
+/// The matches seen played that have left the lobby: players, how far they went, Replay.
+void drawRecent(const std::vector<const client::LobbyEntry*>& recent, bool joining,
+                std::optional<LobbyChoice>& choice) {
+  if (recent.empty()) return;
+  if (!ImGui::CollapsingHeader("Recent matches (finished or closed)",
+                               ImGuiTreeNodeFlags_DefaultOpen))
+    return;
+  for (const client::LobbyEntry* e : recent) {
+    ImGui::PushID(e->match.c_str());
+    ImGui::Text("%s  %s  %s", e->match.c_str(), app::lobbyPlayers(*e).c_str(),
+                app::lobbyProgress(*e).c_str());
+    if (!joining) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Replay")) choice = LobbyChoice{LobbyChoice::Kind::Replay, e->match};
+    }
+    ImGui::PopID();
+  }
+}
+
 /// A tournament to open: its format, entrants and handicap (its game and race are the fresh
 /// table's options above).
 void openTournament(TableOptions& options, bool hotseat, std::optional<LobbyChoice>& choice) {
@@ -164,7 +183,7 @@ protocol::TournamentOpening TableOptions::opening() const {
 std::optional<LobbyChoice> drawLobby(
     const client::Lobby& lobby, const std::map<std::string, protocol::TournamentView>& tournaments,
     const client::PlayerBook& players, bool joining, bool hotseat, TableOptions& options,
-    const std::string& me) {
+    const std::string& me, const std::vector<const client::LobbyEntry*>& recent) {
   std::optional<LobbyChoice> choice;
   const ImGuiViewport* screen = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(screen->WorkSize.x * 0.5f, screen->WorkSize.y * 0.5f),
@@ -244,6 +263,7 @@ std::optional<LobbyChoice> drawLobby(
     ImGui::EndTable();
   }
   drawTournaments(tournaments, joining, hotseat, me, choice);
+  drawRecent(recent, joining, choice);
   drawPlayers(players);
   ImGui::End();
   return choice;

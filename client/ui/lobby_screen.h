@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "client/net/lobby.h"
 #include "client/net/player_book.h"
@@ -60,10 +61,11 @@ struct TableOptions {
 /// new table, "New game" clears it.
 /// Below the matches, the tournaments and their brackets (a match in play can be watched; one
 /// taking entries entered, by this player (key `me`, hex) or a bot), a tournament to open, then
-/// every player's rating and statistics per game (`players`).
+/// every player's rating and statistics per game (`players`), and the matches played here that
+/// have left the lobby (`recent`, newest first), each with a Replay button.
 std::optional<LobbyChoice> drawLobby(
     const client::Lobby& lobby, const std::map<std::string, protocol::TournamentView>& tournaments,
     const client::PlayerBook& players, bool joining, bool hotseat, TableOptions& options,
-    const std::string& me);
+    const std::string& me, const std::vector<const client::LobbyEntry*>& recent);
 
 }  // namespace pool::ui

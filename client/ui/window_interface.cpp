@@ -47,9 +47,9 @@ void WindowInterface::draw(const WindowParts& w, const std::string& placement_pr
 
 void WindowInterface::drawLobbyScreen(const WindowParts& w) {
   const bool joining = w.session.stage() == app::SessionStage::Joining;
-  if (const auto choice =
-          drawLobby(w.session.lobby(), w.session.tournaments(), w.session.players(), joining,
-                    hotseat_, w.desk.tableOptions(), w.session.playerKey())) {
+  if (const auto choice = drawLobby(w.session.lobby(), w.session.tournaments(), w.session.players(),
+                                    joining, hotseat_, w.desk.tableOptions(), w.session.playerKey(),
+                                    w.session.recent().gone())) {
     w.desk.takeLobbyChoice(*choice);
   }
 }

@@ -27,14 +27,16 @@ TEST(PlayerColumns, ARowSaysTheRatingTheRecordAndThePotShare) {
   s.high_run = 8;
   const auto row = playerColumns(s);
   const std::array<std::string, kPlayerColumns> want{
-      "srv", "Ada", "9-ball", "1562 ±80", "2/3", "5/7", "45/60 75%", "4: 6, 1 run", "3", "2", "8"};
+      "srv",         "Ada", "9-ball", "1562 ±80", "2/3", "5/7", "45/60, 0.75 an attempt",
+      "4: 6, 1 run", "3",   "2",      "8"};
   EXPECT_EQ(row, want);
   EXPECT_EQ(playerHeaders().size(), row.size());
-  // Snooker counts points: per stroke, never a share past 100 %.
+  // Balls or points an attempt, never a share past 100 % (one stroke may pot two balls; snooker
+  // counts points).
   s.game = rules::Game::Snooker;
   s.pots = 145;
   s.attempts = 90;
-  EXPECT_EQ(playerColumns(s)[6], "145/90, 1.61 a stroke");
+  EXPECT_EQ(playerColumns(s)[6], "145/90, 1.61 an attempt");
   // No attempts yet: no share.
   s.attempts = 0;
   s.pots = 0;

@@ -21,11 +21,9 @@ export function playerButtonText(records) {
 export function playerLines(r) {
   const word = scoreWord(r.game);
   const rackWord = r.game === 'snooker' ? 'frame' : r.game === 'three-cushion' ? 'game' : 'rack';
-  // Points (snooker, three-cushion) per stroke: a share of strokes would pass 100 %.
-  const points = r.game === 'snooker' || r.game === 'three-cushion';
-  let share = '';
-  if (r.attempts > 0 && points) share = ` (${(r.pots / r.attempts).toFixed(2)} a stroke)`;
-  if (r.attempts > 0 && !points) share = ` (${Math.round((100 * r.pots) / r.attempts)} %)`;
+  // Balls (or points) an attempt: one stroke can pot two balls, so a share of the attempts could
+  // pass 100 %.
+  const share = r.attempts > 0 ? ` (${(r.pots / r.attempts).toFixed(2)} an attempt)` : '';
   const best = r.game === 'snooker' ? `highest break ${r.high_run}` : `best inning ${plural(r.high_run, word, `${word}s`)}`;
   return [
     `${r.game}: rating ${r.rating} ±${r.rating_deviation}`,
