@@ -172,10 +172,9 @@ Result<std::string> TournamentDesk::create(const TournamentSetup& setup) {
   }
   // Every match of the bracket crosses the wire: a round robin of N plays N(N-1)/2.
   if (setup.format == protocol::TournamentFormat::RoundRobin &&
-      setup.capacity * (setup.capacity - 1) / 2 >
-          static_cast<int>(protocol::kMaxTournamentMatches)) {
+      setup.capacity > protocol::kMaxRoundRobinEntrants) {
     return Out::fail("entrants: a round robin takes 3 to " +
-                     std::to_string(kMaxRoundRobinEntrants));
+                     std::to_string(protocol::kMaxRoundRobinEntrants));
   }
   forgetOldest();
   if (tournaments_.size() >= kMaxTournaments) {

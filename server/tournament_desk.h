@@ -48,8 +48,6 @@ inline constexpr double kPlayerEntryWindow = 15 * 60.0;
 /// Entries one DDS participant may make in one tournament (keys cost nothing: a participant that
 /// makes many is still one asking).
 inline constexpr int kEntriesPerParticipant = 2;
-/// A round robin's entrants, at most: its N(N-1)/2 matches within protocol::kMaxTournamentMatches.
-inline constexpr int kMaxRoundRobinEntrants = 11;
 /// Tournaments a server holds at once, at most: past it, those over longest ago are forgotten
 /// (kept in the store), and none is created while as many are not over.
 inline constexpr std::size_t kMaxTournaments = 64;

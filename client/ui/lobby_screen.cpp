@@ -94,9 +94,8 @@ void openTournament(TableOptions& options, bool hotseat, std::optional<LobbyChoi
   }
   ImGui::SameLine();
   // A round robin's every match crosses the wire: 11 entrants play 55 (12 would play 66).
-  constexpr int kRoundRobinMost = 11;
   const int most = options.tournament_format == 2
-                       ? kRoundRobinMost
+                       ? protocol::kMaxRoundRobinEntrants
                        : static_cast<int>(protocol::kMaxTournamentEntrants);
   options.tournament_entrants = std::min(options.tournament_entrants, most);
   ImGui::SetNextItemWidth(120);

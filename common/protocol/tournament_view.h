@@ -20,6 +20,10 @@ const char* toString(TournamentPhase phase);    ///< "entry", "running", "finish
 /// 2N - 1 with the reset).
 inline constexpr std::size_t kMaxTournamentEntrants = 32;
 inline constexpr std::size_t kMaxTournamentMatches = 64;
+/// A round robin's entrants, at most: its N(N-1)/2 matches all within kMaxTournamentMatches.
+inline constexpr int kMaxRoundRobinEntrants = 11;
+static_assert(kMaxRoundRobinEntrants * (kMaxRoundRobinEntrants - 1) / 2 <= kMaxTournamentMatches &&
+              (kMaxRoundRobinEntrants + 1) * kMaxRoundRobinEntrants / 2 > kMaxTournamentMatches);
 
 struct TournamentEntrantView {
   std::string name = {};
