@@ -12,13 +12,15 @@ struct LevelRow {
   double noise_factor;
   int samples;
   int max_runs;  ///< physics trials a turn, at most
+  LookAhead look_ahead;
+  PotBreadth breadth;
 };
 
 constexpr std::array<LevelRow, 4> kLevels{{
-    {Level::Beginner, "beginner", 8.0, 0, 320},
-    {Level::Club, "club", 4.5, 8, 320},
-    {Level::League, "league", 2.5, 12, 320},
-    {Level::Pro, "pro", 1.0, 32, 640},
+    {Level::Beginner, "beginner", 8.0, 0, 320, LookAhead::NextShot, {}},
+    {Level::Club, "club", 4.5, 8, 320, LookAhead::NextShot, {}},
+    {Level::League, "league", 2.5, 12, 320, LookAhead::NextShot, {}},
+    {Level::Pro, "pro", 1.0, 48, 5000, LookAhead::TwoShots, {16, 36, 16}},
 }};
 
 const LevelRow& rowOf(Level level) {
@@ -63,6 +65,8 @@ PlannerOptions plannerOptionsFor(Level level, double ball_radius) {
   options.noise = levelNoise(level, ball_radius);
   options.samples = rowOf(level).samples;
   options.max_runs = rowOf(level).max_runs;
+  options.look_ahead = rowOf(level).look_ahead;
+  options.breadth = rowOf(level).breadth;
   return options;
 }
 

@@ -7,6 +7,7 @@
 
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/ghost_ball.h"
+#include "client/bot/ai/leave_value.h"
 #include "client/bot/ai/planned_shot.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "client/bot/ai/table_view.h"
@@ -14,6 +15,13 @@
 #include "rules/game_state.h"
 
 namespace pool::bot {
+
+/// How widely a turn's pots are searched.
+struct PotBreadth {
+  int lines = 10;     ///< pot lines tried in the physics, easiest first
+  int variants = 12;  ///< strokes (speed and spin) tried on each line, at most pot_search.h's 36
+  int shortlist = 8;  ///< the pots worth most in exact trials, then sampled under the noise
+};
 
 /// One turn's planning inputs.
 struct PlanContext {
@@ -27,7 +35,9 @@ struct PlanContext {
   ExecutionNoise noise{};               ///< the bot's own execution error, sampled to judge shots
   int samples = 0;                      ///< noisy trials a shortlisted pot gets (0: exact only)
   double leave_weight = 0.0;            ///< what a sure pot next adds to a clean pot's 100
-  Rng rng{kPlanSeed};                   ///< the samples' draws (a fixed seed: plans repeat)
+  LookAhead look_ahead = LookAhead::NextShot;  ///< how far a leave is looked at
+  PotBreadth breadth{};                        ///< how widely pots are searched
+  Rng rng{kPlanSeed};                          ///< the samples' draws (a fixed seed: plans repeat)
 
   static constexpr std::uint64_t kPlanSeed = 0x5eedULL;
 

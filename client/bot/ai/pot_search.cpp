@@ -4,80 +4,33 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "client/bot/ai/execution_noise.h"
+#include "client/bot/ai/leave_value.h"
 #include "rules/game_rules.h"
 
 namespace pool::bot {
 namespace {
 
-/// A speed factor and a tip height (fraction of R) to try on a line, in order.
+/// A speed factor and a tip height (fraction of R) to try on a line, in order: the strokes of
+/// every level first, then finer steps of speed and spin for a level that tries more
+/// (PlannerOptions::variants).
 struct Variant {
   double speed_factor;
   double tip;
 };
-constexpr std::array<Variant, 12> kVariants{{{1.0, 0.0},
-                                             {1.0, -0.3},
-                                             {1.3, 0.0},
-                                             {0.8, 0.2},
-                                             {1.5, -0.35},
-                                             {0.75, 0.0},
-                                             {0.75, -0.4},
-                                             {1.0, 0.35},
-                                             {1.3, -0.4},
-                                             {1.3, 0.35},
-                                             {1.8, 0.0},
-                                             {1.8, -0.4}}};
+constexpr std::array<Variant, kMaxVariants> kVariants{{
+    {1.0, 0.0},   {1.0, -0.3},  {1.3, 0.0},   {0.8, 0.2},   {1.5, -0.35}, {0.75, 0.0},
+    {0.75, -0.4}, {1.0, 0.35},  {1.3, -0.4},  {1.3, 0.35},  {1.8, 0.0},   {1.8, -0.4},
+    {0.65, 0.0},  {0.65, 0.3},  {0.65, -0.3}, {0.9, -0.15}, {0.9, 0.15},  {1.15, -0.2},
+    {1.15, 0.2},  {1.15, 0.45}, {1.15, -0.5}, {1.5, 0.0},   {1.5, 0.2},   {1.5, -0.55},
+    {2.1, 0.0},   {2.1, -0.5},  {2.1, 0.3},   {2.5, 0.0},   {2.5, -0.5},  {0.85, -0.55},
+    {1.0, -0.55}, {1.3, -0.6},  {0.9, 0.45},  {1.7, 0.4},   {2.5, 0.3},   {1.8, -0.6},
+}};
 
 // What a foul costs in a pot's value (a clean pot with a hopeless leave is worth 100).
 constexpr double kFoulCost = 40.0;
-// How far off its line (m, at the pocket) a ball sent straight at a pocket still drops.
-constexpr double kPocketTolerance = 0.03;
-
-// The chance a shooter with aim error `yaw_sigma` (rad) makes `line`: a lateral miss e at the
-// ghost ball turns the object ball by e / (2R cos cut), and the pocket takes it within about 3 cm
-// of its line (less when it comes in at an angle to the pocket's opening). Normal errors: erf.
-double makeChance(const PotLine& line, double yaw_sigma, const TableView& view) {
-  if (yaw_sigma <= 0.0) return 1.0;
-  const auto& pocket = view.pockets[static_cast<std::size_t>(line.pocket)];
-  const Vec2 along = (line.target - line.object).normalized();
-  const double facing = std::max(0.3, along.dot(pocket.outward));
-  const double tolerance = kPocketTolerance * facing / std::max(line.object_distance, 0.05);
-  const double turn =
-      line.cue_distance * yaw_sigma / (2.0 * view.radius() * std::max(std::cos(line.cut), 0.15));
-  return std::erf(tolerance / (std::sqrt(2.0) * std::max(turn, 1e-9)));
-}
-
-// How much a leave offers its shooter with aim error `yaw_sigma`: the chance that at least one
-// of the three most makeable balls (each by its most makeable clear line) would go in were each
-// tried in turn, so a leave with options counts for more than one lone pot; 1 with the cue ball
-// in hand.
-double leaveChances(const std::vector<physics::Ball>& balls, const rules::GameState& state,
-                    const TableView& view, double yaw_sigma) {
-  if (state.phase == rules::Phase::Over) return 0.0;
-  if (state.ball_in_hand != rules::BallInHand::None) return 1.0;
-  const auto cue = ballAt(balls, physics::kCueBall);
-  if (!cue) return 1.0;
-  std::vector<std::pair<int, double>> best;  // ball, chance
-  for (const auto& line :
-       potLines(*cue, balls, rules::firstBallsFor(view.rules, state, balls), view)) {
-    const double chance = makeChance(line, yaw_sigma, view);
-    auto it =
-        std::find_if(best.begin(), best.end(), [&](const auto& b) { return b.first == line.ball; });
-    if (it == best.end()) {
-      best.emplace_back(line.ball, chance);
-    } else {
-      it->second = std::max(it->second, chance);
-    }
-  }
-  std::sort(best.begin(), best.end(),
-            [](const auto& a, const auto& b) { return a.second > b.second; });
-  double miss_all = 1.0;
-  for (std::size_t i = 0; i < std::min<std::size_t>(best.size(), 3); ++i)
-    miss_all *= 1.0 - best[i].second;
-  return 1.0 - miss_all;
-}
-
 // Worth of a trial for a pot; empty when it fails.
 std::optional<double> potValue(const Trial& trial, const PlanContext& context) {
   if (!trial.judged || trial.loses) return std::nullopt;
@@ -89,8 +42,8 @@ std::optional<double> potValue(const Trial& trial, const PlanContext& context) {
   // A planner that expects no error of itself still grades a leave as a strong player would.
   const double sigma =
       context.noise.yaw > 0.0 ? context.noise.yaw : olympiadNoise(context.view.radius()).yaw;
-  return 100.0 +
-         context.leave_weight * leaveChances(trial.after, trial.verdict.next, context.view, sigma);
+  return 100.0 + context.leave_weight * leaveValue(trial.after, trial.verdict.next, context.view,
+                                                   sigma, context.look_ahead);
 }
 
 PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
@@ -115,9 +68,8 @@ double playedValue(const Trial& trial, const PlanContext& context) {
   return trial.verdict.legal() ? 0.0 : -kFoulCost;
 }
 
-// The shortlist sampled under the bot's noise: the pots with the best exact values, at most two
-// variants (speed and spin) of one line.
-constexpr std::size_t kShortlist = 8;
+// At most two variants (speed and spin) of one line go on the shortlist sampled under the bot's
+// noise.
 constexpr std::size_t kVariantsShortlisted = 2;
 
 }  // namespace
@@ -126,10 +78,13 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
                                       const std::vector<PotCandidate>& candidates) {
   const bool sampling = context.samples > 0;
   std::vector<PlannedShot> working;
-  const std::size_t lines = std::min<std::size_t>(candidates.size(), kMaxLinesVerified);
+  const std::size_t lines =
+      std::min<std::size_t>(candidates.size(), static_cast<std::size_t>(context.breadth.lines));
+  const auto variants = std::span(kVariants).first(
+      static_cast<std::size_t>(std::clamp(context.breadth.variants, 1, kMaxVariants)));
   for (std::size_t i = 0; i < lines; ++i) {
     std::vector<PlannedShot> line;  // this line's working variants
-    for (const Variant& variant : kVariants) {
+    for (const Variant& variant : variants) {
       PlannedShot shot = potShot(context, candidates[i], variant);
       const auto trial = context.tryShot(shot);
       if (!trial) break;
@@ -154,7 +109,7 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
   if (!sampling) return working.front();
   // Each shortlisted pot played as the bot plays: the one worth most on average wins. The exact
   // order stands for any the budget leaves unsampled.
-  working.resize(std::min(working.size(), kShortlist));
+  working.resize(std::min(working.size(), static_cast<std::size_t>(context.breadth.shortlist)));
   std::optional<PlannedShot> best;
   for (PlannedShot& shot : working) {
     double sum = 0.0;

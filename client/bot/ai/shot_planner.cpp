@@ -98,7 +98,9 @@ PlannedShot ShotPlanner::plan(const std::vector<physics::Ball>& balls,
                       options_.max_runs,
                       options_.noise,
                       options_.samples,
-                      options_.leave_weight};
+                      options_.leave_weight,
+                      options_.look_ahead,
+                      options_.breadth};
   if (choice && *choice != rules::Choice::PlayOn && *choice != rules::Choice::BallInHand &&
       *choice != rules::Choice::PushOut && *choice != rules::Choice::FreeBall) {
     // Re-racking answers carry no stroke (a re-spotted 8 is never chosen: re-breaking is simpler).

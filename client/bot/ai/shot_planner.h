@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "client/bot/ai/execution_noise.h"
+#include "client/bot/ai/leave_value.h"
+#include "client/bot/ai/plan_context.h"
 #include "client/bot/ai/planned_shot.h"
 #include "client/bot/ai/shot_verifier.h"
 #include "client/bot/ai/table_view.h"
@@ -26,6 +28,10 @@ struct PlannerOptions {
   /// as for a player running a rack (bot_bench, 8-ball under the olympiad noise, 100 racks:
   /// break-and-runs 8 % at 200, 12 % at 400, 9 % at 800).
   double leave_weight = 400.0;
+  /// How far a leave is looked at (leave_value.h).
+  LookAhead look_ahead = LookAhead::NextShot;
+  /// How many lines, strokes a line and sampled pots a turn looks at.
+  PotBreadth breadth{};
 };
 
 /// Chooses shots on one table. Pure apart from the physics trials it runs: the same layout and
