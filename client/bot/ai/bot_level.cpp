@@ -17,9 +17,9 @@ struct LevelRow {
 };
 
 constexpr std::array<LevelRow, 4> kLevels{{
-    {Level::Beginner, "beginner", 8.0, 0, 320, LookAhead::NextShot, {}},
-    {Level::Club, "club", 4.5, 8, 320, LookAhead::NextShot, {}},
-    {Level::League, "league", 2.5, 12, 320, LookAhead::NextShot, {}},
+    {Level::Beginner, "beginner", 12.0, 0, 320, LookAhead::NextShot, {}},
+    {Level::Club, "club", 5.0, 8, 320, LookAhead::NextShot, {}},
+    {Level::League, "league", 2.2, 16, 2000, LookAhead::TwoShots, {12, 24, 12}},
     {Level::Pro, "pro", 1.0, 48, 5000, LookAhead::TwoShots, {16, 36, 16}},
 }};
 
