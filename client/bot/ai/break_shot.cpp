@@ -1,6 +1,7 @@
 // Break placement and aim from the measured breaks, checked in the physics.
 #include "client/bot/ai/break_shot.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -51,6 +52,37 @@ double breakValue(const Trial& trial) {
 // foul in every game (rules::leavingFouls).
 bool legalBreak(const Trial& trial) {
   return trial.judged && !trial.loses && !trial.dead_layout && trial.verdict.legal();
+}
+
+// Break strokes played a sampling level's way: each tried under its own noise, worth the turn
+// kept with its leave (as a pot is), a foul its cost; the best on average is played.
+constexpr int kBreakSamples = 16;  // at most, each (a break moves every ball: a dear trial)
+constexpr double kBreakFoulCost = 40.0;
+
+double breakWorth(const Trial& trial, const PlanContext& context) {
+  if (!trial.judged || trial.dead_layout) return 0.0;
+  if (trial.loses) return -1000.0;
+  if (trial.wins) return 1000.0;
+  if (!trial.verdict.legal()) return -kBreakFoulCost;
+  return trial.verdict.turn_continues ? context.keptTurnWorth(trial) : 0.0;
+}
+
+PlannedShot sampledBreak(PlanContext& context, const std::vector<PlannedShot>& legal) {
+  const int samples = std::min(context.samples, kBreakSamples);
+  std::optional<PlannedShot> best;
+  for (PlannedShot shot : legal) {
+    double sum = 0.0;
+    int played = 0;
+    for (; played < samples; ++played) {
+      const auto trial = context.tryNoisy(shot);
+      if (!trial) break;
+      sum += breakWorth(*trial, context);
+    }
+    if (played < samples) break;
+    shot.value = sum / samples;
+    if (!best || shot.value > best->value) best = shot;
+  }
+  return best ? *best : legal.front();
 }
 
 }  // namespace
@@ -170,6 +202,7 @@ PlannedShot planBreak(PlanContext& context) {
   }
   const Vec2 apex = apexBall(context.view, context.balls);
   std::optional<PlannedShot> best;
+  std::vector<PlannedShot> legal;
   for (const BreakStroke& candidate : measuredBreaks(context.view.rules.game)) {
     for (int side : {1, -1}) {
       PlannedShot shot = breakShot(context.view, apex, candidate, side);
@@ -178,10 +211,15 @@ PlannedShot planBreak(PlanContext& context) {
       const auto trial = context.tryShot(shot);
       if (!trial) break;
       shot.value = breakValue(*trial);
-      if (legalBreak(*trial)) return shot;
+      if (legalBreak(*trial)) {
+        // Without sampling, the first measured break that works on this rack is played.
+        if (context.samples == 0) return shot;
+        legal.push_back(shot);
+      }
       if (!best || shot.value > best->value) best = shot;
     }
   }
+  if (!legal.empty()) return sampledBreak(context, legal);
   if (best) return *best;
   const auto spots = restingSpots(context);
   return fallbackShot(context, spots.empty() ? std::nullopt : std::optional<Vec2>(spots.front()));

@@ -17,6 +17,12 @@ std::optional<Trial> PlanContext::tryNoisy(const PlannedShot& shot) {
   return tryShot(played);
 }
 
+double PlanContext::keptTurnWorth(const Trial& trial) const {
+  const double sigma = noise.yaw > 0.0 ? noise.yaw : olympiadNoise(view.radius()).yaw;
+  return 100.0 +
+         leave_weight * leaveValue(trial.after, trial.verdict.next, view, sigma, look_ahead);
+}
+
 PlannedShot PlanContext::blank(ShotKind kind) const {
   PlannedShot shot;
   shot.kind = kind;

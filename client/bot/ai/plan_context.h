@@ -18,9 +18,10 @@ namespace pool::bot {
 
 /// How widely a turn's pots are searched.
 struct PotBreadth {
-  int lines = 10;     ///< pot lines tried in the physics, easiest first
-  int variants = 12;  ///< strokes (speed and spin) tried on each line, at most pot_search.h's 36
-  int shortlist = 8;  ///< the pots worth most in exact trials, then sampled under the noise
+  int lines = 10;      ///< pot lines tried in the physics, easiest first
+  int variants = 12;   ///< strokes (speed and spin) tried on each line, at most pot_search.h's 36
+  int shortlist = 8;   ///< the pots worth most in exact trials, then sampled under the noise
+  bool banks = false;  ///< one-cushion banks (bank_shot.h) after the direct lines from the lie
 };
 
 /// One turn's planning inputs.
@@ -45,6 +46,10 @@ struct PlanContext {
   std::optional<Trial> tryShot(const PlannedShot& shot);
   /// Runs `shot` as the bot would play it: its stroke moved by one draw of `noise`.
   std::optional<Trial> tryNoisy(const PlannedShot& shot);
+  /// What a stroke that keeps the turn is worth, 100 for the stroke and up to `leave_weight` more
+  /// for its leave (leaveValue, graded with the bot's own aim error, or a strong player's when it
+  /// expects none of itself).
+  double keptTurnWorth(const Trial& trial) const;
   /// A shot skeleton carrying the turn's choice.
   PlannedShot blank(ShotKind kind) const;
   /// The legal object balls for the shooter (legalFirstBalls on play_state).

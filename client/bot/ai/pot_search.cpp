@@ -6,6 +6,7 @@
 #include <cmath>
 #include <span>
 
+#include "client/bot/ai/bank_shot.h"
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/leave_value.h"
 #include "rules/game_rules.h"
@@ -39,11 +40,7 @@ std::optional<double> potValue(const Trial& trial, const PlanContext& context) {
   if (!trial.verdict.legal() || !trial.potted_call || !trial.verdict.turn_continues) {
     return std::nullopt;
   }
-  // A planner that expects no error of itself still grades a leave as a strong player would.
-  const double sigma =
-      context.noise.yaw > 0.0 ? context.noise.yaw : olympiadNoise(context.view.radius()).yaw;
-  return 100.0 + context.leave_weight * leaveValue(trial.after, trial.verdict.next, context.view,
-                                                   sigma, context.look_ahead);
+  return context.keptTurnWorth(trial);
 }
 
 PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
@@ -133,8 +130,15 @@ std::vector<PotCandidate> potsFromLie(const PlanContext& context) {
   std::vector<PotCandidate> out;
   const auto cue = ballAt(context.balls, physics::kCueBall);
   if (!cue) return out;
-  for (const auto& line : potLines(*cue, context.balls, context.legalBalls(), context.view)) {
+  const auto legal = context.legalBalls();
+  for (const auto& line : potLines(*cue, context.balls, legal, context.view)) {
     out.push_back(PotCandidate{line, std::nullopt});
+  }
+  // Banks after every direct line: tried when the direct ones leave room in the search.
+  if (context.breadth.banks) {
+    for (const auto& line : bankLines(*cue, context.balls, legal, context.view)) {
+      out.push_back(PotCandidate{line, std::nullopt});
+    }
   }
   return out;
 }
