@@ -23,8 +23,10 @@ std::vector<physics::Ball> oneThenTwo(const Vec2& two, std::initializer_list<Vec
   auto balls = layout({resting(0, cue.x(), cue.y()), resting(1, one.x(), one.y()),
                        resting(2, two.x(), two.y()), resting(8, -0.9, -0.45)});
   int id = 9;
-  for (const Vec2& g : guards)
-    balls[static_cast<std::size_t>(id++)] = resting(id - 1, g.x(), g.y());
+  for (const Vec2& g : guards) {
+    balls[static_cast<std::size_t>(id)] = resting(id, g.x(), g.y());
+    ++id;
+  }
   return balls;
 }
 
