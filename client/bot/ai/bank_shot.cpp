@@ -65,18 +65,8 @@ std::vector<PotLine> bankLines(const Vec2& cue, const std::vector<physics::Ball>
           const Vec2 d = (bounce - *object).normalized();
           line.object_distance = (bounce - *object).norm() + (pocket.mouth - bounce).norm();
           line.target = *object + line.object_distance * d;
-          line.ghost = *object - 2 * r * d;
-          if (std::abs(line.ghost.x()) > hx || std::abs(line.ghost.y()) > hy) continue;
-          const Vec2 to_ghost = line.ghost - cue;
-          line.cue_distance = to_ghost.norm();
-          if (line.cue_distance < 1e-6) continue;
-          const Vec2 aim = to_ghost / line.cue_distance;
-          line.cut = std::acos(std::clamp(aim.dot(d), -1.0, 1.0));
-          if (line.cut > kMaxCut) continue;
-          line.yaw = std::atan2(aim.y(), aim.x());
-          const double cos_cut = std::max(std::cos(line.cut), 0.05);
-          line.difficulty = kBankDifficulty * (line.object_distance + 0.35 * line.cue_distance) /
-                            std::pow(cos_cut, 1.5);
+          if (!aimLine(line, d, view)) continue;
+          line.difficulty *= kBankDifficulty;
           if (!pathClear(*object, bounce, balls, r, id, physics::kCueBall)) continue;
           if (!pathClear(bounce, pocket.mouth, balls, r, id, physics::kCueBall)) continue;
           if (!pathClear(cue, line.ghost, balls, r, physics::kCueBall, id)) continue;

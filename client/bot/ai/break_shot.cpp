@@ -57,13 +57,12 @@ bool legalBreak(const Trial& trial) {
 // Break strokes played a sampling level's way: each tried under its own noise, worth the turn
 // kept with its leave (as a pot is), a foul its cost; the best on average is played.
 constexpr int kBreakSamples = 16;  // at most, each (a break moves every ball: a dear trial)
-constexpr double kBreakFoulCost = 40.0;
 
 double breakWorth(const Trial& trial, const PlanContext& context) {
   if (!trial.judged || trial.dead_layout) return 0.0;
   if (trial.loses) return -1000.0;
   if (trial.wins) return 1000.0;
-  if (!trial.verdict.legal()) return -kBreakFoulCost;
+  if (!trial.verdict.legal()) return -kFoulCost;
   return trial.verdict.turn_continues ? context.keptTurnWorth(trial) : 0.0;
 }
 
@@ -71,15 +70,10 @@ PlannedShot sampledBreak(PlanContext& context, const std::vector<PlannedShot>& l
   const int samples = std::min(context.samples, kBreakSamples);
   std::optional<PlannedShot> best;
   for (PlannedShot shot : legal) {
-    double sum = 0.0;
-    int played = 0;
-    for (; played < samples; ++played) {
-      const auto trial = context.tryNoisy(shot);
-      if (!trial) break;
-      sum += breakWorth(*trial, context);
-    }
-    if (played < samples) break;
-    shot.value = sum / samples;
+    const auto mean = context.meanOfNoisy(
+        shot, samples, [&](const Trial& trial) { return breakWorth(trial, context); });
+    if (!mean) break;
+    shot.value = *mean;
     if (!best || shot.value > best->value) best = shot;
   }
   return best ? *best : legal.front();

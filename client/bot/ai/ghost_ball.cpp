@@ -34,7 +34,6 @@ bool enters(const PocketTarget& pocket, const Vec2& direction) {
 std::optional<PotLine> potLine(const Vec2& cue, const Vec2& object, int id, int pocket,
                                const TableView& view) {
   const PocketTarget& target = view.pockets[static_cast<std::size_t>(pocket)];
-  const double r = view.radius();
   PotLine line;
   line.ball = id;
   line.pocket = pocket;
@@ -46,18 +45,23 @@ std::optional<PotLine> potLine(const Vec2& cue, const Vec2& object, int id, int 
   if (line.object_distance < 1e-6) return std::nullopt;
   const Vec2 d = to_pocket / line.object_distance;
   if (!enters(target, d)) return std::nullopt;
-  line.ghost = object - 2 * r * d;
-  const Vec2 to_ghost = line.ghost - cue;
+  if (!aimLine(line, d, view)) return std::nullopt;
+  return line;
+}
+
+bool aimLine(PotLine& line, const Vec2& direction, const TableView& view) {
+  line.ghost = line.object - 2 * view.radius() * direction;
+  const Vec2 to_ghost = line.ghost - line.cue;
   line.cue_distance = to_ghost.norm();
-  if (line.cue_distance < 1e-6 || !onSurface(line.ghost, view)) return std::nullopt;
+  if (line.cue_distance < 1e-6 || !onSurface(line.ghost, view)) return false;
   const Vec2 aim = to_ghost / line.cue_distance;
-  line.cut = std::acos(std::clamp(aim.dot(d), -1.0, 1.0));
-  if (line.cut > kMaxCut) return std::nullopt;
+  line.cut = std::acos(std::clamp(aim.dot(direction), -1.0, 1.0));
+  if (line.cut > kMaxCut) return false;
   line.yaw = std::atan2(aim.y(), aim.x());
   // Error in the object ball's direction grows with its distance and with the cut.
   const double cos_cut = std::max(std::cos(line.cut), 0.05);
   line.difficulty = (line.object_distance + 0.35 * line.cue_distance) / std::pow(cos_cut, 1.5);
-  return line;
+  return true;
 }
 
 bool pathClear(const Vec2& from, const Vec2& to, const std::vector<physics::Ball>& balls,

@@ -36,6 +36,11 @@ inline constexpr double kMaxCut = 1.35;
 std::optional<PotLine> potLine(const Vec2& cue, const Vec2& object, int id, int pocket,
                                const TableView& view);
 
+/// Completes `line` (its cue, object and object_distance set) for an object ball sent from
+/// `line.object` along the unit `direction`: the ghost point, the cut, the yaw and the difficulty.
+/// False when the ghost point is off the playing surface or the cut is thinner than kMaxCut.
+bool aimLine(PotLine& line, const Vec2& direction, const TableView& view);
+
 /// True when a ball of the view's radius moving straight from `from` to `to` touches none of the
 /// balls on the table in `balls` other than `ignore_a` and `ignore_b` (ids; -1 for none).
 bool pathClear(const Vec2& from, const Vec2& to, const std::vector<physics::Ball>& balls,

@@ -17,6 +17,17 @@ std::optional<Trial> PlanContext::tryNoisy(const PlannedShot& shot) {
   return tryShot(played);
 }
 
+std::optional<double> PlanContext::meanOfNoisy(const PlannedShot& shot, int tries,
+                                               const std::function<double(const Trial&)>& worth) {
+  double sum = 0.0;
+  for (int k = 0; k < tries; ++k) {
+    const auto trial = tryNoisy(shot);
+    if (!trial) return std::nullopt;
+    sum += worth(*trial);
+  }
+  return sum / tries;
+}
+
 double PlanContext::keptTurnWorth(const Trial& trial) const {
   const double sigma = noise.yaw > 0.0 ? noise.yaw : olympiadNoise(view.radius()).yaw;
   return 100.0 +

@@ -2,6 +2,7 @@
 // budget, the rules state to judge with and the answer to pending options.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct PotBreadth {
   int shortlist = 8;   ///< the pots worth most in exact trials, then sampled under the noise
   bool banks = false;  ///< one-cushion banks (bank_shot.h) after the direct lines from the lie
 };
+
+/// What a foul costs in a stroke's worth (a clean pot with a hopeless leave is worth 100).
+inline constexpr double kFoulCost = 40.0;
 
 /// One turn's planning inputs.
 struct PlanContext {
@@ -46,6 +50,10 @@ struct PlanContext {
   std::optional<Trial> tryShot(const PlannedShot& shot);
   /// Runs `shot` as the bot would play it: its stroke moved by one draw of `noise`.
   std::optional<Trial> tryNoisy(const PlannedShot& shot);
+  /// The mean of `worth` over `tries` noisy tries of `shot` (tryNoisy); empty when the budget
+  /// runs out first.
+  std::optional<double> meanOfNoisy(const PlannedShot& shot, int tries,
+                                    const std::function<double(const Trial&)>& worth);
   /// What a stroke that keeps the turn is worth, 100 for the stroke and up to `leave_weight` more
   /// for its leave (leaveValue, graded with the bot's own aim error, or a strong player's when it
   /// expects none of itself).

@@ -30,8 +30,6 @@ constexpr std::array<Variant, kMaxVariants> kVariants{{
     {1.0, -0.55}, {1.3, -0.6},  {0.9, 0.45},  {1.7, 0.4},   {2.5, 0.3},   {1.8, -0.6},
 }};
 
-// What a foul costs in a pot's value (a clean pot with a hopeless leave is worth 100).
-constexpr double kFoulCost = 40.0;
 // Worth of a trial for a pot; empty when it fails.
 std::optional<double> potValue(const Trial& trial, const PlanContext& context) {
   if (!trial.judged || trial.loses) return std::nullopt;
@@ -109,18 +107,14 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
   working.resize(std::min(working.size(), static_cast<std::size_t>(context.breadth.shortlist)));
   std::optional<PlannedShot> best;
   for (PlannedShot& shot : working) {
-    double sum = 0.0;
-    int made = 0, played = 0;
-    for (int k = 0; k < context.samples; ++k) {
-      const auto trial = context.tryNoisy(shot);
-      if (!trial) break;
-      ++played;
-      sum += playedValue(*trial, context);
-      made += potValue(*trial, context) ? 1 : 0;  // made cleanly, keeping the turn (or won)
-    }
-    if (played < context.samples) break;
-    shot.value = sum / played;
-    shot.success = static_cast<double>(made) / played;
+    int made = 0;  // made cleanly, keeping the turn (or won)
+    const auto mean = context.meanOfNoisy(shot, context.samples, [&](const Trial& trial) {
+      made += potValue(trial, context) ? 1 : 0;
+      return playedValue(trial, context);
+    });
+    if (!mean) break;
+    shot.value = *mean;
+    shot.success = static_cast<double>(made) / context.samples;
     if (!best || shot.value > best->value) best = shot;
   }
   return best ? best : std::optional<PlannedShot>(working.front());
