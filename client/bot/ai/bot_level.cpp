@@ -20,7 +20,7 @@ constexpr std::array<LevelRow, 4> kLevels{{
     {Level::Beginner, "beginner", 12.0, 0, 320, LookAhead::NextShot, {}},
     {Level::Club, "club", 5.0, 8, 320, LookAhead::NextShot, {}},
     {Level::League, "league", 2.2, 16, 2000, LookAhead::TwoShots, {12, 24, 12, true}},
-    {Level::Pro, "pro", 1.0, 48, 5000, LookAhead::TwoShots, {16, 36, 16, true}},
+    {Level::Pro, "pro", 1.0, 48, 5000, LookAhead::TwoShots, {16, 48, 16, true}},
 }};
 
 const LevelRow& rowOf(Level level) {

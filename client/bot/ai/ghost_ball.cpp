@@ -64,6 +64,17 @@ bool aimLine(PotLine& line, const Vec2& direction, const TableView& view) {
   return true;
 }
 
+std::optional<Vec2> contactLine(const Vec2& cue, const Vec2& object, double yaw, double radius) {
+  const Vec2 u(std::cos(yaw), std::sin(yaw));
+  const Vec2 w = object - cue;
+  const double along = w.dot(u);
+  const double off_squared = w.squaredNorm() - along * along;
+  const double reach = 4 * radius * radius;
+  if (along <= 0.0 || off_squared >= reach) return std::nullopt;
+  const Vec2 at_contact = cue + (along - std::sqrt(reach - off_squared)) * u;
+  return (object - at_contact).normalized();
+}
+
 bool pathClear(const Vec2& from, const Vec2& to, const std::vector<physics::Ball>& balls,
                double radius, int ignore_a, int ignore_b) {
   // Slightly less than touching: balls frozen together still let a shot past.

@@ -41,6 +41,11 @@ std::optional<PotLine> potLine(const Vec2& cue, const Vec2& object, int id, int 
 /// False when the ghost point is off the playing surface or the cut is thinner than kMaxCut.
 bool aimLine(PotLine& line, const Vec2& direction, const TableView& view);
 
+/// The unit direction an object ball at `object` is sent in by a cue ball rolling straight from
+/// `cue` along `yaw`: their line of centres at contact (what the ghost ball assumes: no throw).
+/// Empty when the cue ball passes it by.
+std::optional<Vec2> contactLine(const Vec2& cue, const Vec2& object, double yaw, double radius);
+
 /// True when a ball of the view's radius moving straight from `from` to `to` touches none of the
 /// balls on the table in `balls` other than `ignore_a` and `ignore_b` (ids; -1 for none).
 bool pathClear(const Vec2& from, const Vec2& to, const std::vector<physics::Ball>& balls,

@@ -11,6 +11,12 @@ std::optional<Trial> PlanContext::tryShot(const PlannedShot& shot) {
   return verifier.run(balls, judge_state, shot);
 }
 
+std::optional<Vec2> PlanContext::probeHeading(const PlannedShot& shot, int id, double horizon) {
+  if (runs_left <= 0) return std::nullopt;
+  --runs_left;
+  return verifier.heading(balls, shot, id, horizon);
+}
+
 std::optional<Trial> PlanContext::tryNoisy(const PlannedShot& shot) {
   PlannedShot played = shot;
   played.cue = perturbed(shot.cue, noise, rng);

@@ -19,9 +19,9 @@ namespace pool::bot {
 
 /// How widely a turn's pots are searched.
 struct PotBreadth {
-  int lines = 10;      ///< pot lines tried in the physics, easiest first
-  int variants = 12;   ///< strokes (speed and spin) tried on each line, at most pot_search.h's 36
-  int shortlist = 8;   ///< the pots worth most in exact trials, then sampled under the noise
+  int lines = 10;     ///< pot lines tried in the physics, easiest first
+  int variants = 12;  ///< strokes (speed, spin, side) tried on each line, at most pot_search.h's 48
+  int shortlist = 8;  ///< the pots worth most in exact trials, then sampled under the noise
   bool banks = false;  ///< one-cushion banks (bank_shot.h) after the direct lines from the lie
 };
 
@@ -48,6 +48,8 @@ struct PlanContext {
 
   /// Runs `shot` if the budget allows; empty when it is spent.
   std::optional<Trial> tryShot(const PlannedShot& shot);
+  /// ShotVerifier::heading if the budget allows (a probe costs a trial); empty when it is spent.
+  std::optional<Vec2> probeHeading(const PlannedShot& shot, int id, double horizon);
   /// Runs `shot` as the bot would play it: its stroke moved by one draw of `noise`.
   std::optional<Trial> tryNoisy(const PlannedShot& shot);
   /// The mean of `worth` over `tries` noisy tries of `shot` (tryNoisy); empty when the budget

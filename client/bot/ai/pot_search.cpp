@@ -9,25 +9,31 @@
 #include "client/bot/ai/bank_shot.h"
 #include "client/bot/ai/execution_noise.h"
 #include "client/bot/ai/leave_value.h"
+#include "client/bot/ai/throw_aim.h"
 #include "rules/game_rules.h"
 
 namespace pool::bot {
 namespace {
 
-/// A speed factor and a tip height (fraction of R) to try on a line, in order: the strokes of
-/// every level first, then finer steps of speed and spin for a level that tries more
-/// (PlannerOptions::variants).
+/// A speed factor, a tip height and a side offset (fractions of R) to try on a line, in order: the
+/// strokes of every level first, then finer steps of speed and spin for a level that tries more,
+/// then side spin (running or reverse English, 0.3 R) on six of them (PotBreadth::variants).
 struct Variant {
   double speed_factor;
   double tip;
+  double side = 0.0;
 };
 constexpr std::array<Variant, kMaxVariants> kVariants{{
-    {1.0, 0.0},   {1.0, -0.3},  {1.3, 0.0},   {0.8, 0.2},   {1.5, -0.35}, {0.75, 0.0},
-    {0.75, -0.4}, {1.0, 0.35},  {1.3, -0.4},  {1.3, 0.35},  {1.8, 0.0},   {1.8, -0.4},
-    {0.65, 0.0},  {0.65, 0.3},  {0.65, -0.3}, {0.9, -0.15}, {0.9, 0.15},  {1.15, -0.2},
-    {1.15, 0.2},  {1.15, 0.45}, {1.15, -0.5}, {1.5, 0.0},   {1.5, 0.2},   {1.5, -0.55},
-    {2.1, 0.0},   {2.1, -0.5},  {2.1, 0.3},   {2.5, 0.0},   {2.5, -0.5},  {0.85, -0.55},
-    {1.0, -0.55}, {1.3, -0.6},  {0.9, 0.45},  {1.7, 0.4},   {2.5, 0.3},   {1.8, -0.6},
+    {1.0, 0.0},        {1.0, -0.3},      {1.3, 0.0},       {0.8, 0.2},       {1.5, -0.35},
+    {0.75, 0.0},       {0.75, -0.4},     {1.0, 0.35},      {1.3, -0.4},      {1.3, 0.35},
+    {1.8, 0.0},        {1.8, -0.4},      {0.65, 0.0},      {0.65, 0.3},      {0.65, -0.3},
+    {0.9, -0.15},      {0.9, 0.15},      {1.15, -0.2},     {1.15, 0.2},      {1.15, 0.45},
+    {1.15, -0.5},      {1.5, 0.0},       {1.5, 0.2},       {1.5, -0.55},     {2.1, 0.0},
+    {2.1, -0.5},       {2.1, 0.3},       {2.5, 0.0},       {2.5, -0.5},      {0.85, -0.55},
+    {1.0, -0.55},      {1.3, -0.6},      {0.9, 0.45},      {1.7, 0.4},       {2.5, 0.3},
+    {1.8, -0.6},       {1.0, 0.0, 0.3},  {1.0, 0.0, -0.3}, {1.3, -0.3, 0.3}, {1.3, -0.3, -0.3},
+    {0.8, 0.2, 0.3},   {0.8, 0.2, -0.3}, {1.5, 0.2, 0.3},  {1.5, 0.2, -0.3}, {1.0, -0.4, 0.3},
+    {1.0, -0.4, -0.3}, {2.0, 0.0, 0.3},  {2.0, 0.0, -0.3},
 }};
 
 // Worth of a trial for a pot; empty when it fails.
@@ -46,6 +52,7 @@ PlannedShot potShot(const PlanContext& context, const PotCandidate& candidate,
   PlannedShot shot = context.blank(ShotKind::Pot);
   const double speed = potSpeed(candidate.line, context.view.spec.params);
   shot.cue = stroke(candidate.line.yaw, speed * variant.speed_factor, variant.tip);
+  shot.cue.tip_side = variant.side;
   shot.called_ball = candidate.line.ball;
   shot.called_pocket = context.view.pockets[static_cast<std::size_t>(candidate.line.pocket)].name;
   shot.nominate = context.play_state.ball_on == rules::kOnColour || context.play_state.free_ball;
@@ -81,6 +88,7 @@ std::optional<PlannedShot> searchPots(PlanContext& context,
     std::vector<PlannedShot> line;  // this line's working variants
     for (const Variant& variant : variants) {
       PlannedShot shot = potShot(context, candidates[i], variant);
+      aimForThrow(context, shot, candidates[i].line);
       const auto trial = context.tryShot(shot);
       if (!trial) break;
       const auto value = potValue(*trial, context);

@@ -16,8 +16,8 @@ struct PotCandidate {
   std::optional<Vec2> place;
 };
 
-/// The strokes (speed and spin) the search knows for a line.
-inline constexpr int kMaxVariants = 36;
+/// The strokes (speed, spin and side) the search knows for a line.
+inline constexpr int kMaxVariants = 48;
 
 /// The best verified pot among `candidates` (easiest first), or empty when none pockets the
 /// called ball legally while keeping the turn (or wins the game). The call and the placement of

@@ -2,6 +2,7 @@
 #include "client/bot/ai/shot_verifier.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include "rules/eight_ball.h"
 
@@ -15,6 +16,14 @@ bool pocketedIn(const physics::EventLog& events, int id, const std::string& pock
   return std::any_of(events.begin(), events.end(), [&](const physics::Event& e) {
     return e.type == physics::EventType::Pocket && e.ball_a == id && e.where == pocket;
   });
+}
+
+// The balls of `balls` on the table, in their order.
+std::vector<physics::Ball> onTableOnly(const std::vector<physics::Ball>& balls) {
+  std::vector<physics::Ball> out;
+  std::copy_if(balls.begin(), balls.end(), std::back_inserter(out),
+               [](const physics::Ball& b) { return physics::onTable(b.state); });
+  return out;
 }
 
 void sortById(std::vector<physics::Ball>& balls) {
@@ -58,10 +67,10 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
       shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, view_.radius()) : balls;
   judged_shot.intent = intentOf(shot);
   // Only balls on the table go into the world; the rest stay where they are.
-  std::vector<physics::Ball> in_play, down;
-  for (const auto& b : judged_shot.before)
-    (physics::onTable(b.state) ? in_play : down).push_back(b);
-  if (auto placed = simulation_.setBalls(in_play); !placed) {
+  std::vector<physics::Ball> down;
+  std::copy_if(judged_shot.before.begin(), judged_shot.before.end(), std::back_inserter(down),
+               [](const physics::Ball& b) { return !physics::onTable(b.state); });
+  if (auto placed = simulation_.setBalls(onTableOnly(judged_shot.before)); !placed) {
     trial.error = placed.error();
     return trial;
   }
@@ -95,6 +104,45 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
     if (b.id == physics::kCueBall && physics::onTable(b.state)) trial.cue_end = b.pos.head<2>();
   }
   return trial;
+}
+
+std::optional<Eigen::Vector2d> ShotVerifier::heading(const std::vector<physics::Ball>& balls,
+                                                     const PlannedShot& shot, int id,
+                                                     double horizon) {
+  ++runs_;
+  const auto in_play = onTableOnly(
+      shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, view_.radius()) : balls);
+  const auto start = std::find_if(in_play.begin(), in_play.end(),
+                                  [&](const physics::Ball& b) { return b.id == id; });
+  if (start == in_play.end() || !simulation_.setBalls(in_play)) return std::nullopt;
+  const auto outcome = simulation_.shoot(shot.cue, physics::SimOptions{horizon, 0.0});
+  if (!outcome) return std::nullopt;
+  const Eigen::Vector2d from = start->pos.head<2>();
+  const auto away = [&](const Eigen::Vector2d& to) -> std::optional<Eigen::Vector2d> {
+    constexpr double kMoved = 1e-3;  // m: less is no direction
+    if ((to - from).norm() < kMoved) return std::nullopt;
+    return (to - from).normalized();
+  };
+  bool struck = false;
+  for (const auto& e : outcome->events) {
+    if (e.type == physics::EventType::BallBall && !struck) {
+      const bool cue_ball = e.ball_a == physics::kCueBall || e.ball_b == physics::kCueBall;
+      const bool this_ball = e.ball_a == id || e.ball_b == id;
+      if (cue_ball && !this_ball) return std::nullopt;  // the cue ball met another ball first
+      struck = cue_ball && this_ball;
+      continue;
+    }
+    if (!struck) continue;
+    // Its first event after the strike (it starts to roll, meets a cushion or drops): the
+    // straight path it left along.
+    if (e.ball_a == id) return away(e.pos.head<2>());
+    if (e.ball_b == id) return std::nullopt;  // hit again before its own first event
+  }
+  if (!struck) return std::nullopt;
+  for (const auto& b : outcome->balls) {
+    if (b.id == id) return away(b.pos.head<2>());
+  }
+  return std::nullopt;
 }
 
 }  // namespace pool::bot

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,12 @@ class ShotVerifier {
   /// `shot` from the layout `balls` (every ball, pocketed ones too) with the rules in `state`.
   Trial run(const std::vector<physics::Ball>& balls, const rules::GameState& state,
             const PlannedShot& shot);
+
+  /// The unit direction ball `id` leaves in when `shot`'s cue ball first strikes it (throw and
+  /// all), running the physics only until the ball's next event or `horizon` s: empty when the
+  /// cue ball meets another ball first or has not struck it by then.
+  std::optional<Eigen::Vector2d> heading(const std::vector<physics::Ball>& balls,
+                                         const PlannedShot& shot, int id, double horizon);
 
   /// Shots run so far.
   int runs() const { return runs_; }

@@ -1,0 +1,18 @@
+// Aiming off for throw: a pot's cue line turned so the object ball leaves where the physics sends
+// it (friction between the balls, the cue ball's speed and spin), not where the ghost ball says.
+#pragma once
+
+#include "client/bot/ai/ghost_ball.h"
+#include "client/bot/ai/plan_context.h"
+
+namespace pool::bot {
+
+/// Turns `shot` (a stroke along `line`) so that `line`'s ball leaves along the line from the ghost
+/// ball through it. One probe of the physics, up to the object ball's first event
+/// (ShotVerifier::heading), measures how far off it leaves; the cue line turns by that error over
+/// the geometry's rate (contactLine): cut-induced throw is a few degrees at most and changes
+/// little over so small a turn. Unchanged when the probe finds no clean first contact or the
+/// budget is spent.
+void aimForThrow(PlanContext& context, PlannedShot& shot, const PotLine& line);
+
+}  // namespace pool::bot
