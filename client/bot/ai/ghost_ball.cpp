@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "table/segment_distance.h"
 
@@ -117,6 +118,14 @@ double potSpeed(const PotLine& line, const table::PhysicsParams& params) {
   const double cue_roll =
       std::sqrt(cue_at_contact * cue_at_contact + 2 * roll_decel * line.cue_distance);
   return std::clamp(kSlideLoss * cue_roll, kMinSpeed, kMaxSpeed);
+}
+
+double angleOf(const Vec2& v) {
+  return std::atan2(v.y(), v.x());
+}
+
+double angleBetween(double a, double b) {
+  return std::remainder(a - b, 2.0 * std::numbers::pi);
 }
 
 std::optional<Vec2> ballAt(const std::vector<physics::Ball>& balls, int id) {

@@ -60,6 +60,12 @@ std::vector<PotLine> potLines(const Vec2& cue, const std::vector<physics::Ball>&
 /// pocket with some pace left, from the cloth's rolling resistance and a sliding start.
 double potSpeed(const PotLine& line, const table::PhysicsParams& params);
 
+/// The heading of `v` in the table plane, rad (0 = +x).
+double angleOf(const Vec2& v);
+
+/// `a` − `b` (rad) wrapped into [−π, π].
+double angleBetween(double a, double b);
+
 /// The centre of ball `id` in the table plane, if it is on the table in `balls`.
 std::optional<Vec2> ballAt(const std::vector<physics::Ball>& balls, int id);
 

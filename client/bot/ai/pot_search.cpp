@@ -17,7 +17,8 @@ namespace {
 
 /// A speed factor, a tip height and a side offset (fractions of R) to try on a line, in order: the
 /// strokes of every level first, then finer steps of speed and spin for a level that tries more,
-/// then side spin (running or reverse English, 0.3 R) on six of them (PotBreadth::variants).
+/// then six strokes with side spin (running or reverse English, 0.3 R) each way
+/// (PotBreadth::variants).
 struct Variant {
   double speed_factor;
   double tip;
@@ -70,8 +71,8 @@ double playedValue(const Trial& trial, const PlanContext& context) {
   return trial.verdict.legal() ? 0.0 : -kFoulCost;
 }
 
-// At most two variants (speed and spin) of one line go on the shortlist sampled under the bot's
-// noise.
+// At most two variants (speed, spin and side) of one line go on the shortlist sampled under the
+// bot's noise.
 constexpr std::size_t kVariantsShortlisted = 2;
 
 }  // namespace

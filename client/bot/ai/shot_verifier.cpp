@@ -26,6 +26,12 @@ std::vector<physics::Ball> onTableOnly(const std::vector<physics::Ball>& balls) 
   return out;
 }
 
+// `balls` as `shot` is played from them: the cue ball placed first when it is in hand.
+std::vector<physics::Ball> laidFor(const std::vector<physics::Ball>& balls, const PlannedShot& shot,
+                                   double radius) {
+  return shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, radius) : balls;
+}
+
 void sortById(std::vector<physics::Ball>& balls) {
   std::sort(balls.begin(), balls.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
 }
@@ -63,14 +69,14 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
   ++runs_;
   Trial trial;
   rules::Shot judged_shot;
-  judged_shot.before =
-      shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, view_.radius()) : balls;
+  judged_shot.before = laidFor(balls, shot, view_.radius());
   judged_shot.intent = intentOf(shot);
   // Only balls on the table go into the world; the rest stay where they are.
-  std::vector<physics::Ball> down;
-  std::copy_if(judged_shot.before.begin(), judged_shot.before.end(), std::back_inserter(down),
-               [](const physics::Ball& b) { return !physics::onTable(b.state); });
-  if (auto placed = simulation_.setBalls(onTableOnly(judged_shot.before)); !placed) {
+  std::vector<physics::Ball> in_play, down;
+  std::partition_copy(judged_shot.before.begin(), judged_shot.before.end(),
+                      std::back_inserter(in_play), std::back_inserter(down),
+                      [](const physics::Ball& b) { return physics::onTable(b.state); });
+  if (auto placed = simulation_.setBalls(in_play); !placed) {
     trial.error = placed.error();
     return trial;
   }
@@ -95,11 +101,8 @@ Trial ShotVerifier::run(const std::vector<physics::Ball>& balls, const rules::Ga
       shot.called_ball && pocketedIn(outcome->events, *shot.called_ball, shot.called_pocket);
   trial.wins = trial.verdict.game_over && trial.verdict.winner == state.shooter;
   trial.loses = trial.verdict.game_over && trial.verdict.winner != state.shooter;
-  std::vector<physics::Ball> left_on_table;
-  for (const auto& b : trial.after) {
-    if (physics::onTable(b.state)) left_on_table.push_back(b);
-  }
-  trial.dead_layout = !physics::checkPlacement(left_on_table, view_.geometry, view_.spec.params);
+  trial.dead_layout =
+      !physics::checkPlacement(onTableOnly(trial.after), view_.geometry, view_.spec.params);
   for (const auto& b : trial.after) {
     if (b.id == physics::kCueBall && physics::onTable(b.state)) trial.cue_end = b.pos.head<2>();
   }
@@ -110,8 +113,7 @@ std::optional<Eigen::Vector2d> ShotVerifier::heading(const std::vector<physics::
                                                      const PlannedShot& shot, int id,
                                                      double horizon) {
   ++runs_;
-  const auto in_play = onTableOnly(
-      shot.cue_ball_at ? withCueBallAt(balls, *shot.cue_ball_at, view_.radius()) : balls);
+  const auto in_play = onTableOnly(laidFor(balls, shot, view_.radius()));
   const auto start = std::find_if(in_play.begin(), in_play.end(),
                                   [&](const physics::Ball& b) { return b.id == id; });
   if (start == in_play.end() || !simulation_.setBalls(in_play)) return std::nullopt;
@@ -136,7 +138,9 @@ std::optional<Eigen::Vector2d> ShotVerifier::heading(const std::vector<physics::
     // Its first event after the strike (it starts to roll, meets a cushion or drops): the
     // straight path it left along.
     if (e.ball_a == id) return away(e.pos.head<2>());
-    if (e.ball_b == id) return std::nullopt;  // hit again before its own first event
+    // Met by a ball of a lower id (named first), before an event of its own: its centre is not in
+    // the event.
+    if (e.ball_b == id) return std::nullopt;
   }
   if (!struck) return std::nullopt;
   for (const auto& b : outcome->balls) {

@@ -40,8 +40,9 @@ class ShotVerifier {
             const PlannedShot& shot);
 
   /// The unit direction ball `id` leaves in when `shot`'s cue ball first strikes it (throw and
-  /// all), running the physics only until the ball's next event or `horizon` s: empty when the
-  /// cue ball meets another ball first or has not struck it by then.
+  /// all), read from where it is at its first event after the strike (or at `horizon`, where the
+  /// physics stops): empty when the cue ball meets another ball first or has not struck it by
+  /// then.
   std::optional<Eigen::Vector2d> heading(const std::vector<physics::Ball>& balls,
                                          const PlannedShot& shot, int id, double horizon);
 

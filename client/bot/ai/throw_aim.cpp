@@ -3,26 +3,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace pool::bot {
 namespace {
 
-// The probe runs until the cue ball must have struck: twice its time at its starting speed, and
-// a margin for a slow stroke.
+// How long the probe runs: twice the cue ball's time to contact at its starting speed, and a
+// margin for a slow stroke (a probe that ends before the strike leaves the line alone).
 double probeHorizon(const PotLine& line, double speed) {
   constexpr double kMargin = 0.3;   // s
   constexpr double kLongest = 6.0;  // s
   return std::min(kLongest, 2.0 * line.cue_distance / std::max(speed, 0.1) + kMargin);
-}
-
-double angleOf(const Vec2& v) {
-  return std::atan2(v.y(), v.x());
-}
-
-// `a` − `b` wrapped into (−π, π].
-double angleBetween(double a, double b) {
-  return std::remainder(a - b, 2.0 * std::numbers::pi);
 }
 
 }  // namespace
