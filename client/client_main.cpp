@@ -130,10 +130,10 @@ void addClientFlags(CLI::App& app, ClientConfig& c) {
                  "--scene eightball: the question the Magic Eight Ball answers");
   app.add_option("--seed", c.screenshot.seed, "--scene eightball: the Magic Eight Ball's seed");
   app.add_option("--quality", c.window.quality,
-                 "drawing preset: full, light (the 3-D scene at lower resolution) or auto (light "
-                 "under software OpenGL); default: the window's settings (auto), full for "
-                 "--screenshot")
-      ->check(CLI::IsMember({"auto", "full", "light"}));
+                 "drawing preset: high (anti-aliased, shadow maps, reflections), full, light (the "
+                 "3-D scene at lower resolution) or auto (light under software OpenGL, high "
+                 "otherwise); default: the window's settings (auto), full for --screenshot")
+      ->check(CLI::IsMember({"auto", "high", "full", "light"}));
   app.add_flag("--wireframe", c.screenshot.render.wireframe, "--screenshot: polygons as lines");
   app.add_flag("--no-textures", c.no_textures, "--screenshot: flat colours, no numbers or grain");
   app.add_flag("--no-lighting", c.no_lighting, "--screenshot: unlit colours");
@@ -146,8 +146,10 @@ void completeOptions(ClientConfig& c) {
   c.window.keep_identity = !c.fresh_identity;
   c.screenshot.render.textures = !c.no_textures;
   c.screenshot.table = c.window.table;
-  if (c.window.quality == "light") {
-    c.screenshot.render = withQuality(c.screenshot.render, pool::render::Quality::Light);
+  if (c.window.quality == "light" || c.window.quality == "high") {
+    const auto setting = *pool::render::parseQualitySetting(c.window.quality);
+    c.screenshot.render =
+        withQuality(c.screenshot.render, pool::render::resolveQuality(setting, ""));
   }
   c.screenshot.render.lighting = !c.no_lighting;
   c.window.domain = c.domain;

@@ -53,7 +53,7 @@ bool knownPane(const std::string& name) {
 }
 
 bool knownQuality(const std::string& name) {
-  return name == "auto" || name == "full" || name == "light";
+  return name == "auto" || name == "high" || name == "full" || name == "light";
 }
 
 Result<Settings> loadSettings(const std::filesystem::path& path) {

@@ -118,7 +118,7 @@ void EightBallRoom::drawWindow(const Camera& camera, float aspect, const std::st
 
 void EightBallRoom::draw(const Camera& camera, int width, int height, const std::string& answer) {
   const SpotLights lights{
-      {glm::vec3(-0.7f, -0.9f, 3.0f), glm::vec3(0.8f, -0.4f, 3.2f)}, 35.0f, 70.0f};
+      {glm::vec3(-0.7f, -0.9f, 3.0f), glm::vec3(0.8f, -0.4f, 3.2f)}, 35.0f, 70.0f, std::nullopt};
   shading_.beginFrame(camera, width, height, kBackground, lights, options_);
   shading_.draw(floor_, glm::mat4(1.0f), kFloor, shaders::kPlain, 0.0f);
   shading_.draw(stool_, glm::mat4(1.0f), woodColour(), shaders::kWood, 0.1f);

@@ -18,6 +18,11 @@ inline constexpr float kLampHeight = 0.95f;
 /// felt: a full pool of 0.20 m radius fading out by 0.98 m under each lamp.
 inline constexpr float kSpotInnerDeg = 12.0f;
 inline constexpr float kSpotOuterDeg = 46.0f;
+/// The high preset's cones, in linear light: full light within 0.25 m of the foot of a lamp,
+/// none beyond 0.80 m, so that the felt midway between the lamps gets a quarter of a lamp's
+/// light from each and the pools stand out as a real table's do.
+inline constexpr float kHighSpotInnerDeg = 15.0f;
+inline constexpr float kHighSpotOuterDeg = 40.0f;
 /// A lamp's diffuse light on a surface facing it at its own height below it (share of albedo).
 inline constexpr float kLampGain = 0.62f;
 /// The shade: an enamel cone around the light, its rim this far below it and this wide, m.

@@ -133,6 +133,12 @@ void Renderer::setBalls(std::vector<SceneBall> balls) {
   placeCue();
 }
 
+void Renderer::setOptions(const RenderOptions& options) {
+  const bool shadows_changed = options.shadow_maps != options_.shadow_maps;
+  options_ = options;
+  if (shadows_changed) updateShadows();
+}
+
 void Renderer::setOverlay(std::vector<OverlayLine> lines) {
   overlay_.set(lines);
 }
@@ -156,12 +162,16 @@ void Renderer::updateShadows() {
   }
   const auto lamps = lampPositions(scene_.geometry);
   const auto radius = static_cast<float>(scene_.ball_radius);
-  auto blobs = ballShadows(lamps, centres, radius, SceneShading::kAmbient);
+  // With shadow maps the lamps' shadows are the maps': the contact shadows and the cushions'
+  // shade stay.
+  const std::span<const glm::vec3> casting =
+      options_.shadow_maps ? std::span<const glm::vec3>() : std::span<const glm::vec3>(lamps);
+  auto blobs = ballShadows(casting, centres, radius, SceneShading::kAmbient);
   for (const auto& blob : ballShadowsOnCushions(lamps, centres, radius, rails_.half_length,
                                                 rails_.half_width, rails_.top)) {
     blobs.push_back(blob);
   }
-  if (cue_) {
+  if (cue_ && !options_.shadow_maps) {
     for (const auto& piece :
          cueShadow(lamps, *cue_, rails_.half_length, rails_.half_width, SceneShading::kAmbient)) {
       blobs.push_back(piece);
@@ -278,43 +288,109 @@ void Renderer::drawGhost(const Camera& camera, const glm::mat4& view_projection)
 }
 
 void Renderer::draw(const Camera& camera, int width, int height) const {
-  if (options_.scale >= 1.0f || options_.scale <= 0.0f) {
+  const bool scaled = options_.scale < 1.0f && options_.scale > 0.0f;
+  if (scaled) {
+    const auto part = [&](int n) {
+      return std::max(1, static_cast<int>(std::lround(static_cast<float>(n) * options_.scale)));
+    };
+    scaled_.begin(part(width), part(height));
+    drawScene(camera, part(width), part(height));
+    scaled_.end(width, height);
+  } else if (options_.samples > 1) {
+    scaled_.begin(width, height, options_.samples);
     drawScene(camera, width, height);
-    return;
+    scaled_.end(width, height);
+  } else {
+    drawScene(camera, width, height);
   }
-  const auto scaled = [&](int n) {
-    return std::max(1, static_cast<int>(std::lround(static_cast<float>(n) * options_.scale)));
-  };
-  scaled_.begin(scaled(width), scaled(height));
-  drawScene(camera, scaled(width), scaled(height));
-  scaled_.end(width, height);
+}
+
+void Renderer::renderShadowMaps() const {
+  if (!shadow_maps_) shadow_maps_ = std::make_unique<LampShadowMaps>();
+  const auto lamps = lampPositions(scene_.geometry);
+  const auto r = static_cast<float>(scene_.ball_radius);
+  for (int i = 0; i < 2; ++i) {
+    shadow_maps_->begin(i, lamps[static_cast<std::size_t>(i)]);
+    for (const Part& part : parts_) shadow_maps_->caster(*part.mesh, glm::mat4(1.0f));
+    for (const SceneBall& ball : scene_.balls) {
+      if (ball.pocketed) continue;
+      shadow_maps_->caster(
+          sphere_, glm::scale(glm::translate(glm::mat4(1.0f), toGlm(ball.pos)), glm::vec3(r)));
+    }
+    if (cue_) {
+      for (const CueModel::Part& part : cue_model_.parts()) {
+        shadow_maps_->caster(*part.mesh, cueModelMatrix(*cue_));
+      }
+    }
+    shadow_maps_->end();
+    shadow_maps_->bind(i, i == 0 ? shaders::kShadowUnit0 : shaders::kShadowUnit1);
+  }
+}
+
+void Renderer::captureEnvironment() const {
+  environment_ = std::make_unique<EnvironmentMap>();
+  const auto lamps = lampPositions(scene_.geometry);
+  // Over the table's centre, about where the balls' tops see the hall from.
+  environment_->capture(glm::vec3(0.0f, 0.0f, 0.25f), [&](const Camera& camera) {
+    RenderOptions plain;
+    plain.textures = options_.textures;
+    shading_.beginFrame(camera, EnvironmentMap::kSize, EnvironmentMap::kSize, kBackground,
+                        {lamps, kSpotInnerDeg, kSpotOuterDeg, std::nullopt}, plain);
+    shading_.setAmbient(kHallLight);
+    drawTable();
+    drawRoom();
+    for (const glm::vec3& light : lamps) {
+      const glm::mat4 at = glm::translate(glm::mat4(1.0f), light);
+      shading_.draw(shade_, at, shadeColour(), shaders::kShade, 0.0f);
+      shading_.draw(bulb_, glm::scale(at, glm::vec3(kBulbRadius)), bulbColour(), shaders::kEmissive,
+                    0.0f);
+    }
+    shading_.endFrame();
+  });
+}
+
+void Renderer::drawTable() const {
+  for (const Part& part : parts_) {
+    shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
+  }
+  drawDiamonds();
+}
+
+void Renderer::drawRoom() const {
+  if (!options_.room) return;
+  for (const Part& part : room_) {
+    // The shell (floor, walls, ceiling) is seen from inside only: a camera zoomed out beyond
+    // a wall or over the ceiling looks through it, as into a doll's house.
+    if (part.shell) glEnable(GL_CULL_FACE);
+    shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.0f);
+    glDisable(GL_CULL_FACE);
+  }
 }
 
 void Renderer::drawScene(const Camera& camera, int width, int height) const {
   const auto lamps = lampPositions(scene_.geometry);
   const glm::mat4 view_projection =
       viewProjection(camera, static_cast<float>(width) / static_cast<float>(height));
-  shading_.beginFrame(camera, width, height, kBackground, {lamps, kSpotInnerDeg, kSpotOuterDeg},
-                      options_);
-  shading_.setAmbient(kHallLight);
-  for (const Part& part : parts_) {
-    shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.05f);
+  SpotLights lights{lamps, kSpotInnerDeg, kSpotOuterDeg, std::nullopt};
+  if (options_.physical) {
+    if (!environment_) captureEnvironment();
+    environment_->bind(shaders::kEnvironmentUnit);
+    lights.inner_deg = kHighSpotInnerDeg;
+    lights.outer_deg = kHighSpotOuterDeg;
   }
-  drawDiamonds();
+  if (options_.shadow_maps && options_.lighting && !options_.wireframe) {
+    renderShadowMaps();
+    lights.shadow_matrices = shadow_maps_->matrices();
+  }
+  shading_.beginFrame(camera, width, height, kBackground, lights, options_);
+  shading_.setAmbient(kHallLight);
+  drawTable();
   if (options_.lighting && !options_.wireframe) shadows_.draw(view_projection);
   drawBalls();
   drawCue(camera);
   // The hall last among the opaque things: the table and balls in front of it hide most of it
   // from the fragment shader.
-  if (options_.room) {
-    for (const Part& part : room_) {
-      // The shell (floor, walls, ceiling) is seen from inside only: a camera zoomed out beyond
-      // a wall or over the ceiling looks through it, as into a doll's house.
-      if (part.shell) glEnable(GL_CULL_FACE);
-      shading_.draw(*part.mesh, glm::mat4(1.0f), part.colour, part.material, 0.0f);
-      glDisable(GL_CULL_FACE);
-    }
-  }
+  drawRoom();
   drawLamps(camera, width, height);
   shading_.endFrame();
   drawGhost(camera, view_projection);

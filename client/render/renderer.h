@@ -1,6 +1,7 @@
 // Draws a Scene (the table and its dressing, diamonds, pocket liners, ball shadows, numbered
 // balls, the cue, the pool hall round the table, lamps, the pocketed-ball trough) with two
-// spotlights and Blinn-Phong shading, then the ghost ball and the overlay lines.
+// spotlights and Blinn-Phong shading, then the ghost ball and the overlay lines; in the high
+// preset anti-aliased, through each lamp's shadow map, with the hall's environment map.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -13,6 +14,8 @@
 #include "client/render/cue_model.h"
 #include "client/render/cue_pose.h"
 #include "client/render/diamonds.h"
+#include "client/render/environment_map.h"
+#include "client/render/lamp_shadow_maps.h"
 #include "client/render/mesh.h"
 #include "client/render/overlay_lines.h"
 #include "client/render/render_options.h"
@@ -35,7 +38,7 @@ class Renderer {
   /// Replaces the balls (positions and orientations from the latest snapshot). Pocketed balls
   /// are drawn in the trough in the order they were pocketed.
   void setBalls(std::vector<SceneBall> balls);
-  void setOptions(const RenderOptions& options) { options_ = options; }
+  void setOptions(const RenderOptions& options);
   const RenderOptions& options() const { return options_; }
   /// Replaces the overlay segments drawn after the scene.
   void setOverlay(std::vector<OverlayLine> lines);
@@ -70,6 +73,12 @@ class Renderer {
   void drawLamps(const Camera& camera, int width, int height) const;
   void drawGhost(const Camera& camera, const glm::mat4& view_projection) const;
   void drawScene(const Camera& camera, int width, int height) const;
+  /// Each lamp's shadow map of the table, the balls and the cue (the high preset).
+  void renderShadowMaps() const;
+  /// The hall, the table and the lamps into the environment map, from over the table's centre.
+  void captureEnvironment() const;
+  void drawTable() const;  ///< its parts and diamonds
+  void drawRoom() const;   ///< the hall round it (when options().room)
 
   Scene scene_;
   RenderOptions options_;
@@ -90,8 +99,10 @@ class Renderer {
   ShadowLayer shadows_;
   OverlayLines overlay_;
   mutable OverlayLines ghost_lines_;
-  mutable ScaledTarget scaled_;  ///< the scene at options_.scale of the framebuffer's size  ///<
-                                 ///< rebuilt each frame: the outline faces the camera
+  /// The scene at options_.scale of the framebuffer's size, or multisampled.
+  mutable ScaledTarget scaled_;
+  mutable std::unique_ptr<LampShadowMaps> shadow_maps_;  ///< made on the first high frame
+  mutable std::unique_ptr<EnvironmentMap> environment_;  ///< made on the first high frame
 };
 
 }  // namespace pool::render

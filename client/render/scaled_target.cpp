@@ -1,4 +1,4 @@
-// The scaled target's framebuffer, resized on demand, and its blit to the window.
+// The scaled target's framebuffer, resized on demand, and its blit (or resolve) to the window.
 #include "client/render/scaled_target.h"
 
 #include <glad/gl.h>
@@ -14,7 +14,7 @@ ScaledTarget::~ScaledTarget() {
   glDeleteRenderbuffers(1, &depth_);
 }
 
-void ScaledTarget::begin(int width, int height) {
+void ScaledTarget::begin(int width, int height, int samples) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_);
   if (fbo_ == 0) {
     glGenFramebuffers(1, &fbo_);
@@ -22,10 +22,12 @@ void ScaledTarget::begin(int width, int height) {
     glGenRenderbuffers(1, &depth_);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  if (width != width_ || height != height_) {
+  samples = samples > 1 ? samples : 0;
+  if (width != width_ || height != height_ || samples != samples_) {
     width_ = width;
     height_ = height;
-    attachColourAndDepth(colour_, depth_, width, height);
+    samples_ = samples;
+    attachColourAndDepth(colour_, depth_, width, height, samples);
   }
   glViewport(0, 0, width, height);
 }
@@ -33,8 +35,13 @@ void ScaledTarget::begin(int width, int height) {
 void ScaledTarget::end(int out_width, int out_height) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous_));
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, out_width, out_height, GL_COLOR_BUFFER_BIT,
-                    GL_LINEAR);
+  if (samples_ > 0) {
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  } else {
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, out_width, out_height, GL_COLOR_BUFFER_BIT,
+                      GL_LINEAR);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_));
   glViewport(0, 0, out_width, out_height);
 }

@@ -1,6 +1,9 @@
 // GLSL 3.30 sources: the scene shader (world-space Blinn-Phong from two spotlights, procedural
 // felt and wood, a snooker table's chalk marks, numbered balls, the cue's varnished wood, the lamp
-// shades) and the unlit overlay-line shader.
+// shades; and the high preset's variant: linear light through each lamp's shadow map, tone
+// mapped, the balls' clear coat reflecting the hall's environment map and the lamps' mouths,
+// cloth weave and nap, varnish and leather), the shadow maps' depth shader and the unlit
+// overlay-line shader.
 #pragma once
 
 #include <string>
@@ -28,6 +31,11 @@ enum Material : int {
   kMarkedFelt = 12,
   kMaterials = 13
 };
+
+/// Texture units of the high variant: each lamp's shadow map and the hall's environment map.
+inline constexpr int kShadowUnit0 = 2;
+inline constexpr int kShadowUnit1 = 3;
+inline constexpr int kEnvironmentUnit = 4;
 
 /// Vertex stage: world position and normal, plus the object-space normal and position (ball
 /// markings turn with the ball's orientation; the cue's grain runs along its own axis).
@@ -59,7 +67,13 @@ void main() {
 /// the felt by the share of the pixel's footprint a mark covers (a mark thinner than a pixel
 /// shows fainter, never broken). uLighting 0: albedo unlit. Lamp light
 /// falls off as (lamp height / distance)², so each lamp makes its own pool on the felt. uAlpha:
-/// the fragment's opacity (fading lamps).
+/// the fragment's opacity (fading lamps). HIGH (the high preset): albedos taken to linear light,
+/// each lamp's light times its shadow map's visibility (a 3 × 3 percentage-closer filter of
+/// bilinear comparisons, 1.5 texels apart: soft edges), tone mapped (ACES, Narkowicz 2015) and
+/// encoded for display; the balls' clear coat (Schlick's Fresnel, F0 0.04) reflects the environment
+/// map and the glowing mouth of each lamp's shade (a disc of kMouth m round the light); the felt
+/// gets a woven texture and a nap's sheen at grazing angles, the wood a varnish, the liners a
+/// leather grain and sheen.
 inline constexpr const char* kSceneFragment = R"(
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -81,6 +95,47 @@ uniform vec3 uLightPos[2];
 uniform float uCosInner;
 uniform float uCosOuter;
 out vec4 fragColour;
+#ifdef HIGH
+uniform sampler2DShadow uShadow0;
+uniform sampler2DShadow uShadow1;
+uniform mat4 uLightMatrix[2];
+uniform int uShadowMaps;  // 0: the lamps' light unshadowed
+uniform float uShadowTexel;
+uniform samplerCube uEnvironment;
+uniform float uExposure;
+uniform float uAmbientScale;  // linear ambient per unit of uAmbient
+uniform float uMouthRadiance;
+uniform float uHallLevel;  // the room's own light against the lamps' (linear)
+const float kMouth = 0.20;  // m: the shade's glowing rim round the light
+vec3 toLinear(vec3 c) { return pow(max(c, vec3(0.0)), vec3(2.2)); }
+vec3 toDisplay(vec3 c) {
+  vec3 x = c * uExposure;
+  vec3 t = clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+  return pow(t, vec3(1.0 / 2.2));
+}
+float schlick(float cos_view) {
+  float m = 1.0 - clamp(cos_view, 0.0, 1.0);
+  return 0.04 + 0.96 * m * m * m * m * m;
+}
+float filtered(sampler2DShadow map, vec3 c) {
+  float sum = 0.0;
+  for (int y = -1; y <= 1; ++y) {
+    for (int x = -1; x <= 1; ++x) {
+      sum += texture(map, vec3(c.xy + 1.5 * vec2(float(x), float(y)) * uShadowTexel, c.z));
+    }
+  }
+  return sum / 9.0;
+}
+// The share of lamp i's light that reaches this fragment: 1 outside its map.
+float visibility(int i, vec3 n) {
+  if (uShadowMaps == 0) return 1.0;
+  vec4 p = uLightMatrix[i] * vec4(vWorldPos + n * 0.003, 1.0);
+  if (p.w <= 0.0) return 1.0;
+  vec3 c = p.xyz / p.w * 0.5 + 0.5;
+  if (any(lessThan(c, vec3(0.0))) || any(greaterThan(c, vec3(1.0)))) return 1.0;
+  return i == 0 ? filtered(uShadow0, c) : filtered(uShadow1, c);
+}
+#endif
 const vec3 kWhite = vec3(0.95, 0.95, 0.92);
 const float kCircleCos = 0.9;  // number circle: about 26 degrees around the axis
 #if MATERIAL == 1 || MATERIAL == 12
@@ -88,7 +143,15 @@ vec3 feltAlbedo() {
   if (uTextures == 0) return uColour;
   float fibre = texture(uNoise, vWorldPos.xy * 6.0).r * 0.08;
   float broad = texture(uNoise, vWorldPos.xy * 0.35).r * 0.06;
+#ifdef HIGH
+  // The weave: warp and weft 1.2 mm apart, faded out where a pixel spans a thread or more.
+  vec2 threads = vWorldPos.xy / 0.0012;
+  float fade = clamp(1.5 - 2.0 * max(fwidth(threads.x), fwidth(threads.y)), 0.0, 1.0);
+  float weave = sin(6.2831853 * threads.x) * sin(6.2831853 * threads.y);
+  return uColour * (0.93 + fibre + broad) * (1.0 + 0.07 * fade * weave);
+#else
   return uColour * (0.93 + fibre + broad);
+#endif
 }
 #endif
 #if MATERIAL == 12
@@ -154,7 +217,11 @@ vec3 albedo() {
   float line = smoothstep(0.025, 0.0, abs(s - 0.5));
   return mix(uColour * (s < 0.5 ? 1.0 : 0.8), vec3(0.55, 0.44, 0.2), 0.6 * line);
 #elif MATERIAL == 11
-  return uColour * mix(0.12, 1.0, smoothstep(-0.09, 0.0, vWorldPos.z));
+  float deep = mix(0.12, 1.0, smoothstep(-0.09, 0.0, vWorldPos.z));
+#ifdef HIGH
+  if (uTextures != 0) deep *= 0.85 + 0.3 * texture(uNoise, vWorldPos.xy * 9.0 + vWorldPos.z).r;
+#endif
+  return uColour * deep;
 #else
   return uColour;
 #endif
@@ -166,6 +233,87 @@ vec3 roomLit(vec3 base, vec3 n) {
   return base * (uAmbient * (0.9 + 0.4 * max(n.z, 0.0)) + 0.5 * near);
 }
 const vec3 kGlow = vec3(1.0, 0.9, 0.7);  // a shade's inside, lit by its bulb
+#ifdef HIGH
+// Lamp i's light on a surface of normal n here: cone × (height / distance)² × cos(incidence).
+float lampLight(int i, vec3 n, out vec3 l) {
+  vec3 to_light = uLightPos[i] - vWorldPos;
+  float dist2 = dot(to_light, to_light);
+  l = to_light * inversesqrt(dist2);
+  float cone = smoothstep(uCosOuter, uCosInner, l.z);
+  float falloff = uLightPos[i].z * uLightPos[i].z / dist2;
+  return cone * falloff * uLampGain * max(dot(n, l), 0.0);
+}
+// The lamps' mouths mirrored in a clear coat: a bright disc where the reflected view meets one.
+vec3 mouths(vec3 n, vec3 v) {
+  vec3 r = reflect(-v, n);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < 2; ++i) {
+    vec3 to_light = uLightPos[i] - vWorldPos;
+    float dist = length(to_light);
+    float c = cos(atan(kMouth / dist));
+    sum += kGlow * smoothstep(c, mix(c, 1.0, 0.5), dot(r, to_light / dist)) *
+           visibility(i, n);
+  }
+  return uMouthRadiance * sum;
+}
+// Every lit material but the room's and the shades': linear light in, linear light out.
+vec3 litHigh(vec3 base, vec3 n, vec3 v) {
+#if MATERIAL == 1 || MATERIAL == 12
+  // Wool's dye is duller than its colour in linear light makes it.
+  base = mix(vec3(dot(base, vec3(0.2126, 0.7152, 0.0722))), base, 0.8);
+#endif
+  vec3 colour = uAmbient * uAmbientScale * base;
+  float nv = max(dot(n, v), 0.0);
+  for (int i = 0; i < 2; ++i) {
+    vec3 l;
+    float light = lampLight(i, n, l);
+    if (light > 0.0) light *= visibility(i, n);
+#if MATERIAL == 1 || MATERIAL == 12
+    // The nap: the cloth's fibres catch light at grazing view (a sheen, Ashikhmin's velvet).
+    float sheen = 0.35 * pow(1.0 - nv, 3.0);
+    colour += light * base * (1.0 + sheen);
+#else
+    colour += light * base;
+#endif
+#if MATERIAL == 2 || MATERIAL == 5
+    // The varnish's highlight (the balls mirror the lamps' mouths instead).
+    float s = max(dot(n, normalize(l + v)), 0.0);
+    s *= s; s *= s; s *= s; s *= s; s *= s; s *= s; s *= s;  // ^128
+    colour += light * 2.0 * uSpecular * s * vec3(1.0);
+#endif
+  }
+#if MATERIAL == 3 || MATERIAL == 2 || MATERIAL == 5
+  // A clear coat (the balls' resin, the varnish): Fresnel-weighted reflection of the hall.
+  float f = schlick(nv);
+  vec3 hall = toLinear(textureLod(uEnvironment, reflect(-v, n), MATERIAL == 3 ? 0.0 : 2.0).rgb);
+#if MATERIAL == 3
+  colour = colour * (1.0 - f) + f * (hall + mouths(n, v));
+#else
+  // Varnish: a thinner, rougher coat (the mirrored mouths a soft streak, not a line).
+  colour = colour * (1.0 - 0.5 * f) + f * (0.5 * hall + 0.1 * mouths(n, v));
+#endif
+#endif
+  return colour;
+}
+// The room's materials in linear light: the hall's light as before, and the lamps' own where
+// their cones reach (the floor beside the table), shadowed by the table.
+vec3 roomHigh(vec3 base, vec3 n) {
+  float near = clamp(1.0 - length(vWorldPos.xy) / 6.5, 0.0, 1.0);
+  float hall = uAmbient * (0.9 + 0.4 * max(n.z, 0.0)) + 0.5 * near;
+  vec3 colour = base * pow(hall, 2.2) * uHallLevel;
+  for (int i = 0; i < 2; ++i) {
+    vec3 l;
+    float light = lampLight(i, n, l);
+    if (light > 0.0) colour += base * light * visibility(i, n);
+  }
+#if MATERIAL == 11
+  // Leather: a soft sheen.
+  vec3 v = normalize(uEye - vWorldPos);
+  colour += 0.08 * schlick(max(dot(n, v), 0.0)) * pow(hall, 2.2) * uHallLevel;
+#endif
+  return colour;
+}
+#endif
 void main() {
   vec3 base = albedo();
 #if MATERIAL == 4
@@ -180,7 +328,11 @@ void main() {
   bool inside = dot(n, v) < 0.0;
   if (inside) n = -n;
 #if MATERIAL >= 7 && MATERIAL <= 11
+#ifdef HIGH
+  fragColour = vec4(toDisplay(roomHigh(toLinear(base), n)), uAlpha);
+#else
   fragColour = vec4(min(roomLit(base, n), vec3(1.0)), uAlpha);
+#endif
   return;
 #endif
 #if MATERIAL == 6
@@ -193,6 +345,10 @@ void main() {
   float fill = 0.35 + 0.45 * max(-n.z, 0.0) + 0.25 * max(n.z, 0.0);
   float sheen = pow(max(dot(n, normalize(v + vec3(0.0, 0.0, -1.0))), 0.0), 24.0);
   fragColour = vec4(min(base * (uAmbient + fill) + vec3(0.25 * sheen), vec3(1.0)), uAlpha);
+  return;
+#endif
+#ifdef HIGH
+  fragColour = vec4(toDisplay(litHigh(toLinear(base), n, v)), uAlpha);
   return;
 #endif
   vec3 colour = uAmbient * base;
@@ -217,10 +373,24 @@ void main() {
 }
 )";
 
-/// The fragment source for one material: the version line, its MATERIAL define, the body.
-inline std::string withMaterial(int material) {
-  return "#version 330 core\n#define MATERIAL " + std::to_string(material) + "\n" + kSceneFragment;
+/// The fragment source for one material: the version line, its MATERIAL define (and HIGH for the
+/// high preset's variant), the body.
+inline std::string withMaterial(int material, bool high = false) {
+  return "#version 330 core\n#define MATERIAL " + std::to_string(material) + "\n" +
+         (high ? "#define HIGH 1\n" : "") + kSceneFragment;
 }
+
+/// The shadow maps' depth pass: positions only.
+inline constexpr const char* kDepthVertex = R"(#version 330 core
+layout(location = 0) in vec3 aPos;
+uniform mat4 uModel;
+uniform mat4 uLightMatrix;
+void main() { gl_Position = uLightMatrix * uModel * vec4(aPos, 1.0); }
+)";
+
+inline constexpr const char* kDepthFragment = R"(#version 330 core
+void main() {}
+)";
 
 /// Text on a flat face (the Magic Eight Ball's answer triangle): the face lies in its local xy
 /// plane; inside uTextBox (local x0, y0, x1, y1) the text texture's ink is drawn in near-white.

@@ -509,7 +509,7 @@ void settingsLines(Say& say, const HudInput& in) {
     changed = true;
   }
   say.text("Quality (at once)");
-  for (const char* q : {"auto", "full", "light"}) {
+  for (const char* q : {"auto", "high", "full", "light"}) {
     ImGui::SameLine();
     const std::string label = std::string(q) + "##quality";
     say.out().texts.push_back(q);

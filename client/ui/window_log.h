@@ -51,7 +51,7 @@ struct DrawnFrame {
   bool dragging = false;                  ///< the cue ball in hand under the mouse
   bool replaying = false;                 ///< the instant replay is drawn
   double replay_time = 0.0;               ///< s since the replayed shot's strike
-  std::string quality;                    ///< the drawing preset: full or light
+  std::string quality;                    ///< the drawing preset: high, full or light
   std::optional<Eigen::Vector3d> cue;     ///< the cue ball as drawn, table frame (m)
   std::optional<Eigen::Vector2d> cue_px;  ///< and in pixels from the top-left corner (not when
                                           ///< behind the eye)

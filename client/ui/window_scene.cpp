@@ -34,7 +34,7 @@ std::string WindowScene::applyQuality(const std::string& chosen) {
 }
 
 const char* WindowScene::qualityName() const {
-  return quality_ == render::Quality::Light ? "light" : "full";
+  return render::qualityName(quality_);
 }
 
 void WindowScene::show(const FrameView& frame, app::CameraRig& rig) {

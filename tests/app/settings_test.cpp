@@ -49,7 +49,7 @@ TEST_F(SettingsTest, WhatIsSavedIsLoadedBack) {
 }
 
 TEST_F(SettingsTest, EachQualityIsKeptAsChosen) {
-  for (const char* quality : {"auto", "full", "light"}) {
+  for (const char* quality : {"auto", "high", "full", "light"}) {
     Settings s;
     s.quality = quality;
     ASSERT_TRUE(saveSettings(file(), s));

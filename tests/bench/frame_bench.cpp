@@ -2,10 +2,11 @@
 // or a GPU's driver): a clear-only frame (the baseline), the bare table, and the full scene (the
 // pool hall, sixteen balls rolling with their shadows, two pocketed, the lamps, the 3-D cue and
 // the ghost ball, overlay lines, the window's Dear ImGui HUD), from the overview and from the
-// aiming view, in the full and the light preset, and without the hall. Prints median and p99 per
-// frame and the ratio to the baseline; wall time, since llvmpipe renders on its own threads, and
-// the CPU time of the whole process (all threads) per frame, which a busy machine does not
-// inflate. --size WxH (default 1280x720) and --preset full|light (only that preset's scenes).
+// aiming view, in the high, the full and the light preset, and without the hall. Prints median and
+// p99 per frame and the ratio to the baseline; wall time, since llvmpipe renders on its own
+// threads, and the CPU time of the whole process (all threads) per frame, which a busy machine does
+// not inflate. --size WxH (default 1280x720) and --preset high|full|light (only that preset's
+// scenes).
 #include <backends/imgui_impl_opengl3.h>
 #include <benchmark/benchmark.h>
 #include <glad/gl.h>
@@ -240,6 +241,15 @@ void BM_FullSceneAimingViewLight(benchmark::State& state) {
             withQuality({}, pool::render::Quality::Light), true);
 }
 
+void BM_FullSceneHigh(benchmark::State& state) {
+  fullScene(state, "full scene + HUD, high preset", withQuality({}, pool::render::Quality::High));
+}
+
+void BM_FullSceneAimingViewHigh(benchmark::State& state) {
+  fullScene(state, "full scene + HUD, aiming view, high",
+            withQuality({}, pool::render::Quality::High), true);
+}
+
 void BM_FullSceneNoRoom(benchmark::State& state) {
   pool::render::RenderOptions options;
   options.room = false;
@@ -260,6 +270,8 @@ BENCHMARK(BM_FullScene)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneAimingView)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneLight)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneAimingViewLight)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneHigh)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FullSceneAimingViewHigh)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoRoom)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoTextures)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FullSceneNoLighting)->UseManualTime()->Unit(benchmark::kMillisecond);
@@ -287,6 +299,9 @@ const char* presetFilter(const std::string& preset) {
     return "BM_BaselineClearOnly|BM_TableOnly|BM_FullScene/|BM_FullSceneAimingView/";
   if (preset == "light") {
     return "BM_BaselineClearOnly|BM_TableOnly|BM_FullSceneLight|BM_FullSceneAimingViewLight";
+  }
+  if (preset == "high") {
+    return "BM_BaselineClearOnly|BM_TableOnly|BM_FullSceneHigh|BM_FullSceneAimingViewHigh";
   }
   return nullptr;
 }
@@ -323,7 +338,7 @@ std::optional<std::string> takeOwnFlags(std::vector<char*>& args, std::string& f
       kHeight = h;
     } else {
       const char* f = presetFilter(value);
-      if (!f) return "--preset: full or light";
+      if (!f) return "--preset: high, full or light";
       filter = std::string("--benchmark_filter=") + f;
     }
     args.erase(args.begin() + static_cast<std::ptrdiff_t>(i),

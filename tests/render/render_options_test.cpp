@@ -24,9 +24,30 @@ TEST(RenderOptionsTest, SoftwareRenderersGetTheLightPreset) {
   EXPECT_EQ(qualityFor("llvmpipe (LLVM 15.0.6, 256 bits)"), Quality::Light);
   EXPECT_EQ(qualityFor("softpipe"), Quality::Light);
   EXPECT_EQ(qualityFor("Google SwiftShader"), Quality::Light);
-  EXPECT_EQ(qualityFor("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"), Quality::Full);
-  EXPECT_EQ(qualityFor("NVIDIA GeForce RTX 3060/PCIe/SSE2"), Quality::Full);
-  EXPECT_EQ(qualityFor(""), Quality::Full);
+  EXPECT_EQ(qualityFor("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"), Quality::High);
+  EXPECT_EQ(qualityFor("NVIDIA GeForce RTX 3060/PCIe/SSE2"), Quality::High);
+  EXPECT_EQ(qualityFor(""), Quality::High);
+}
+
+TEST(RenderOptionsTest, TheHighPresetSamplesShadowsAndShadesPhysicallyAtFullResolution) {
+  RenderOptions switches;
+  switches.textures = false;
+  const RenderOptions high = withQuality(switches, Quality::High);
+  EXPECT_EQ(high.scale, 1.0f);
+  EXPECT_EQ(high.samples, kHighSamples);
+  EXPECT_GE(high.samples, 4);
+  EXPECT_TRUE(high.shadow_maps);
+  EXPECT_TRUE(high.physical);
+  EXPECT_FALSE(high.textures);
+  for (const Quality other : {Quality::Full, Quality::Light}) {
+    const RenderOptions back = withQuality(high, other);
+    EXPECT_LE(back.samples, 1);
+    EXPECT_FALSE(back.shadow_maps);
+    EXPECT_FALSE(back.physical);
+  }
+  EXPECT_STREQ(qualityName(Quality::High), "high");
+  EXPECT_STREQ(qualityName(Quality::Full), "full");
+  EXPECT_STREQ(qualityName(Quality::Light), "light");
 }
 
 TEST(RenderOptionsTest, APlayersSettingOverridesTheRenderersChoice) {
@@ -36,7 +57,10 @@ TEST(RenderOptionsTest, APlayersSettingOverridesTheRenderersChoice) {
   EXPECT_EQ(parseQualitySetting("auto"), QualitySetting::Auto);
   EXPECT_EQ(parseQualitySetting("full"), QualitySetting::Full);
   EXPECT_EQ(parseQualitySetting("light"), QualitySetting::Light);
-  for (const char* bad : {"", "Full", "high", "light ", "\n"}) {
+  EXPECT_EQ(parseQualitySetting("high"), QualitySetting::High);
+  EXPECT_EQ(resolveQuality(QualitySetting::High, "llvmpipe"), Quality::High);
+  EXPECT_EQ(resolveQuality(QualitySetting::Auto, "NVIDIA GeForce"), Quality::High);
+  for (const char* bad : {"", "Full", "High", "light ", "\n"}) {
     EXPECT_FALSE(parseQualitySetting(bad).has_value()) << bad;
   }
 }

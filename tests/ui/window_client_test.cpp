@@ -1091,7 +1091,7 @@ TEST_F(WindowClientTest, TheInstantReplayDrawsTheLastShotsFramesAgain) {
 // the renderer (under Xvfb, auto alone would pick light).
 TEST_F(WindowClientTest, TheWindowDrawsWithTheQualityKeptInTheSettings) {
   open(kWindowQuality, "window-quality");
-  for (const std::string quality : {"full", "light"}) {
+  for (const std::string quality : {"high", "full", "light"}) {
     SCOPED_TRACE(quality);
     const std::string dir = file("config") + "/pool";
     std::filesystem::create_directories(dir);
