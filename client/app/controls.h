@@ -106,6 +106,8 @@ class Controls {
   /// B) is raised until the contact shows above the cue ball, then frames them all
   /// (CameraRig::frameShot).
   void setContact(const Eigen::Vector3d& contact, std::vector<Eigen::Vector3d> ahead = {});
+  /// What lies ahead of the contact, as last told (the object ball, the pocket it heads for).
+  const std::vector<Eigen::Vector3d>& ahead() const { return ahead_; }
   /// Moves the cue ball in hand to `at` (kept on the slate, behind the head string when it must
   /// be); nothing without ball in hand.
   void moveCueBall(const Eigen::Vector2d& at);

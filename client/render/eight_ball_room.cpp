@@ -1,4 +1,4 @@
-// The room's geometry (floor, stool, ball, window, triangle) and its drawing.
+// The room's geometry (floor, walls, stool, ball, window, triangle) and its drawing.
 #include "client/render/eight_ball_room.h"
 
 #include <cmath>
@@ -23,6 +23,10 @@ constexpr glm::vec4 kTextBox(-0.42f, -0.33f, 0.42f, 0.36f);
 
 const glm::vec3 kBackground(0.03f, 0.02f, 0.05f);
 const glm::vec3 kFloor(0.09f, 0.07f, 0.10f);
+const glm::vec3 kWalls(0.50f, 0.38f, 0.56f);  // plum plaster
+// The 8's number circle: its axis this far above the line to the default camera, so the whole
+// circle shows on the ball's upper face (on the silhouette's edge it read as a flat cut).
+constexpr float kCircleAboveView = 1.05f;  // rad, 60°
 const glm::vec3 kWindow(0.01f, 0.01f, 0.04f);
 const glm::vec3 kTriangle(0.10f, 0.22f, 0.85f);
 
@@ -41,6 +45,16 @@ MeshData stoolMesh() {
     append(stool, post);
   }
   return stool;
+}
+
+/// The room's back wall and its two side walls, 3 m high, round the 8 m floor; normals inward.
+MeshData wallsMesh() {
+  MeshData walls;
+  const float h = 3.0f;
+  addQuad(walls, {-4.0f, 3.0f, 0.0f}, {4.0f, 3.0f, 0.0f}, {4.0f, 3.0f, h}, {-4.0f, 3.0f, h});
+  addQuad(walls, {-4.0f, -4.0f, 0.0f}, {-4.0f, 3.0f, 0.0f}, {-4.0f, 3.0f, h}, {-4.0f, -4.0f, h});
+  addQuad(walls, {4.0f, 3.0f, 0.0f}, {4.0f, -4.0f, 0.0f}, {4.0f, -4.0f, h}, {4.0f, 3.0f, h});
+  return walls;
 }
 
 /// An equilateral triangle pointing down in the xy plane, its in-circle of radius 0.5 at 0.
@@ -71,6 +85,7 @@ EightBallRoom::EightBallRoom()
     : sphere_(unitSphere(48, 64)),
       disc_(unitDisc(64)),
       floor_(box({-4.0f, -4.0f, -0.02f}, {4.0f, 4.0f, 0.0f})),
+      walls_(wallsMesh()),
       stool_(stoolMesh()),
       triangle_(triangleMesh()),
       decal_(shaders::kDecalVertex, shaders::kDecalFragment),
@@ -121,10 +136,16 @@ void EightBallRoom::draw(const Camera& camera, int width, int height, const std:
       {glm::vec3(-0.7f, -0.9f, 3.0f), glm::vec3(0.8f, -0.4f, 3.2f)}, 35.0f, 70.0f, std::nullopt};
   shading_.beginFrame(camera, width, height, kBackground, lights, options_);
   shading_.draw(floor_, glm::mat4(1.0f), kFloor, shaders::kPlain, 0.0f);
+  shading_.draw(walls_, glm::mat4(1.0f), kWalls, shaders::kPlain, 0.0f);
   shading_.draw(stool_, glm::mat4(1.0f), woodColour(), shaders::kWood, 0.1f);
-  // The 8 (body +x) faces up, tilted to the right; the window is drawn over the side facing us.
+  // The 8 (body +x) turned toward the default camera's side (−y), then up by the view's own
+  // elevation and kCircleAboveView; the window is drawn over the side facing us.
+  const glm::vec3 view = defaultCamera().eye - ballCentre();
+  const float up = std::atan2(view.z, -view.y) + kCircleAboveView;
   const glm::mat4 ball = glm::scale(
-      glm::rotate(glm::translate(glm::mat4(1.0f), ballCentre()), -1.2f, glm::vec3(0, 1, 0)),
+      glm::rotate(
+          glm::rotate(glm::translate(glm::mat4(1.0f), ballCentre()), -up, glm::vec3(1, 0, 0)),
+          -1.5707963f, glm::vec3(0, 0, 1)),
       glm::vec3(ballRadius()));
   shading_.drawBall(sphere_, ball, ballLook(8));
   drawWindow(camera, static_cast<float>(width) / static_cast<float>(height), answer);

@@ -39,6 +39,7 @@ class EightBallRoom {
   GpuMesh sphere_;
   GpuMesh disc_;
   GpuMesh floor_;
+  GpuMesh walls_;
   GpuMesh stool_;
   GpuMesh triangle_;
   ShaderProgram decal_;

@@ -10,8 +10,9 @@ namespace {
 
 constexpr float kShadeHeight = 0.17f;     // m from rim to top
 constexpr float kShadeTopRadius = 0.07f;  // m
-constexpr float kEyeClearance = 0.10f;    // the eye stays this far under the rims, m
-constexpr float kEyeFade = 0.15f;         // m over which the lamps fade as the eye rises
+constexpr float kEyeClearance = 0.15f;    // m between the eye and the shade's sphere: gone
+constexpr float kEyeFade = 0.25f;         // m farther over which it comes back
+constexpr float kPlanSine = 0.94f;        // sin 70°: a view looking down steeper is a plan
 
 }  // namespace
 
@@ -33,28 +34,46 @@ float lampLight(glm::vec3 lamp, glm::vec3 point, glm::vec3 normal) {
   return kLampGain * cone * std::max(glm::dot(normal, l), 0.0f) * falloff;
 }
 
-float shadeCoverage(const Camera& camera, int width, int height, glm::vec3 lamp) {
+std::optional<ShadeDisc> shadeDisc(const Camera& camera, int width, int height, glm::vec3 lamp) {
   const glm::vec3 centre = lamp + glm::vec3(0.0f, 0.0f, kShadeHeight * 0.5f - kShadeRimBelow);
   const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
   const float depth = glm::dot(centre - camera.eye, forward);
   const float distance = glm::length(centre - camera.eye);
-  if (distance <= kShadeBound) return 1.0f;  // the eye is inside the shade's sphere
-  if (depth <= -kShadeBound) return 0.0f;
+  const float diagonal = std::hypot(static_cast<float>(width), static_cast<float>(height));
+  if (distance <= kShadeBound) {  // the eye is inside the shade's sphere
+    return ShadeDisc{{0.5f * static_cast<float>(width), 0.5f * static_cast<float>(height)},
+                     2.0f * diagonal,
+                     distance};
+  }
+  if (depth <= 0.0f) return std::nullopt;
+  const glm::vec3 px = projectToPixels(camera, width, height, centre);
   // The sphere's angular radius, as a radius on the image plane (at depth 1), in pixels.
   const float half = std::asin(kShadeBound / distance);
   const float focal =
       static_cast<float>(height) * 0.5f / std::tan(glm::radians(camera.fov_y_deg) * 0.5f);
-  const float radius_px = focal * std::tan(half) / std::max(depth / distance, 0.05f);
-  const float area = 3.14159265f * radius_px * radius_px;
-  return std::min(area / (static_cast<float>(width) * static_cast<float>(height)), 1.0f);
+  const float radius = focal * std::tan(half) / std::max(depth / distance, 0.05f);
+  return ShadeDisc{{px.x, px.y}, std::min(radius, 2.0f * diagonal), distance};
 }
 
-float lampOpacity(const Camera& camera, int width, int height, glm::vec3 lamp) {
-  const float coverage = shadeCoverage(camera, width, height, lamp);
-  const float by_size = std::clamp((kFadeOut - coverage) / (kFadeOut - kFadeIn), 0.0f, 1.0f);
-  const float rim = lamp.z - kShadeRimBelow - kEyeClearance;
-  const float by_height = std::clamp((rim - camera.eye.z) / kEyeFade, 0.0f, 1.0f);
-  return std::min(by_size, by_height);
+float lampOpacity(const Camera& camera, int width, int height, glm::vec3 lamp,
+                  std::span<const glm::vec3> keep_clear) {
+  // A view straight down from over the lamps (the overhead, the top scene) is a plan of the
+  // table: nothing hangs between.
+  const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+  if (forward.z < -kPlanSine && camera.eye.z > lamp.z) return 0.0f;
+  const auto disc = shadeDisc(camera, width, height, lamp);
+  if (!disc) return 1.0f;  // behind the eye: nothing to hide
+  float opacity = std::clamp((disc->distance - kShadeBound - kEyeClearance) / kEyeFade, 0.0f, 1.0f);
+  for (const glm::vec3& point : keep_clear) {
+    // A point nearer the eye than the shade is drawn over it.
+    if (glm::length(point - camera.eye) < disc->distance - kShadeBound) continue;
+    const glm::vec3 px = projectToPixels(camera, width, height, point);
+    if (px.z < 0.0f) continue;
+    const float gap = glm::length(glm::vec2(px.x, px.y) - disc->centre) - disc->radius;
+    const float fade = std::clamp((gap - kClearMargin) / (kClearFade * disc->radius), 0.0f, 1.0f);
+    opacity = std::min(opacity, fade);
+  }
+  return opacity;
 }
 
 MeshData lampShade() {

@@ -1,11 +1,15 @@
 // The two lamps over the table: where their lights hang, their spot cones and the light they
-// give a point, their shades, and how much of a view a shade may take before it fades.
+// give a point, their shades, and when a shade fades from a view (over the shot's points, or the
+// eye up among the lamps).
 #pragma once
 
 #include <array>
 #include <glm/glm.hpp>
+#include <span>
 
+#include <optional>
 #include "client/render/camera.h"
+
 #include "client/render/mesh.h"
 #include "table/table_geometry.h"
 
@@ -28,12 +32,12 @@ inline constexpr float kLampGain = 0.62f;
 /// The shade: an enamel cone around the light, its rim this far below it and this wide, m.
 inline constexpr float kShadeRimBelow = 0.03f;
 inline constexpr float kShadeRadius = 0.20f;
-/// A sphere around the light holding the whole shade (for coverage of the view), m.
+/// A sphere around the light holding the whole shade (its disc in a view), m.
 inline constexpr float kShadeBound = 0.23f;
-/// A lamp is fully drawn while its shade covers less than this share of the view, and gone once
-/// it covers kFadeOut.
-inline constexpr float kFadeIn = 0.015f;
-inline constexpr float kFadeOut = 0.03f;
+/// A shade is gone from a view while its disc comes within this many pixels of a point it must
+/// not hide, and fades in over the next kClearFade of its own radius farther.
+inline constexpr float kClearMargin = 12.0f;
+inline constexpr float kClearFade = 0.5f;
 
 /// The two light positions, over the head and foot halves of the table (table frame, m).
 std::array<glm::vec3, 2> lampPositions(const pool::table::TableGeometry& geometry);
@@ -42,13 +46,25 @@ std::array<glm::vec3, 2> lampPositions(const pool::table::TableGeometry& geometr
 /// albedo, as the scene shader computes it: cone × cos(incidence) × (height / distance)²).
 float lampLight(glm::vec3 lamp, glm::vec3 point, glm::vec3 normal);
 
-/// The share of a width × height view that the shade around `lamp` covers at most (its bounding
-/// sphere's disc; 0 behind the camera).
-float shadeCoverage(const Camera& camera, int width, int height, glm::vec3 lamp);
+/// The disc the shade round `lamp` covers at most in a width × height view (its bounding sphere's):
+/// its centre in pixels from the top-left, its radius in pixels, and the distance from the eye
+/// to the shade's centre, m. Nothing when it lies behind the eye; a radius over the view's
+/// diagonal when the eye is inside the sphere.
+struct ShadeDisc {
+  glm::vec2 centre{0.0f};
+  float radius = 0.0f;
+  float distance = 0.0f;
+};
+std::optional<ShadeDisc> shadeDisc(const Camera& camera, int width, int height, glm::vec3 lamp);
 
-/// How opaque the lamp is drawn in that view, 0–1: faded as its shade would take more than
-/// kFadeIn of the view, and when the eye is up among the lamps (looking down past them).
-float lampOpacity(const Camera& camera, int width, int height, glm::vec3 lamp);
+/// How opaque the lamp is drawn in that view, 0–1: drawn whole over the table and the hall, it
+/// fades only where its shade would hide a point of `keep_clear` (the shot's cue ball, object
+/// ball and pocket: each farther from the eye than the shade, its pixel within kClearMargin of
+/// the shade's disc), and when the eye comes within about 0.4 m of a shade (gone by 0.38 m from
+/// its centre, whole from 0.63 m). A view looking down steeper than 70° from over the lamps (the
+/// overhead, the top scene: a plan of the table) has none.
+float lampOpacity(const Camera& camera, int width, int height, glm::vec3 lamp,
+                  std::span<const glm::vec3> keep_clear = {});
 
 /// A shade around a light at the origin: an enamel cone (rim below the light) closed at its top,
 /// and a cord up to the ceiling. Normals point out.

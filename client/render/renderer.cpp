@@ -139,6 +139,15 @@ void Renderer::setOptions(const RenderOptions& options) {
   if (shadows_changed) updateShadows();
 }
 
+std::vector<glm::vec3> Renderer::keepClear() const {
+  if (!keep_clear_.empty()) return keep_clear_;
+  std::vector<glm::vec3> balls;
+  for (const SceneBall& b : scene_.balls) {
+    if (!b.pocketed) balls.push_back(toGlm(b.pos));
+  }
+  return balls;
+}
+
 void Renderer::setOverlay(std::vector<OverlayLine> lines) {
   overlay_.set(lines);
 }
@@ -248,8 +257,9 @@ void Renderer::drawCue(const Camera& camera) const {
 void Renderer::drawLamps(const Camera& camera, int width, int height) const {
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  const std::vector<glm::vec3> keep_clear = keepClear();
   for (const glm::vec3& light : lampPositions(scene_.geometry)) {
-    const float alpha = lampOpacity(camera, width, height, light);
+    const float alpha = lampOpacity(camera, width, height, light, keep_clear);
     if (alpha <= 0.0f) continue;  // out of the way: the light still falls on the table
     glDepthMask(alpha < 1.0f ? GL_FALSE : GL_TRUE);
     const glm::mat4 at = glm::translate(glm::mat4(1.0f), light);

@@ -46,6 +46,11 @@ class Renderer {
   void setCue(std::optional<CueAim> aim);
   /// Shows the outline of a ghost ball centred at `centre` (table frame, m), or hides it.
   void setGhost(std::optional<glm::vec3> centre) { ghost_ = centre; }
+  /// The shot's points no lamp shade may hide (the cue ball, the object ball, the pocket; table
+  /// frame, m): a shade fades only where it would (lampOpacity). None: every ball on the table.
+  void setKeepClear(std::vector<glm::vec3> points) { keep_clear_ = std::move(points); }
+  /// What the shades keep clear of: the shot's points, or every ball on the table.
+  std::vector<glm::vec3> keepClear() const;
 
   /// The balls as drawn: pocketed ones moved to their place in the trough, number to the viewer.
   std::vector<SceneBall> drawnBalls() const;
@@ -96,6 +101,7 @@ class Renderer {
   std::optional<CueAim> cue_aim_;
   std::optional<CuePlacement> cue_;
   std::optional<glm::vec3> ghost_;
+  std::vector<glm::vec3> keep_clear_;
   ShadowLayer shadows_;
   OverlayLines overlay_;
   mutable OverlayLines ghost_lines_;

@@ -79,10 +79,11 @@ std::string screenshotInfoJson(const Camera& camera, int width, int height,
                    {"drawn_elevation_deg", glm::degrees(cue->drawn_elevation)}};
   }
   if (const auto& ghost = renderer.ghost()) info["ghost"] = point(*ghost);
+  const std::vector<glm::vec3> keep_clear = renderer.keepClear();
   for (const glm::vec3& light : lampPositions(geometry)) {
     info["lamps"].push_back({{"light", point(light)},
                              {"pool", point(glm::vec3(light.x, light.y, 0.0f))},
-                             {"opacity", lampOpacity(camera, width, height, light)}});
+                             {"opacity", lampOpacity(camera, width, height, light, keep_clear)}});
   }
   for (const glm::vec3& d : renderer.diamonds()) info["diamonds"].push_back(point(d));
   return info.dump(2) + "\n";

@@ -117,6 +117,11 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
       [&](render::Renderer& renderer) {
         renderer.setCue(cueAimOf(aim, cue));
         renderer.setGhost(vec(ghost));
+        // As the window: no shade over the cue ball, the object ball or the pocket.
+        std::vector<glm::vec3> keep_clear{vec(cue)};
+        if (object) keep_clear.push_back(vec(*object));
+        if (pocket) keep_clear.push_back(vec(*pocket));
+        renderer.setKeepClear(keep_clear);
       },
       {},
       [&](int frame) {

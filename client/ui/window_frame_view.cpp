@@ -66,6 +66,11 @@ void showAim(FrameView& f, const FrameSources& from, double now) {
     f.cue = cueAimOf(from.controls.aim(), from.controls.cueBall());
     const Eigen::Vector2d c = overlay.aim->contact;
     if (from.controls.toggles().aim_line) f.ghost = glm::vec3(c.x(), c.y(), from.table.radius());
+    f.keep_clear.push_back(f.cue->cue_ball);
+    for (const Eigen::Vector3d& p : from.controls.ahead()) {
+      f.keep_clear.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()),
+                                static_cast<float>(p.z()));
+    }
     f.cue_source = "local";
   } else if (const auto followed = from.session.followedAim()) {
     // The other shooter's cue, glided toward their latest aim.

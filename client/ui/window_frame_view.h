@@ -33,6 +33,9 @@ struct FrameView {
   std::optional<std::string> placement_problem;
   std::optional<render::CueAim> cue;
   std::optional<glm::vec3> ghost;  ///< the ghost ball at the predicted first contact
+  /// The points of this screen's shot no lamp shade may hide: the cue ball, and the object ball
+  /// and the pocket it heads for where the aim has them.
+  std::vector<glm::vec3> keep_clear;
   /// Whose cue: "local" (this screen's aim, the aiming view kept above it), "remote" (a live
   /// aim), "stroke" (the cue going through after a shot), or empty (none).
   std::string cue_source;

@@ -43,6 +43,7 @@ void WindowScene::show(const FrameView& frame, app::CameraRig& rig) {
   renderer_->setOverlay(frame.overlay);
   renderer_->setCue(frame.cue);
   renderer_->setGhost(frame.ghost);
+  renderer_->setKeepClear(frame.keep_clear);
   if (const auto& cue = renderer_->cue(); cue && frame.cue_source == "local") {
     rig.keepAimAbove(cue->drawn_elevation + app::kEyeOverCue);
   }
