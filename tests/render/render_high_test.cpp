@@ -100,7 +100,7 @@ TEST_F(HighPresetTest, EachLampsShadowOfABallFallsAwayFromThatLamp) {
                                                      {6, glm::dvec2(lights[0].x - 0.5, -0.3)},
                                                      {8, glm::dvec2(lights[1].x + 0.45, -0.35)}};
   const Image image =
-      view("--quality high --scene top --cue-at 0.0 -0.55 " + ballsFlag(laid) + " --frames 2");
+      view("--quality high --scene top --cue-at 0.0 -0.55 " + ballsFlag(laid) + " --frames 1");
   ASSERT_EQ(image.width, camera_.width);
   std::vector<glm::dvec3> centres{glm::dvec3(0.0, -0.55, r)};
   for (const auto& [id, at] : laid) centres.emplace_back(at, r);
@@ -170,7 +170,7 @@ TEST_F(HighPresetTest, EachLampIsMirroredOnABallWhereTheCameraAndTheLampPutIt) {
   // The cue aimed well away from the 8: no ghost ball drawn over it.
   const Image image = view(
       "--quality high --scene aim --cue-at -0.75 0.0 --balls 8 -0.25 0.02 "
-      "--aim 35 --frames 2");
+      "--aim 35 --frames 1");
   ASSERT_EQ(image.width, camera_.width);
   const glm::vec3 centre_px = camera_.pixel(glm::vec3(eight));
   const glm::vec3 rim_px = camera_.pixel(glm::vec3(eight) + float(r) * camera_.right());
@@ -260,7 +260,7 @@ TEST_F(HighPresetTest, TheBallsOutlinesAreAntiAliased) {
 // least 1.5 times as bright as midway between them.
 TEST_F(HighPresetTest, TheFeltUnderEachLampIsHalfAgainAsBrightAsMidwayBetweenThem) {
   const auto spec = nineFootSpec();
-  const Image image = view("--quality high --scene top --frames 2");
+  const Image image = view("--quality high --scene top --frames 1");
   ASSERT_EQ(image.width, camera_.width);
   for (const double y : {-0.15, 0.15}) {
     const double middle = meanLuminance(image, camera_, {0.0, y, 0.0}, 2);
