@@ -12,9 +12,9 @@ namespace pool::render {
 
 namespace {
 
-constexpr float kFine = 0.006f;    // grid step near the pockets, m
-constexpr float kCoarse = 0.12f;   // grid step elsewhere, m
-constexpr float kNear = 0.03f;     // fine steps this far beyond a pocket's cut, m
+constexpr float kFine = 0.006f;   // grid step near the pockets, m
+constexpr float kCoarse = 0.12f;  // grid step elsewhere, m
+constexpr float kNear = 0.03f;    // fine steps this far beyond a pocket's cut, m
 // Facets round a pocket: seen from 30 cm at 2560 × 1440 a cut of 6 cm radius spans about 390 px,
 // and a facet strays under half a pixel from the circle (40 strayed 1.2 px).
 constexpr int kPocketSlices = 64;
