@@ -8,11 +8,13 @@
 #include "client/app/scoreboard.h"
 #include "client/app/spoken.h"
 #include "client/render/chalk_marks.h"
+#include "client/render/diamonds.h"
 #include "client/render/lamps.h"
 #include "client/render/palette.h"
 #include "client/spectate/json_lines.h"
 #include "core/hex.h"
 #include "protocol/match_settings.h"
+#include "table/assets.h"
 #include "table/snooker_spots.h"
 #include "table/table_geometry.h"
 #include "table/table_spec.h"
@@ -219,31 +221,59 @@ Result<std::string> tableJson(const std::string& table_name) {
     balls.push_back(
         {{"colour", rgb(look.colour)}, {"striped", look.striped}, {"number", look.number}});
   }
-  const json out{{"type", "table"},
-                 {"name", spec->name},
-                 {"length", spec->length},
-                 {"width", spec->width},
-                 {"cushion_width", spec->cushion_width},
-                 {"rail_width", spec->rail_width},
-                 {"nose_height", geometry.nose_height},
-                 {"ball_radius", spec->params.ball_radius},
-                 {"noses", noses},
-                 {"holes", holes},
-                 {"snooker_marks", snookerMarks(*spec)},
-                 {"lamps",
-                  {{"positions", lamps},
-                   {"inner_deg", render::kSpotInnerDeg},
-                   {"outer_deg", render::kSpotOuterDeg},
-                   {"gain", render::kLampGain},
-                   {"shade", rgb(render::shadeColour())},
-                   {"bulb", rgb(render::bulbColour())}}},
-                 {"colours",
-                  {{"felt", rgb(render::partLook("slate").colour)},
-                   {"cushion", rgb(render::partLook("cushion_head").colour)},
-                   {"wood", rgb(render::woodColour())},
-                   {"pocket", rgb(render::partLook("pocket_head_left_corner").colour)},
-                   {"chalk", rgb(render::chalkColour())},
-                   {"balls", balls}}}};
+  // The project's meshes the page draws the table and the hall with (pool-web serves them, and
+  // makes a dressing for a table that has none in assets/), and the looks of their parts.
+  const bool mesh = table::findAsset("tables/" + spec->name + ".obj").has_value();
+  json meshes{{"room", "assets/hall/room.obj"}, {"shade", "assets/hall/lamp-shade.obj"}};
+  meshes["table"] = mesh ? json("assets/tables/" + spec->name + ".obj") : json();
+  meshes["dressing"] = mesh ? json("assets/hall/" + spec->name + ".obj") : json();
+  json looks = json::object();
+  for (const char* part :
+       {"rail_top",       "rail_edge",     "apron",      "leg",        "underside",
+        "pocket_liner",   "pocket_rim",    "floor",      "ceiling",    "wainscot",
+        "moulding",       "wallpaper",     "stool_seat", "chrome",     "rack_wood",
+        "rack_cue_shaft", "rack_cue_butt", "board",      "brass",      "bead_light",
+        "bead_dark",      "gilt",          "canvas_sky", "canvas_land"}) {
+    looks[part] = rgb(render::hallPartLook(part).colour);
+  }
+  json diamonds = json::array();
+  for (const auto& d : render::diamondPositions(
+           render::railExtent(geometry, static_cast<float>(spec->cushion_width)))) {
+    diamonds.push_back(json::array({d.x, d.y, d.z}));
+  }
+  const json out{
+      {"type", "table"},
+      {"name", spec->name},
+      {"length", spec->length},
+      {"width", spec->width},
+      {"cushion_width", spec->cushion_width},
+      {"rail_width", spec->rail_width},
+      {"nose_height", geometry.nose_height},
+      {"ball_radius", spec->params.ball_radius},
+      {"noses", noses},
+      {"holes", holes},
+      {"snooker_marks", snookerMarks(*spec)},
+      {"lamps",
+       {{"positions", lamps},
+        {"inner_deg", render::kSpotInnerDeg},
+        {"outer_deg", render::kSpotOuterDeg},
+        {"high",
+         {{"inner_deg", render::kHighSpotInnerDeg}, {"outer_deg", render::kHighSpotOuterDeg}}},
+        {"gain", render::kLampGain},
+        {"shade", rgb(render::shadeColour())},
+        {"shade_radius", render::kShadeRadius},
+        {"bulb", rgb(render::bulbColour())}}},
+      {"colours",
+       {{"felt", rgb(render::partLook("slate").colour)},
+        {"cushion", rgb(render::partLook("cushion_head").colour)},
+        {"wood", rgb(render::woodColour())},
+        {"pocket", rgb(render::partLook("pocket_head_left_corner").colour)},
+        {"chalk", rgb(render::chalkColour())},
+        {"balls", balls}}},
+      {"meshes", meshes},
+      {"looks", looks},
+      {"diamonds", diamonds},
+      {"diamond_size", {render::kDiamondHalfLong, render::kDiamondHalfShort}}};
   return Result<std::string>::ok(out.dump());
 }
 

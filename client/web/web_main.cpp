@@ -1,6 +1,7 @@
 // pool-web: the web spectator's gateway. Joins the DDS domain as a spectator and serves the page
 // and its WebSocket stream over HTTP.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -8,11 +9,16 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
 
 #include "client/net/game_client.h"
+#include "client/render/hall_assets.h"
+#include "client/render/lamps.h"
+#include "client/render/obj_text.h"
 #include "client/web/gateway.h"
 #include "client/web/web_server.h"
 #include "core/program_dir.h"
+#include "table/assets.h"
 
 namespace {
 
@@ -25,6 +31,36 @@ std::filesystem::path defaultRoot() {
     if (std::filesystem::exists(candidate / "index.html", ec)) return candidate.lexically_normal();
   }
   return bin / ".." / "share" / "pool" / "web";
+}
+
+/// The meshes the page draws the hall with: assets/'s tables and hall, a dressing made for each
+/// table that has none there (as the game's renderer makes it), and the lamps' shade.
+std::map<std::string, std::string> pageMeshes(const std::filesystem::path& assets) {
+  auto meshes = pool::web::loadAssets(assets);
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(assets / "tables", ec)) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string name = entry.path().stem().string();
+    const std::string dressing = "assets/hall/" + name + ".obj";
+    if (!meshes.count("assets/tables/" + name + ".obj") || meshes.count(dressing)) continue;
+    if (auto text = pool::render::dressingObj(name)) meshes[dressing] = std::move(*text);
+  }
+  // The shade and its cord apart (the cord's triangles reach above the shade's top).
+  const pool::render::MeshData lamp = pool::render::lampShade();
+  pool::render::MeshData shade, cord;
+  for (std::size_t i = 0; i + 2 < lamp.positions.size(); i += 3) {
+    const float top =
+        std::max({lamp.positions[i].z, lamp.positions[i + 1].z, lamp.positions[i + 2].z});
+    auto& part = top > pool::render::kShadeBound ? cord : shade;
+    for (std::size_t k = i; k < i + 3; ++k) {
+      part.positions.push_back(lamp.positions[k]);
+      part.normals.push_back(lamp.normals[k]);
+    }
+  }
+  meshes["assets/hall/lamp-shade.obj"] =
+      pool::render::objText({{"shade", shade}, {"cord", cord}},
+                            {"A lamp's shade round its light at the origin, and its cord."});
+  return meshes;
 }
 
 /// Everything pool-web can be told.
@@ -72,6 +108,13 @@ int serve(WebConfig c) {
   if (!files) {
     std::cerr << "pool-web: " << files.error() << '\n';
     return 1;
+  }
+  const std::filesystem::path assets = pool::table::assetsDir();
+  files->merge(pageMeshes(assets));
+  const auto missing = pool::web::addThreeAddons(*files);
+  for (const auto& name : missing) {
+    std::cerr << "pool-web: no " << name << " (three.js's add-on) in " << c.options.root.string()
+              << ": the page draws the table without the hall's meshes\n";
   }
   pool::client::GameClient client(
       {c.domain, "", "web", c.pins, [](const std::string& line, bool problem) {

@@ -65,6 +65,23 @@ bool pageFileName(const std::string& name) {
   return true;
 }
 
+/// A mesh's name in assets/: [A-Za-z0-9_-] then ".obj".
+bool assetMeshName(const std::string& name) {
+  const std::string ext = ".obj";
+  if (name.size() <= ext.size() || name.size() > 64) return false;
+  if (name.compare(name.size() - ext.size(), ext.size(), ext) != 0) return false;
+  for (std::size_t i = 0; i + ext.size() < name.size(); ++i) {
+    const char c = name[i];
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+/// The folders of assets/ the page's meshes come from.
+constexpr const char* kAssetFolders[] = {"tables", "hall"};
+
 std::chrono::steady_clock::duration seconds(double s) {
   return std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(s));
@@ -280,7 +297,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
       return respond(request, http::status::method_not_allowed, "text/plain", "GET only\n");
     }
     const std::string name = path == "/" ? "index.html" : path.substr(1);
-    const auto file = pageFileName(name) ? state_->files.find(name) : state_->files.end();
+    const auto file = servedName(name) ? state_->files.find(name) : state_->files.end();
     if (file == state_->files.end()) {
       return respond(request, http::status::not_found, "text/plain", "not found\n");
     }
@@ -382,6 +399,54 @@ Result<std::map<std::string, std::string>> loadPage(const std::filesystem::path&
   return R::ok(std::move(files));
 }
 
+std::map<std::string, std::string> loadAssets(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const char* folder : kAssetFolders) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir / folder, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (!entry.is_regular_file() || !assetMeshName(name)) continue;
+      std::ifstream in(entry.path(), std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      if (in) files[std::string("assets/") + folder + "/" + name] = text.str();
+    }
+  }
+  return files;
+}
+
+std::vector<std::string> addThreeAddons(std::map<std::string, std::string>& files) {
+  std::vector<std::string> missing;
+  for (const char* name : {"OBJLoader.js", "BufferGeometryUtils.js"}) {
+    const auto file = files.find(name);
+    if (file == files.end()) {
+      missing.push_back(name);
+      continue;
+    }
+    // The page has no import map: its modules import three by its file name.
+    std::string& code = file->second;
+    for (const char* quote : {"'", "\""}) {
+      const std::string bare = std::string("from ") + quote + "three" + quote;
+      const std::string local = std::string("from ") + quote + "./three.module.js" + quote;
+      for (std::size_t at = code.find(bare); at != std::string::npos;
+           at = code.find(bare, at + local.size())) {
+        code.replace(at, bare.size(), local);
+      }
+    }
+  }
+  return missing;
+}
+
+bool servedName(const std::string& name) {
+  if (pageFileName(name)) return true;
+  for (const char* folder : kAssetFolders) {
+    const std::string prefix = std::string("assets/") + folder + "/";
+    if (name.compare(0, prefix.size(), prefix) == 0)
+      return assetMeshName(name.substr(prefix.size()));
+  }
+  return false;
+}
+
 const char* contentType(const std::string& name) {
   const auto ends = [&](const char* ext) {
     const std::string e(ext);
@@ -393,6 +458,7 @@ const char* contentType(const std::string& name) {
   if (ends(".json")) return "application/json";
   if (ends(".png")) return "image/png";
   if (ends(".svg")) return "image/svg+xml";
+  if (ends(".obj")) return "text/plain; charset=utf-8";
   return "application/octet-stream";
 }
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "client/web/gateway.h"
 #include "core/check.h"
@@ -46,6 +47,20 @@ std::string addressKey(const boost::asio::ip::address& address);
 /// The page's files, read once at start: every regular file directly in `root` whose name is
 /// made of [A-Za-z0-9._-], by name. Fails when `root` has no index.html.
 Result<std::map<std::string, std::string>> loadPage(const std::filesystem::path& root);
+
+/// The page's meshes, read once at start: each regular file `<dir>/tables/<name>.obj` and
+/// `<dir>/hall/<name>.obj` (names of [A-Za-z0-9_-]), served as /assets/tables/<name>.obj and
+/// /assets/hall/<name>.obj. A folder that cannot be listed adds nothing.
+std::map<std::string, std::string> loadAssets(const std::filesystem::path& dir);
+
+/// Points the bare 'three' imports of the three.js add-ons the page imports (OBJLoader.js,
+/// BufferGeometryUtils.js, copied beside the page by the build) at three.module.js. The names of
+/// those missing from `files`.
+std::vector<std::string> addThreeAddons(std::map<std::string, std::string>& files);
+
+/// Whether `name` (a request's path less its leading '/') is one the server may answer with a
+/// file: a page file's name or assets/<folder>/<name>.obj.
+bool servedName(const std::string& name);
 
 /// The Content-Type of a page file by its extension.
 const char* contentType(const std::string& name);

@@ -63,6 +63,8 @@ enum Domain : std::uint32_t {
   kWebSnookerScore = 49,
   kWebSnookerLive = 50,
   kWebReplay = 51,
+  kWebLook = 52,
+  kWebLookMeter = 53,
   // Practice tables (practice_table_test): 90–99 are theirs.
   kPractice = 90,
   kPracticeAttacks = 91,

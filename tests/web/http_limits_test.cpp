@@ -80,8 +80,22 @@ TEST_F(HttpLimitsTest, OnlyThePageIsServedAndTooManyBrowsersAreRefused) {
   EXPECT_EQ(three.result(), http::status::ok);
   EXPECT_NE(three.body().find("three.core.js"), std::string::npos);
 
-  for (const char* bad : {"/../../etc/passwd", "/..%2f..%2fetc%2fpasswd", "/nothing.js", "/.hidden",
-                          "//etc/passwd", "/web/index.html"}) {
+  // The meshes of assets/'s tables and hall, by name; three's loader with three by file name.
+  const auto room = request(http::verb::get, "/assets/hall/room.obj");
+  EXPECT_EQ(room.result(), http::status::ok);
+  EXPECT_NE(room.body().find("o wainscot"), std::string::npos);
+  EXPECT_EQ(request(http::verb::get, "/assets/tables/wpa-9ft.obj").result(), http::status::ok);
+  EXPECT_EQ(request(http::verb::get, "/assets/hall/lamp-shade.obj").result(), http::status::ok);
+  const auto loader = request(http::verb::get, "/OBJLoader.js");
+  EXPECT_EQ(loader.result(), http::status::ok);
+  EXPECT_NE(loader.body().find("from './three.module.js'"), std::string::npos);
+  EXPECT_EQ(loader.body().find("from 'three'"), std::string::npos);
+
+  for (const char* bad :
+       {"/../../etc/passwd", "/..%2f..%2fetc%2fpasswd", "/nothing.js", "/.hidden", "//etc/passwd",
+        "/web/index.html", "/assets/tables/wpa-9ft.json", "/assets/hall/../tables/wpa-9ft.obj",
+        "/assets/cue/cue.obj", "/assets/hall/", "/assets//room.obj", "/assets/hall/nothing.obj",
+        "/assets/cyclone-lo.xml"}) {
     EXPECT_EQ(request(http::verb::get, bad).result(), http::status::not_found) << bad;
   }
   EXPECT_EQ(request(http::verb::post, "/", "x").result(), http::status::method_not_allowed);

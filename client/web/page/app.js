@@ -1,16 +1,20 @@
 // The web spectator: connects to the gateway's WebSocket, shows the lobby, follows the chosen
-// match (late join: the table, the latest state and result at once) and draws it with three.js.
+// match (late join: the table, the latest state and result at once) and draws it with three.js,
+// in the full or the light mode (look.js).
 import * as THREE from './three.module.js';
 import { PlaybackClock } from './playback.js';
-import { buildTable, placeBalls, fitCamera } from './table.js';
+import { buildTable, placeBalls, fitCamera, reflect } from './table.js';
+import { dressTable } from './hall.js';
+import { chooseMode, makeRenderer, environmentOf, softwareGl } from './look.js';
 import { describe, describeEntry } from './hud.js';
 import { byPlayer, playerButtonText, playerLines } from './players.js';
 import { Replay, replayLink, replayLines } from './replay.js';
 import { bracketLines, entrantLines, tournamentButtonText } from './tournaments.js';
 
 const canvas = document.getElementById('view');
-const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
-renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+const mode = chooseMode(new URLSearchParams(window.location.search), (q) => window.matchMedia(q),
+  softwareGl);
+const renderer = makeRenderer(canvas, mode);
 const camera = new THREE.PerspectiveCamera(40, 1, 0.05, 20);
 
 const ui = {
@@ -41,8 +45,11 @@ const app = {
   tournaments: [], // the gateway's tournaments message
   tournament: null, // the tournament whose bracket is open
   match: null, // the match watched
-  table: null, // {scene, balls, outer}
+  table: null, // {scene, balls, outer}, once its meshes are in place
   tableName: '',
+  builds: 0, // tables asked for: a build finishing after a later one was asked for is dropped
+  dressed: false, // whether the table is drawn with the project's meshes
+  shadowsOf: '', // the balls the shadow maps were last drawn for
   state: null, // the latest state message
   result: null, // the latest final result
   playback: new PlaybackClock(),
@@ -65,6 +72,7 @@ function watch(match) {
   app.replay = null;
   app.match = match;
   app.table = null;
+  ++app.builds;
   app.state = null;
   app.result = null;
   app.playback.clear();
@@ -150,11 +158,31 @@ function receive(m) {
     case 'tournaments':
       app.tournaments = m.tournaments;
       break;
-    case 'table':
-      app.table = buildTable(m);
+    case 'table': {
+      // Drawn once the project's meshes are in (or known missing: the plain table then).
+      const build = ++app.builds;
+      app.table = null;
       app.tableName = m.name;
-      resize();
+      const built = buildTable(m, mode);
+      dressTable(built, m, mode).catch((e) => {
+        console.warn(`the table's meshes: ${e}`);
+        return false;
+      }).then((dressed) => {
+        if (build !== app.builds) return;
+        if (mode.environment) reflect(built, environmentOf(renderer, built.scene, m.ball_radius));
+        app.dressed = dressed;
+        app.shadowsOf = '';
+        app.table = built;
+        // A stored shot that came while the table was loading plays from its start now.
+        if (app.replay) {
+          app.playback.clear();
+          app.replay.again(seconds());
+        }
+        resize();
+        render();
+      });
       break;
+    }
     case 'state':
       if (m.match !== app.match) return;
       app.state = m;
@@ -317,9 +345,29 @@ function resize() {
   const height = canvas.clientHeight;
   if (!width || !height) return;
   renderer.setSize(width, height, false);
-  if (app.table) fitCamera(camera, app.table.outer, width / height);
+  if (app.table) {
+    // The shades hang in view over the far rail of a landscape view of the hall; a view that
+    // looks down past them onto the table (portrait, or the light mode's) leaves them out.
+    const clear = fitCamera(camera, app.table.outer, width / height, mode.hall);
+    app.table.shades.visible = clear && shadesShown;
+  }
 }
 window.addEventListener('resize', resize);
+let shadesShown = true;
+
+/** Draws the table with `balls` placed; the shadow maps only when the balls moved. */
+function draw(balls) {
+  placeBalls(app.table.balls, balls);
+  app.drawn = balls;
+  const key = balls.map((b) => b.join(',')).join(';');
+  if (key !== app.shadowsOf) {
+    renderer.shadowMap.needsUpdate = true;
+    app.shadowsOf = key;
+  }
+  renderer.render(app.table.scene, camera);
+  ++app.frames;
+}
+renderer.shadowMap.autoUpdate = false;
 
 function frame() {
   requestAnimationFrame(frame);
@@ -333,11 +381,7 @@ function frame() {
     for (const f of app.replay.due(now)) app.playback.push(f, now);
     const played = app.playback.sample(now);
     app.inMotion = app.replay.next > 0 && !(app.replay.handedOut() && app.playback.caughtUp());
-    const balls = app.inMotion && played ? played : app.replay.still();
-    placeBalls(app.table.balls, balls);
-    app.drawn = balls;
-    renderer.render(app.table.scene, camera);
-    ++app.frames;
+    draw(app.inMotion && played ? played : app.replay.still());
     return;
   }
   const settled = app.state ? app.state.state.shot_number : 0;
@@ -345,11 +389,7 @@ function frame() {
   app.inMotion = app.playback.inMotion(settled);
   // Frames while the shot plays; the state's layout at rest once the playback has caught up
   // with a state that counts the shot.
-  const balls = app.inMotion && played ? played : app.state ? app.state.balls : played || [];
-  placeBalls(app.table.balls, balls);
-  app.drawn = balls;
-  renderer.render(app.table.scene, camera);
-  ++app.frames;
+  draw(app.inMotion && played ? played : app.state ? app.state.balls : played || []);
 }
 
 // Back to the lobby, from a match, a replay or a player's page alike.
@@ -395,6 +435,11 @@ window.poolTest = {
       rect: [r.left, r.top, r.width, r.height],
     };
   },
+  /** Shows or hides the lamps' shades (for a test to see what they cover). */
+  showShades(on) {
+    shadesShown = on;
+    resize();
+  },
   /** Takes one message as if the gateway had sent it (a table or a state drawn without a match
    * on the wire). */
   receive(message) {
@@ -405,6 +450,9 @@ window.poolTest = {
       connected: app.connected,
       match: app.match,
       table: app.tableName,
+      mode: mode.name,
+      ready: !!app.table,
+      dressed: app.dressed,
       revision: app.state ? app.state.state.revision : null,
       shotNumber: app.state ? app.state.state.shot_number : null,
       phase: app.state ? app.state.state.phase : null,

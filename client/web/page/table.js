@@ -1,7 +1,8 @@
 // The table and balls in three.js, from the gateway's table message: felt (a snooker table's with
 // its baulk line, D and spots chalked on it), cushions along the nose lines, wooden rails, pocket
-// holes, the two lamps' spot light and numbered balls, in the game window's colours (linear RGB,
-// as its palette gives them).
+// holes (the plain table, until hall.js puts the project's meshes in its place), the two lamps'
+// spot lights casting the balls' shadows, and numbered balls, clear-coated in the full mode, in
+// the game window's colours (linear RGB, as its palette gives them).
 import * as THREE from './three.module.js';
 
 const RAIL_HEIGHT_OVER_NOSE = 1.15;
@@ -92,8 +93,25 @@ function markedCloth(table, sx, sy) {
   return texture;
 }
 
-/** Builds the scene of one table; returns {scene, balls: Map(id → mesh), outer: [x, y]}. */
-export function buildTable(table) {
+/** The hall's ambient light, a share of the albedo: a white ball in a corner, out of both
+ * lamps' cones, still reads as white, and the felt under a lamp stays at least 1.5 times as
+ * bright as midway between the lamps. */
+export const AMBIENT = 0.18;
+
+/** The ball's material: clear-coated over a glossy base reflecting `environment` (full mode), or
+ * plain Phong gloss (light mode). */
+function ballMaterial(map, mode) {
+  if (mode.clearcoat) {
+    return new THREE.MeshPhysicalMaterial({ map, roughness: 0.3, clearcoat: 1.0,
+      clearcoatRoughness: 0.12, envMapIntensity: 1.0 });
+  }
+  return new THREE.MeshPhongMaterial({ map, shininess: 150,
+    specular: new THREE.Color().setRGB(0.35, 0.35, 0.35, THREE.LinearSRGBColorSpace) });
+}
+
+/** Builds the scene of one table in `mode` (look.js); returns {scene, balls: Map(id → mesh),
+ * outer: [x, y], railTop, materials (the table's, by look), plain (the plain table's group)}. */
+export function buildTable(table, mode) {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0x151210);
   const c = table.colours;
@@ -102,18 +120,32 @@ export function buildTable(table) {
   const railTop = table.nose_height * RAIL_HEIGHT_OVER_NOSE;
   const outer = [table.length / 2 + cw + rw, table.width / 2 + cw + rw];
 
-  // The game's light: an ambient share (0.22 of the albedo) and each lamp's spot cone with its
-  // gain over a felt straight below it. three's Lambert term divides by π: the intensities below
-  // make a point straight under a lamp get `gain` of its albedo, as in the game's shader.
-  scene.add(new THREE.AmbientLight(0xffffff, 0.22 * Math.PI));
+  // The game's light: an ambient share of the albedo and each lamp's spot cone with its gain over
+  // a felt straight below it, falling off with the square of the distance (the cones of the
+  // game's high preset: the felt midway between the lamps gets a quarter of a lamp's light from
+  // each). three's Lambert term
+  // divides by π: the intensities below make a point straight under a lamp get `gain` of its
+  // albedo, as in the game's shader. In full mode each lamp casts soft shadows (three's shadow
+  // map, from the light itself, its cone the shadow camera's).
+  scene.add(new THREE.AmbientLight(0xffffff, AMBIENT * Math.PI));
   const lamps = table.lamps;
+  const cone = lamps.high || lamps; // the game's high preset's cones, where the message has them
   for (const p of lamps.positions) {
     const spot = new THREE.SpotLight(0xffffff, lamps.gain * Math.PI * p[2] * p[2]);
     spot.position.set(p[0], p[1], p[2]);
     spot.target.position.set(p[0], p[1], 0);
-    spot.angle = THREE.MathUtils.degToRad(lamps.outer_deg);
-    spot.penumbra = 1 - lamps.inner_deg / lamps.outer_deg;
+    spot.angle = THREE.MathUtils.degToRad(cone.outer_deg);
+    spot.penumbra = 1 - cone.inner_deg / cone.outer_deg;
     spot.decay = 2;
+    if (mode.shadows) {
+      spot.castShadow = true;
+      spot.shadow.mapSize.set(mode.shadowSize, mode.shadowSize);
+      spot.shadow.camera.near = 0.3;
+      spot.shadow.camera.far = 2.5;
+      spot.shadow.radius = 4;
+      spot.shadow.bias = -0.0004;
+      spot.shadow.normalBias = 0.002;
+    }
     scene.add(spot, spot.target);
   }
 
@@ -121,12 +153,20 @@ export function buildTable(table) {
   const cloth = markedCloth(table, table.length + 2 * cw, table.width + 2 * cw);
   const bedMaterial = cloth ? new THREE.MeshLambertMaterial({ map: cloth }) : felt;
   const cushion = new THREE.MeshLambertMaterial({ color: linear(c.cushion) });
-  const wood = new THREE.MeshLambertMaterial({ color: linear(c.wood) });
+  // Lacquered wood reflecting the hall in full mode; matt in light mode (the cheaper shader).
+  const wood = mode.environment
+    ? new THREE.MeshStandardMaterial({ color: linear(c.wood), roughness: 0.45, metalness: 0.0 })
+    : new THREE.MeshLambertMaterial({ color: linear(c.wood) });
   const pocket = new THREE.MeshBasicMaterial({ color: linear(c.pocket) });
+  const dark = new THREE.MeshLambertMaterial({ color: linear(c.pocket) });
+  const materials = { bed: bedMaterial, cushion, wood, dark };
 
+  const plain = new THREE.Group();
+  scene.add(plain);
   const bed = new THREE.Mesh(new THREE.PlaneGeometry(table.length + 2 * cw, table.width + 2 * cw),
     bedMaterial);
-  scene.add(bed);
+  bed.receiveShadow = true;
+  plain.add(bed);
 
   // Cushions: each nose segment pushed back by the cushion's width, up to the rail's top.
   for (const nose of table.noses) {
@@ -138,14 +178,14 @@ export function buildTable(table) {
       new THREE.Vector2(bx - nx * cw, by - ny * cw), new THREE.Vector2(ax - nx * cw, ay - ny * cw),
     ]);
     const geometry = new THREE.ExtrudeGeometry(shape, { depth: railTop * 0.97, bevelEnabled: false });
-    scene.add(new THREE.Mesh(geometry, cushion));
+    plain.add(new THREE.Mesh(geometry, cushion));
   }
 
   // Rails: a wooden frame round the cushions.
   const railBox = (sx, sy, x, y) => {
     const m = new THREE.Mesh(new THREE.BoxGeometry(sx, sy, railTop), wood);
     m.position.set(x, y, railTop / 2);
-    scene.add(m);
+    plain.add(m);
   };
   const ix = table.length / 2 + cw;
   const iy = table.width / 2 + cw;
@@ -159,21 +199,38 @@ export function buildTable(table) {
     for (const z of [0.0005, railTop + 0.0005]) {
       const disc = new THREE.Mesh(new THREE.CircleGeometry(hole.radius, 32), pocket);
       disc.position.set(hole.centre[0], hole.centre[1], z);
-      scene.add(disc);
+      plain.add(disc);
     }
   }
 
   const balls = new Map();
-  const sphere = new THREE.SphereGeometry(table.ball_radius, 32, 16);
+  const sphere = new THREE.SphereGeometry(table.ball_radius, mode.sphere[0], mode.sphere[1]);
   sphere.rotateX(Math.PI / 2); // the texture's poles on the body's z, as the game's balls
   c.balls.forEach((look, id) => {
-    const material = new THREE.MeshLambertMaterial({ map: ballTexture(id, look) });
-    const mesh = new THREE.Mesh(sphere, material);
+    const mesh = new THREE.Mesh(sphere, ballMaterial(ballTexture(id, look), mode));
     mesh.visible = false;
+    mesh.castShadow = true;
     balls.set(id, mesh);
     scene.add(mesh);
   });
-  return { scene, balls, outer, railTop };
+  const shades = new THREE.Group(); // the lamps' shades, once hall.js has them
+  scene.add(shades);
+  return { scene, balls, outer, railTop, materials, plain, shades };
+}
+
+/** Gives the balls and the wood `environment` (a prefiltered map of the hall) to reflect. */
+export function reflect(built, environment) {
+  for (const mesh of built.balls.values()) {
+    mesh.material.envMap = environment;
+    mesh.material.needsUpdate = true;
+  }
+  built.materials.wood.envMap = environment;
+  built.materials.wood.envMapIntensity = 0.5;
+  built.materials.wood.needsUpdate = true;
+  if (built.materials.shade) {
+    built.materials.shade.envMap = environment;
+    built.materials.shade.needsUpdate = true;
+  }
 }
 
 /** Places the balls: [id, x, y, z, qw, qx, qy, qz, onTable] each; balls off the table hidden. */
@@ -190,15 +247,19 @@ export function placeBalls(balls, list) {
   for (const [id, mesh] of balls) if (!seen.has(id)) mesh.visible = false;
 }
 
-/** A camera looking down on the table, a little tilted, the table's length across the wider side
- * of the view; fitted so the whole table shows. */
-export function fitCamera(camera, outer, aspect) {
-  const tilt = THREE.MathUtils.degToRad(18);
+/** A camera looking down on the table from its near side, the table's length across the wider
+ * side of the view; fitted so the whole table shows. Tilted 18° from straight down, looking down
+ * past the lamps; 40° in a landscape view of the hall (`hall`), so that the lamps hang over the
+ * far rail with the hall behind them. Returns whether the lamps' shades are clear of the table. */
+export function fitCamera(camera, outer, aspect, hall = false) {
+  const wide = hall && aspect >= 1;
+  const tilt = THREE.MathUtils.degToRad(wide ? 40 : 18);
   const half = Math.tan(THREE.MathUtils.degToRad(camera.fov / 2));
   const portrait = aspect < 1;
   const across = portrait ? outer[1] : outer[0];
   const along = portrait ? outer[0] : outer[1];
-  const distance = 1.08 * Math.max(along / half, across / (half * aspect)) + 0.1;
+  // A tilted view brings the near corners closer: more room round them.
+  const distance = (wide ? 1.2 : 1.08) * Math.max(along / half, across / (half * aspect)) + 0.1;
   camera.aspect = aspect;
   camera.up.set(0, 0, 1);
   if (portrait) camera.position.set(-distance * Math.sin(tilt), 0, distance * Math.cos(tilt));
@@ -212,4 +273,5 @@ export function fitCamera(camera, outer, aspect) {
   camera.near = 0.05;
   camera.far = 20;
   camera.updateProjectionMatrix();
+  return wide;
 }
