@@ -124,12 +124,14 @@ TEST_F(WebReplayTest, ALinkPlaysAStoredShotWhereItsLayoutsAndEventsPutTheBalls) 
       << logs();
   const std::string match = recorder.firstMatch();
   // The server holds its file to itself: it is stopped, its file read, and started again on it
-  // (replays then come from a store a restart has reopened). The stroke after the break: a
-  // whole stroke that stops sooner than the break (the page plays it in real time).
+  // (replays then come from a store a restart has reopened). The break: the page plays a stroke
+  // in real time, and the break runs long enough to be looked at in motion many times even
+  // while a loaded machine answers each look slowly (a shorter stroke was seen twice in one CI
+  // rehearsal, against three needed).
   server.kill(SIGTERM);
   ASSERT_TRUE(server.waitExit(20s)) << "the server did not stop";
-  const auto stored = storedStroke(db, match, 2);
-  ASSERT_TRUE(stored) << "stroke 2 of " << match << " is not in " << db;
+  const auto stored = storedStroke(db, match, 1);
+  ASSERT_TRUE(stored) << "stroke 1 of " << match << " is not in " << db;
   std::vector<std::string> again{"--domain", std::to_string(domain_), "--tables",
                                  "1",        "--server-id",           "srv"};
   again.insert(again.end(), server_args.begin(), server_args.end());
@@ -140,7 +142,7 @@ TEST_F(WebReplayTest, ALinkPlaysAStoredShotWhereItsLayoutsAndEventsPutTheBalls) 
   ChromiumPage page(file("chromium"), 1100, 700);
   ASSERT_TRUE(page.started());
   const std::string base = "http://127.0.0.1:" + std::to_string(port) + "/";
-  ASSERT_TRUE(page.open(base + "?match=" + match + "&shot=2", 20s)) << page.lastError();
+  ASSERT_TRUE(page.open(base + "?match=" + match + "&shot=1", 20s)) << page.lastError();
 
   // Looked at every few milliseconds from the answer to the end: at the strike, in motion, at rest.
   std::string before_difference = "never seen before the strike";
@@ -170,12 +172,12 @@ TEST_F(WebReplayTest, ALinkPlaysAStoredShotWhereItsLayoutsAndEventsPutTheBalls) 
   EXPECT_EQ(after_difference, "") << last.dump();
   EXPECT_GE(in_motion, 3) << "the shot was hardly seen in motion";
   EXPECT_EQ(off_path, 0) << "of " << in_motion << " looks in motion";
-  EXPECT_EQ(last["replay"]["shot"], 2);
+  EXPECT_EQ(last["replay"]["shot"], 1);
   EXPECT_GE(last["replay"]["shots"].get<int>(), 2);
   // The side panel names the players and the shot.
   const std::string lines = last["replay"]["lines"].dump();
   EXPECT_NE(lines.find("alice"), std::string::npos) << lines;
-  EXPECT_NE(lines.find("Shot 2 of"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("Shot 1 of"), std::string::npos) << lines;
 
   // A shot the match never had: one line saying how many it has.
   ASSERT_TRUE(page.open(base + "?match=" + match + "&shot=9999", 20s)) << page.lastError();
