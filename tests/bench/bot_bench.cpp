@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -134,6 +135,13 @@ void BM_BaselineCentredBreak(benchmark::State& state) {
 }
 BENCHMARK(BM_BaselineCentredBreak)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+/// One axis of the break grid: every value, or its two ends in the smoke run (16 strokes of the
+/// grid's 864: the sweep's path, not its figures).
+std::vector<double> gridAxis(std::initializer_list<double> values) {
+  if (!pool::bench::smoke()) return values;
+  return {*values.begin(), *(values.end() - 1)};
+}
+
 /// The grid measuredBreaks was chosen from: each stroke over 200 racks (seeds 1000–1199).
 void BM_BreakGrid(benchmark::State& state) {
   const auto game = static_cast<rules::Game>(state.range(0));
@@ -148,10 +156,10 @@ void BM_BreakGrid(benchmark::State& state) {
   for (auto _ : state) {
     rows.clear();
     bot::Rng rng(7);
-    for (double y : {0.0, 0.1, 0.2, 0.3, 0.4, 0.55}) {
-      for (double offset : {-0.6, -0.45, -0.3, -0.15, 0.0, 0.15, 0.3, 0.45, 0.6}) {
-        for (double speed : {9.0, 10.0, 11.0, 12.0}) {
-          for (double tip : {-0.3, -0.1, 0.2, 0.4}) {
+    for (double y : gridAxis({0.0, 0.1, 0.2, 0.3, 0.4, 0.55})) {
+      for (double offset : gridAxis({-0.6, -0.45, -0.3, -0.15, 0.0, 0.15, 0.3, 0.45, 0.6})) {
+        for (double speed : gridAxis({9.0, 10.0, 11.0, 12.0})) {
+          for (double tip : gridAxis({-0.3, -0.1, 0.2, 0.4})) {
             Row row{{y, offset, speed, tip}, {}};
             for (int k = 0; k < n; ++k) {
               const auto balls = rackOf(view, 1000 + static_cast<std::uint64_t>(k));
@@ -191,7 +199,7 @@ struct RunTally {
   std::vector<double> plan_ms;
 };
 
-/// Plays rack `seed` of `view`'s game from `breaker`'s break to its end (or 80 shots; 6 in the
+/// Plays rack `seed` of `view`'s game from `breaker`'s break to its end (or 80 shots; 3 in the
 /// smoke run), each seat planning with its options and playing under their noise. The winner's
 /// seat, or -1 (a re-rack, or no end within the shots allowed).
 int runRack(const bot::TableView& view, const std::array<const bot::PlannerOptions*, 2>& seats,
@@ -202,7 +210,7 @@ int runRack(const bot::TableView& view, const std::array<const bot::PlannerOptio
   bool turn_changed = false;
   ++tally.racks;
   // The smoke run plays the first shots of a rack only: the planner's path, not its figures.
-  const int max_shots = pool::bench::smokeOr(80, 6);
+  const int max_shots = pool::bench::smokeOr(80, 3);
   for (int shot_no = 0; shot_no < max_shots; ++shot_no) {
     const bot::PlannerOptions& options = *seats[static_cast<std::size_t>(state.shooter)];
     bot::ShotPlanner planner(view, options);
