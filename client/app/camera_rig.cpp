@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 namespace pool::app {
@@ -14,6 +15,63 @@ constexpr double kMargin = 0.25;        // m of floor shown beyond the table's e
 
 double radians(double degrees) {
   return degrees * std::numbers::pi / 180.0;
+}
+
+/// A part of the window in normalised device coordinates (y up).
+struct NdcBox {
+  double left, right, bottom, top;
+};
+
+/// How far to raise the look-at point (m; `view_at` gives the view for a height) so that a light
+/// of `lights` ahead of the eye is drawn inside `box` (its top edge less a little, for the shade
+/// hanging round it) while every point of `points` stays inside it; 0 when no light fits so or
+/// none needs raising. Raising the look-at point lowers everything on the screen, monotonically.
+double lightRoom(const std::function<ViewPoint(double)>& view_at, double aspect,
+                 const std::vector<Eigen::Vector3d>& points,
+                 const std::vector<Eigen::Vector3d>& lights, const NdcBox& box) {
+  constexpr double kHighest = 2.0;   // m above the cue ball: far past level for any eye
+  constexpr double kBelowTop = 0.1;  // NDC: the light this far inside the top edge
+  const auto lowest = [&](double up) {
+    double y = 1e9;
+    const ViewPoint v = view_at(up);
+    for (const auto& p : points) {
+      const auto n = ndcOf(v, aspect, p);
+      y = std::min(y, n ? n->y() : -1e9);
+    }
+    return y;
+  };
+  // The most the shot allows: its lowest point on the area's bottom edge.
+  if (lowest(0.0) < box.bottom) return 0.0;
+  double lo = 0.0, hi = kHighest;
+  if (lowest(hi) >= box.bottom) lo = hi;
+  for (int i = 0; i < 40 && hi > lo; ++i) {
+    const double mid = (lo + hi) / 2;
+    (lowest(mid) >= box.bottom ? lo : hi) = mid;
+  }
+  const double most = lo;
+  double best = 0.0;
+  bool found = false;
+  for (const auto& light : lights) {
+    const auto at = [&](double up) { return ndcOf(view_at(up), aspect, light); };
+    const auto now = at(0.0);
+    if (!now) continue;  // behind the eye
+    if (now->y() <= box.top - kBelowTop && now->x() >= box.left && now->x() <= box.right) {
+      return 0.0;  // already in view
+    }
+    const auto raised = at(most);
+    if (!raised || raised->y() > box.top - kBelowTop) continue;  // cannot be brought in
+    double a = 0.0, b = most;
+    for (int i = 0; i < 40; ++i) {
+      const double mid = (a + b) / 2;
+      const auto n = at(mid);
+      (n && n->y() <= box.top - kBelowTop ? b : a) = mid;
+    }
+    const auto shown = at(b);
+    if (!shown || shown->x() < box.left || shown->x() > box.right) continue;
+    if (!found || b < best) best = b;
+    found = true;
+  }
+  return found ? best : 0.0;
 }
 
 }  // namespace
@@ -65,6 +123,7 @@ void CameraRig::behindCue() {
   framed_.reset();
   aim_.elevation = kAimElevation;
   aim_.distance = kAimDistance;
+  look_up_ = 0.0;
   overhead_ = false;
 }
 
@@ -235,16 +294,16 @@ void CameraRig::zoom(double factor) {
 ViewPoint CameraRig::goal() const {
   if (overhead_) return overheadOrbit().view(fov_y_deg_);
   if (!aiming_) return watch_.view(fov_y_deg_);
-  return aimView(aim_, look_);
+  return aimView(aim_, look_, look_up_);
 }
 
-ViewPoint CameraRig::aimView(const Orbit& orbit, const Eigen::Vector2d& look) const {
+ViewPoint CameraRig::aimView(const Orbit& orbit, const Eigen::Vector2d& look, double up) const {
   // The eye where the orbit has it; the look-at point look.x() m on from the cue ball (away from
-  // the eye) and look.y() m to the left of that line.
-  ViewPoint v = orbit.view(fov_y_deg_);
+  // the eye), look.y() m to the left of that line and `up` m above it.
+  ViewPoint v = orbit.view(kAimFovDeg);
   const Eigen::Vector3d on(-std::cos(orbit.azimuth), -std::sin(orbit.azimuth), 0.0);
   const Eigen::Vector3d left(-on.y(), on.x(), 0.0);
-  v.target += look.x() * on + look.y() * left;
+  v.target += look.x() * on + look.y() * left + Eigen::Vector3d(0.0, 0.0, up);
   return v;
 }
 
@@ -309,6 +368,8 @@ void CameraRig::frameShot(const Eigen::Vector3d& cue, const std::vector<Eigen::V
     if (extent(look).fits) {
       aim_.distance = probe.distance;
       look_ = look;
+      look_up_ = lightRoom([&](double up) { return aimView(probe, look, up); }, aspect_, points,
+                           lights_, {left, right, bottom, top});
       return;
     }
     if (probe.distance >= kFarthest) break;

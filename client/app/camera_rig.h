@@ -38,6 +38,11 @@ inline constexpr double kEyeOverCue = 0.1745329;  // 10°
 /// the shot still framed, rather than from straight above the cue ball.
 inline constexpr double kHighestAimEye = 1.0471976;
 
+/// The aiming view's vertical field of view, degrees: wider than the watching view's 40°, as a
+/// player down on a shot takes in the cue ball at the foot of the view and the lamps over the far
+/// end at its head.
+inline constexpr double kAimFovDeg = 45.0;
+
 /// Limits and steps of the camera controls.
 struct CameraLimits {
   double min_elevation = 0.03;  ///< rad
@@ -97,11 +102,19 @@ class CameraRig {
   /// object ball, its pocket) sit in the aim area, centred on it, drawing back (up to 3 m) where
   /// they do not fit. Kept until the next behindCue.
   void frameShot(const Eigen::Vector3d& cue, const std::vector<Eigen::Vector3d>& ahead);
+  /// With a light of `lights` (the lamps over the table, table frame) ahead of the eye and within
+  /// the aim area's width, frameShot then tilts the view up (its look-at point raised above the
+  /// table) until that light is drawn inside the area's top edge, the shade hanging over the
+  /// table, as long as every framed point stays inside the area; where no light fits so, the
+  /// view stays as framed.
+  void setLights(std::vector<Eigen::Vector3d> lights) { lights_ = std::move(lights); }
   /// The part of the window the aiming view draws the shot in, as fractions from the top-left
   /// corner (app::clearColumnFor of the panes; the whole window until told).
   void setAimArea(const ScreenRect& fraction) { aim_area_ = fraction; }
   /// How far ahead of the cue ball and to the left of its line the aiming view looks, m.
   const Eigen::Vector2d& look() const { return look_; }
+  /// How far above the cue ball's centre the aiming view's look-at point is raised, m.
+  double lookUp() const { return look_up_; }
   /// The view straight down on the whole table on or off (O), framed in the clear area (turned
   /// lengthwise up the screen where that fits it larger) and neither zoomed nor panned. Glides.
   /// While it is on, orbit() and raise() pan it (rad of orbit: the view's height × kOverheadPan)
@@ -141,8 +154,9 @@ class CameraRig {
   /// Starts a glide from the view drawn now.
   void startGlide();
   Orbit overheadOrbit() const;
-  /// The aiming view of `orbit` looking `look` m ahead of the cue ball and left of its line.
-  ViewPoint aimView(const Orbit& orbit, const Eigen::Vector2d& look) const;
+  /// The aiming view of `orbit` looking `look` m ahead of the cue ball and left of its line, and
+  /// `up` m above it.
+  ViewPoint aimView(const Orbit& orbit, const Eigen::Vector2d& look, double up = 0.0) const;
   /// Moves the overhead view by `right` and `up` (rad, as orbit and raise give them).
   void panOverhead(double right, double up);
 
@@ -160,6 +174,8 @@ class CameraRig {
   ScreenRect clear_{0.0, 0.0, 1.0, 1.0};
   ScreenRect aim_area_{0.0, 0.0, 1.0, 1.0};
   Eigen::Vector2d look_ = Eigen::Vector2d::Zero();  ///< m: ahead of the cue ball, left of its line
+  double look_up_ = 0.0;                            ///< m: above the cue ball
+  std::vector<Eigen::Vector3d> lights_;
   /// The cue ball and the points the last frameShot framed (until behindCue): keepAimAbove frames
   /// them again when it raises the eye.
   std::optional<std::pair<Eigen::Vector3d, std::vector<Eigen::Vector3d>>> framed_;

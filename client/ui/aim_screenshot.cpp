@@ -85,7 +85,7 @@ int runAimScreenshot(const render::ScreenshotOptions& options) {
 
   const double aspect = static_cast<double>(options.width) / options.height;
   app::Controls controls(protocol::CommandLimits{}, app::PlacementArea{},
-                         app::CameraRig(view->spec.length, view->spec.width, aspect));
+                         cameraRigFor(scene.geometry, aspect));
   controls.setViewport(options.width, options.height);
   controls.startTurn(cue, rules::BallInHand::None);
   controls.setYaw(aim.yaw);

@@ -1,6 +1,8 @@
 // Conversions from the client model to the renderer's types.
 #include "client/ui/scene_convert.h"
 
+#include "client/render/lamps.h"
+
 namespace pool::ui {
 namespace {
 
@@ -21,6 +23,14 @@ std::vector<render::SceneBall> sceneBalls(const std::vector<physics::Ball>& ball
 
 render::Camera cameraOf(const app::ViewPoint& view) {
   return {vec(view.eye), vec(view.target), static_cast<float>(view.fov_y_deg)};
+}
+
+app::CameraRig cameraRigFor(const table::TableGeometry& geometry, double aspect) {
+  app::CameraRig rig(geometry.length, geometry.width, aspect);
+  std::vector<Eigen::Vector3d> lights;
+  for (const glm::vec3& p : render::lampPositions(geometry)) lights.emplace_back(p.x, p.y, p.z);
+  rig.setLights(std::move(lights));
+  return rig;
 }
 
 std::vector<render::OverlayLine> overlayLines(const std::vector<app::OverlaySegment>& segments) {

@@ -66,9 +66,9 @@ class WindowApp {
         view_(std::move(view)),
         window_(options.width, options.height),
         scene_(scene),
-        controls_(limitsOf(view_), areaOf(view_),
-                  app::CameraRig(view_.spec.length, view_.spec.width,
-                                 static_cast<double>(options.width) / options.height)),
+        controls_(
+            limitsOf(view_), areaOf(view_),
+            cameraRigFor(scene.geometry, static_cast<double>(options.width) / options.height)),
         session_({options.domain, options.name, options.hotseat,
                   options.keep_identity ? client::defaultIdentityDir() : std::filesystem::path(),
                   std::nullopt}),
@@ -207,13 +207,13 @@ class WindowApp {
       return;
     }
     view_ = std::move(*loaded);
-    scene_.setTable(render::tableScene(view_));
+    const render::Scene table_scene = render::tableScene(view_);
+    scene_.setTable(table_scene);
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_.get(), &width, &height);
-    controls_.setTable(
-        limitsOf(view_), areaOf(view_),
-        app::CameraRig(view_.spec.length, view_.spec.width,
-                       static_cast<double>(std::max(width, 1)) / std::max(height, 1)));
+    controls_.setTable(limitsOf(view_), areaOf(view_),
+                       cameraRigFor(table_scene.geometry,
+                                    static_cast<double>(std::max(width, 1)) / std::max(height, 1)));
     controls_.setViewport(width, height);
   }
 

@@ -41,46 +41,92 @@ struct Layout {
   double eye_above = 0.0;  ///< rad the eye must stay above (a cue raised over a rail), 0: none
 };
 
-class CameraAimFrameTest : public ::testing::TestWithParam<Layout> {};
+/// A shot's points as the controls hand them to the camera, and the view they get.
+struct Framed {
+  Eigen::Vector3d cue;
+  std::vector<Eigen::Vector3d> ahead;  ///< the ghost ball, the object ball, the pocket
+  ScreenRect area;
+  ViewPoint view;
+};
 
-TEST_P(CameraAimFrameTest, TheCueBallTheShotAndItsPocketAreDrawnClearOfThePanes) {
-  const Layout& l = GetParam();
+/// Frames `l` as the controls open a turn: behind the cue ball, raised over the ghost ball, the
+/// shot framed, then the eye kept above a raised cue (the window does so each frame); `lights`
+/// given to the camera first.
+Framed frame(const Layout& l, const std::vector<Eigen::Vector3d>& lights = {}) {
+  Framed f;
   const Eigen::Vector2d ghost = l.object - 2 * kR * (l.pocket - l.object).normalized();
   const double yaw = std::atan2(ghost.y() - l.cue.y(), ghost.x() - l.cue.x());
-  const Eigen::Vector3d cue(l.cue.x(), l.cue.y(), kR);
-  const std::vector<Eigen::Vector3d> ahead{{ghost.x(), ghost.y(), kR},
-                                           {l.object.x(), l.object.y(), kR},
-                                           {l.pocket.x(), l.pocket.y(), kR}};
-  const ScreenRect area = clearColumnFor(kWidth, kHeight, kPanes);
-  // The column the panes leave: between the left panes and the match log, under the banner.
-  ASSERT_EQ(area, (ScreenRect{350, 78, 886, 720}));
-
-  // As the controls open a turn: behind the cue ball, raised over the ghost ball, the shot framed,
-  // then the eye kept above a raised cue (the window does so each frame).
+  f.cue = Eigen::Vector3d(l.cue.x(), l.cue.y(), kR);
+  f.ahead = {{ghost.x(), ghost.y(), kR},
+             {l.object.x(), l.object.y(), kR},
+             {l.pocket.x(), l.pocket.y(), kR}};
+  f.area = clearColumnFor(kWidth, kHeight, kPanes);
   CameraRig rig(2.54, 1.27, static_cast<double>(kWidth) / kHeight);
-  rig.setAimArea({area.x0 / kWidth, area.y0 / kHeight, area.x1 / kWidth, area.y1 / kHeight});
+  rig.setLights(lights);
+  rig.setAimArea(
+      {f.area.x0 / kWidth, f.area.y0 / kHeight, f.area.x1 / kWidth, f.area.y1 / kHeight});
   rig.setAiming(true);
   rig.behindCue();
-  rig.followCue(cue, yaw);
-  rig.frameAim(cue, ahead.front(), kR);
-  rig.frameShot(cue, ahead);
+  rig.followCue(f.cue, yaw);
+  rig.frameAim(f.cue, f.ahead.front(), kR);
+  rig.frameShot(f.cue, f.ahead);
   if (l.eye_above > 0) rig.keepAimAbove(l.eye_above);
   rig.settle();
-  const ViewPoint v = rig.view();
-  EXPECT_LE((v.eye - cue).norm(), 3.0 + 1e-9) << "drawn back no further than 3 m";
-  const std::vector<std::pair<const char*, Eigen::Vector3d>> shown{
-      {"cue ball", cue}, {"ghost ball", ahead[0]}, {"object ball", ahead[1]}, {"pocket", ahead[2]}};
+  f.view = rig.view();
+  return f;
+}
+
+/// Every point of the shot drawn inside the column, the eye behind the cue ball.
+void expectFramed(const Layout& l, const Framed& f) {
+  const ViewPoint& v = f.view;
+  EXPECT_LE((v.eye - f.cue).norm(), 3.0 + 1e-9) << "drawn back no further than 3 m";
+  const std::vector<std::pair<const char*, Eigen::Vector3d>> shown{{"cue ball", f.cue},
+                                                                   {"ghost ball", f.ahead[0]},
+                                                                   {"object ball", f.ahead[1]},
+                                                                   {"pocket", f.ahead[2]}};
   for (const auto& [what, p] : shown) {
     const glm::dvec2 px = pixelOf(v, p);
-    EXPECT_GT(px.x, area.x0) << what;
-    EXPECT_LT(px.x, area.x1) << what;
-    EXPECT_GT(px.y, area.y0) << what;
-    EXPECT_LT(px.y, area.y1) << what;
+    EXPECT_GT(px.x, f.area.x0) << what;
+    EXPECT_LT(px.x, f.area.x1) << what;
+    EXPECT_GT(px.y, f.area.y0) << what;
+    EXPECT_LT(px.y, f.area.y1) << what;
   }
   // Behind the cue ball, the cue's line toward the eye: the eye on the far side of the cue ball
   // from the shot, looking along it.
-  const Eigen::Vector2d back = (v.eye - cue).head<2>();
-  EXPECT_LT(back.dot(ghost - l.cue), 0.0);
+  const Eigen::Vector2d back = (v.eye - f.cue).head<2>();
+  EXPECT_LT(back.dot(f.ahead[0].head<2>() - l.cue), 0.0);
+}
+
+class CameraAimFrameTest : public ::testing::TestWithParam<Layout> {};
+
+TEST_P(CameraAimFrameTest, TheCueBallTheShotAndItsPocketAreDrawnClearOfThePanes) {
+  const Framed f = frame(GetParam());
+  // The column the panes leave: between the left panes and the match log, under the banner.
+  ASSERT_EQ(f.area, (ScreenRect{350, 78, 886, 720}));
+  expectFramed(GetParam(), f);
+}
+
+TEST_P(CameraAimFrameTest, ToldOfTheLampsTheViewHangsTheLampAheadInTheColumnAndStillFramesTheShot) {
+  // The two lamps of a 9-ft table: 0.95 m over the slate, a quarter of the length from each end.
+  const std::vector<Eigen::Vector3d> lamps{{-0.635, 0.0, 0.95}, {0.635, 0.0, 0.95}};
+  const Layout& l = GetParam();
+  const Framed plain = frame(l);
+  const Framed f = frame(l, lamps);
+  expectFramed(l, f);
+  // The same eye, its look-at point raised: the view tilts up, never down.
+  EXPECT_LT((f.view.eye - plain.view.eye).norm(), 1e-9);
+  EXPECT_GE(f.view.target.z(), plain.view.target.z() - 1e-9);
+  // Every layout but those with the cue raised over a rail (the eye 35° up, looking down on the
+  // shot) plays up the table toward the foot lamp: its light is drawn in the column, below the
+  // banner.
+  if (l.eye_above > 0) return;
+  const glm::dvec2 px = pixelOf(f.view, lamps[1]);
+  EXPECT_GT(px.x, f.area.x0);
+  EXPECT_LT(px.x, f.area.x1);
+  EXPECT_GT(px.y, f.area.y0);
+  EXPECT_LT(px.y, f.area.y1);
+  // Which a view without the lamps does not show.
+  EXPECT_LT(pixelOf(plain.view, lamps[1]).y, f.area.y0);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -2,7 +2,8 @@
 // where things must be from the table spec, the rack and the physics' strike frame, project them
 // through the camera the sidecar reports, and look at the pixels there: the cue's wood along the
 // struck line, the cue drawn back with the power, the ghost ball's outline at the first contact,
-// and the lamps kept out of the view.
+// the lamps never filling the view, and the far lamp hanging over the shot in the HUD's aiming
+// view.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "support/reported_camera.h"
 #include "support/screenshot_fixture.h"
 #include "table/rack.h"
+#include "table/table_geometry.h"
 #include "table/table_spec.h"
 
 namespace pool::client::test {
@@ -187,6 +189,47 @@ TEST_F(AimViewTest, LampsAreSeenFromAfarUnderTheirHeight) {
   ASSERT_TRUE(camera_.inside(px));
   EXPECT_GT(countInDisc(image, px.x, px.y, 30.0, isLamp), 300);
   EXPECT_LT(count(image, isLamp), 1280 * 720 / 20);
+}
+
+TEST_F(AimViewTest, TheFarShadeHangsOverTheTableInTheHudsAimingViewClearOfTheShot) {
+  // The window's aiming view (the shot framed in the column the panes leave) of the break from
+  // the head spot at the apex ball: it tilts up until the foot lamp, 0.95 m over the slate a
+  // quarter of the length from the foot cushion, hangs inside the column under the top panes,
+  // the cue ball, the apex ball and the pockets still in the column below it.
+  const Table t = nineFoot();
+  const Image image = aimView("--hud");
+  ASSERT_EQ(image.width, 1280);
+  const glm::vec3 light(float(t.spec.length / 4), 0.0f, render::kLampHeight);
+  const glm::vec3 px = camera_.pixel(light);
+  ASSERT_TRUE(camera_.inside(px)) << px.x << " " << px.y;
+  EXPECT_GT(px.y, 42.0f) << "under the last shot's pane (10-42 px)";
+  EXPECT_GT(countInDisc(image, px.x, px.y, 30.0, isLamp), 300);
+  EXPECT_LT(count(image, isLamp), 1280 * 720 / 20);
+  // No shade over the shot: the disc round the light that holds the whole shade (kShadeBound,
+  // as drawn at its distance) clear of the cue ball and the apex ball (1.5 radii round their
+  // centres as drawn) and of the mouths of the foot pockets the shot may head for.
+  const auto drawnRadius = [&](glm::vec3 centre, float r) {
+    return glm::length(glm::vec2(camera_.pixel(centre + r * camera_.up()) - camera_.pixel(centre)));
+  };
+  const float shade = drawnRadius(light, render::kShadeBound);
+  const glm::vec3 apex(float(t.apex.x()), float(t.apex.y()), float(t.radius));
+  for (const glm::vec3 p : {t.cue_ball, apex}) {
+    const glm::vec3 at = camera_.pixel(p);
+    const float r = drawnRadius(p, float(t.radius));
+    ASSERT_TRUE(camera_.inside(at));
+    EXPECT_LT(at.y, 720.0f - r) << "whole above the bottom edge";
+    EXPECT_GT(glm::length(glm::vec2(at - px)), shade + 1.5f * r) << p.x;
+  }
+  const auto geometry = table::buildTableGeometry(t.spec);
+  for (const auto& hole : geometry.holes) {
+    if (hole.centre.x() < t.spec.length / 4) continue;  // the foot corners
+    const glm::vec3 at =
+        camera_.pixel(glm::vec3(float(hole.centre.x()), float(hole.centre.y()), float(t.radius)));
+    ASSERT_TRUE(camera_.inside(at)) << hole.name;
+    EXPECT_GT(glm::length(glm::vec2(at - px)), shade + 10.0f) << hole.name;
+  }
+  // The shade is above the shot: its light over the apex ball's pixel.
+  EXPECT_LT(px.y, camera_.pixel(apex).y - 100.0f);
 }
 
 }  // namespace

@@ -879,12 +879,13 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   MatchRecorder recorder(kWindowBallInHand);
   startServer({});  // frames paced at 60 Hz, as a player sees them
   std::string script = "wait aiming\nframes 60\nmouse press cue\nframes 2\n";
-  // Each move: back and to the right, px (over open felt: the Match and Shot panes are on the
-  // left, and the aiming view draws the cue ball low in the column between them and the log).
-  const Eigen::Vector2d step(2.0, 3.0);
+  // Each move: to the right and a little back, px (over open felt: the Match and Shot panes are
+  // on the left, and the aiming view draws the cue ball low in the column between them and the
+  // log, near the window's bottom edge).
+  const Eigen::Vector2d step(3.5, 1.0);
   const std::array<int, 2> captured_after{10, 30};
   for (int i = 1; i <= 30; ++i) {
-    script += "mouse by 2 3\n";
+    script += "mouse by 3.5 1\n";
     if (i == captured_after[0] || i == captured_after[1]) {
       script += "capture " + file("drag-" + std::to_string(i) + ".png") + "\n";
     }
@@ -904,7 +905,7 @@ TEST_F(WindowClientTest, TheCueBallInHandFollowsTheCursorAndThenTheServersFrames
   // the ball's centre (z = R) at P, and R seen at P is r px. A ball drawn within 0.4 r of the
   // cursor covers the disc of 0.6 r round it; more than half of that disc shows the cue ball's
   // white (as lit anywhere on the table: a light neutral grey), the rest its shading. Where the
-  // other capture had the cursor (20 moves, 72 px, away: beyond the ball's radius and the disc's,
+  // other capture had the cursor (20 moves, 73 px, away: beyond the ball's radius and the disc's,
   // asserted) the ball is gone: under a tenth of the disc is white there (the aim line may cross
   // it).
   std::optional<Eigen::Vector2d> press;
