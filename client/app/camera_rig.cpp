@@ -31,22 +31,23 @@ double lightRoom(const std::function<ViewPoint(double)>& view_at, double aspect,
                  const std::vector<Eigen::Vector3d>& lights, const NdcBox& box) {
   constexpr double kHighest = 2.0;   // m above the cue ball: far past level for any eye
   constexpr double kBelowTop = 0.1;  // NDC: the light this far inside the top edge
-  const auto lowest = [&](double up) {
-    double y = 1e9;
+  // Whether every point of the shot is inside the box (raising the look-at point moves them down
+  // and, those below the middle, out toward the sides).
+  const auto framed = [&](double up) {
     const ViewPoint v = view_at(up);
-    for (const auto& p : points) {
+    return std::all_of(points.begin(), points.end(), [&](const Eigen::Vector3d& p) {
       const auto n = ndcOf(v, aspect, p);
-      y = std::min(y, n ? n->y() : -1e9);
-    }
-    return y;
+      return n && n->x() >= box.left && n->x() <= box.right && n->y() >= box.bottom &&
+             n->y() <= box.top;
+    });
   };
-  // The most the shot allows: its lowest point on the area's bottom edge.
-  if (lowest(0.0) < box.bottom) return 0.0;
+  // The most the shot allows: a point on the box's edge.
+  if (!framed(0.0)) return 0.0;
   double lo = 0.0, hi = kHighest;
-  if (lowest(hi) >= box.bottom) lo = hi;
+  if (framed(hi)) lo = hi;
   for (int i = 0; i < 40 && hi > lo; ++i) {
     const double mid = (lo + hi) / 2;
-    (lowest(mid) >= box.bottom ? lo : hi) = mid;
+    (framed(mid) ? lo : hi) = mid;
   }
   const double most = lo;
   double best = 0.0;
