@@ -113,8 +113,6 @@ class CameraRig {
   void setAimArea(const ScreenRect& fraction) { aim_area_ = fraction; }
   /// How far ahead of the cue ball and to the left of its line the aiming view looks, m.
   const Eigen::Vector2d& look() const { return look_; }
-  /// How far above the cue ball's centre the aiming view's look-at point is raised, m.
-  double lookUp() const { return look_up_; }
   /// The view straight down on the whole table on or off (O), framed in the clear area (turned
   /// lengthwise up the screen where that fits it larger) and neither zoomed nor panned. Glides.
   /// While it is on, orbit() and raise() pan it (rad of orbit: the view's height × kOverheadPan)
